@@ -1,0 +1,179 @@
+//! The runtime's one error type: every failure carries the time, residual and names needed
+//! to act on it, so no solver ever has to return a result it does not trust.
+
+use std::fmt;
+
+use crate::mechanism::MechanismInfo;
+
+/// A constraint row named for a report.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct ConstraintRow {
+    /// Row index in Φ.
+    pub row: usize,
+    /// The row's name from [`MechanismInfo::row_names`] (`"?"` if the mechanism has none).
+    pub name: &'static str,
+    /// The joint owning the row (`"?"` if none does).
+    pub joint: &'static str,
+}
+
+impl ConstraintRow {
+    /// Looks the row's names up in `info`; never panics on an out-of-range row.
+    pub fn new(info: &MechanismInfo, row: usize) -> Self {
+        ConstraintRow {
+            row,
+            name: info.row_names.get(row).copied().unwrap_or("?"),
+            joint: info.joint_of_row(row).map(|j| j.name).unwrap_or("?"),
+        }
+    }
+}
+
+impl fmt::Display for ConstraintRow {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "row {} `{}` (joint `{}`)", self.row, self.name, self.joint)
+    }
+}
+
+/// Everything that can go wrong in the runtime.
+#[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
+pub enum Error {
+    /// A Newton iteration did not converge within its iteration limit (or diverged).
+    NewtonFailed {
+        /// What was being solved, e.g. `"position analysis"` or `"HHT step"`.
+        analysis: &'static str,
+        time: f64,
+        /// Unscaled constraint residual |Φ|∞ at the last iterate.
+        residual: f64,
+        iterations: usize,
+    },
+    /// HHT had to cut the step below the minimum without converging.
+    StepSizeTooSmall {
+        time: f64,
+        step: f64,
+        /// Unscaled constraint residual |Φ|∞ of the last failed attempt.
+        residual: f64,
+    },
+    /// The constraint Jacobian lost rank: these rows are (numerically) dependent on others.
+    SingularJacobian {
+        time: f64,
+        rows: Vec<ConstraintRow>,
+    },
+    /// The mass matrix is not positive definite in the block holding this coordinate.
+    MassNotPositiveDefinite {
+        time: f64,
+        coord: usize,
+        name: &'static str,
+    },
+    /// A body's Euler angles came too close to the β = ±90° singularity.
+    EulerSingularity {
+        time: f64,
+        body: &'static str,
+        /// β in radians.
+        beta: f64,
+    },
+    /// A NaN or infinity appeared in the named quantity.
+    NotFinite { time: f64, what: &'static str },
+    /// A setting is out of its valid range.
+    InvalidSetting {
+        name: &'static str,
+        value: f64,
+        reason: &'static str,
+    },
+    /// A slice or vector had the wrong length.
+    DimensionMismatch {
+        what: &'static str,
+        expected: usize,
+        got: usize,
+    },
+    /// A joint, body or row index that does not exist, or a joint of the wrong kind.
+    InvalidIndex {
+        what: &'static str,
+        index: usize,
+        reason: &'static str,
+    },
+    /// The sparsity patterns in the mechanism info are inconsistent.
+    InvalidPattern { reason: String },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::NewtonFailed {
+                analysis,
+                time,
+                residual,
+                iterations,
+            } => write!(
+                f,
+                "{analysis}: Newton iteration failed at t = {time} s after {iterations} \
+                 iterations, constraint residual |Φ|∞ = {residual:e}"
+            ),
+            Error::StepSizeTooSmall {
+                time,
+                step,
+                residual,
+            } => write!(
+                f,
+                "HHT step size {step:e} s at t = {time} s is below the minimum without \
+                 convergence, constraint residual |Φ|∞ = {residual:e}"
+            ),
+            Error::SingularJacobian { time, rows } => {
+                write!(
+                    f,
+                    "constraint Jacobian lost rank at t = {time} s (residual not \
+                     available: the system has no unique solution); dependent rows:"
+                )?;
+                for (i, r) in rows.iter().enumerate() {
+                    write!(f, "{} {r}", if i == 0 { "" } else { "," })?;
+                }
+                Ok(())
+            }
+            Error::MassNotPositiveDefinite { time, coord, name } => write!(
+                f,
+                "mass matrix is not positive definite at t = {time} s in the block of \
+                 coordinate {coord} `{name}`"
+            ),
+            Error::EulerSingularity { time, body, beta } => write!(
+                f,
+                "body `{body}` reached β = {:.3}° at t = {time} s, too close to the Euler \
+                 singularity at ±90° (cos β = {:.3e})",
+                beta.to_degrees(),
+                beta.cos()
+            ),
+            Error::NotFinite { time, what } => {
+                write!(f, "non-finite value in {what} at t = {time} s")
+            }
+            Error::InvalidSetting {
+                name,
+                value,
+                reason,
+            } => write!(f, "invalid setting {name} = {value}: {reason}"),
+            Error::DimensionMismatch {
+                what,
+                expected,
+                got,
+            } => write!(f, "{what} has length {got}, expected {expected}"),
+            Error::InvalidIndex {
+                what,
+                index,
+                reason,
+            } => write!(f, "invalid {what} index {index}: {reason}"),
+            Error::InvalidPattern { reason } => write!(f, "invalid sparsity pattern: {reason}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// Checks a slice length, for public entry points that must not panic on bad input.
+pub(crate) fn check_len(what: &'static str, expected: usize, got: usize) -> Result<(), Error> {
+    if expected == got {
+        Ok(())
+    } else {
+        Err(Error::DimensionMismatch {
+            what,
+            expected,
+            got,
+        })
+    }
+}

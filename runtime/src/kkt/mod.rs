@@ -1,0 +1,201 @@
+//! Saddle-point (KKT) solvers for `[c·M Φqᵀ; Φq 0][x; y] = [f; g]`, the one linear system
+//! every runtime analysis reduces to.
+//!
+//! `M` arrives as its structural nonzeros in the mechanism's mass pattern (both triangles),
+//! scaled by a factor `c` (HHT needs `M/(1+α)`); `Φq` as its nonzeros in its pattern. A
+//! solver is built once from the patterns ([`KktPattern`]), then [`KktSolver::factor`] and
+//! [`KktSolver::solve`] run any number of times without allocating.
+//!
+//! Two implementations: [`DenseKkt`] (LU with partial pivoting on the full matrix; the
+//! reference) and [`SchurKkt`] (block Cholesky of `M`, sparse LDLᵀ of the Schur complement
+//! `Φq M⁻¹ Φqᵀ` under a minimum-degree ordering; the fast one).
+
+mod dense;
+mod ordering;
+mod schur;
+
+pub use dense::DenseKkt;
+pub use schur::SchurKkt;
+
+use std::fmt;
+
+use crate::error::{ConstraintRow, Error};
+use crate::mechanism::MechanismInfo;
+
+/// The sizes and sparsity patterns a KKT solver is built for.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct KktPattern {
+    /// Number of coordinates (size of `M`).
+    pub n: usize,
+    /// Number of constraint rows (rows of `Φq`).
+    pub m: usize,
+    /// Mass nonzeros: rows, both triangles.
+    pub mass_rows: Vec<u32>,
+    /// Mass nonzeros: columns.
+    pub mass_cols: Vec<u32>,
+    /// `Φq` nonzeros: rows.
+    pub phi_q_rows: Vec<u32>,
+    /// `Φq` nonzeros: columns.
+    pub phi_q_cols: Vec<u32>,
+}
+
+impl KktPattern {
+    /// The patterns of a mechanism.
+    pub fn from_info(info: &MechanismInfo) -> Self {
+        KktPattern {
+            n: info.n_coords,
+            m: info.n_constraints,
+            mass_rows: info.mass_rows.to_vec(),
+            mass_cols: info.mass_cols.to_vec(),
+            phi_q_rows: info.phi_q_rows.to_vec(),
+            phi_q_cols: info.phi_q_cols.to_vec(),
+        }
+    }
+
+    /// Checks that every index is in range; solvers call this before trusting the pattern.
+    pub fn validate(&self) -> Result<(), Error> {
+        let bad = |reason: String| Err(Error::InvalidPattern { reason });
+        if self.mass_rows.len() != self.mass_cols.len() {
+            return bad("mass_rows and mass_cols differ in length".into());
+        }
+        if self.phi_q_rows.len() != self.phi_q_cols.len() {
+            return bad("phi_q_rows and phi_q_cols differ in length".into());
+        }
+        for (&r, &c) in self.mass_rows.iter().zip(&self.mass_cols) {
+            if r as usize >= self.n || c as usize >= self.n {
+                return bad(format!("mass entry ({r}, {c}) outside {0}×{0}", self.n));
+            }
+        }
+        for (&r, &c) in self.phi_q_rows.iter().zip(&self.phi_q_cols) {
+            if r as usize >= self.m || c as usize >= self.n {
+                return bad(format!(
+                    "Φq entry ({r}, {c}) outside {}×{}",
+                    self.m, self.n
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Why a factorization failed. `Copy` and allocation-free, because Newton loops recover
+/// from it (by cutting the step) before it ever becomes an [`Error`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum KktError {
+    /// The scaled mass matrix is not positive definite in the block holding `coord`.
+    MassNotPositiveDefinite { coord: usize },
+    /// Constraint rows whose pivots vanished: `Φq` lost rank. The first `count` entries
+    /// of `rows` are valid (at most four are recorded).
+    RankDeficient {
+        rows: [usize; 4],
+        count: usize,
+        /// Smallest pivot relative to its row's scale.
+        pivot: f64,
+    },
+    /// The dense LU met a vanishing pivot in a mass column (no row attribution possible).
+    SingularMatrix { column: usize },
+    /// An input (or the factorization) holds a NaN or infinity.
+    NotFinite,
+    /// `solve` was called without a successful `factor`.
+    NotFactored,
+    /// An input slice has the wrong length.
+    Dimension { expected: usize, got: usize },
+}
+
+impl KktError {
+    /// The runtime error for this failure at time `time`, with row and coordinate names.
+    pub fn to_error(self, info: &MechanismInfo, time: f64) -> Error {
+        match self {
+            KktError::MassNotPositiveDefinite { coord } => Error::MassNotPositiveDefinite {
+                time,
+                coord,
+                name: info.coord_names.get(coord).copied().unwrap_or("?"),
+            },
+            KktError::RankDeficient { rows, count, .. } => Error::SingularJacobian {
+                time,
+                rows: rows[..count.min(4)]
+                    .iter()
+                    .map(|&r| ConstraintRow::new(info, r))
+                    .collect(),
+            },
+            KktError::SingularMatrix { .. } => Error::SingularJacobian {
+                time,
+                rows: Vec::new(),
+            },
+            KktError::NotFinite => Error::NotFinite {
+                time,
+                what: "KKT matrix (mass matrix or constraint Jacobian)",
+            },
+            KktError::NotFactored => Error::InvalidSetting {
+                name: "kkt",
+                value: f64::NAN,
+                reason: "solve called before a successful factor",
+            },
+            KktError::Dimension { expected, got } => Error::DimensionMismatch {
+                what: "KKT input",
+                expected,
+                got,
+            },
+        }
+    }
+}
+
+impl fmt::Display for KktError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            KktError::MassNotPositiveDefinite { coord } => {
+                write!(f, "mass matrix not positive definite (coordinate {coord})")
+            }
+            KktError::RankDeficient { rows, count, pivot } => write!(
+                f,
+                "constraint Jacobian rank deficient at rows {:?} (relative pivot {pivot:e})",
+                &rows[..(*count).min(4)]
+            ),
+            KktError::SingularMatrix { column } => {
+                write!(f, "singular KKT matrix at column {column}")
+            }
+            KktError::NotFinite => write!(f, "non-finite KKT matrix"),
+            KktError::NotFactored => write!(f, "KKT solve before factor"),
+            KktError::Dimension { expected, got } => {
+                write!(f, "KKT input has length {got}, expected {expected}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for KktError {}
+
+/// A solver for `[c·M Φqᵀ; Φq 0][x; y] = [f; g]`.
+///
+/// `factor` and `solve` allocate nothing; all memory is taken in `new`.
+pub trait KktSolver: Sized {
+    /// Builds the solver (ordering, symbolic factorization, work memory) for `pattern`.
+    fn new(pattern: &KktPattern) -> Result<Self, Error>;
+
+    /// Factors the matrix with `mass_scale · M` in the top-left block.
+    ///
+    /// `mass` holds the mass nonzeros in pattern order, `phi_q` the Jacobian's.
+    fn factor(&mut self, mass: &[f64], mass_scale: f64, phi_q: &[f64]) -> Result<(), KktError>;
+
+    /// Solves with the last factorization: `x` gets `n` entries, `y` gets `m`.
+    fn solve(&mut self, f: &[f64], g: &[f64], x: &mut [f64], y: &mut [f64])
+        -> Result<(), KktError>;
+
+    /// Sets the relative pivot below which `Φq` counts as rank deficient (default 1e-10).
+    fn set_pivot_tolerance(&mut self, tol: f64);
+}
+
+pub(crate) fn check_kkt_len(expected: usize, got: usize) -> Result<(), KktError> {
+    if expected == got {
+        Ok(())
+    } else {
+        Err(KktError::Dimension { expected, got })
+    }
+}
+
+/// Default relative pivot tolerance: below it the Schur complement has lost about ten
+/// digits, so multipliers would carry no information.
+pub const DEFAULT_PIVOT_TOLERANCE: f64 = 1e-10;
+
+#[cfg(test)]
+mod tests;

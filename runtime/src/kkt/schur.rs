@@ -1,0 +1,496 @@
+//! The structure-exploiting KKT solver: `M` is block diagonal (one block per body), so
+//! `M⁻¹` is cheap and the saddle point reduces to the Schur complement `S = Φq M⁻¹ Φqᵀ`,
+//! which is symmetric positive definite exactly when `Φq` has full row rank. `S` is factored
+//! as `LDLᵀ` with a minimum-degree ordering whose pattern is computed once.
+
+use super::ordering::{minimum_degree, Symbolic};
+use super::{check_kkt_len, KktError, KktPattern, KktSolver, DEFAULT_PIVOT_TOLERANCE};
+use crate::error::Error;
+
+/// Marks a scatter destination in `diag` rather than in `lval`.
+const DIAG_FLAG: usize = 1 << (usize::BITS - 1);
+
+/// Block-Cholesky + sparse-`LDLᵀ` Schur-complement solver. See the module docs.
+#[derive(Debug, Clone)]
+pub struct SchurKkt {
+    n: usize,
+    m: usize,
+    // Diagonal blocks of M: coordinates of block b are `block_coords[block_ptr[b]..block_ptr[b+1]]`.
+    block_ptr: Vec<usize>,
+    block_coords: Vec<usize>,
+    /// Offset of block b's dense (row-major, lower triangle used) Cholesky factor in `chol`.
+    chol_off: Vec<usize>,
+    chol: Vec<f64>,
+    /// For each mass nonzero: its slot in `chol` (always the lower triangle).
+    mass_dest: Vec<usize>,
+    // Rows of Φq touching block b: `brows[brow_ptr[b]..brow_ptr[b+1]]`, ascending.
+    brow_ptr: Vec<usize>,
+    brows: Vec<usize>,
+    /// Offset of block b's dense `rows × block size` slice of Φq in `pmat` / `wmat`.
+    p_off: Vec<usize>,
+    pmat: Vec<f64>,
+    /// `L_b⁻¹ Φq_bᵀ`, stored row by row like `pmat`.
+    wmat: Vec<f64>,
+    phi_q_dest: Vec<usize>,
+    /// For each block, the destinations of `S[a, b]` (local rows `a ≥ b`, row-major order).
+    pair_ptr: Vec<usize>,
+    pair_dest: Vec<usize>,
+    sym: Symbolic,
+    /// Strictly-lower entries of L, column by column as in `sym`.
+    lval: Vec<f64>,
+    /// D of `LDLᵀ` (permuted order); before factorization it holds diag(S).
+    diag: Vec<f64>,
+    /// 1/D, or 0 for a dropped (rank-deficient) pivot.
+    dinv: Vec<f64>,
+    /// For permuted row j, the columns k < j with `L[j,k] ≠ 0` and the slot of that entry.
+    row_list_ptr: Vec<usize>,
+    row_list: Vec<(usize, usize)>,
+    work: Vec<f64>,
+    rvec: Vec<f64>,
+    local: Vec<f64>,
+    factored: bool,
+    pivot_tol: f64,
+}
+
+impl SchurKkt {
+    /// Number of structural nonzeros of the factor `L` (strict lower triangle).
+    pub fn factor_nnz(&self) -> usize {
+        self.lval.len()
+    }
+
+    /// Sizes of the detected diagonal blocks of `M`, in order.
+    pub fn block_sizes(&self) -> Vec<usize> {
+        self.block_ptr.windows(2).map(|w| w[1] - w[0]).collect()
+    }
+
+    fn block_solve(chol: &[f64], s: usize, v: &mut [f64]) {
+        for i in 0..s {
+            let mut t = v[i];
+            for j in 0..i {
+                t -= chol[i * s + j] * v[j];
+            }
+            v[i] = t / chol[i * s + i];
+        }
+        for i in (0..s).rev() {
+            let mut t = v[i];
+            for j in i + 1..s {
+                t -= chol[j * s + i] * v[j];
+            }
+            v[i] = t / chol[i * s + i];
+        }
+    }
+}
+
+fn find(parent: &mut [usize], mut i: usize) -> usize {
+    while parent[i] != i {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    i
+}
+
+impl KktSolver for SchurKkt {
+    fn new(pattern: &KktPattern) -> Result<Self, Error> {
+        pattern.validate()?;
+        let (n, m) = (pattern.n, pattern.m);
+
+        // Blocks of M = connected components of its pattern graph.
+        let mut parent: Vec<usize> = (0..n).collect();
+        let mut has_diag = vec![false; n];
+        for (&r, &c) in pattern.mass_rows.iter().zip(&pattern.mass_cols) {
+            let (r, c) = (r as usize, c as usize);
+            if r == c {
+                has_diag[r] = true;
+            }
+            let (a, b) = (find(&mut parent, r), find(&mut parent, c));
+            if a != b {
+                parent[a.max(b)] = a.min(b);
+            }
+        }
+        if let Some(c) = has_diag.iter().position(|&d| !d) {
+            return Err(Error::InvalidPattern {
+                reason: format!("mass pattern has no diagonal entry for coordinate {c}"),
+            });
+        }
+        let mut root_block = vec![usize::MAX; n];
+        let mut members: Vec<Vec<usize>> = Vec::new();
+        for c in 0..n {
+            let r = find(&mut parent, c);
+            if root_block[r] == usize::MAX {
+                root_block[r] = members.len();
+                members.push(Vec::new());
+            }
+            members[root_block[r]].push(c);
+        }
+        let nb = members.len();
+        let mut coord_block = vec![0; n];
+        let mut coord_local = vec![0; n];
+        let mut block_ptr = vec![0];
+        let mut block_coords = Vec::with_capacity(n);
+        let mut chol_off = Vec::with_capacity(nb);
+        let mut chol_len = 0;
+        for (b, mem) in members.iter().enumerate() {
+            for (l, &c) in mem.iter().enumerate() {
+                coord_block[c] = b;
+                coord_local[c] = l;
+            }
+            block_coords.extend_from_slice(mem);
+            block_ptr.push(block_coords.len());
+            chol_off.push(chol_len);
+            chol_len += mem.len() * mem.len();
+        }
+        let mass_dest = pattern
+            .mass_rows
+            .iter()
+            .zip(&pattern.mass_cols)
+            .map(|(&r, &c)| {
+                let b = coord_block[r as usize];
+                let s = members[b].len();
+                let (lr, lc) = (coord_local[r as usize], coord_local[c as usize]);
+                chol_off[b] + lr.max(lc) * s + lr.min(lc)
+            })
+            .collect();
+
+        // Rows of Φq touching each block.
+        let mut touch: Vec<Vec<usize>> = vec![Vec::new(); nb];
+        for (&r, &c) in pattern.phi_q_rows.iter().zip(&pattern.phi_q_cols) {
+            touch[coord_block[c as usize]].push(r as usize);
+        }
+        for t in &mut touch {
+            t.sort_unstable();
+            t.dedup();
+        }
+        let mut brow_ptr = vec![0];
+        let mut brows = Vec::new();
+        let mut p_off = Vec::with_capacity(nb);
+        let mut p_len = 0;
+        for (b, t) in touch.iter().enumerate() {
+            brows.extend_from_slice(t);
+            brow_ptr.push(brows.len());
+            p_off.push(p_len);
+            p_len += t.len() * members[b].len();
+        }
+        let phi_q_dest = pattern
+            .phi_q_rows
+            .iter()
+            .zip(&pattern.phi_q_cols)
+            .map(|(&r, &c)| {
+                let b = coord_block[c as usize];
+                let a = touch[b].binary_search(&(r as usize)).expect("row recorded");
+                p_off[b] + a * members[b].len() + coord_local[c as usize]
+            })
+            .collect();
+
+        // Pattern of S: rows sharing a block are coupled.
+        let mut edges = Vec::new();
+        for t in &touch {
+            for (i, &a) in t.iter().enumerate() {
+                for &b in &t[..i] {
+                    edges.push((a, b));
+                }
+            }
+        }
+        let sym = minimum_degree(m, &edges);
+        let slot = |i: usize, j: usize| -> usize {
+            // Position of S[i, j] (original indices) in the factor's storage.
+            let (pi, pj) = (sym.iperm[i], sym.iperm[j]);
+            if pi == pj {
+                return DIAG_FLAG | pi;
+            }
+            let (row, col) = (pi.max(pj), pi.min(pj));
+            let range = sym.col_ptr[col]..sym.col_ptr[col + 1];
+            let off = sym.row_idx[range.clone()]
+                .binary_search(&row)
+                .expect("S pattern lies inside the symbolic factor");
+            range.start + off
+        };
+        let mut pair_ptr = vec![0];
+        let mut pair_dest = Vec::new();
+        for t in &touch {
+            for (a, &ra) in t.iter().enumerate() {
+                for &rb in &t[..=a] {
+                    pair_dest.push(slot(ra, rb));
+                }
+            }
+            pair_ptr.push(pair_dest.len());
+        }
+
+        let mut row_count = vec![0usize; m];
+        for &r in &sym.row_idx {
+            row_count[r] += 1;
+        }
+        let mut row_list_ptr = vec![0; m + 1];
+        for j in 0..m {
+            row_list_ptr[j + 1] = row_list_ptr[j] + row_count[j];
+        }
+        let mut fill = row_list_ptr.clone();
+        let mut row_list = vec![(0, 0); sym.row_idx.len()];
+        for k in 0..m {
+            for p in sym.col_ptr[k]..sym.col_ptr[k + 1] {
+                let j = sym.row_idx[p];
+                row_list[fill[j]] = (k, p);
+                fill[j] += 1;
+            }
+        }
+
+        let max_block = members.iter().map(Vec::len).max().unwrap_or(0);
+        let lnnz = sym.row_idx.len();
+        Ok(SchurKkt {
+            n,
+            m,
+            block_ptr,
+            block_coords,
+            chol_off,
+            chol: vec![0.0; chol_len],
+            mass_dest,
+            brow_ptr,
+            brows,
+            p_off,
+            pmat: vec![0.0; p_len],
+            wmat: vec![0.0; p_len],
+            phi_q_dest,
+            pair_ptr,
+            pair_dest,
+            sym,
+            lval: vec![0.0; lnnz],
+            diag: vec![0.0; m],
+            dinv: vec![0.0; m],
+            row_list_ptr,
+            row_list,
+            work: vec![0.0; m],
+            rvec: vec![0.0; m],
+            local: vec![0.0; max_block],
+            factored: false,
+            pivot_tol: DEFAULT_PIVOT_TOLERANCE,
+        })
+    }
+
+    fn factor(&mut self, mass: &[f64], mass_scale: f64, phi_q: &[f64]) -> Result<(), KktError> {
+        self.factored = false;
+        check_kkt_len(self.mass_dest.len(), mass.len())?;
+        check_kkt_len(self.phi_q_dest.len(), phi_q.len())?;
+
+        // Block Cholesky of c·M (lower triangle, row-major).
+        self.chol.fill(0.0);
+        for (&d, &v) in self.mass_dest.iter().zip(mass) {
+            self.chol[d] = mass_scale * v;
+        }
+        let nb = self.chol_off.len();
+        for b in 0..nb {
+            let coords = &self.block_coords[self.block_ptr[b]..self.block_ptr[b + 1]];
+            let s = coords.len();
+            let a = &mut self.chol[self.chol_off[b]..self.chol_off[b] + s * s];
+            for j in 0..s {
+                let mut d = a[j * s + j];
+                for k in 0..j {
+                    d -= a[j * s + k] * a[j * s + k];
+                }
+                if !(d > 0.0) || !d.is_finite() {
+                    return Err(if d.is_nan() {
+                        KktError::NotFinite
+                    } else {
+                        KktError::MassNotPositiveDefinite { coord: coords[j] }
+                    });
+                }
+                let d = d.sqrt();
+                a[j * s + j] = d;
+                for i in j + 1..s {
+                    let mut t = a[i * s + j];
+                    for k in 0..j {
+                        t -= a[i * s + k] * a[j * s + k];
+                    }
+                    a[i * s + j] = t / d;
+                }
+            }
+        }
+
+        // W_b = L_b⁻¹ Φq_bᵀ, one forward substitution per touching row.
+        self.pmat.fill(0.0);
+        for (&d, &v) in self.phi_q_dest.iter().zip(phi_q) {
+            if !v.is_finite() {
+                return Err(KktError::NotFinite);
+            }
+            self.pmat[d] = v;
+        }
+        self.wmat.copy_from_slice(&self.pmat);
+        self.diag.fill(0.0);
+        self.lval.fill(0.0);
+        for b in 0..nb {
+            let s = self.block_ptr[b + 1] - self.block_ptr[b];
+            let l = &self.chol[self.chol_off[b]..self.chol_off[b] + s * s];
+            let k = self.brow_ptr[b + 1] - self.brow_ptr[b];
+            let w = &mut self.wmat[self.p_off[b]..self.p_off[b] + k * s];
+            for row in w.chunks_exact_mut(s) {
+                for i in 0..s {
+                    let mut t = row[i];
+                    for j in 0..i {
+                        t -= l[i * s + j] * row[j];
+                    }
+                    row[i] = t / l[i * s + i];
+                }
+            }
+            // S += W_bᵀ W_b over the rows touching this block.
+            let mut dest = self.pair_dest[self.pair_ptr[b]..self.pair_ptr[b + 1]].iter();
+            for a in 0..k {
+                let wa = &w[a * s..a * s + s];
+                for c in 0..=a {
+                    let wc = &w[c * s..c * s + s];
+                    let v: f64 = wa.iter().zip(wc).map(|(x, y)| x * y).sum();
+                    let d = *dest.next().expect("pair slots precomputed");
+                    if d & DIAG_FLAG != 0 {
+                        self.diag[d & !DIAG_FLAG] += v;
+                    } else {
+                        self.lval[d] += v;
+                    }
+                }
+            }
+        }
+
+        // Left-looking LDLᵀ of S in place; rank loss shows as a pivot that is tiny
+        // relative to the row's own diag(S).
+        let mut bad = [0usize; 4];
+        let mut nbad = 0;
+        let mut worst = f64::INFINITY;
+        let sym = &self.sym;
+        self.work.fill(0.0);
+        for j in 0..self.m {
+            let scale = self.diag[j];
+            let (c0, c1) = (sym.col_ptr[j], sym.col_ptr[j + 1]);
+            for p in c0..c1 {
+                self.work[sym.row_idx[p]] = self.lval[p];
+            }
+            let mut dj = self.diag[j];
+            for &(k, pk) in &self.row_list[self.row_list_ptr[j]..self.row_list_ptr[j + 1]] {
+                let ljk = self.lval[pk];
+                let t = ljk * self.diag[k];
+                dj -= t * ljk;
+                for p in pk + 1..sym.col_ptr[k + 1] {
+                    self.work[sym.row_idx[p]] -= self.lval[p] * t;
+                }
+            }
+            if dj.is_nan() {
+                return Err(KktError::NotFinite);
+            }
+            if !(dj > self.pivot_tol * scale) {
+                worst = worst.min(if scale > 0.0 { dj / scale } else { 0.0 });
+                if nbad < bad.len() {
+                    bad[nbad] = sym.perm[j];
+                }
+                nbad += 1;
+                // Drop the row so the remaining pivots can name further dependent rows.
+                self.diag[j] = 0.0;
+                self.dinv[j] = 0.0;
+                for p in c0..c1 {
+                    self.work[sym.row_idx[p]] = 0.0;
+                    self.lval[p] = 0.0;
+                }
+                continue;
+            }
+            self.diag[j] = dj;
+            let inv = 1.0 / dj;
+            self.dinv[j] = inv;
+            for p in c0..c1 {
+                let r = sym.row_idx[p];
+                self.lval[p] = self.work[r] * inv;
+                self.work[r] = 0.0;
+            }
+        }
+        if nbad > 0 {
+            return Err(KktError::RankDeficient {
+                rows: bad,
+                count: nbad.min(bad.len()),
+                pivot: worst,
+            });
+        }
+        self.factored = true;
+        Ok(())
+    }
+
+    fn solve(
+        &mut self,
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+    ) -> Result<(), KktError> {
+        if !self.factored {
+            return Err(KktError::NotFactored);
+        }
+        check_kkt_len(self.n, f.len())?;
+        check_kkt_len(self.m, g.len())?;
+        check_kkt_len(self.n, x.len())?;
+        check_kkt_len(self.m, y.len())?;
+        let nb = self.chol_off.len();
+
+        // r = Φq M⁻¹ f − g, then S y = r.
+        for (r, &gi) in self.rvec.iter_mut().zip(g) {
+            *r = -gi;
+        }
+        for b in 0..nb {
+            let coords = &self.block_coords[self.block_ptr[b]..self.block_ptr[b + 1]];
+            let s = coords.len();
+            let loc = &mut self.local[..s];
+            for (l, &c) in loc.iter_mut().zip(coords) {
+                *l = f[c];
+            }
+            Self::block_solve(&self.chol[self.chol_off[b]..], s, loc);
+            let rows = &self.brows[self.brow_ptr[b]..self.brow_ptr[b + 1]];
+            let p = &self.pmat[self.p_off[b]..self.p_off[b] + rows.len() * s];
+            for (&r, prow) in rows.iter().zip(p.chunks_exact(s)) {
+                self.rvec[r] += prow.iter().zip(loc.iter()).map(|(a, b)| a * b).sum::<f64>();
+            }
+        }
+        let sym = &self.sym;
+        let z = &mut self.work;
+        for (k, zk) in z.iter_mut().enumerate() {
+            *zk = self.rvec[sym.perm[k]];
+        }
+        for j in 0..self.m {
+            let zj = z[j];
+            for p in sym.col_ptr[j]..sym.col_ptr[j + 1] {
+                z[sym.row_idx[p]] -= self.lval[p] * zj;
+            }
+        }
+        for (zj, &d) in z.iter_mut().zip(&self.dinv) {
+            *zj *= d;
+        }
+        for j in (0..self.m).rev() {
+            let mut t = z[j];
+            for p in sym.col_ptr[j]..sym.col_ptr[j + 1] {
+                t -= self.lval[p] * z[sym.row_idx[p]];
+            }
+            z[j] = t;
+        }
+        for (k, &zk) in z.iter().enumerate() {
+            y[sym.perm[k]] = zk;
+        }
+        z.fill(0.0);
+
+        // x = M⁻¹ (f − Φqᵀ y).
+        for b in 0..nb {
+            let coords = &self.block_coords[self.block_ptr[b]..self.block_ptr[b + 1]];
+            let s = coords.len();
+            let loc = &mut self.local[..s];
+            for (l, &c) in loc.iter_mut().zip(coords) {
+                *l = f[c];
+            }
+            let rows = &self.brows[self.brow_ptr[b]..self.brow_ptr[b + 1]];
+            let p = &self.pmat[self.p_off[b]..self.p_off[b] + rows.len() * s];
+            for (&r, prow) in rows.iter().zip(p.chunks_exact(s)) {
+                let yr = y[r];
+                for (l, &a) in loc.iter_mut().zip(prow) {
+                    *l -= a * yr;
+                }
+            }
+            Self::block_solve(&self.chol[self.chol_off[b]..], s, loc);
+            for (&l, &c) in loc.iter().zip(coords) {
+                x[c] = l;
+            }
+        }
+        Ok(())
+    }
+
+    fn set_pivot_tolerance(&mut self, tol: f64) {
+        self.pivot_tol = tol;
+    }
+}
