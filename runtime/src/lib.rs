@@ -4,6 +4,7 @@
 pub mod error;
 pub mod kkt;
 pub mod mechanism;
+pub mod testmodels;
 
 pub use error::{ConstraintRow, Error};
 pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, SchurKkt};
