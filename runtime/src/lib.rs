@@ -2,6 +2,7 @@
 //! (kinematic analysis, HHT-α for index-3 DAEs, reaction forces) that work on any of them.
 
 pub mod error;
+pub mod kinematics;
 pub mod kkt;
 pub mod mechanism;
 pub mod testmodels;

@@ -1,0 +1,442 @@
+//! Kinematic analysis and the consistent start: positions by Newton with mass-weighted
+//! minimum-norm corrections, velocities of least kinetic energy, accelerations and
+//! multipliers from the saddle-point system — all through one KKT solver.
+//!
+//! Every correction solves `[M Φqᵀ; Φq 0][Δ; μ] = [f; g]`, so directions the constraints
+//! leave free (a Stewart leg's spin about its own axis) are not moved by position
+//! corrections and get no velocity of their own unless asked for.
+
+use crate::error::{check_len, Error};
+use crate::kkt::{KktPattern, KktSolver, SchurKkt};
+use crate::mechanism::{Mechanism, MechanismInfo};
+
+/// Settings of the position Newton iteration.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KinematicSettings {
+    /// Converged when the unscaled residual |Φ|∞ is at or below this (default 1e-11, in the
+    /// units of the constraints: metres or radians, a few hundred roundoffs at unit scale).
+    pub position_tolerance: f64,
+    /// Maximum Newton iterations (default 30; Newton from a nearby point needs 3–5).
+    pub max_iterations: usize,
+}
+
+impl Default for KinematicSettings {
+    fn default() -> Self {
+        KinematicSettings {
+            position_tolerance: 1e-11,
+            max_iterations: 30,
+        }
+    }
+}
+
+/// How [`Kinematics::consistent_start`] chooses the initial velocity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum InitialVelocity {
+    /// The consistent velocity of least kinetic energy: `[M Φqᵀ; Φq 0][q̇; μ] = [0; −Φt]`
+    /// (paper-scenario.md, "Initial velocities"). The given `qd` is ignored.
+    #[default]
+    LeastKineticEnergy,
+    /// The consistent velocity closest to the given `qd` in the kinetic-energy norm.
+    ProjectGiven,
+}
+
+/// Result of a converged position analysis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PositionReport {
+    /// Newton iterations taken (0 when the start already satisfied the tolerance).
+    pub iterations: usize,
+    /// Final |Φ|∞.
+    pub residual: f64,
+}
+
+/// Work memory and settings for kinematic analyses of one mechanism.
+#[derive(Debug, Clone)]
+pub struct Kinematics<K: KktSolver = SchurKkt> {
+    info: &'static MechanismInfo,
+    settings: KinematicSettings,
+    kkt: K,
+    phi: Vec<f64>,
+    phi_q: Vec<f64>,
+    phi_t: Vec<f64>,
+    gamma: Vec<f64>,
+    mass: Vec<f64>,
+    force: Vec<f64>,
+    f: Vec<f64>,
+    g: Vec<f64>,
+    dq: Vec<f64>,
+    mu: Vec<f64>,
+}
+
+pub(crate) fn inf_norm(v: &[f64]) -> f64 {
+    // NaN must not hide behind `max`, so it is propagated explicitly.
+    v.iter().fold(0.0f64, |a, &b| {
+        if b.is_nan() || a.is_nan() {
+            f64::NAN
+        } else {
+            a.max(b.abs())
+        }
+    })
+}
+
+/// `out = M v` from the mass nonzeros.
+pub(crate) fn mass_times(info: &MechanismInfo, mass: &[f64], v: &[f64], out: &mut [f64]) {
+    out.fill(0.0);
+    for ((&r, &c), &m) in info.mass_rows.iter().zip(info.mass_cols).zip(mass) {
+        out[r as usize] += m * v[c as usize];
+    }
+}
+
+impl<K: KktSolver> Kinematics<K> {
+    /// Allocates all work memory for `info`'s mechanism, with default settings.
+    pub fn new(info: &'static MechanismInfo) -> Result<Self, Error> {
+        Self::with_settings(info, KinematicSettings::default())
+    }
+
+    /// As [`Kinematics::new`] with explicit settings.
+    pub fn with_settings(
+        info: &'static MechanismInfo,
+        settings: KinematicSettings,
+    ) -> Result<Self, Error> {
+        if !(settings.position_tolerance > 0.0) || !settings.position_tolerance.is_finite() {
+            return Err(Error::InvalidSetting {
+                name: "position_tolerance",
+                value: settings.position_tolerance,
+                reason: "must be positive and finite",
+            });
+        }
+        let (n, m) = (info.n_coords, info.n_constraints);
+        check_len("coord_names", n, info.coord_names.len())?;
+        check_len("row_names", m, info.row_names.len())?;
+        Ok(Kinematics {
+            info,
+            settings,
+            kkt: K::new(&KktPattern::from_info(info))?,
+            phi: vec![0.0; m],
+            phi_q: vec![0.0; info.phi_q_nnz()],
+            phi_t: vec![0.0; m],
+            gamma: vec![0.0; m],
+            mass: vec![0.0; info.mass_nnz()],
+            force: vec![0.0; n],
+            f: vec![0.0; n],
+            g: vec![0.0; m],
+            dq: vec![0.0; n],
+            mu: vec![0.0; m],
+        })
+    }
+
+    /// The settings in use.
+    pub fn settings(&self) -> KinematicSettings {
+        self.settings
+    }
+
+    fn check_mech<M: Mechanism>(&self, mech: &M) -> Result<(), Error> {
+        let info = mech.info();
+        check_len("mechanism coordinates", self.info.n_coords, info.n_coords)?;
+        check_len(
+            "mechanism constraints",
+            self.info.n_constraints,
+            info.n_constraints,
+        )?;
+        check_len("Φq nonzeros", self.info.phi_q_nnz(), info.phi_q_nnz())?;
+        check_len("mass nonzeros", self.info.mass_nnz(), info.mass_nnz())
+    }
+
+    /// Solves Φ(q, t) = 0 by Newton from the given `q`, each correction the smallest in
+    /// the mass norm. `q` is updated in place only on success; on failure it is left at the
+    /// last iterate, and the error names the time, residual and iterations.
+    pub fn position<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &mut [f64],
+    ) -> Result<PositionReport, Error> {
+        self.check_mech(mech)?;
+        check_len("q", self.info.n_coords, q.len())?;
+        let info = self.info;
+        self.f.fill(0.0);
+        let mut residual = f64::NAN;
+        for it in 0..=self.settings.max_iterations {
+            mech.phi(q, t, &mut self.phi);
+            residual = inf_norm(&self.phi);
+            if residual.is_nan() {
+                return Err(Error::NotFinite {
+                    time: t,
+                    what: "constraint residual Φ in position analysis",
+                });
+            }
+            if residual <= self.settings.position_tolerance {
+                return Ok(PositionReport {
+                    iterations: it,
+                    residual,
+                });
+            }
+            if it == self.settings.max_iterations {
+                break;
+            }
+            mech.phi_q(q, t, &mut self.phi_q);
+            if it == 0 || !info.mass_is_constant {
+                mech.mass(q, &mut self.mass);
+            }
+            self.kkt
+                .factor(&self.mass, 1.0, &self.phi_q)
+                .map_err(|e| e.to_error(info, t))?;
+            for (g, &p) in self.g.iter_mut().zip(&self.phi) {
+                *g = -p;
+            }
+            self.kkt
+                .solve(&self.f, &self.g, &mut self.dq, &mut self.mu)
+                .map_err(|e| e.to_error(info, t))?;
+            for (qi, d) in q.iter_mut().zip(&self.dq) {
+                *qi += d;
+            }
+        }
+        Err(Error::NewtonFailed {
+            analysis: "position analysis",
+            time: t,
+            residual,
+            iterations: self.settings.max_iterations,
+        })
+    }
+
+    /// The consistent velocity (Φq q̇ = −Φt) of least kinetic energy, written to `qd`.
+    pub fn velocity<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &mut [f64],
+    ) -> Result<(), Error> {
+        self.velocity_impl(mech, t, q, qd, false)
+    }
+
+    /// Replaces `qd` by the consistent velocity closest to it in the kinetic-energy norm.
+    pub fn project_velocity<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &mut [f64],
+    ) -> Result<(), Error> {
+        self.velocity_impl(mech, t, q, qd, true)
+    }
+
+    fn velocity_impl<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &mut [f64],
+        project: bool,
+    ) -> Result<(), Error> {
+        self.check_mech(mech)?;
+        check_len("q", self.info.n_coords, q.len())?;
+        check_len("qd", self.info.n_coords, qd.len())?;
+        let info = self.info;
+        mech.phi_q(q, t, &mut self.phi_q);
+        mech.phi_t(q, t, &mut self.phi_t);
+        mech.mass(q, &mut self.mass);
+        if project {
+            // min ½(v − v*)ᵀM(v − v*) s.t. Φq v = −Φt  ⇒  M v + Φqᵀμ = M v*.
+            mass_times(info, &self.mass, qd, &mut self.f);
+        } else {
+            self.f.fill(0.0);
+        }
+        for (g, &p) in self.g.iter_mut().zip(&self.phi_t) {
+            *g = -p;
+        }
+        self.kkt
+            .factor(&self.mass, 1.0, &self.phi_q)
+            .map_err(|e| e.to_error(info, t))?;
+        self.kkt
+            .solve(&self.f, &self.g, qd, &mut self.mu)
+            .map_err(|e| e.to_error(info, t))?;
+        if inf_norm(qd).is_nan() {
+            return Err(Error::NotFinite {
+                time: t,
+                what: "velocity analysis",
+            });
+        }
+        Ok(())
+    }
+
+    /// Accelerations and multipliers from `[M Φqᵀ; Φq 0][q̈; λ] = [Q; γ]`.
+    pub fn acceleration<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+        qdd: &mut [f64],
+        lambda: &mut [f64],
+    ) -> Result<(), Error> {
+        self.check_mech(mech)?;
+        let (n, m) = (self.info.n_coords, self.info.n_constraints);
+        check_len("q", n, q.len())?;
+        check_len("qd", n, qd.len())?;
+        check_len("qdd", n, qdd.len())?;
+        check_len("lambda", m, lambda.len())?;
+        let info = self.info;
+        mech.phi_q(q, t, &mut self.phi_q);
+        mech.gamma(q, qd, t, &mut self.gamma);
+        mech.mass(q, &mut self.mass);
+        mech.force(q, qd, t, &mut self.force);
+        self.kkt
+            .factor(&self.mass, 1.0, &self.phi_q)
+            .map_err(|e| e.to_error(info, t))?;
+        self.kkt
+            .solve(&self.force, &self.gamma, qdd, lambda)
+            .map_err(|e| e.to_error(info, t))?;
+        if inf_norm(qdd).is_nan() || inf_norm(lambda).is_nan() {
+            return Err(Error::NotFinite {
+                time: t,
+                what: "acceleration analysis",
+            });
+        }
+        Ok(())
+    }
+
+    /// The consistent start (DESIGN decision 9): position Newton on `q`, then the velocity
+    /// chosen by `velocity`, then accelerations and multipliers.
+    #[allow(clippy::too_many_arguments)]
+    pub fn consistent_start<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        velocity: InitialVelocity,
+        q: &mut [f64],
+        qd: &mut [f64],
+        qdd: &mut [f64],
+        lambda: &mut [f64],
+    ) -> Result<PositionReport, Error> {
+        let report = self.position(mech, t, q)?;
+        match velocity {
+            InitialVelocity::LeastKineticEnergy => self.velocity(mech, t, q, qd)?,
+            InitialVelocity::ProjectGiven => self.project_velocity(mech, t, q, qd)?,
+        }
+        self.acceleration(mech, t, q, qd, qdd, lambda)?;
+        Ok(report)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::kkt::DenseKkt;
+    use crate::testmodels::{
+        CircleDriver, Pendulum, CIRCLE_C0, CIRCLE_D, CIRCLE_MASS, CIRCLE_V, G, PENDULUM_LENGTH,
+    };
+
+    #[test]
+    fn position_newton_leaves_free_directions_alone() {
+        // The pendulum has three free directions; a displaced start must be pulled back
+        // onto the sphere without turning the body about the pivot-to-centre axis, since
+        // that rotation costs kinetic energy and is not needed to satisfy Φ.
+        let mech = Pendulum::paper();
+        let mut kin = Kinematics::<SchurKkt>::new(mech.info()).unwrap();
+        let mut q = [0.05, -0.45, 0.02, 0.0, 0.0, 0.0];
+        let rep = kin.position(&mech, 0.0, &mut q).unwrap();
+        let mut phi = [0.0; 3];
+        mech.phi(&q, 0.0, &mut phi);
+        assert!(inf_norm(&phi) <= 1e-11, "{phi:?}");
+        assert!(rep.iterations >= 1 && rep.iterations < 10);
+        // β is the spin about the arm (local y ∥ global y here): Φq has a zero column for
+        // it at the start, so a minimum-norm correction leaves it (nearly) where it was,
+        // whereas the translation error is taken up by X, Z, θ, γ.
+        assert!(q[4].abs() < 1e-4, "spin β = {}", q[4]);
+        assert!(q[3].abs() > 1e-3 && q[5].abs() > 1e-3);
+        assert!((q[1] + PENDULUM_LENGTH).abs() < 0.05);
+    }
+
+    #[test]
+    fn circle_driver_kinematics_match_the_analytic_solution() {
+        let mech = CircleDriver;
+        for t in [0.0, 0.7, 1.5] {
+            let mut kin = Kinematics::<SchurKkt>::new(mech.info()).unwrap();
+            let mut q = [CIRCLE_D + 0.01, 0.35, 0.01, 0.02, -0.01, 0.03];
+            let (mut qd, mut qdd, mut lam) = ([0.0; 6], [0.0; 6], [0.0; 6]);
+            kin.consistent_start(
+                &mech,
+                t,
+                InitialVelocity::LeastKineticEnergy,
+                &mut q,
+                &mut qd,
+                &mut qdd,
+                &mut lam,
+            )
+            .unwrap();
+            // Y² = c² − d²:  Ẏ = c ċ / Y,  Ÿ = (ċ² − Ẏ²)/Y  (c̈ = 0).
+            let c = CIRCLE_C0 - CIRCLE_V * t;
+            let cd = -CIRCLE_V;
+            let y = (c * c - CIRCLE_D * CIRCLE_D).sqrt();
+            let yd = c * cd / y;
+            let ydd = (cd * cd - yd * yd) / y;
+            // Newton stops at |Φ|∞ ≤ 1e-11, which bounds the position error by ~1e-11·c/Y.
+            assert!((q[1] - y).abs() < 1e-10 && (q[0] - CIRCLE_D).abs() < 1e-10, "{q:?}");
+            assert!(q[2..].iter().all(|v| v.abs() < 1e-10));
+            assert!((qd[1] - yd).abs() < 1e-10 && qd[0].abs() < 1e-10);
+            assert!((qdd[1] - ydd).abs() < 1e-10 && qdd[0].abs() < 1e-10);
+            // m Ÿ + (Y/c) λ5 = −m g,  λ0 + (d/c) λ5 = 0.
+            let l5 = -CIRCLE_MASS * (G + ydd) * c / y;
+            assert!((lam[5] - l5).abs() < 1e-9 * l5.abs(), "{} vs {l5}", lam[5]);
+            assert!((lam[0] + CIRCLE_D / c * l5).abs() < 1e-9 * l5.abs());
+        }
+    }
+
+    #[test]
+    fn impossible_driver_is_a_newton_failure() {
+        // c(3) = 0.2 < d = 0.3: no real position exists.
+        let mech = CircleDriver;
+        let mut kin = Kinematics::<DenseKkt>::new(mech.info()).unwrap();
+        let mut q = mech.info().q0.to_vec();
+        match kin.position(&mech, 3.0, &mut q) {
+            Err(Error::NewtonFailed {
+                time, residual, ..
+            }) => {
+                assert_eq!(time, 3.0);
+                assert!(residual > 1e-3);
+            }
+            Err(Error::SingularJacobian { time, rows }) => {
+                assert_eq!(time, 3.0);
+                assert!(!rows.is_empty());
+            }
+            other => panic!("expected a failure, got {other:?}"),
+        }
+    }
+
+    #[test]
+    fn projected_velocity_keeps_the_admissible_part() {
+        // A pendulum hanging at rest: a velocity along X is admissible only with the
+        // matching rotation; projecting a consistent velocity must return it unchanged.
+        let mech = Pendulum::exact();
+        let mut kin = Kinematics::<SchurKkt>::new(mech.info()).unwrap();
+        let q = mech.info().q0.to_vec();
+        // Swinging about Z through the pivot: v = ω × (r − pivot), ω = (0, 0, w).
+        let w = 0.7;
+        let consistent = [w * PENDULUM_LENGTH, 0.0, 0.0, 0.0, 0.0, w];
+        let mut qd = consistent;
+        kin.project_velocity(&mech, 0.0, &q, &mut qd).unwrap();
+        for (a, b) in qd.iter().zip(&consistent) {
+            assert!((a - b).abs() < 1e-12);
+        }
+        let mut qd0 = [1.0; 6];
+        kin.velocity(&mech, 0.0, &q, &mut qd0).unwrap();
+        assert!(qd0.iter().all(|v| v.abs() < 1e-14), "no driver: rest");
+    }
+
+    #[test]
+    fn wrong_lengths_are_errors() {
+        let mech = Pendulum::paper();
+        let mut kin = Kinematics::<SchurKkt>::new(mech.info()).unwrap();
+        let mut q = [0.0; 5];
+        assert!(matches!(
+            kin.position(&mech, 0.0, &mut q),
+            Err(Error::DimensionMismatch { .. })
+        ));
+        let other = CircleDriver;
+        let mut q6 = [0.0; 6];
+        assert!(matches!(
+            kin.position(&other, 0.0, &mut q6),
+            Err(Error::DimensionMismatch { .. })
+        ));
+    }
+}
