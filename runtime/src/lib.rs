@@ -5,7 +5,9 @@ pub mod error;
 pub mod kinematics;
 pub mod kkt;
 pub mod mechanism;
+pub mod reactions;
 pub mod testmodels;
+pub mod watch;
 
 pub use error::{ConstraintRow, Error};
 pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, SchurKkt};

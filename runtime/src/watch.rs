@@ -1,0 +1,198 @@
+//! Watchdogs: constraint drift at position and velocity level, and every body's distance
+//! from the Euler-angle singularity at β = ±90° (DESIGN decision 11), so a simulation
+//! reports trouble by body name instead of producing garbage.
+
+use crate::error::{check_len, Error};
+use crate::kinematics::inf_norm;
+use crate::mechanism::{Mechanism, MechanismInfo};
+
+/// Thresholds on |cos β|: below `warn_cos` a warning is reported, below `error_cos` an
+/// error. Defaults: warn at |β| ≳ 80° (cos β = 0.17), fail at |β| ≳ 88° (cos β = 0.035),
+/// where Euler rates are ~30 times the angular velocity and their accuracy is gone.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EulerLimits {
+    pub warn_cos: f64,
+    pub error_cos: f64,
+}
+
+impl Default for EulerLimits {
+    fn default() -> Self {
+        EulerLimits {
+            warn_cos: 0.17,
+            error_cos: 0.035,
+        }
+    }
+}
+
+/// A body whose β came close to ±90°.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EulerWarning {
+    pub time: f64,
+    pub body: usize,
+    pub name: &'static str,
+    /// β in radians.
+    pub beta: f64,
+}
+
+/// The body with the smallest |cos β| and that value (`None` for a mechanism without bodies).
+pub fn min_cos_beta(info: &MechanismInfo, q: &[f64]) -> Option<(usize, f64)> {
+    info.bodies
+        .iter()
+        .enumerate()
+        .filter_map(|(i, b)| q.get(b.coord_offset + 4).map(|beta| (i, beta.cos().abs())))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+}
+
+impl EulerLimits {
+    /// Checks the limits are ordered and in (0, 1].
+    pub fn validate(&self) -> Result<(), Error> {
+        if !(self.error_cos >= 0.0 && self.error_cos <= self.warn_cos && self.warn_cos <= 1.0) {
+            return Err(Error::InvalidSetting {
+                name: "euler limits",
+                value: self.error_cos,
+                reason: "need 0 ≤ error_cos ≤ warn_cos ≤ 1",
+            });
+        }
+        Ok(())
+    }
+
+    /// `Err(EulerSingularity)` past the error threshold, `Ok(Some(warning))` past the
+    /// warning threshold, `Ok(None)` otherwise. A NaN angle is an error too.
+    pub fn check(
+        &self,
+        info: &MechanismInfo,
+        time: f64,
+        q: &[f64],
+    ) -> Result<Option<EulerWarning>, Error> {
+        check_len("q", info.n_coords, q.len())?;
+        for b in info.bodies {
+            let beta = q[b.coord_offset + 4];
+            if !(beta.cos().abs() >= self.error_cos) {
+                return Err(Error::EulerSingularity {
+                    time,
+                    body: b.name,
+                    beta,
+                });
+            }
+        }
+        Ok(match min_cos_beta(info, q) {
+            Some((i, c)) if c < self.warn_cos => {
+                let b = &info.bodies[i];
+                Some(EulerWarning {
+                    time,
+                    body: i,
+                    name: b.name,
+                    beta: q[b.coord_offset + 4],
+                })
+            }
+            _ => None,
+        })
+    }
+}
+
+/// Constraint drift at one state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Residuals {
+    /// |Φ(q, t)|∞.
+    pub position: f64,
+    /// |Φq q̇ + Φt|∞.
+    pub velocity: f64,
+}
+
+/// Work memory for evaluating [`Residuals`] without allocating.
+#[derive(Debug, Clone)]
+pub struct ResidualWatch {
+    info: &'static MechanismInfo,
+    phi: Vec<f64>,
+    phi_q: Vec<f64>,
+    phi_t: Vec<f64>,
+    gamma: Vec<f64>,
+}
+
+impl ResidualWatch {
+    pub fn new(info: &'static MechanismInfo) -> Self {
+        let m = info.n_constraints;
+        ResidualWatch {
+            info,
+            phi: vec![0.0; m],
+            phi_q: vec![0.0; info.phi_q_nnz()],
+            phi_t: vec![0.0; m],
+            gamma: vec![0.0; m],
+        }
+    }
+
+    /// Position and velocity residuals of `mech` at `(q, q̇, t)`.
+    pub fn check<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+    ) -> Result<Residuals, Error> {
+        let info = self.info;
+        check_len("mechanism constraints", info.n_constraints, mech.info().n_constraints)?;
+        check_len("Φq nonzeros", info.phi_q_nnz(), mech.info().phi_q_nnz())?;
+        check_len("q", info.n_coords, q.len())?;
+        check_len("qd", info.n_coords, qd.len())?;
+        mech.eval_kinematics(
+            q,
+            qd,
+            t,
+            crate::mechanism::KinematicOutputs {
+                phi: &mut self.phi,
+                phi_q: &mut self.phi_q,
+                phi_t: &mut self.phi_t,
+                gamma: &mut self.gamma,
+            },
+        );
+        // Φt becomes Φq q̇ + Φt in place.
+        for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(&self.phi_q) {
+            self.phi_t[r as usize] += v * qd[c as usize];
+        }
+        Ok(Residuals {
+            position: inf_norm(&self.phi),
+            velocity: inf_norm(&self.phi_t),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::testmodels::Pendulum;
+
+    #[test]
+    fn euler_limits_name_the_body() {
+        let info = Pendulum::paper().info();
+        let lim = EulerLimits::default();
+        let mut q = info.q0.to_vec();
+        assert_eq!(lim.check(info, 1.0, &q), Ok(None));
+        q[4] = 81f64.to_radians();
+        let w = lim.check(info, 1.0, &q).unwrap().unwrap();
+        assert_eq!((w.name, w.time), ("bob", 1.0));
+        q[4] = -89f64.to_radians();
+        match lim.check(info, 2.5, &q) {
+            Err(e @ Error::EulerSingularity { time, body, .. }) => {
+                assert_eq!((time, body), (2.5, "bob"));
+                let msg = e.to_string();
+                assert!(msg.contains("bob") && msg.contains("2.5"), "{msg}");
+            }
+            other => panic!("{other:?}"),
+        }
+        q[4] = f64::NAN;
+        assert!(lim.check(info, 0.0, &q).is_err());
+    }
+
+    #[test]
+    fn residuals_see_drift() {
+        let mech = Pendulum::paper();
+        let mut w = ResidualWatch::new(mech.info());
+        let q = [0.0, -0.5, 0.0, 0.0, 0.0, 0.0];
+        let r = w.check(&mech, 0.0, &q, &[0.0; 6]).unwrap();
+        assert_eq!((r.position, r.velocity), (0.0, 0.0));
+        // Moving straight down breaks the rod at velocity level by exactly the speed.
+        let q2 = [0.0, -0.6, 0.0, 0.0, 0.0, 0.0];
+        let r = w.check(&mech, 0.0, &q2, &[0.0, -2.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+        assert!((r.position - 0.1).abs() < 1e-15 && (r.velocity - 2.0).abs() < 1e-15);
+    }
+}
