@@ -1,0 +1,491 @@
+//! Lowering of DAG outputs to straight-line Rust: outputs are grouped into chunks of a few
+//! hundred statements, each an `#[inline(never)]` function (DESIGN.md decision 5); nodes
+//! needed by more than one chunk are computed once into a stack array shared by all chunks.
+
+use crate::expr::{Arena, Id, Node, Var};
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::quote;
+
+/// Statements per chunk function: large enough that call overhead is negligible, small
+/// enough that rustc compiles each function quickly.
+pub const CHUNK_STATEMENTS: usize = 300;
+
+/// An input of the generated function.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Input {
+    Q,
+    Qd,
+    T,
+}
+
+/// One output slice of a generated function.
+pub struct Output<'a> {
+    /// Parameter name, e.g. `phi_q`.
+    pub name: &'a str,
+    pub values: &'a [Id],
+}
+
+/// A function to emit.
+pub struct Function<'a> {
+    pub name: &'a str,
+    pub doc: &'a str,
+    /// Inputs of the public signature, in order.
+    pub inputs: &'a [Input],
+    pub outputs: Vec<Output<'a>>,
+    pub n_coords: usize,
+}
+
+fn ident(s: &str) -> Ident {
+    Ident::new(s, Span::call_site())
+}
+
+/// An unsuffixed integer literal (`quote!` would write `3usize`).
+fn int(i: usize) -> Literal {
+    Literal::usize_unsuffixed(i)
+}
+
+fn node_ident(id: Id) -> Ident {
+    ident(&format!("x{}", id.0))
+}
+
+/// Where a node's value lives while a chunk runs.
+#[derive(Clone, Copy, PartialEq)]
+enum Place {
+    /// Not needed.
+    None,
+    /// A `let` in the chunk being emitted.
+    Local,
+    /// `s[k]` of the shared array.
+    Shared(usize),
+}
+
+struct Lowering<'a> {
+    arena: &'a Arena,
+    /// Which chunk last claimed each node, and how many chunks use it.
+    last_chunk: Vec<usize>,
+    users: Vec<u32>,
+    stamp: Vec<u32>,
+    epoch: u32,
+}
+
+impl<'a> Lowering<'a> {
+    fn new(arena: &'a Arena) -> Self {
+        let n = arena.len();
+        Lowering {
+            arena,
+            last_chunk: vec![usize::MAX; n],
+            users: vec![0; n],
+            stamp: vec![0; n],
+            epoch: 0,
+        }
+    }
+
+    /// The non-leaf nodes in the cone of `root`, ascending.
+    fn cone(&mut self, root: Id) -> Vec<u32> {
+        self.epoch += 1;
+        let mut out = Vec::new();
+        let mut stack = vec![root];
+        while let Some(id) = stack.pop() {
+            let i = id.index();
+            if self.stamp[i] == self.epoch {
+                continue;
+            }
+            self.stamp[i] = self.epoch;
+            let node = self.arena.node(id);
+            if matches!(node, Node::Const(_) | Node::Var(_)) {
+                continue;
+            }
+            out.push(id.0);
+            stack.extend(operands(self.arena, id));
+        }
+        out.sort_unstable();
+        out
+    }
+}
+
+fn leaf_tokens(arena: &Arena, id: Id, receiver: bool) -> Option<TokenStream> {
+    match arena.node(id) {
+        Node::Const(bits) => {
+            let v = f64::from_bits(bits);
+            let lit = if receiver {
+                Literal::f64_suffixed(v.abs())
+            } else {
+                Literal::f64_unsuffixed(v.abs())
+            };
+            // A negative receiver needs parentheses: `-1.0f64.sin()` is `-(1.0f64.sin())`.
+            Some(match (v < 0.0, receiver) {
+                (true, true) => quote!((-#lit)),
+                (true, false) => quote!(-#lit),
+                (false, _) => quote!(#lit),
+            })
+        }
+        Node::Var(Var::Q(i)) => {
+            let i = int(i as usize);
+            Some(quote!(q[#i]))
+        }
+        Node::Var(Var::Qd(i)) => {
+            let i = int(i as usize);
+            Some(quote!(qd[#i]))
+        }
+        Node::Var(Var::T) => Some(quote!(t)),
+        _ => None,
+    }
+}
+
+/// The nodes an emitted statement reads: like `Node::children`, except that `a + (−y)` is
+/// emitted as `a - y` and so reads `y`, not the negation.
+fn operands(arena: &Arena, id: Id) -> Vec<Id> {
+    let node = arena.node(id);
+    if let Node::Add(a, b) = node {
+        if let Node::Neg(y) = arena.node(b) {
+            return vec![a, y];
+        }
+        if let Node::Neg(x) = arena.node(a) {
+            return vec![b, x];
+        }
+    }
+    node.children().collect()
+}
+
+/// Tokens that read node `id` inside a chunk, given where each node lives.
+fn reference(arena: &Arena, places: &[Place], id: Id, receiver: bool) -> TokenStream {
+    if let Some(t) = leaf_tokens(arena, id, receiver) {
+        return t;
+    }
+    match places[id.index()] {
+        Place::Shared(k) => {
+            let k = int(k);
+            quote!(s[#k])
+        }
+        _ => {
+            let x = node_ident(id);
+            quote!(#x)
+        }
+    }
+}
+
+fn expression(arena: &Arena, places: &[Place], id: Id) -> TokenStream {
+    let r = |x: Id| reference(arena, places, x, false);
+    let recv = |x: Id| reference(arena, places, x, true);
+    match arena.node(id) {
+        Node::Add(a, b) => {
+            let neg_of = |x: Id| match arena.node(x) {
+                Node::Neg(y) => Some(y),
+                _ => None,
+            };
+            let neg_const = |x: Id| arena.as_const(x).filter(|c| *c < 0.0);
+            if let Some(y) = neg_of(b) {
+                let (a, y) = (r(a), r(y));
+                quote!(#a - #y)
+            } else if let Some(x) = neg_of(a) {
+                let (b, x) = (r(b), r(x));
+                quote!(#b - #x)
+            } else if let Some(c) = neg_const(b) {
+                let (a, c) = (r(a), Literal::f64_unsuffixed(-c));
+                quote!(#a - #c)
+            } else if let Some(c) = neg_const(a) {
+                let (b, c) = (r(b), Literal::f64_unsuffixed(-c));
+                quote!(#b - #c)
+            } else {
+                let (a, b) = (r(a), r(b));
+                quote!(#a + #b)
+            }
+        }
+        Node::Mul(a, b) => {
+            let (a, b) = (r(a), r(b));
+            quote!(#a * #b)
+        }
+        Node::Neg(a) => {
+            let a = r(a);
+            quote!(-#a)
+        }
+        Node::Recip(a) => {
+            let a = r(a);
+            quote!(1.0 / #a)
+        }
+        Node::Powi(a, 2) => {
+            let a = r(a);
+            quote!(#a * #a)
+        }
+        Node::Powi(a, n) => {
+            let a = recv(a);
+            quote!(#a.powi(#n))
+        }
+        Node::Atan2(y, x) => {
+            let (y, x) = (recv(y), r(x));
+            quote!(#y.atan2(#x))
+        }
+        Node::Call(f, a) => {
+            let a = recv(a);
+            let m = ident(f.name());
+            quote!(#a.#m())
+        }
+        Node::Const(_) | Node::Var(_) => unreachable!("leaves are inlined"),
+    }
+}
+
+fn uses_input(arena: &Arena, nodes: &[u32], direct: &[Id], input: Input) -> bool {
+    let is = |id: Id| {
+        matches!(
+            (arena.node(id), input),
+            (Node::Var(Var::Q(_)), Input::Q)
+                | (Node::Var(Var::Qd(_)), Input::Qd)
+                | (Node::Var(Var::T), Input::T)
+        )
+    };
+    nodes
+        .iter()
+        .flat_map(|&n| operands(arena, Id(n)))
+        .chain(direct.iter().copied())
+        .any(is)
+}
+
+fn input_param(input: Input, n: &Literal, used: bool, array: bool) -> TokenStream {
+    let name = match (input, used) {
+        (Input::Q, true) => "q",
+        (Input::Q, false) => "_q",
+        (Input::Qd, true) => "qd",
+        (Input::Qd, false) => "_qd",
+        (Input::T, true) => "t",
+        (Input::T, false) => "_t",
+    };
+    let name = ident(name);
+    match (input, array) {
+        (Input::T, _) => quote!(#name: f64),
+        (_, true) => quote!(#name: &[f64; #n]),
+        (_, false) => quote!(#name: &[f64]),
+    }
+}
+
+/// Emits the public function and its chunk helpers.
+pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
+    let mut low = Lowering::new(arena);
+    // Flatten outputs into (output index, slot, value).
+    let slots: Vec<(usize, usize, Id)> = f
+        .outputs
+        .iter()
+        .enumerate()
+        .flat_map(|(o, out)| out.values.iter().enumerate().map(move |(k, &v)| (o, k, v)))
+        .collect();
+
+    // Greedy chunking in output order.
+    let mut chunk_of_slot = Vec::with_capacity(slots.len());
+    let mut chunk = 0usize;
+    let mut size = 0usize;
+    let mut cones = Vec::with_capacity(slots.len());
+    for &(_, _, v) in &slots {
+        let cone = low.cone(v);
+        let new = cone
+            .iter()
+            .filter(|&&n| low.last_chunk[n as usize] != chunk)
+            .count();
+        if size > 0 && size + new > CHUNK_STATEMENTS {
+            chunk += 1;
+            size = 0;
+        }
+        for &n in &cone {
+            let n = n as usize;
+            if low.last_chunk[n] != chunk {
+                low.last_chunk[n] = chunk;
+                low.users[n] += 1;
+                size += 1;
+            }
+        }
+        chunk_of_slot.push(chunk);
+        cones.push(cone);
+    }
+    let n_chunks = if slots.is_empty() { 0 } else { chunk + 1 };
+
+    // Nodes used by two or more chunks are computed once, into `s`.
+    let shared: Vec<u32> = (0..arena.len() as u32)
+        .filter(|&n| low.users[n as usize] >= 2)
+        .collect();
+    let mut places = vec![Place::None; arena.len()];
+    for (k, &n) in shared.iter().enumerate() {
+        places[n as usize] = Place::Shared(k);
+    }
+    let ns = int(shared.len());
+    let n = int(f.n_coords);
+
+    let mut helpers = Vec::new();
+    let mut calls = Vec::new();
+    let name = f.name;
+
+    // Shared prologue, itself chunked; within a group, values are also kept as locals.
+    for (g, group) in shared.chunks(CHUNK_STATEMENTS).enumerate() {
+        let fname = ident(&format!("{name}_shared_{g}"));
+        let mut local_places = places.clone();
+        for &m in group {
+            local_places[m as usize] = Place::Local;
+        }
+        let stmts = group.iter().enumerate().map(|(i, &m)| {
+            let x = node_ident(Id(m));
+            let e = expression(arena, &local_places, Id(m));
+            let Place::Shared(k) = places[m as usize] else {
+                unreachable!()
+            };
+            let (_, k) = (i, int(k));
+            quote!(let #x = #e; s[#k] = #x;)
+        });
+        let stmts: Vec<TokenStream> = stmts.collect();
+        let used: Vec<bool> = [Input::Q, Input::Qd, Input::T]
+            .iter()
+            .map(|&inp| uses_input(arena, group, &[], inp))
+            .collect();
+        let params: Vec<TokenStream> = [Input::Q, Input::Qd, Input::T]
+            .iter()
+            .zip(&used)
+            .filter(|(inp, _)| f.inputs.contains(inp))
+            .map(|(&inp, &u)| input_param(inp, &n, u, true))
+            .collect();
+        let args: Vec<TokenStream> = [Input::Q, Input::Qd, Input::T]
+            .iter()
+            .filter(|inp| f.inputs.contains(inp))
+            .map(|inp| match inp {
+                Input::Q => quote!(q),
+                Input::Qd => quote!(qd),
+                Input::T => quote!(t),
+            })
+            .collect();
+        helpers.push(quote! {
+            #[inline(never)]
+            fn #fname(#(#params,)* s: &mut [f64; #ns]) {
+                #(#stmts)*
+            }
+        });
+        calls.push(quote!(#fname(#(#args,)* &mut s);));
+    }
+
+    // Output chunks.
+    for c in 0..n_chunks {
+        let members: Vec<usize> = (0..slots.len())
+            .filter(|&i| chunk_of_slot[i] == c)
+            .collect();
+        let mut locals: Vec<u32> = members
+            .iter()
+            .flat_map(|&i| cones[i].iter().copied())
+            .filter(|&m| places[m as usize] == Place::None)
+            .collect();
+        locals.sort_unstable();
+        locals.dedup();
+        let mut local_places = places.clone();
+        for &m in &locals {
+            local_places[m as usize] = Place::Local;
+        }
+        let stmts: Vec<TokenStream> = locals
+            .iter()
+            .map(|&m| {
+                let x = node_ident(Id(m));
+                let e = expression(arena, &local_places, Id(m));
+                quote!(let #x = #e;)
+            })
+            .collect();
+        let writes: Vec<TokenStream> = members
+            .iter()
+            .map(|&i| {
+                let (o, k, v) = slots[i];
+                let k = int(k);
+                let out = ident(f.outputs[o].name);
+                let val = reference(arena, &local_places, v, false);
+                quote!(#out[#k] = #val;)
+            })
+            .collect();
+        let direct: Vec<Id> = members.iter().map(|&i| slots[i].2).collect();
+        let uses_shared = locals
+            .iter()
+            .flat_map(|&m| operands(arena, Id(m)))
+            .chain(direct.iter().copied())
+            .any(|x| matches!(places[x.index()], Place::Shared(_)));
+        let outs_used: Vec<usize> = {
+            let mut o: Vec<usize> = members.iter().map(|&i| slots[i].0).collect();
+            o.dedup();
+            o
+        };
+        let fname = ident(&format!("{name}_part_{c}"));
+        let mut params: Vec<TokenStream> = Vec::new();
+        let mut args: Vec<TokenStream> = Vec::new();
+        for inp in [Input::Q, Input::Qd, Input::T] {
+            if f.inputs.contains(&inp) && uses_input(arena, &locals, &direct, inp) {
+                params.push(input_param(inp, &n, true, true));
+                args.push(match inp {
+                    Input::Q => quote!(q),
+                    Input::Qd => quote!(qd),
+                    Input::T => quote!(t),
+                });
+            }
+        }
+        if uses_shared {
+            params.push(quote!(s: &[f64; #ns]));
+            args.push(quote!(&s));
+        }
+        for &o in &outs_used {
+            let out = ident(f.outputs[o].name);
+            let len = int(f.outputs[o].values.len());
+            params.push(quote!(#out: &mut [f64; #len]));
+            args.push(quote!(#out));
+        }
+        helpers.push(quote! {
+            #[inline(never)]
+            fn #fname(#(#params),*) {
+                #(#stmts)*
+                #(#writes)*
+            }
+        });
+        calls.push(quote!(#fname(#(#args),*);));
+    }
+
+    // Public entry point: slices in, fixed-size arrays inside.
+    let pub_name = ident(name);
+    let doc = f.doc;
+    let mut params = Vec::new();
+    let mut conversions = Vec::new();
+    for inp in f.inputs {
+        params.push(input_param(*inp, &n, true, false));
+        match inp {
+            Input::Q => conversions.push(quote! {
+                let q: &[f64; #n] = q.try_into().expect("q must have n_coords entries");
+            }),
+            Input::Qd => conversions.push(quote! {
+                let qd: &[f64; #n] = qd.try_into().expect("qd must have n_coords entries");
+            }),
+            Input::T => {}
+        }
+    }
+    for out in &f.outputs {
+        let o = ident(out.name);
+        let msg = format!("{} must have {} entries", out.name, out.values.len());
+        let len = int(out.values.len());
+        params.push(quote!(#o: &mut [f64]));
+        conversions.push(quote! {
+            let #o: &mut [f64; #len] = #o.try_into().expect(#msg);
+        });
+    }
+    // Inputs no chunk reads are still part of the contract; mark them used.
+    let all_nodes: Vec<u32> = cones.iter().flatten().copied().collect();
+    let all_direct: Vec<Id> = slots.iter().map(|s| s.2).collect();
+    let touch: Vec<TokenStream> = f
+        .inputs
+        .iter()
+        .filter(|&&inp| !uses_input(arena, &all_nodes, &all_direct, inp))
+        .map(|inp| match inp {
+            Input::Q => quote!(let _ = q;),
+            Input::Qd => quote!(let _ = qd;),
+            Input::T => quote!(let _ = t;),
+        })
+        .collect();
+    let shared_decl = if !shared.is_empty() {
+        quote!(let mut s = [0.0f64; #ns];)
+    } else {
+        quote!()
+    };
+    quote! {
+        #[doc = #doc]
+        pub fn #pub_name(#(#params),*) {
+            #(#conversions)*
+            #(#touch)*
+            #shared_decl
+            #(#calls)*
+        }
+        #(#helpers)*
+    }
+}

@@ -1,0 +1,400 @@
+//! Assembles one generated Rust module per mechanism: header, constant patterns and names,
+//! the emitted functions, and the `Mechanism` implementations (one per formulation).
+
+use crate::emit::{self, Function, Input, Output};
+use crate::equations::{Entry, System};
+use crate::expr::Id;
+use crate::model::{Formulation, JointKind, Model};
+use proc_macro2::{Ident, Span, TokenStream};
+use quote::quote;
+
+fn ident(s: &str) -> Ident {
+    Ident::new(s, Span::call_site())
+}
+
+fn values(entries: &[Entry]) -> Vec<Id> {
+    entries.iter().map(|e| e.2).collect()
+}
+
+fn pattern(entries: &[Entry]) -> (Vec<u32>, Vec<u32>) {
+    entries.iter().map(|e| (e.0, e.1)).unzip()
+}
+
+/// The header comment: provenance, regeneration command, coordinate and row order.
+fn header(model: &Model, sys: &System, source: &str) -> String {
+    let mut h = String::new();
+    let mut line = |s: &str| {
+        h.push_str("//!");
+        if !s.is_empty() {
+            h.push(' ');
+        }
+        h.push_str(s);
+        h.push('\n');
+    };
+    line(&format!(
+        "Generated equations of `{}` ({}). Do not edit.",
+        model.name, model.description
+    ));
+    line("");
+    line(&format!(
+        "Regenerate with `cargo xtask generate {}` from `{source}`.",
+        model.name
+    ));
+    line("");
+    line(&format!(
+        "{} coordinates, {} constraints, {} structural nonzeros in Φq.",
+        sys.n_coords,
+        sys.n_constraints,
+        sys.phi_q.len()
+    ));
+    line("Each body owns six coordinates `[X, Y, Z, θ, β, γ]` (centre of mass, then the");
+    line("angles of A = Rz(γ)·Ry(β)·Rx(θ)). Equations of motion: `M q̈ + Φqᵀλ = Q`, `Φq q̈ = γ`.");
+    line("Sparse outputs hold the pattern's nonzeros in order (row-major, columns ascending).");
+    line("");
+    line("Coordinates:");
+    for (b, body) in model.bodies.iter().enumerate() {
+        line(&format!("- `{}..{}` {}", 6 * b, 6 * b + 6, body.name));
+    }
+    line("");
+    line("Constraint rows:");
+    let body_name =
+        |b: Option<usize>| b.map_or("ground".to_string(), |i| model.bodies[i].name.clone());
+    for (k, j) in model.joints.iter().enumerate() {
+        let start = sys.joint_rows[k];
+        let (b1, b2) = j.bodies();
+        let (kind, form) = match j.kind {
+            JointKind::Spherical { .. } => ("spherical", "point on body1 − point on body2"),
+            JointKind::Prismatic { .. } => (
+                "prismatic",
+                "θ, β, γ of body2 − body1, then two no-slide rows",
+            ),
+        };
+        line(&format!(
+            "- `{}..{}` {} ({kind}, {} – {}): {form}",
+            start,
+            start + j.rows(),
+            j.name,
+            body_name(b1),
+            body_name(b2)
+        ));
+    }
+    for (k, d) in model.drivers.iter().enumerate() {
+        let row = sys.joint_rows[model.joints.len() + k];
+        line(&format!(
+            "- `{row}` {} (driver on {}): axis·(r2 − r1) − ({}), initial = {:.9} m",
+            d.name, model.joints[d.joint].name, d.source, d.initial
+        ));
+    }
+    h
+}
+
+/// Generates the module source for `model`, read from `source` (a path shown in the header).
+pub fn module(model: &Model, sys: &System, source: &str) -> String {
+    let n = sys.n_coords;
+    let m = sys.n_constraints;
+    let phi_q_vals = values(&sys.phi_q);
+    let (pq_rows, pq_cols) = pattern(&sys.phi_q);
+    let nnz = pq_rows.len();
+    let mut items: Vec<TokenStream> = Vec::new();
+
+    let f = |name: &'static str,
+             doc: &'static str,
+             inputs: &'static [Input],
+             outputs: Vec<Output<'_>>| {
+        emit::function(
+            &sys.arena,
+            &Function {
+                name,
+                doc,
+                inputs,
+                outputs,
+                n_coords: n,
+            },
+        )
+    };
+    const QT: &[Input] = &[Input::Q, Input::T];
+    const QQDT: &[Input] = &[Input::Q, Input::Qd, Input::T];
+    const Q: &[Input] = &[Input::Q];
+    items.push(f(
+        "phi",
+        " Constraint residual Φ(q, t).",
+        QT,
+        vec![Output {
+            name: "out",
+            values: &sys.phi,
+        }],
+    ));
+    items.push(f(
+        "phi_q",
+        " Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.",
+        QT,
+        vec![Output {
+            name: "out",
+            values: &phi_q_vals,
+        }],
+    ));
+    items.push(f(
+        "phi_t",
+        " Partial time derivative Φt(q, t).",
+        QT,
+        vec![Output {
+            name: "out",
+            values: &sys.phi_t,
+        }],
+    ));
+    items.push(f(
+        "gamma",
+        " Acceleration right-hand side γ(q, q̇, t) = −D²Φ[(q̇,1),(q̇,1)].",
+        QQDT,
+        vec![Output {
+            name: "out",
+            values: &sys.gamma,
+        }],
+    ));
+    items.push(f(
+        "eval_kinematics",
+        " Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.",
+        QQDT,
+        vec![
+            Output {
+                name: "phi",
+                values: &sys.phi,
+            },
+            Output {
+                name: "phi_q",
+                values: &phi_q_vals,
+            },
+            Output {
+                name: "phi_t",
+                values: &sys.phi_t,
+            },
+            Output {
+                name: "gamma",
+                values: &sys.gamma,
+            },
+        ],
+    ));
+    let pot = [sys.potential];
+    items.push(f(
+        "potential_into",
+        " Potential energy of gravity, written to `out[0]`.",
+        Q,
+        vec![Output {
+            name: "out",
+            values: &pot,
+        }],
+    ));
+
+    let gx = model.gravity;
+    let body_infos: Vec<TokenStream> = model
+        .bodies
+        .iter()
+        .enumerate()
+        .map(|(b, body)| {
+            let name = &body.name;
+            let off = 6 * b;
+            let mass = body.mass;
+            let [ix, iy, iz] = body.inertia;
+            quote!(BodyInfo { name: #name, coord_offset: #off, mass: #mass, inertia: [#ix, #iy, #iz] })
+        })
+        .collect();
+    let opt = |b: Option<usize>| match b {
+        Some(i) => quote!(Some(#i)),
+        None => quote!(None),
+    };
+    let mut joint_infos: Vec<TokenStream> = model
+        .joints
+        .iter()
+        .enumerate()
+        .map(|(k, j)| {
+            let name = &j.name;
+            let (b1, b2) = j.bodies();
+            let (b1, b2) = (opt(b1), opt(b2));
+            let start = sys.joint_rows[k];
+            let rows = j.rows();
+            let kind = match j.kind {
+                JointKind::Spherical { .. } => quote!(JointKind::Spherical),
+                JointKind::Prismatic { .. } => quote!(JointKind::Prismatic),
+            };
+            quote!(JointInfo { name: #name, kind: #kind, body1: #b1, body2: #b2, row_start: #start, rows: #rows })
+        })
+        .collect();
+    for (k, d) in model.drivers.iter().enumerate() {
+        let name = &d.name;
+        let (b1, b2) = model.joints[d.joint].bodies();
+        let (b1, b2) = (opt(b1), opt(b2));
+        let start = sys.joint_rows[model.joints.len() + k];
+        joint_infos.push(quote!(JointInfo { name: #name, kind: JointKind::Driver, body1: #b1, body2: #b2, row_start: #start, rows: 1usize }));
+    }
+    let nb = model.bodies.len();
+    let nj = joint_infos.len();
+    let coord_names = &sys.coord_names;
+    let row_names = &sys.row_names;
+    let q0 = model.q0();
+    let mech_name = &model.name;
+    items.push(quote! {
+        /// Number of generalized coordinates.
+        pub const N_COORDS: usize = #n;
+        /// Number of constraint rows.
+        pub const N_CONSTRAINTS: usize = #m;
+        /// Row of each Φq nonzero.
+        pub static PHI_Q_ROWS: [u32; #nnz] = [#(#pq_rows),*];
+        /// Column of each Φq nonzero.
+        pub static PHI_Q_COLS: [u32; #nnz] = [#(#pq_cols),*];
+        /// Bodies in coordinate order.
+        pub static BODIES: [BodyInfo; #nb] = [#(#body_infos),*];
+        /// Joints in row order, then drivers.
+        pub static JOINTS: [JointInfo; #nj] = [#(#joint_infos),*];
+        /// Name of each coordinate.
+        pub static COORD_NAMES: [&str; #n] = [#(#coord_names),*];
+        /// Name of each constraint row.
+        pub static ROW_NAMES: [&str; #m] = [#(#row_names),*];
+        /// Initial coordinates from the mechanism file.
+        pub static Q0: [f64; #n] = [#(#q0),*];
+        /// Potential energy of gravity.
+        pub fn potential(q: &[f64]) -> f64 {
+            let mut out = [0.0];
+            potential_into(q, &mut out);
+            out[0]
+        }
+    });
+
+    let mut impls = Vec::new();
+    for dynamics in &sys.dynamics {
+        let modname = ident(dynamics.formulation.name());
+        let type_name = ident(match dynamics.formulation {
+            Formulation::Paper => "Paper",
+            Formulation::Exact => "Exact",
+        });
+        let form = match dynamics.formulation {
+            Formulation::Paper => quote!(Formulation::Paper),
+            Formulation::Exact => quote!(Formulation::Exact),
+        };
+        let mass_vals = values(&dynamics.mass);
+        let (m_rows, m_cols) = pattern(&dynamics.mass);
+        let mnnz = m_rows.len();
+        let constant = dynamics.mass_is_constant;
+        let fns = vec![
+            f(
+                "mass",
+                " Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.",
+                Q,
+                vec![Output {
+                    name: "out",
+                    values: &mass_vals,
+                }],
+            ),
+            f(
+                "force",
+                " Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.",
+                QQDT,
+                vec![Output {
+                    name: "out",
+                    values: &dynamics.force,
+                }],
+            ),
+            f(
+                "eval_newton",
+                " Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.",
+                QQDT,
+                vec![
+                    Output {
+                        name: "phi",
+                        values: &sys.phi,
+                    },
+                    Output {
+                        name: "phi_q",
+                        values: &phi_q_vals,
+                    },
+                    Output {
+                        name: "mass",
+                        values: &mass_vals,
+                    },
+                    Output {
+                        name: "force",
+                        values: &dynamics.force,
+                    },
+                ],
+            ),
+        ];
+        let doc = format!(
+            " The `{}` formulation: mass matrix and forces{}.",
+            dynamics.formulation.name(),
+            match dynamics.formulation {
+                Formulation::Paper => " of the paper (diagonal, Euler-angle accelerations)",
+                Formulation::Exact => " derived from the exact kinetic energy",
+            }
+        );
+        let type_doc = format!(
+            " `{}` with the `{}` formulation.",
+            model.name,
+            dynamics.formulation.name()
+        );
+        items.push(quote! {
+            #[doc = #doc]
+            pub mod #modname {
+                use super::*;
+                /// Row of each mass-matrix nonzero (both triangles).
+                pub static MASS_ROWS: [u32; #mnnz] = [#(#m_rows),*];
+                /// Column of each mass-matrix nonzero.
+                pub static MASS_COLS: [u32; #mnnz] = [#(#m_cols),*];
+                /// Sizes, patterns and names for this formulation.
+                pub static INFO: MechanismInfo = MechanismInfo {
+                    name: #mech_name,
+                    n_coords: N_COORDS,
+                    n_constraints: N_CONSTRAINTS,
+                    formulation: #form,
+                    gravity: [#(#gx),*],
+                    phi_q_rows: &PHI_Q_ROWS,
+                    phi_q_cols: &PHI_Q_COLS,
+                    mass_rows: &MASS_ROWS,
+                    mass_cols: &MASS_COLS,
+                    mass_is_constant: #constant,
+                    bodies: &BODIES,
+                    joints: &JOINTS,
+                    coord_names: &COORD_NAMES,
+                    row_names: &ROW_NAMES,
+                    q0: &Q0,
+                };
+                #(#fns)*
+            }
+        });
+        impls.push(quote! {
+            #[doc = #type_doc]
+            #[derive(Debug, Clone, Copy, Default)]
+            pub struct #type_name;
+            impl Mechanism for #type_name {
+                fn info(&self) -> &'static MechanismInfo { &#modname::INFO }
+                fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) { phi(q, t, out) }
+                fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_q(q, t, out) }
+                fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_t(q, t, out) }
+                fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { gamma(q, qd, t, out) }
+                fn mass(&self, q: &[f64], out: &mut [f64]) { #modname::mass(q, out) }
+                fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { #modname::force(q, qd, t, out) }
+                fn potential(&self, q: &[f64]) -> f64 { potential(q) }
+                fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+                    #modname::eval_newton(q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+                }
+                fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
+                    eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+                }
+            }
+        });
+    }
+    let default_type = ident(match model.formulations[0] {
+        Formulation::Paper => "Paper",
+        Formulation::Exact => "Exact",
+    });
+
+    let file = quote! {
+        #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]
+        use symbody_runtime::{BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs};
+        #(#items)*
+        #(#impls)*
+        /// The formulation listed first in the mechanism file.
+        pub type DefaultFormulation = #default_type;
+    };
+    let syntax: syn::File = syn::parse2(file).expect("generated tokens form a valid Rust file");
+    let body = prettyplease::unparse(&syntax);
+    format!("{}{}", header(model, sys, source), body)
+}
