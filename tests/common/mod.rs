@@ -1,0 +1,66 @@
+//! Helpers shared by the integration tests: a reproducible random generator and small
+//! dense-matrix utilities over the generated sparse outputs.
+#![allow(dead_code)]
+
+use nalgebra::DMatrix;
+use symbody_runtime::MechanismInfo;
+
+/// splitmix64: deterministic, so a failing configuration reproduces.
+pub struct Rng(pub u64);
+
+impl Rng {
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// Dense Φq from its nonzeros.
+pub fn dense_phi_q(info: &MechanismInfo, nnz: &[f64]) -> DMatrix<f64> {
+    let mut m = DMatrix::zeros(info.n_constraints, info.n_coords);
+    for (k, v) in nnz.iter().enumerate() {
+        m[(info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize)] = *v;
+    }
+    m
+}
+
+/// Dense mass matrix from its nonzeros.
+pub fn dense_mass(info: &MechanismInfo, nnz: &[f64]) -> DMatrix<f64> {
+    let n = info.n_coords;
+    let mut m = DMatrix::zeros(n, n);
+    for (k, v) in nnz.iter().enumerate() {
+        m[(info.mass_rows[k] as usize, info.mass_cols[k] as usize)] = *v;
+    }
+    m
+}
+
+/// A random configuration near q0: positions within ±5 cm, angles within ±0.5 rad, but
+/// every β kept inside ±1.3 rad (away from the Euler singularity).
+pub fn random_state(rng: &mut Rng, q0: &[f64]) -> (Vec<f64>, Vec<f64>, f64) {
+    let q: Vec<f64> = q0
+        .iter()
+        .enumerate()
+        .map(|(i, &x)| {
+            let k = i % 6;
+            let v = if k < 3 {
+                x + rng.uniform(-0.05, 0.05)
+            } else {
+                x + rng.uniform(-0.5, 0.5)
+            };
+            if k == 4 {
+                v.clamp(-1.3, 1.3)
+            } else {
+                v
+            }
+        })
+        .collect();
+    let qd: Vec<f64> = (0..q0.len()).map(|_| rng.uniform(-1.0, 1.0)).collect();
+    let t = rng.uniform(0.0, 7.0);
+    (q, qd, t)
+}
