@@ -29,7 +29,11 @@ impl ConstraintRow {
 
 impl fmt::Display for ConstraintRow {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "row {} `{}` (joint `{}`)", self.row, self.name, self.joint)
+        write!(
+            f,
+            "row {} `{}` (joint `{}`)",
+            self.row, self.name, self.joint
+        )
     }
 }
 
@@ -54,10 +58,7 @@ pub enum Error {
         residual: f64,
     },
     /// The constraint Jacobian lost rank: these rows are (numerically) dependent on others.
-    SingularJacobian {
-        time: f64,
-        rows: Vec<ConstraintRow>,
-    },
+    SingularJacobian { time: f64, rows: Vec<ConstraintRow> },
     /// The mass matrix is not positive definite in the block holding this coordinate.
     MassNotPositiveDefinite {
         time: f64,

@@ -371,7 +371,10 @@ mod tests {
             let yd = c * cd / y;
             let ydd = (cd * cd - yd * yd) / y;
             // Newton stops at |Φ|∞ ≤ 1e-11, which bounds the position error by ~1e-11·c/Y.
-            assert!((q[1] - y).abs() < 1e-10 && (q[0] - CIRCLE_D).abs() < 1e-10, "{q:?}");
+            assert!(
+                (q[1] - y).abs() < 1e-10 && (q[0] - CIRCLE_D).abs() < 1e-10,
+                "{q:?}"
+            );
             assert!(q[2..].iter().all(|v| v.abs() < 1e-10));
             assert!((qd[1] - yd).abs() < 1e-10 && qd[0].abs() < 1e-10);
             assert!((qdd[1] - ydd).abs() < 1e-10 && qdd[0].abs() < 1e-10);
@@ -389,9 +392,7 @@ mod tests {
         let mut kin = Kinematics::<DenseKkt>::new(mech.info()).unwrap();
         let mut q = mech.info().q0.to_vec();
         match kin.position(&mech, 3.0, &mut q) {
-            Err(Error::NewtonFailed {
-                time, residual, ..
-            }) => {
+            Err(Error::NewtonFailed { time, residual, .. }) => {
                 assert_eq!(time, 3.0);
                 assert!(residual > 1e-3);
             }

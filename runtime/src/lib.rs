@@ -2,6 +2,7 @@
 //! (kinematic analysis, HHT-α for index-3 DAEs, reaction forces) that work on any of them.
 
 pub mod error;
+pub mod hht;
 pub mod kinematics;
 pub mod kkt;
 pub mod mechanism;
@@ -10,8 +11,12 @@ pub mod testmodels;
 pub mod watch;
 
 pub use error::{ConstraintRow, Error};
+pub use hht::{HhtBuilder, Integrator, Stats, StepReport};
+pub use kinematics::{InitialVelocity, KinematicSettings, Kinematics, PositionReport};
 pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, SchurKkt};
 pub use mechanism::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo,
     NewtonOutputs,
 };
+pub use reactions::{actuator_force, joint_force};
+pub use watch::{EulerLimits, EulerWarning, ResidualWatch, Residuals};

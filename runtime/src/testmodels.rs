@@ -70,7 +70,14 @@ pub const PENDULUM_LENGTH: f64 = 0.5;
 
 const PENDULUM_PHIQ_ROWS: [u32; 11] = [0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2];
 const PENDULUM_PHIQ_COLS: [u32; 11] = [0, 3, 4, 5, 1, 3, 4, 5, 2, 3, 4];
-const COORD_NAMES: [&str; 6] = ["bob.x", "bob.y", "bob.z", "bob.theta", "bob.beta", "bob.gamma"];
+const COORD_NAMES: [&str; 6] = [
+    "bob.x",
+    "bob.y",
+    "bob.z",
+    "bob.theta",
+    "bob.beta",
+    "bob.gamma",
+];
 const PENDULUM_BODIES: [BodyInfo; 1] = [BodyInfo {
     name: "bob",
     coord_offset: 0,
@@ -447,7 +454,11 @@ mod tests {
             let (fp, fm) = (phi_at(&qp, t), phi_at(&qm, t));
             for i in 0..m {
                 let fd = (fp[i] - fm[i]) / (2.0 * h);
-                assert!((fd - jac[i][j]).abs() < 1e-8, "Φq[{i}][{j}] {} vs {fd}", jac[i][j]);
+                assert!(
+                    (fd - jac[i][j]).abs() < 1e-8,
+                    "Φq[{i}][{j}] {} vs {fd}",
+                    jac[i][j]
+                );
             }
         }
         let mut pt = vec![0.0; m];
@@ -542,7 +553,12 @@ mod tests {
                 (t_of(&qs, &vp) - t_of(&qs, &vm)) / (2.0 * h)
             };
             let ddt = (p_at(h) - p_at(-h)) / (2.0 * h);
-            assert!((qv[k] - (dtdq - ddt)).abs() < 1e-5, "Q_v[{k}] {} vs {}", qv[k], dtdq - ddt);
+            assert!(
+                (qv[k] - (dtdq - ddt)).abs() < 1e-5,
+                "Q_v[{k}] {} vs {}",
+                qv[k],
+                dtdq - ddt
+            );
         }
     }
 }

@@ -130,7 +130,11 @@ impl ResidualWatch {
         qd: &[f64],
     ) -> Result<Residuals, Error> {
         let info = self.info;
-        check_len("mechanism constraints", info.n_constraints, mech.info().n_constraints)?;
+        check_len(
+            "mechanism constraints",
+            info.n_constraints,
+            mech.info().n_constraints,
+        )?;
         check_len("Φq nonzeros", info.phi_q_nnz(), mech.info().phi_q_nnz())?;
         check_len("q", info.n_coords, q.len())?;
         check_len("qd", info.n_coords, qd.len())?;
@@ -192,7 +196,9 @@ mod tests {
         assert_eq!((r.position, r.velocity), (0.0, 0.0));
         // Moving straight down breaks the rod at velocity level by exactly the speed.
         let q2 = [0.0, -0.6, 0.0, 0.0, 0.0, 0.0];
-        let r = w.check(&mech, 0.0, &q2, &[0.0, -2.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+        let r = w
+            .check(&mech, 0.0, &q2, &[0.0, -2.0, 0.0, 0.0, 0.0, 0.0])
+            .unwrap();
         assert!((r.position - 0.1).abs() < 1e-15 && (r.velocity - 2.0).abs() < 1e-15);
     }
 }

@@ -68,10 +68,7 @@ impl KktPattern {
         }
         for (&r, &c) in self.phi_q_rows.iter().zip(&self.phi_q_cols) {
             if r as usize >= self.m || c as usize >= self.n {
-                return bad(format!(
-                    "Φq entry ({r}, {c}) outside {}×{}",
-                    self.m, self.n
-                ));
+                return bad(format!("Φq entry ({r}, {c}) outside {}×{}", self.m, self.n));
             }
         }
         Ok(())

@@ -131,8 +131,14 @@ fn dense_and_schur_agree_and_solve_the_system() {
         let g: Vec<f64> = (0..p.pattern.m).map(|_| rng.uniform()).collect();
         let (xd, yd) = solve_with::<DenseKkt>(&p, c, &f, &g);
         let (xs, ys) = solve_with::<SchurKkt>(&p, c, &f, &g);
-        assert!(relative_residual(&p, c, &xd, &yd, &f, &g) < 1e-12, "dense, trial {trial}");
-        assert!(relative_residual(&p, c, &xs, &ys, &f, &g) < 1e-12, "schur, trial {trial}");
+        assert!(
+            relative_residual(&p, c, &xd, &yd, &f, &g) < 1e-12,
+            "dense, trial {trial}"
+        );
+        assert!(
+            relative_residual(&p, c, &xs, &ys, &f, &g) < 1e-12,
+            "schur, trial {trial}"
+        );
         let scale = xd.iter().chain(&yd).fold(1e-300f64, |a, b| a.max(b.abs()));
         for (a, b) in xd.iter().chain(&yd).zip(xs.iter().chain(&ys)) {
             assert!((a - b).abs() <= 1e-8 * scale, "trial {trial}: {a} vs {b}");

@@ -1,0 +1,755 @@
+//! HHT-α for index-3 DAEs, as Negrut, Rampalli, Ottarsson and Sajdak (2007) and Project
+//! Chrono's `ChTimestepperHHT` formulate it (DESIGN decision 8).
+//!
+//! Per step `tₙ → tₙ₊₁ = tₙ + h` the unknowns are `q̈ₙ₊₁` and `λₙ₊₁`; positions and
+//! velocities follow from the Newmark formulas
+//! ```text
+//! qₙ₊₁ = qₙ + h q̇ₙ + h²/2 [(1 − 2β) q̈ₙ + 2β q̈ₙ₊₁],   q̇ₙ₊₁ = q̇ₙ + h [(1 − γ) q̈ₙ + γ q̈ₙ₊₁],
+//! ```
+//! with `β = (1 − α)²/4`, `γ = 1/2 − α`, and the equations
+//! ```text
+//! (1/(1+α)) (M q̈)ₙ₊₁ + (Φqᵀλ − Q)ₙ₊₁ − (α/(1+α)) (Φqᵀλ − Q)ₙ = 0,    Φ(qₙ₊₁)/(βh²) = 0
+//! ```
+//! are solved by Newton on the increments of `q̈` and `λ` with the iteration matrix
+//! `[M/(1+α) Φqᵀ; Φq 0]`. Scaling the constraint rows by `1/(βh²)` makes that matrix
+//! independent of `h`, so its conditioning does not degrade with small steps, and one
+//! factorization serves any step size.
+//!
+//! Newton policy (modified Newton): the matrix is factored at the first iteration of each
+//! step (or kept across steps when [`HhtBuilder::reuse_factorization`] is on) and refactored
+//! whenever an iteration reduces the weighted increment by less than half. The stiffness
+//! terms `∂(Φqᵀλ − Q)/∂q` are left out of the matrix: they are `O(βh²)` relative to `M`, so
+//! they only slow the (still fast) convergence, never change the converged answer, which is
+//! always that of the full residual.
+//!
+//! A step is accepted only when the last weighted increment is at most 1 **and** the
+//! unscaled `|Φ|∞` evaluated at the accepted positions is below its tolerance. On failure the
+//! step is retried with a fresh factorization at every iteration, then halved; below the
+//! minimum step the integrator returns an error and keeps the last accepted state.
+
+use crate::error::{check_len, Error};
+use crate::kinematics::{inf_norm, mass_times, InitialVelocity, KinematicSettings, Kinematics};
+use crate::kkt::{KktError, KktPattern, KktSolver, SchurKkt};
+use crate::mechanism::{Mechanism, MechanismInfo, NewtonOutputs};
+use crate::reactions;
+use crate::watch::{EulerLimits, EulerWarning};
+
+/// Settings of the HHT-α integrator; every field has a documented default.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HhtBuilder {
+    alpha: f64,
+    step: f64,
+    min_step: f64,
+    max_iterations: usize,
+    rel_tol: f64,
+    abs_tol_acc: f64,
+    abs_tol_lambda: f64,
+    phi_tol: f64,
+    reuse_factorization: bool,
+    t0: f64,
+    q0: Option<Vec<f64>>,
+    qd0: Option<Vec<f64>>,
+    kinematics: KinematicSettings,
+    euler: EulerLimits,
+}
+
+impl Default for HhtBuilder {
+    fn default() -> Self {
+        HhtBuilder {
+            alpha: -0.05,
+            step: 1e-3,
+            min_step: 1e-7,
+            max_iterations: 8,
+            rel_tol: 1e-6,
+            abs_tol_acc: 1e-6,
+            abs_tol_lambda: 1e-6,
+            phi_tol: 1e-10,
+            reuse_factorization: false,
+            t0: 0.0,
+            q0: None,
+            qd0: None,
+            kinematics: KinematicSettings::default(),
+            euler: EulerLimits::default(),
+        }
+    }
+}
+
+impl HhtBuilder {
+    /// Default settings; see each setter for its default.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Numerical damping α ∈ [−1/3, 0] (default −0.05: damps only components near the
+    /// step's Nyquist frequency; the mechanism's own motion keeps second-order accuracy).
+    /// α = 0 is the trapezoidal rule and conserves energy for linear problems.
+    pub fn alpha(mut self, alpha: f64) -> Self {
+        self.alpha = alpha;
+        self
+    }
+
+    /// Nominal step (default 1e-3 s). Steps are halved on Newton failure and grow back.
+    pub fn step(mut self, h: f64) -> Self {
+        self.step = h;
+        self
+    }
+
+    /// Smallest step before giving up with [`Error::StepSizeTooSmall`] (default 1e-7 s).
+    pub fn min_step(mut self, h: f64) -> Self {
+        self.min_step = h;
+        self
+    }
+
+    /// Newton iterations allowed per attempt (default 8; a healthy step needs 2).
+    pub fn max_iterations(mut self, n: usize) -> Self {
+        self.max_iterations = n;
+        self
+    }
+
+    /// Relative tolerance on the increments of `q̈` and `λ` (default 1e-6).
+    pub fn rel_tol(mut self, tol: f64) -> Self {
+        self.rel_tol = tol;
+        self
+    }
+
+    /// Absolute tolerance on acceleration increments (default 1e-6, m/s² or rad/s²).
+    pub fn abs_tol_acceleration(mut self, tol: f64) -> Self {
+        self.abs_tol_acc = tol;
+        self
+    }
+
+    /// Absolute tolerance on multiplier increments (default 1e-6, N or N·m).
+    pub fn abs_tol_lambda(mut self, tol: f64) -> Self {
+        self.abs_tol_lambda = tol;
+        self
+    }
+
+    /// Tolerance on the unscaled constraint residual |Φ|∞ of an accepted step
+    /// (default 1e-10, metres or radians).
+    pub fn constraint_tol(mut self, tol: f64) -> Self {
+        self.phi_tol = tol;
+        self
+    }
+
+    /// Keep one factorization across steps while convergence stays fast (default off:
+    /// factor once per step). The matrix does not depend on `h`, only on `q`.
+    pub fn reuse_factorization(mut self, reuse: bool) -> Self {
+        self.reuse_factorization = reuse;
+        self
+    }
+
+    /// Initial time (default 0).
+    pub fn t0(mut self, t0: f64) -> Self {
+        self.t0 = t0;
+        self
+    }
+
+    /// Initial positions (default: the mechanism's `info.q0`); made consistent by Newton.
+    pub fn q0(mut self, q0: &[f64]) -> Self {
+        self.q0 = Some(q0.to_vec());
+        self
+    }
+
+    /// Initial velocities, projected onto the consistent ones in the kinetic-energy norm.
+    /// Default: the consistent velocity of least kinetic energy.
+    pub fn qd0(mut self, qd0: &[f64]) -> Self {
+        self.qd0 = Some(qd0.to_vec());
+        self
+    }
+
+    /// Settings of the position analysis of the consistent start.
+    pub fn kinematic_settings(mut self, s: KinematicSettings) -> Self {
+        self.kinematics = s;
+        self
+    }
+
+    /// Euler-singularity thresholds (default [`EulerLimits::default`]).
+    pub fn euler_limits(mut self, limits: EulerLimits) -> Self {
+        self.euler = limits;
+        self
+    }
+
+    fn validate(&self) -> Result<(), Error> {
+        let bad = |name, value, reason| {
+            Err(Error::InvalidSetting {
+                name,
+                value,
+                reason,
+            })
+        };
+        if !(-1.0 / 3.0 - 1e-15..=0.0).contains(&self.alpha) {
+            return bad("alpha", self.alpha, "must lie in [-1/3, 0]");
+        }
+        if !(self.step > 0.0 && self.step.is_finite()) {
+            return bad("step", self.step, "must be positive and finite");
+        }
+        if !(self.min_step > 0.0 && self.min_step <= self.step) {
+            return bad(
+                "min_step",
+                self.min_step,
+                "must be positive and at most step",
+            );
+        }
+        if self.max_iterations < 1 {
+            return bad("max_iterations", 0.0, "must be at least 1");
+        }
+        for (name, v) in [
+            ("rel_tol", self.rel_tol),
+            ("abs_tol_acceleration", self.abs_tol_acc),
+            ("abs_tol_lambda", self.abs_tol_lambda),
+        ] {
+            if !(v >= 0.0 && v.is_finite()) {
+                return bad(name, v, "must be non-negative and finite");
+            }
+        }
+        if !(self.abs_tol_acc > 0.0 || self.rel_tol > 0.0) {
+            return bad("abs_tol_acceleration", 0.0, "tolerances cannot all be zero");
+        }
+        if !(self.abs_tol_lambda > 0.0 || self.rel_tol > 0.0) {
+            return bad("abs_tol_lambda", 0.0, "tolerances cannot all be zero");
+        }
+        if !(self.phi_tol > 0.0 && self.phi_tol.is_finite()) {
+            return bad(
+                "constraint_tol",
+                self.phi_tol,
+                "must be positive and finite",
+            );
+        }
+        if !self.t0.is_finite() {
+            return bad("t0", self.t0, "must be finite");
+        }
+        self.euler.validate()
+    }
+
+    /// Builds the integrator with the structured KKT solver and starts it consistently.
+    pub fn build<M: Mechanism>(self, mech: M) -> Result<Integrator<M, SchurKkt>, Error> {
+        self.build_with_solver(mech)
+    }
+
+    /// As [`HhtBuilder::build`] with a chosen KKT solver (e.g. [`crate::DenseKkt`]).
+    ///
+    /// Allocates all work memory, then runs the consistent start (DESIGN decision 9):
+    /// position Newton, initial velocity, initial accelerations and multipliers.
+    pub fn build_with_solver<M: Mechanism, K: KktSolver>(
+        self,
+        mech: M,
+    ) -> Result<Integrator<M, K>, Error> {
+        self.validate()?;
+        let info = mech.info();
+        let (n, m) = (info.n_coords, info.n_constraints);
+        check_len("info.q0", n, info.q0.len())?;
+        check_len("Φq column pattern", info.phi_q_nnz(), info.phi_q_cols.len())?;
+        check_len("mass column pattern", info.mass_nnz(), info.mass_cols.len())?;
+        let mut q = match &self.q0 {
+            Some(q0) => {
+                check_len("q0", n, q0.len())?;
+                q0.clone()
+            }
+            None => info.q0.to_vec(),
+        };
+        let mut qd = vec![0.0; n];
+        let velocity = match &self.qd0 {
+            Some(v) => {
+                check_len("qd0", n, v.len())?;
+                qd.copy_from_slice(v);
+                InitialVelocity::ProjectGiven
+            }
+            None => InitialVelocity::LeastKineticEnergy,
+        };
+        let mut qdd = vec![0.0; n];
+        let mut lambda = vec![0.0; m];
+        let mut kin = Kinematics::<K>::with_settings(info, self.kinematics)?;
+        kin.consistent_start(
+            &mech,
+            self.t0,
+            velocity,
+            &mut q,
+            &mut qd,
+            &mut qdd,
+            &mut lambda,
+        )?;
+        let first_warning = self.euler.check(info, self.t0, &q)?;
+        let mut it = Integrator {
+            info,
+            kkt: K::new(&KktPattern::from_info(info))?,
+            beta: (1.0 - self.alpha).powi(2) / 4.0,
+            gamma: 0.5 - self.alpha,
+            h_nominal: self.step,
+            h: self.step,
+            successes_since_cut: 0,
+            need_factor: true,
+            t: self.t0,
+            q,
+            qd,
+            qdd,
+            lambda,
+            r_prev: vec![0.0; n],
+            qdd_prev: vec![0.0; n],
+            lambda_prev: vec![0.0; m],
+            h_prev: 0.0,
+            phi_q_state: vec![0.0; info.phi_q_nnz()],
+            mass_state: vec![0.0; info.mass_nnz()],
+            q1: vec![0.0; n],
+            qd1: vec![0.0; n],
+            qdd1: vec![0.0; n],
+            lambda1: vec![0.0; m],
+            phi: vec![0.0; m],
+            phi_q: vec![0.0; info.phi_q_nnz()],
+            mass: vec![0.0; info.mass_nnz()],
+            force: vec![0.0; n],
+            res1: vec![0.0; n],
+            res2: vec![0.0; m],
+            da: vec![0.0; n],
+            dl: vec![0.0; m],
+            stats: Stats::default(),
+            first_warning,
+            settings: self,
+            mech,
+        };
+        it.stats.euler_warnings = usize::from(first_warning.is_some());
+        // (Φqᵀλ − Q)ₙ at the start, evaluated rather than inferred from the start's solve.
+        it.evaluate_current();
+        it.phi_q_state.copy_from_slice(&it.phi_q);
+        it.mass_state.copy_from_slice(&it.mass);
+        it.store_generalized_reaction();
+        Ok(it)
+    }
+}
+
+/// Solver counters, reported so tests and benchmarks can pin the work done.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Newton iterations (linear solves).
+    pub newton_iterations: usize,
+    /// Factorizations of the iteration matrix.
+    pub factorizations: usize,
+    /// Failed step attempts (each followed by a retry with fresh Jacobian or half the step).
+    pub rejected_steps: usize,
+    /// Calls of `eval_newton`.
+    pub evaluations: usize,
+    /// Accepted states at which some body was past the Euler warning threshold.
+    pub euler_warnings: usize,
+}
+
+/// What one accepted step did.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StepReport {
+    /// Step size taken (s).
+    pub h: f64,
+    /// Newton iterations of the accepted attempt.
+    pub iterations: usize,
+    /// |Φ|∞ at the accepted positions.
+    pub residual: f64,
+}
+
+/// Why one attempt failed; the caller decides whether to retry.
+#[derive(Debug, Clone, Copy)]
+enum Failure {
+    NotConverged { residual: f64 },
+    Kkt(KktError),
+    NotFinite,
+}
+
+/// The HHT-α integrator for one mechanism, with all work memory owned.
+#[derive(Debug)]
+pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
+    mech: M,
+    info: &'static MechanismInfo,
+    settings: HhtBuilder,
+    kkt: K,
+    beta: f64,
+    gamma: f64,
+    h_nominal: f64,
+    h: f64,
+    successes_since_cut: usize,
+    need_factor: bool,
+    // Accepted state.
+    t: f64,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    qdd: Vec<f64>,
+    lambda: Vec<f64>,
+    /// (Φqᵀλ − Q) at the accepted state: the αterm of the next step.
+    r_prev: Vec<f64>,
+    /// q̈ and λ one step back, and that step's size (0 before the first step).
+    qdd_prev: Vec<f64>,
+    lambda_prev: Vec<f64>,
+    h_prev: f64,
+    phi_q_state: Vec<f64>,
+    mass_state: Vec<f64>,
+    // Iterates and evaluations of the step in progress.
+    q1: Vec<f64>,
+    qd1: Vec<f64>,
+    qdd1: Vec<f64>,
+    lambda1: Vec<f64>,
+    phi: Vec<f64>,
+    phi_q: Vec<f64>,
+    mass: Vec<f64>,
+    force: Vec<f64>,
+    res1: Vec<f64>,
+    res2: Vec<f64>,
+    da: Vec<f64>,
+    dl: Vec<f64>,
+    stats: Stats,
+    first_warning: Option<EulerWarning>,
+}
+
+/// Steps that must succeed at a reduced size before it is doubled again.
+const GROWTH_DELAY: usize = 3;
+/// An iteration that shrinks the weighted increment by less than this factor asks for a
+/// fresh factorization.
+const SLOW_RATE: f64 = 0.5;
+
+impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
+    /// Current time.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+    /// Positions at [`Integrator::t`].
+    pub fn q(&self) -> &[f64] {
+        &self.q
+    }
+    /// Velocities.
+    pub fn qd(&self) -> &[f64] {
+        &self.qd
+    }
+    /// Accelerations.
+    pub fn qdd(&self) -> &[f64] {
+        &self.qdd
+    }
+    /// Lagrange multipliers (`M q̈ + Φqᵀλ = Q`).
+    pub fn lambda(&self) -> &[f64] {
+        &self.lambda
+    }
+    /// Nonzeros of Φq at the current state (for reactions).
+    pub fn phi_q(&self) -> &[f64] {
+        &self.phi_q_state
+    }
+    /// The step size the next step will try.
+    pub fn step_size(&self) -> f64 {
+        self.h
+    }
+    /// Counters since construction.
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+    /// The first Euler warning seen (the watchdog keeps counting in [`Stats`]).
+    pub fn first_euler_warning(&self) -> Option<EulerWarning> {
+        self.first_warning
+    }
+    /// The mechanism.
+    pub fn mechanism(&self) -> &M {
+        &self.mech
+    }
+    /// The mechanism's info.
+    pub fn info(&self) -> &'static MechanismInfo {
+        self.info
+    }
+    /// The settings the integrator was built with.
+    pub fn settings(&self) -> &HhtBuilder {
+        &self.settings
+    }
+
+    /// Force joint `joint` exerts on body `body` at the current state (global frame).
+    pub fn joint_force(&self, joint: usize, body: usize) -> Result<[f64; 3], Error> {
+        reactions::joint_force(self.info, &self.phi_q_state, &self.lambda, joint, body)
+    }
+
+    /// Force of driver `joint` at the current state (`−λ` of its row).
+    pub fn actuator_force(&self, joint: usize) -> Result<f64, Error> {
+        reactions::actuator_force(self.info, &self.lambda, joint)
+    }
+
+    /// Nonzeros of the mass matrix at the current state.
+    pub fn mass(&self) -> &[f64] {
+        &self.mass_state
+    }
+
+    /// Kinetic energy ½ q̇ᵀ M(q) q̇ at the current state.
+    pub fn kinetic_energy(&self) -> f64 {
+        let info = self.info;
+        let mut t = 0.0;
+        for ((&r, &c), &m) in info
+            .mass_rows
+            .iter()
+            .zip(info.mass_cols)
+            .zip(&self.mass_state)
+        {
+            t += self.qd[r as usize] * m * self.qd[c as usize];
+        }
+        0.5 * t
+    }
+
+    /// Kinetic plus potential energy at the current state.
+    pub fn energy(&self) -> f64 {
+        self.kinetic_energy() + self.mech.potential(&self.q)
+    }
+
+    fn evaluate_current(&mut self) {
+        self.mech.eval_newton(
+            &self.q,
+            &self.qd,
+            self.t,
+            NewtonOutputs {
+                phi: &mut self.phi,
+                phi_q: &mut self.phi_q,
+                mass: &mut self.mass,
+                force: &mut self.force,
+            },
+        );
+        self.stats.evaluations += 1;
+    }
+
+    /// `r_prev = Φqᵀλ − Q` from the evaluation buffers and `self.lambda`.
+    fn store_generalized_reaction(&mut self) {
+        for (r, &f) in self.r_prev.iter_mut().zip(&self.force) {
+            *r = -f;
+        }
+        for ((&row, &col), &v) in self
+            .info
+            .phi_q_rows
+            .iter()
+            .zip(self.info.phi_q_cols)
+            .zip(&self.phi_q)
+        {
+            self.r_prev[col as usize] += v * self.lambda[row as usize];
+        }
+    }
+
+    /// Takes one step of the current step size (halving it internally on failure).
+    pub fn step(&mut self) -> Result<StepReport, Error> {
+        let h = self.h;
+        self.step_to(self.t + h, h)
+    }
+
+    /// Integrates up to exactly `t_out` (the last step is shortened to land on it, and the
+    /// one before evened out so no sliver of a step remains).
+    pub fn advance_to(&mut self, t_out: f64) -> Result<(), Error> {
+        if !(t_out >= self.t) || !t_out.is_finite() {
+            return Err(Error::InvalidSetting {
+                name: "t_out",
+                value: t_out,
+                reason: "must be finite and not before the current time",
+            });
+        }
+        while self.t < t_out {
+            let remaining = t_out - self.t;
+            if remaining <= self.h * (1.0 + 1e-9) {
+                self.step_to(t_out, remaining)?;
+            } else if remaining < 2.0 * self.h {
+                let h = 0.5 * remaining;
+                self.step_to(self.t + h, h)?;
+            } else {
+                let h = self.h;
+                self.step_to(self.t + h, h)?;
+            }
+        }
+        Ok(())
+    }
+
+    /// One accepted step towards `t1 = t + h` (exactly `t1` when no cut is needed).
+    fn step_to(&mut self, t1: f64, h: f64) -> Result<StepReport, Error> {
+        let mut h = h;
+        let mut t1 = t1;
+        let mut fresh_every_iteration = false;
+        loop {
+            let failure = match self.attempt(h, t1, fresh_every_iteration) {
+                Ok(report) => return self.commit(report, h, t1),
+                Err(f) => f,
+            };
+            self.stats.rejected_steps += 1;
+            self.need_factor = true;
+            if !fresh_every_iteration {
+                fresh_every_iteration = true;
+                continue;
+            }
+            fresh_every_iteration = false;
+            h *= 0.5;
+            t1 = self.t + h;
+            self.h = self.h.min(h);
+            self.successes_since_cut = 0;
+            if h < self.settings.min_step {
+                return Err(match failure {
+                    Failure::Kkt(e @ KktError::RankDeficient { .. })
+                    | Failure::Kkt(e @ KktError::MassNotPositiveDefinite { .. }) => {
+                        e.to_error(self.info, self.t)
+                    }
+                    Failure::NotConverged { residual } => Error::StepSizeTooSmall {
+                        time: self.t,
+                        step: h,
+                        residual,
+                    },
+                    Failure::Kkt(_) | Failure::NotFinite => Error::StepSizeTooSmall {
+                        time: self.t,
+                        step: h,
+                        residual: f64::NAN,
+                    },
+                });
+            }
+        }
+    }
+
+    fn commit(&mut self, report: StepReport, h: f64, t1: f64) -> Result<StepReport, Error> {
+        // A converged step into the singular region is still unusable: stop before it.
+        let warning = self.settings.euler.check(self.info, t1, &self.q1)?;
+        if let Some(w) = warning {
+            self.stats.euler_warnings += 1;
+            self.first_warning.get_or_insert(w);
+        }
+        self.t = t1;
+        self.h_prev = h;
+        std::mem::swap(&mut self.q, &mut self.q1);
+        std::mem::swap(&mut self.qd, &mut self.qd1);
+        // The accepted values become current, the current ones the predictor's history.
+        std::mem::swap(&mut self.qdd_prev, &mut self.qdd1);
+        std::mem::swap(&mut self.qdd, &mut self.qdd_prev);
+        std::mem::swap(&mut self.lambda_prev, &mut self.lambda1);
+        std::mem::swap(&mut self.lambda, &mut self.lambda_prev);
+        // The last evaluation was at the accepted state (see `attempt`).
+        self.phi_q_state.copy_from_slice(&self.phi_q);
+        self.mass_state.copy_from_slice(&self.mass);
+        self.store_generalized_reaction();
+        self.stats.steps += 1;
+        if h < self.h_nominal {
+            self.successes_since_cut += 1;
+            if self.successes_since_cut >= GROWTH_DELAY {
+                self.h = (2.0 * self.h).min(self.h_nominal);
+                self.successes_since_cut = 0;
+            }
+        }
+        Ok(StepReport { h, ..report })
+    }
+
+    /// One Newton solve of the step equations; on success `q1, qd1, qdd1, lambda1` hold the
+    /// accepted state and the evaluation buffers were filled at it.
+    fn attempt(
+        &mut self,
+        h: f64,
+        t1: f64,
+        fresh_every_iteration: bool,
+    ) -> Result<StepReport, Failure> {
+        let s = &self.settings;
+        let (alpha, beta, gamma) = (s.alpha, self.beta, self.gamma);
+        let c = 1.0 / (1.0 + alpha);
+        let inv_bh2 = 1.0 / (beta * h * h);
+        // Linear extrapolation of q̈ and λ from the last two accepted steps: the predictor
+        // error is O(h²) instead of O(h), which saves one Newton iteration per step.
+        if self.h_prev > 0.0 {
+            let r = h / self.h_prev;
+            for ((a1, &a), &ap) in self.qdd1.iter_mut().zip(&self.qdd).zip(&self.qdd_prev) {
+                *a1 = a + r * (a - ap);
+            }
+            for ((l1, &l), &lp) in self
+                .lambda1
+                .iter_mut()
+                .zip(&self.lambda)
+                .zip(&self.lambda_prev)
+            {
+                *l1 = l + r * (l - lp);
+            }
+        } else {
+            self.qdd1.copy_from_slice(&self.qdd);
+            self.lambda1.copy_from_slice(&self.lambda);
+        }
+        let mut last_err = f64::INFINITY;
+        let mut residual = f64::NAN;
+        if !s.reuse_factorization {
+            self.need_factor = true;
+        }
+        for iter in 0..=s.max_iterations {
+            let (hq, hv) = (0.5 * h * h, h);
+            for i in 0..self.q.len() {
+                let (a0, a1) = (self.qdd[i], self.qdd1[i]);
+                self.q1[i] =
+                    self.q[i] + h * self.qd[i] + hq * ((1.0 - 2.0 * beta) * a0 + 2.0 * beta * a1);
+                self.qd1[i] = self.qd[i] + hv * ((1.0 - gamma) * a0 + gamma * a1);
+            }
+            self.mech.eval_newton(
+                &self.q1,
+                &self.qd1,
+                t1,
+                NewtonOutputs {
+                    phi: &mut self.phi,
+                    phi_q: &mut self.phi_q,
+                    mass: &mut self.mass,
+                    force: &mut self.force,
+                },
+            );
+            self.stats.evaluations += 1;
+            residual = inf_norm(&self.phi);
+            if residual.is_nan() {
+                return Err(Failure::NotFinite);
+            }
+            if iter > 0 && last_err <= 1.0 && residual <= s.phi_tol {
+                return Ok(StepReport {
+                    h,
+                    iterations: iter,
+                    residual,
+                });
+            }
+            if iter == s.max_iterations {
+                break;
+            }
+            // res1 = M q̈/(1+α) + Φqᵀλ − Q − α/(1+α) r_prev, negated for the solve.
+            mass_times(self.info, &self.mass, &self.qdd1, &mut self.res1);
+            let ac = alpha * c;
+            for i in 0..self.res1.len() {
+                self.res1[i] = -(c * self.res1[i] - self.force[i] - ac * self.r_prev[i]);
+            }
+            for ((&row, &col), &v) in self
+                .info
+                .phi_q_rows
+                .iter()
+                .zip(self.info.phi_q_cols)
+                .zip(&self.phi_q)
+            {
+                self.res1[col as usize] -= v * self.lambda1[row as usize];
+            }
+            for (r, &p) in self.res2.iter_mut().zip(&self.phi) {
+                *r = -p * inv_bh2;
+            }
+            if self.need_factor || fresh_every_iteration {
+                self.kkt.factor(&self.mass, c, &self.phi_q).map_err(|e| {
+                    self.need_factor = true;
+                    Failure::Kkt(e)
+                })?;
+                self.stats.factorizations += 1;
+                self.need_factor = false;
+            }
+            self.kkt
+                .solve(&self.res1, &self.res2, &mut self.da, &mut self.dl)
+                .map_err(Failure::Kkt)?;
+            self.stats.newton_iterations += 1;
+            let mut err = 0.0f64;
+            for (d, a) in self.da.iter().zip(&self.qdd1) {
+                err = err.max(d.abs() / (s.abs_tol_acc + s.rel_tol * a.abs()));
+            }
+            for (d, l) in self.dl.iter().zip(&self.lambda1) {
+                err = err.max(d.abs() / (s.abs_tol_lambda + s.rel_tol * l.abs()));
+            }
+            if !err.is_finite() {
+                return Err(Failure::NotFinite);
+            }
+            if iter >= 1 && err > SLOW_RATE * last_err {
+                if err > 4.0 * last_err && iter >= 2 {
+                    return Err(Failure::NotConverged { residual });
+                }
+                self.need_factor = true;
+            }
+            for (a, d) in self.qdd1.iter_mut().zip(&self.da) {
+                *a += d;
+            }
+            for (l, d) in self.lambda1.iter_mut().zip(&self.dl) {
+                *l += d;
+            }
+            last_err = err;
+        }
+        Err(Failure::NotConverged { residual })
+    }
+}
+
+#[cfg(test)]
+#[path = "hht_tests.rs"]
+mod tests;

@@ -1,0 +1,315 @@
+//! HHT-α against analytic results (pendulum period, static reaction, prescribed motion),
+//! an independent RK4 reference (convergence order), and its own error paths.
+
+use super::*;
+use crate::kkt::DenseKkt;
+use crate::testmodels::{
+    CircleDriver, Pendulum, CIRCLE_C0, CIRCLE_D, CIRCLE_V, G, PENDULUM_INERTIA, PENDULUM_LENGTH,
+    PENDULUM_MASS,
+};
+
+/// Pendulum swung by `phi` about Z in the X–Y plane, at rest (exactly consistent).
+fn planar_q0(phi: f64) -> [f64; 6] {
+    let l = PENDULUM_LENGTH;
+    [l * phi.sin(), -l * phi.cos(), 0.0, 0.0, 0.0, phi]
+}
+
+/// (I_zz + m L²) φ̈ = −m g L sin φ: the planar pendulum reduced to one coordinate, integrated
+/// by classical RK4 with a step far below HHT's — an independent reference.
+fn rk4_planar(phi0: f64, t_end: f64) -> f64 {
+    let ip = PENDULUM_INERTIA[2] + PENDULUM_MASS * PENDULUM_LENGTH * PENDULUM_LENGTH;
+    let k = PENDULUM_MASS * G * PENDULUM_LENGTH / ip;
+    let f = |x: [f64; 2]| [x[1], -k * x[0].sin()];
+    let n = 200_000;
+    let h = t_end / n as f64;
+    let mut x = [phi0, 0.0];
+    for _ in 0..n {
+        let k1 = f(x);
+        let k2 = f([x[0] + 0.5 * h * k1[0], x[1] + 0.5 * h * k1[1]]);
+        let k3 = f([x[0] + 0.5 * h * k2[0], x[1] + 0.5 * h * k2[1]]);
+        let k4 = f([x[0] + h * k3[0], x[1] + h * k3[1]]);
+        for i in 0..2 {
+            x[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+        }
+    }
+    x[0]
+}
+
+#[test]
+fn small_amplitude_period_matches_the_compound_pendulum() {
+    let ip = PENDULUM_INERTIA[2] + PENDULUM_MASS * PENDULUM_LENGTH * PENDULUM_LENGTH;
+    let phi0 = 0.01;
+    // T = 2π √(I_p / m g L), with the finite-amplitude factor 1 + φ0²/16.
+    let period = 2.0
+        * std::f64::consts::PI
+        * (ip / (PENDULUM_MASS * G * PENDULUM_LENGTH)).sqrt()
+        * (1.0 + phi0 * phi0 / 16.0);
+    for mech in [Pendulum::paper(), Pendulum::exact()] {
+        let mut hht = HhtBuilder::new()
+            .step(1e-3)
+            .q0(&planar_q0(phi0))
+            .build(mech)
+            .unwrap();
+        // Upward zero crossings of X (γ), interpolated linearly between outputs.
+        let mut crossings = Vec::new();
+        let (mut t_prev, mut x_prev) = (hht.t(), hht.q()[0]);
+        let dt = 1e-3;
+        for k in 1..=(3.5 * period / dt) as usize {
+            hht.advance_to(k as f64 * dt).unwrap();
+            let x = hht.q()[0];
+            if x_prev < 0.0 && x >= 0.0 {
+                crossings.push(t_prev + (hht.t() - t_prev) * (-x_prev) / (x - x_prev));
+            }
+            (t_prev, x_prev) = (hht.t(), x);
+        }
+        assert!(crossings.len() >= 3, "{crossings:?}");
+        let measured =
+            (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
+        assert!(
+            (measured - period).abs() < 1e-5 * period,
+            "{:?}: period {measured} vs {period}",
+            mech.formulation
+        );
+    }
+}
+
+#[test]
+fn positions_converge_at_second_order() {
+    let phi0 = 0.8;
+    let t_end = 1.0;
+    let reference = rk4_planar(phi0, t_end);
+    for alpha in [0.0, -0.05, -0.3] {
+        let errs: Vec<f64> = [0.02, 0.01, 0.005]
+            .iter()
+            .map(|&h| {
+                let mut hht = HhtBuilder::new()
+                    .alpha(alpha)
+                    .step(h)
+                    .rel_tol(1e-10)
+                    .abs_tol_acceleration(1e-10)
+                    .abs_tol_lambda(1e-10)
+                    .max_iterations(20)
+                    .q0(&planar_q0(phi0))
+                    .build(Pendulum::paper())
+                    .unwrap();
+                hht.advance_to(t_end).unwrap();
+                assert_eq!(hht.t(), t_end);
+                (hht.q()[5] - reference).abs()
+            })
+            .collect();
+        for w in errs.windows(2) {
+            let ratio = w[0] / w[1];
+            assert!((3.4..4.6).contains(&ratio), "α = {alpha}: errors {errs:?}");
+        }
+    }
+}
+
+#[test]
+fn trapezoidal_hht_keeps_energy_of_the_paper_formulation() {
+    // Paper formulation: constant M, gravity, scleronomic joint ⇒ ½q̇ᵀMq̇ + V is a
+    // constant of the motion. With α = 0 the drift is bounded and O(h²). (The paper's
+    // pseudo-inertia lets β run off towards 90° after ~1 s of this swing, so stop at 0.8 s.)
+    let q0 = [0.0, 0.0, 0.0, 0.5, 0.1, -0.4];
+    let qd0 = [0.0, 0.0, 0.0, 0.0, 0.5, 0.0];
+    let drift = |mech: Pendulum, h: f64| {
+        let mut hht = HhtBuilder::new()
+            .alpha(0.0)
+            .step(h)
+            .q0(&q0)
+            .qd0(&qd0)
+            .build(mech)
+            .unwrap();
+        let e0 = hht.energy();
+        let scale = PENDULUM_MASS * G * PENDULUM_LENGTH;
+        let mut worst = 0.0f64;
+        let mut beta_max = 0.0f64;
+        for k in 1..=80 {
+            hht.advance_to(k as f64 * 0.01).unwrap();
+            worst = worst.max((hht.energy() - e0).abs());
+            beta_max = beta_max.max(hht.q()[4].abs());
+        }
+        eprintln!(
+            "{:?} h={h}: drift {} beta_max {beta_max} {:?}",
+            mech.formulation,
+            worst / scale,
+            hht.stats()
+        );
+        worst / scale
+    };
+    for mech in [Pendulum::paper(), Pendulum::exact()] {
+        let (d1, d2) = (drift(mech, 2e-3), drift(mech, 1e-3));
+        assert!(
+            d2 < 1e-6,
+            "{:?}: relative energy drift {d2}",
+            mech.formulation
+        );
+        assert!(
+            d1 / d2 > 3.0,
+            "{:?}: drift not O(h²): {d1} {d2}",
+            mech.formulation
+        );
+    }
+}
+
+#[test]
+fn hanging_pendulum_stays_put_and_carries_its_weight() {
+    let mut hht = HhtBuilder::new().build(Pendulum::exact()).unwrap();
+    for _ in 0..100 {
+        hht.step().unwrap();
+    }
+    let f = hht.joint_force(0, 0).unwrap();
+    let w = PENDULUM_MASS * G;
+    assert!(
+        (f[1] - w).abs() < 1e-9 * w && f[0].abs() < 1e-9 && f[2].abs() < 1e-9,
+        "{f:?}"
+    );
+    assert!(hht
+        .q()
+        .iter()
+        .zip(Pendulum::exact().info().q0)
+        .all(|(a, b)| (a - b).abs() < 1e-12));
+    let s = hht.stats();
+    assert_eq!(s.steps, 100);
+    assert_eq!(s.rejected_steps, 0);
+}
+
+#[test]
+fn prescribed_motion_follows_the_driver_then_fails_with_an_error() {
+    // Y(t) = √(c(t)² − d²) until c reaches d at t = 2, where Φq loses rank and Ẏ → ∞.
+    let mut hht = HhtBuilder::new().step(1e-3).build(CircleDriver).unwrap();
+    hht.advance_to(1.0).unwrap();
+    let c = CIRCLE_C0 - CIRCLE_V;
+    let y = (c * c - CIRCLE_D * CIRCLE_D).sqrt();
+    assert!((hht.q()[1] - y).abs() < 1e-10, "{} vs {y}", hht.q()[1]);
+    assert!((hht.qd()[1] - c * -CIRCLE_V / y).abs() < 1e-6);
+    let err = hht.advance_to(2.5).unwrap_err();
+    let t_fail = match &err {
+        Error::StepSizeTooSmall { time, .. } => *time,
+        Error::SingularJacobian { time, rows } => {
+            assert!(!rows.is_empty());
+            *time
+        }
+        Error::NewtonFailed { time, .. } => *time,
+        other => panic!("unexpected error {other:?}"),
+    };
+    assert!(t_fail > 1.9 && t_fail <= 2.0, "{err}");
+    assert_eq!(hht.t(), t_fail, "state must stay at the last accepted step");
+    assert!(hht.t() <= 2.0);
+    // Whatever was accepted satisfies the constraints.
+    let mut phi = [0.0; 6];
+    hht.mechanism().phi(hht.q(), hht.t(), &mut phi);
+    assert!(inf_norm(&phi) <= 1e-10);
+    assert!(err.to_string().contains("t = "));
+}
+
+#[test]
+fn output_times_are_hit_exactly() {
+    let mut hht = HhtBuilder::new()
+        .step(0.003)
+        .q0(&planar_q0(0.3))
+        .build(Pendulum::paper())
+        .unwrap();
+    for k in 1..=50 {
+        let t = k as f64 * 0.01;
+        hht.advance_to(t).unwrap();
+        assert_eq!(hht.t(), t);
+    }
+    let s = hht.stats();
+    // 0.01 = 3 steps of 0.003 + a remainder of 0.001; evened to 2×0.003 + 2×0.002.
+    assert_eq!(s.steps, 200);
+    assert!(s.newton_iterations <= 3 * s.steps, "{s:?}");
+    assert_eq!(
+        s.factorizations,
+        s.steps + s.rejected_steps.min(s.factorizations)
+    );
+}
+
+#[test]
+fn statistics_and_factorization_reuse() {
+    let run = |reuse: bool| {
+        let mut hht = HhtBuilder::new()
+            .reuse_factorization(reuse)
+            .q0(&planar_q0(0.5))
+            .build(Pendulum::exact())
+            .unwrap();
+        hht.advance_to(1.0).unwrap();
+        (hht.stats(), hht.q().to_vec())
+    };
+    let (a, qa) = run(false);
+    let (b, qb) = run(true);
+    assert_eq!(a.steps, 1000);
+    assert_eq!(a.rejected_steps, 0);
+    assert_eq!(a.factorizations, 1000);
+    assert!(a.newton_iterations <= 2 * a.steps, "{a:?}");
+    assert_eq!(a.evaluations, a.newton_iterations + a.steps + 1);
+    assert!(b.factorizations < a.factorizations / 10, "{b:?}");
+    // Both converge to the same steps within the Newton tolerances (rel 1e-6 on q̈, so
+    // ~1e-6·h²·|q̈| per step, accumulated over 1000 steps).
+    for (x, y) in qa.iter().zip(&qb) {
+        assert!((x - y).abs() < 1e-7, "{x} vs {y}");
+    }
+}
+
+#[test]
+fn dense_and_structured_solvers_give_the_same_trajectory() {
+    let q0 = [0.0, 0.0, 0.0, 0.6, 0.4, -0.5];
+    let mut a = HhtBuilder::new().q0(&q0).build(Pendulum::exact()).unwrap();
+    let mut b = HhtBuilder::new()
+        .q0(&q0)
+        .build_with_solver::<_, DenseKkt>(Pendulum::exact())
+        .unwrap();
+    a.advance_to(0.5).unwrap();
+    b.advance_to(0.5).unwrap();
+    for (x, y) in a.q().iter().zip(b.q()) {
+        assert!((x - y).abs() < 1e-10);
+    }
+    // λ agrees to well inside its Newton tolerance (1e-6 relative).
+    for (x, y) in a.lambda().iter().zip(b.lambda()) {
+        assert!((x - y).abs() < 1e-7 * x.abs().max(1.0), "{x} vs {y}");
+    }
+}
+
+#[test]
+fn spinning_into_the_euler_singularity_is_reported_by_body() {
+    // Hanging at rest but spinning about the vertical arm: β grows at 2 rad/s and reaches
+    // the error threshold (|β| = acos 0.035 ≈ 88°) at t ≈ 0.768 s.
+    let mut hht = HhtBuilder::new()
+        .qd0(&[0.0, 0.0, 0.0, 0.0, 2.0, 0.0])
+        .build(Pendulum::paper())
+        .unwrap();
+    let err = hht.advance_to(2.0).unwrap_err();
+    let t_limit = 0.035f64.acos() / 2.0;
+    match err {
+        Error::EulerSingularity { time, body, beta } => {
+            assert_eq!(body, "bob");
+            assert!((time - t_limit).abs() < 2e-3, "{time} vs {t_limit}");
+            assert!(beta.cos() < 0.035);
+        }
+        other => panic!("{other:?}"),
+    }
+    let w = hht.first_euler_warning().expect("warned before failing");
+    assert!((w.time - 0.17f64.acos() / 2.0).abs() < 2e-3);
+    assert!(hht.q()[4].cos() >= 0.035);
+}
+
+#[test]
+fn bad_settings_are_rejected() {
+    let b = || HhtBuilder::new();
+    assert!(b().alpha(0.1).build(Pendulum::paper()).is_err());
+    assert!(b().alpha(-0.4).build(Pendulum::paper()).is_err());
+    assert!(b().step(-1.0).build(Pendulum::paper()).is_err());
+    assert!(b().step(f64::NAN).build(Pendulum::paper()).is_err());
+    assert!(b().min_step(1.0).build(Pendulum::paper()).is_err());
+    assert!(b().q0(&[0.0; 3]).build(Pendulum::paper()).is_err());
+    assert!(b()
+        .rel_tol(0.0)
+        .abs_tol_lambda(0.0)
+        .build(Pendulum::paper())
+        .is_err());
+    let mut hht = b().build(Pendulum::paper()).unwrap();
+    hht.advance_to(0.01).unwrap();
+    assert!(hht.advance_to(0.0).is_err());
+    assert!(hht.advance_to(f64::INFINITY).is_err());
+    // Starting from an impossible position is a kinematic failure, not a panic.
+    assert!(HhtBuilder::new().t0(3.0).build(CircleDriver).is_err());
+}
