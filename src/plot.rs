@@ -1,0 +1,156 @@
+//! PNG plots reproducing the paper's figures 2–6, drawn with plotters and an embedded
+//! DejaVu Sans font (no system font libraries needed).
+
+use crate::scenario::Run;
+use plotters::prelude::*;
+use plotters::style::FontStyle;
+use std::path::{Path, PathBuf};
+use std::sync::Once;
+
+static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+static REGISTER: Once = Once::new();
+
+fn register_font() {
+    REGISTER.call_once(|| {
+        // The font is compiled in; failing to parse it is a build defect, reported on use.
+        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, FONT);
+    });
+}
+
+/// One panel: a y-axis label and named series over the common time axis.
+pub struct Panel<'a> {
+    pub y_label: &'a str,
+    pub series: Vec<(&'a str, Vec<f64>)>,
+}
+
+const COLORS: [RGBColor; 3] = [
+    RGBColor(0, 90, 181),
+    RGBColor(220, 50, 32),
+    RGBColor(0, 140, 70),
+];
+
+/// Draws panels stacked vertically, sharing the time axis.
+pub fn draw(path: &Path, title: &str, t: &[f64], panels: &[Panel<'_>]) -> Result<(), String> {
+    register_font();
+    let height = 260 * panels.len() as u32 + 60;
+    let root = BitMapBackend::new(path, (900, height)).into_drawing_area();
+    let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let root = root
+        .titled(title, ("sans-serif", 24))
+        .map_err(|e| err(&e))?;
+    let areas = root.split_evenly((panels.len(), 1));
+    let (t0, t1) = (
+        t.first().copied().unwrap_or(0.0),
+        t.last().copied().unwrap_or(1.0),
+    );
+    for (area, panel) in areas.iter().zip(panels) {
+        let (mut lo, mut hi) = panel
+            .series
+            .iter()
+            .flat_map(|(_, v)| v.iter().copied())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
+        if !lo.is_finite() || !hi.is_finite() {
+            (lo, hi) = (-1.0, 1.0);
+        }
+        let pad = ((hi - lo) * 0.08).max(1e-9 * (1.0 + hi.abs()));
+        let mut chart = ChartBuilder::on(area)
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(80)
+            .build_cartesian_2d(t0..t1.max(t0 + 1e-9), (lo - pad)..(hi + pad))
+            .map_err(|e| err(&e))?;
+        chart
+            .configure_mesh()
+            .x_desc("time t (s)")
+            .y_desc(panel.y_label)
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 17))
+            .draw()
+            .map_err(|e| err(&e))?;
+        for (k, (name, values)) in panel.series.iter().enumerate() {
+            let color = COLORS[k % COLORS.len()];
+            chart
+                .draw_series(LineSeries::new(
+                    t.iter().copied().zip(values.iter().copied()),
+                    color.stroke_width(2),
+                ))
+                .map_err(|e| err(&e))?
+                .label(*name)
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                });
+        }
+        if panel.series.len() > 1 {
+            chart
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.85))
+                .border_style(BLACK)
+                .label_font(("sans-serif", 15))
+                .draw()
+                .map_err(|e| err(&e))?;
+        }
+    }
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
+}
+
+/// Writes the paper's figures 2–6 into `dir`; returns the files written.
+pub fn paper_figures(run: &Run, dir: &Path) -> Result<Vec<PathBuf>, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let col = |k: usize| run.platform.iter().map(|p| p[k]).collect::<Vec<f64>>();
+    let force = |c: usize| run.upper.iter().map(|f| f[0][c]).collect::<Vec<f64>>();
+    let mut files = Vec::new();
+    let mut out = |name: &str, title: &str, panels: Vec<Panel<'_>>| -> Result<(), String> {
+        let p = dir.join(name);
+        draw(&p, title, &run.t, &panels)?;
+        files.push(p);
+        Ok(())
+    };
+    out(
+        "fig2_platform_position.png",
+        "Fig. 2: platform centre of mass position",
+        vec![
+            Panel {
+                y_label: "X (m)",
+                series: vec![("X", col(0))],
+            },
+            Panel {
+                y_label: "Y (m)",
+                series: vec![("Y", col(1))],
+            },
+            Panel {
+                y_label: "Z (m)",
+                series: vec![("Z", col(2))],
+            },
+        ],
+    )?;
+    out(
+        "fig3_platform_orientation.png",
+        "Fig. 3: platform orientation (Rz·Ry·Rx Euler angles)",
+        vec![Panel {
+            y_label: "angle (rad)",
+            series: vec![
+                ("θ about X", col(3)),
+                ("β about Y", col(4)),
+                ("γ about Z", col(5)),
+            ],
+        }],
+    )?;
+    for (k, axis) in ["X", "Y", "Z"].iter().enumerate() {
+        out(
+            &format!("fig{}_upper1_force_{}.png", 4 + k, axis.to_lowercase()),
+            &format!(
+                "Fig. {}: {axis} reaction force on the platform at leg 1's upper joint",
+                4 + k
+            ),
+            vec![Panel {
+                y_label: &format!("F{} (N)", axis.to_lowercase()),
+                series: vec![(axis, force(k))],
+            }],
+        )?;
+    }
+    Ok(files)
+}

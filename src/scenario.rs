@@ -1,0 +1,265 @@
+//! The paper's scenario on the generated Stewart platform: consistent start, HHT-α over the
+//! requested span, and the time series the paper plots (pose, joint reactions, actuators).
+
+use std::time::{Duration, Instant};
+use symbody_mechanisms::stewart_6_6::{Exact, Paper};
+use symbody_runtime::{Error, Formulation, HhtBuilder, Mechanism, MechanismInfo, Stats};
+
+/// Options of one simulation; `Default` is the paper's scenario over one period.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    pub formulation: Formulation,
+    /// End time (s); the motion repeats every 2π s.
+    pub t_end: f64,
+    /// Nominal HHT step (s).
+    pub step: f64,
+    /// HHT α in [−1/3, 0].
+    pub alpha: f64,
+    /// Spacing of recorded outputs (s); the integrator lands exactly on each.
+    pub output_step: f64,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            formulation: Formulation::Exact,
+            t_end: 2.0 * std::f64::consts::PI,
+            step: 1e-3,
+            alpha: -0.05,
+            output_step: 0.01,
+        }
+    }
+}
+
+/// Number of legs of the platform.
+pub const LEGS: usize = 6;
+
+/// Where the scenario's quantities live in the generated model, looked up by name.
+#[derive(Debug, Clone, Copy)]
+pub struct Layout {
+    pub platform: usize,
+    pub upper_joints: [usize; LEGS],
+    pub lower_joints: [usize; LEGS],
+    pub lower_bodies: [usize; LEGS],
+    pub drivers: [usize; LEGS],
+}
+
+impl Layout {
+    /// Finds the paper's names (`platform`, `upper_sph1..6`, `lower_sph1..6`, `lower1..6`,
+    /// `act1..6`) in `info`, naming the first one missing.
+    pub fn find(info: &MechanismInfo) -> Result<Layout, String> {
+        let body = |n: &str| {
+            info.body_index(n)
+                .ok_or_else(|| format!("mechanism `{}` has no body `{n}`", info.name))
+        };
+        let joint = |n: &str| {
+            info.joint_index(n)
+                .ok_or_else(|| format!("mechanism `{}` has no joint `{n}`", info.name))
+        };
+        let mut l = Layout {
+            platform: body("platform")?,
+            upper_joints: [0; LEGS],
+            lower_joints: [0; LEGS],
+            lower_bodies: [0; LEGS],
+            drivers: [0; LEGS],
+        };
+        for i in 0..LEGS {
+            l.upper_joints[i] = joint(&format!("upper_sph{}", i + 1))?;
+            l.lower_joints[i] = joint(&format!("lower_sph{}", i + 1))?;
+            l.lower_bodies[i] = body(&format!("lower{}", i + 1))?;
+            l.drivers[i] = joint(&format!("act{}", i + 1))?;
+        }
+        Ok(l)
+    }
+}
+
+/// Recorded outputs of one run, one entry per output time.
+#[derive(Debug, Clone, Default)]
+pub struct Run {
+    pub t: Vec<f64>,
+    /// All coordinates and velocities at each output time.
+    pub q: Vec<Vec<f64>>,
+    pub qd: Vec<Vec<f64>>,
+    /// Platform `[X, Y, Z, θ, β, γ]`.
+    pub platform: Vec<[f64; 6]>,
+    /// Force on the platform at each upper spherical joint (global frame, N).
+    pub upper: Vec<[[f64; 3]; LEGS]>,
+    /// Force on each lower leg (cylinder) at its base spherical joint (global frame, N);
+    /// the force on the base plate is its negative.
+    pub lower: Vec<[[f64; 3]; LEGS]>,
+    /// Actuator forces (N), positive pushing the platform away from the base.
+    pub actuators: Vec<[f64; LEGS]>,
+    /// Kinetic plus potential energy (J).
+    pub energy: Vec<f64>,
+    /// Power of the actuators Σ Fᵢ ċᵢ (W): the only non-conservative input.
+    pub actuator_power: Vec<f64>,
+    /// Largest |Φ|∞ and |Φq q̇ + Φt|∞ seen at the output times.
+    pub max_phi: f64,
+    pub max_velocity_residual: f64,
+    pub stats: Stats,
+    pub wall: Duration,
+    /// First Euler-angle warning (time, body, β), if any body came near β = ±90°.
+    pub euler_warning: Option<(f64, &'static str, f64)>,
+}
+
+/// Why a scenario could not run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ScenarioError {
+    /// A solver failed (with time and residual).
+    Runtime(Error),
+    /// The mechanism lacks a body or joint the scenario needs.
+    Layout(String),
+    /// An option is out of range.
+    Options(String),
+}
+
+impl std::fmt::Display for ScenarioError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ScenarioError::Runtime(e) => write!(f, "{e}"),
+            ScenarioError::Layout(s) | ScenarioError::Options(s) => write!(f, "{s}"),
+        }
+    }
+}
+
+impl std::error::Error for ScenarioError {}
+
+impl From<Error> for ScenarioError {
+    fn from(e: Error) -> Self {
+        ScenarioError::Runtime(e)
+    }
+}
+
+/// Runs the paper's scenario with `opts`.
+pub fn simulate(opts: &Options) -> Result<Run, ScenarioError> {
+    match opts.formulation {
+        Formulation::Exact => simulate_mechanism(Exact, opts),
+        Formulation::Paper => simulate_mechanism(Paper, opts),
+    }
+}
+
+/// Runs any mechanism with the Stewart platform's names (see [`Layout::find`]).
+pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
+    let info = mech.info();
+    let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
+    if opts.output_step.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+        return Err(ScenarioError::Options(format!(
+            "--output-step must be positive, got {}",
+            opts.output_step
+        )));
+    }
+    if opts
+        .t_end
+        .partial_cmp(&0.0)
+        .is_none_or(|o| o == std::cmp::Ordering::Less)
+    {
+        return Err(ScenarioError::Options(format!(
+            "--t-end must be zero or positive, got {}",
+            opts.t_end
+        )));
+    }
+    let start = Instant::now();
+    let mut it = HhtBuilder::new()
+        .alpha(opts.alpha)
+        .step(opts.step)
+        .build(mech)?;
+    let mut run = Run::default();
+    let n_out = (opts.t_end / opts.output_step - 1e-9).ceil().max(0.0) as usize;
+    let mut phi = vec![0.0; info.n_constraints];
+    let mut phi_t = vec![0.0; info.n_constraints];
+    let mut jac = vec![0.0; info.phi_q_nnz()];
+    for k in 0..=n_out {
+        let t_out = (k as f64 * opts.output_step).min(opts.t_end);
+        it.advance_to(t_out)?;
+        record(&mut it, &layout, &mut run, &mut phi, &mut phi_t, &mut jac)?;
+    }
+    run.stats = it.stats();
+    run.wall = start.elapsed();
+    run.euler_warning = it.first_euler_warning().map(|w| (w.time, w.name, w.beta));
+    Ok(run)
+}
+
+fn record<M: Mechanism>(
+    it: &mut symbody_runtime::Integrator<M>,
+    layout: &Layout,
+    run: &mut Run,
+    phi: &mut [f64],
+    phi_t: &mut [f64],
+    jac: &mut [f64],
+) -> Result<(), Error> {
+    let info = it.info();
+    let (t, q, qd) = (it.t(), it.q().to_vec(), it.qd().to_vec());
+    let mech = it.mechanism();
+    mech.phi(&q, t, phi);
+    mech.phi_t(&q, t, phi_t);
+    mech.phi_q(&q, t, jac);
+    run.max_phi = run.max_phi.max(phi.iter().fold(0.0, |a, b| a.max(b.abs())));
+    // Velocity residual Φq q̇ + Φt, from the pattern.
+    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(jac.iter()) {
+        phi_t[r as usize] += v * qd[c as usize];
+    }
+    run.max_velocity_residual = run
+        .max_velocity_residual
+        .max(phi_t.iter().fold(0.0, |a, b| a.max(b.abs())));
+    let o = info.bodies[layout.platform].coord_offset;
+    run.platform
+        .push([q[o], q[o + 1], q[o + 2], q[o + 3], q[o + 4], q[o + 5]]);
+    let mut upper = [[0.0; 3]; LEGS];
+    let mut lower = [[0.0; 3]; LEGS];
+    let mut act = [0.0; LEGS];
+    let mut power = 0.0;
+    mech.phi_t(&q, t, phi_t);
+    for i in 0..LEGS {
+        upper[i] = it.joint_force(layout.upper_joints[i], layout.platform)?;
+        lower[i] = it.joint_force(layout.lower_joints[i], layout.lower_bodies[i])?;
+        act[i] = it.actuator_force(layout.drivers[i])?;
+        // Φ_D = d(q) − c(t), so ċ = −Φt on the driver's row.
+        let row = info.joints[layout.drivers[i]].row_start;
+        power += act[i] * -phi_t[row];
+    }
+    run.upper.push(upper);
+    run.lower.push(lower);
+    run.actuators.push(act);
+    run.actuator_power.push(power);
+    run.energy.push(it.energy());
+    run.t.push(t);
+    run.q.push(q);
+    run.qd.push(qd);
+    Ok(())
+}
+
+impl Run {
+    /// Work done by the actuators from the first output to each output (J), by the
+    /// trapezoidal rule over the recorded power.
+    pub fn actuator_work(&self) -> Vec<f64> {
+        let mut w = vec![0.0; self.t.len()];
+        for k in 1..self.t.len() {
+            let dt = self.t[k] - self.t[k - 1];
+            w[k] = w[k - 1] + 0.5 * dt * (self.actuator_power[k] + self.actuator_power[k - 1]);
+        }
+        w
+    }
+
+    /// Range of platform coordinate `k` over the run.
+    pub fn platform_range(&self, k: usize) -> (f64, f64) {
+        self.platform
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p[k]), hi.max(p[k]))
+            })
+    }
+}
+
+/// The largest |θ|, |β|, |γ| of the platform over the run, with the axis name.
+pub fn largest_rotation(run: &Run) -> (&'static str, f64) {
+    let names = ["theta (about X)", "beta (about Y)", "gamma (about Z)"];
+    (0..3)
+        .map(|k| {
+            let m = run
+                .platform
+                .iter()
+                .fold(0.0f64, |a, p| a.max(p[3 + k].abs()));
+            (names[k], m)
+        })
+        .fold(("none", 0.0), |best, c| if c.1 > best.1 { c } else { best })
+}
