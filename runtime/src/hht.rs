@@ -23,7 +23,10 @@
 //! always that of the full residual.
 //!
 //! A step is accepted only when the last weighted increment is at most 1 **and** the
-//! unscaled `|Φ|∞` evaluated at the accepted positions is below its tolerance. On failure the
+//! unscaled `|Φ|∞` evaluated at the accepted positions is below its tolerance. The
+//! increments are weighted per entry by `abs_tol + rel_tol·|value|` (max norm, stricter than
+//! Chrono's WRMS), with the absolute tolerance raised to the roundoff floor `~ε/(βh²)` that
+//! the scaled constraint rows impose on very small steps. On failure the
 //! step is retried with a fresh factorization at every iteration, then halved; below the
 //! minimum step the integrator returns an error and keeps the last accepted state.
 
@@ -401,6 +404,8 @@ const GROWTH_DELAY: usize = 3;
 /// An iteration that shrinks the weighted increment by less than this factor asks for a
 /// fresh factorization.
 const SLOW_RATE: f64 = 0.5;
+/// Multiple of machine epsilon (times the coordinate scale) taken as the roundoff of Φ.
+const NOISE_FACTOR: f64 = 100.0;
 
 impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     /// Current time.
@@ -424,6 +429,8 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         &self.lambda
     }
     /// Nonzeros of Φq at the current state (for reactions).
+    // The `phi_q` field is the step's work buffer; the accepted state's copy is returned.
+    #[allow(clippy::misnamed_getters)]
     pub fn phi_q(&self) -> &[f64] {
         &self.phi_q_state
     }
@@ -463,6 +470,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     }
 
     /// Nonzeros of the mass matrix at the current state.
+    #[allow(clippy::misnamed_getters)]
     pub fn mass(&self) -> &[f64] {
         &self.mass_state
     }
@@ -655,6 +663,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         }
         let mut last_err = f64::INFINITY;
         let mut residual = f64::NAN;
+        let q_scale = inf_norm(&self.q).max(1.0);
         if !s.reuse_factorization {
             self.need_factor = true;
         }
@@ -722,12 +731,17 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 .solve(&self.res1, &self.res2, &mut self.da, &mut self.dl)
                 .map_err(Failure::Kkt)?;
             self.stats.newton_iterations += 1;
+            // Roundoff δ in Φ reaches the increments as δ/(βh²): below that floor an
+            // increment is noise, so the weights never ask for more than it (at h = 1e-3 the
+            // floor is ~1e-7, below the default tolerances; it matters only for tiny steps).
+            let floor_a = NOISE_FACTOR * f64::EPSILON * q_scale * inv_bh2;
+            let floor_l = floor_a * inf_norm(&self.mass);
             let mut err = 0.0f64;
             for (d, a) in self.da.iter().zip(&self.qdd1) {
-                err = err.max(d.abs() / (s.abs_tol_acc + s.rel_tol * a.abs()));
+                err = err.max(d.abs() / (s.abs_tol_acc.max(floor_a) + s.rel_tol * a.abs()));
             }
             for (d, l) in self.dl.iter().zip(&self.lambda1) {
-                err = err.max(d.abs() / (s.abs_tol_lambda + s.rel_tol * l.abs()));
+                err = err.max(d.abs() / (s.abs_tol_lambda.max(floor_l) + s.rel_tol * l.abs()));
             }
             if !err.is_finite() {
                 return Err(Failure::NotFinite);

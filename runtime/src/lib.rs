@@ -1,6 +1,9 @@
 //! Runtime for generated mechanisms: the trait generated code implements, and the solvers
 //! (kinematic analysis, HHT-α for index-3 DAEs, reaction forces) that work on any of them.
 
+// `!(x > tol)` is used on purpose throughout: unlike `x <= tol` it also rejects NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub mod error;
 pub mod hht;
 pub mod kinematics;
