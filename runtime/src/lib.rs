@@ -1,5 +1,17 @@
 //! Runtime for generated mechanisms: the trait generated code implements, and the solvers
 //! (kinematic analysis, HHT-α for index-3 DAEs, reaction forces) that work on any of them.
+//!
+//! - [`mechanism`]: the [`Mechanism`] trait generated code implements.
+//! - [`kkt`]: solvers for the saddle-point system `[c·M Φqᵀ; Φq 0]` ([`SchurKkt`], the
+//!   structured default, and [`DenseKkt`], the reference).
+//! - [`kinematics`]: position/velocity/acceleration analysis and the consistent start.
+//! - [`hht`]: the HHT-α integrator ([`HhtBuilder`] → [`Integrator`]).
+//! - [`reactions`]: joint and actuator forces from the multipliers.
+//! - [`watch`]: constraint-drift and Euler-singularity watchdogs.
+//! - [`error`]: the one [`Error`] type.
+//! - [`testmodels`]: hand-written fixtures (pendulum, circle driver) for tests and examples.
+//!
+//! All solvers allocate their work memory when built; stepping and solving allocate nothing.
 
 // `!(x > tol)` is used on purpose throughout: unlike `x <= tol` it also rejects NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
