@@ -190,38 +190,3 @@ impl<T: Mechanism + ?Sized> Mechanism for &T {
         (**self).eval_kinematics(q, qd, t, out)
     }
 }
-
-/// A reference to a mechanism is a mechanism, so solvers generic over `M: Mechanism` also
-/// take `&dyn Mechanism` (choosing the formulation at run time).
-impl<T: Mechanism + ?Sized> Mechanism for &T {
-    fn info(&self) -> &'static MechanismInfo {
-        (**self).info()
-    }
-    fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        (**self).phi(q, t, out)
-    }
-    fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        (**self).phi_q(q, t, out)
-    }
-    fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        (**self).phi_t(q, t, out)
-    }
-    fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-        (**self).gamma(q, qd, t, out)
-    }
-    fn mass(&self, q: &[f64], out: &mut [f64]) {
-        (**self).mass(q, out)
-    }
-    fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-        (**self).force(q, qd, t, out)
-    }
-    fn potential(&self, q: &[f64]) -> f64 {
-        (**self).potential(q)
-    }
-    fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
-        (**self).eval_newton(q, qd, t, out)
-    }
-    fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
-        (**self).eval_kinematics(q, qd, t, out)
-    }
-}
