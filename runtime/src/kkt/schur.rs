@@ -364,8 +364,9 @@ impl KktSolver for SchurKkt {
                 let ljk = self.lval[pk];
                 let t = ljk * self.diag[k];
                 dj -= t * ljk;
-                for p in pk + 1..sym.col_ptr[k + 1] {
-                    self.work[sym.row_idx[p]] -= self.lval[p] * t;
+                let end = sym.col_ptr[k + 1];
+                for (&r, &l) in sym.row_idx[pk + 1..end].iter().zip(&self.lval[pk + 1..end]) {
+                    self.work[r] -= l * t;
                 }
             }
             if dj.is_nan() {
@@ -447,17 +448,19 @@ impl KktSolver for SchurKkt {
         }
         for j in 0..self.m {
             let zj = z[j];
-            for p in sym.col_ptr[j]..sym.col_ptr[j + 1] {
-                z[sym.row_idx[p]] -= self.lval[p] * zj;
+            let col = sym.col_ptr[j]..sym.col_ptr[j + 1];
+            for (&r, &l) in sym.row_idx[col.clone()].iter().zip(&self.lval[col]) {
+                z[r] -= l * zj;
             }
         }
         for (zj, &d) in z.iter_mut().zip(&self.dinv) {
             *zj *= d;
         }
         for j in (0..self.m).rev() {
+            let col = sym.col_ptr[j]..sym.col_ptr[j + 1];
             let mut t = z[j];
-            for p in sym.col_ptr[j]..sym.col_ptr[j + 1] {
-                t -= self.lval[p] * z[sym.row_idx[p]];
+            for (&r, &l) in sym.row_idx[col.clone()].iter().zip(&self.lval[col]) {
+                t -= l * z[r];
             }
             z[j] = t;
         }
