@@ -249,13 +249,9 @@ fn paper_formulation_is_the_papers_diagonal() {
             1..=6 => piston,
             _ => cylinder,
         };
-        for k in 0..6 {
+        for (k, e) in expect.iter().enumerate() {
             let i = 6 * b + k;
-            assert!(
-                (d[(i, i)] - expect[k]).abs() <= 1e-9,
-                "M[{i},{i}] = {}",
-                d[(i, i)]
-            );
+            assert!((d[(i, i)] - e).abs() <= 1e-9, "M[{i},{i}] = {}", d[(i, i)]);
         }
     }
     assert_eq!(d.iter().filter(|x| **x != 0.0).count(), N, "diagonal only");

@@ -347,10 +347,10 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Dynamics 
                 a.derivative(&[t_kin], &|v| (v == target).then_some(one))[0]
             })
             .collect();
-        for i in 0..6 {
+        for (i, &pi) in p.iter().enumerate() {
             for j in 0..6 {
                 let target = Var::Qd((off + j) as u32);
-                let m = a.derivative(&[p[i]], &|v| (v == target).then_some(one))[0];
+                let m = a.derivative(&[pi], &|v| (v == target).then_some(one))[0];
                 if !a.is_zero(m) {
                     mass.push(((off + i) as u32, (off + j) as u32, m));
                 }

@@ -185,8 +185,8 @@ impl Arena {
     pub fn add(&mut self, a: Id, b: Id) -> Id {
         match (self.as_const(a), self.as_const(b)) {
             (Some(x), Some(y)) => return self.constant(x + y),
-            (Some(x), _) if x == 0.0 => return b,
-            (_, Some(y)) if y == 0.0 => return a,
+            (Some(0.0), _) => return b,
+            (_, Some(0.0)) => return a,
             _ => {}
         }
         // x + (-x) = 0 exactly in floating point as well.
@@ -210,12 +210,12 @@ impl Arena {
     pub fn mul(&mut self, a: Id, b: Id) -> Id {
         match (self.as_const(a), self.as_const(b)) {
             (Some(x), Some(y)) => return self.constant(x * y),
-            (Some(x), _) if x == 0.0 => return a,
-            (_, Some(y)) if y == 0.0 => return b,
-            (Some(x), _) if x == 1.0 => return b,
-            (_, Some(y)) if y == 1.0 => return a,
-            (Some(x), _) if x == -1.0 => return self.neg(b),
-            (_, Some(y)) if y == -1.0 => return self.neg(a),
+            (Some(0.0), _) => return a,
+            (_, Some(0.0)) => return b,
+            (Some(1.0), _) => return b,
+            (_, Some(1.0)) => return a,
+            (Some(-1.0), _) => return self.neg(b),
+            (_, Some(-1.0)) => return self.neg(a),
             _ => {}
         }
         // Pull negations out of products so that sign-only differences share nodes.
