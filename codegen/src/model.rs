@@ -286,12 +286,17 @@ impl Validator<'_> {
 
     fn model(&mut self, raw: RawFile) -> Option<Model> {
         let name = match raw.name {
-            Some(n) if is_identifier(n.get_ref()) => n.into_inner(),
+            Some(n) if is_identifier(n.get_ref()) && !KEYWORDS.contains(&n.get_ref().as_str()) => {
+                n.into_inner()
+            }
             Some(n) => {
                 self.err(
                     n.span(),
                     "the file",
-                    format!("mechanism name `{}` is not a valid identifier", n.get_ref()),
+                    format!(
+                        "mechanism name `{}` is not a valid identifier (or is a Rust keyword)",
+                        n.get_ref()
+                    ),
                     "use lowercase letters, digits and underscores, e.g. `stewart_6_6`",
                 );
                 return None;
@@ -779,6 +784,18 @@ impl Validator<'_> {
             }
         };
         match parse_expr(&mut self.arena, value.get_ref(), &mut resolve) {
+            Ok(id) if !self.arena.eval(id, &|_| 0.0).is_finite() => {
+                self.err(
+                    value.span(),
+                    item,
+                    format!(
+                        "`value` is not finite at t = 0 ({})",
+                        self.arena.eval(id, &|_| 0.0)
+                    ),
+                    "check the expression for a division by zero or a domain error",
+                );
+                None
+            }
             Ok(id) => Some(Driver {
                 name,
                 joint: ji,
@@ -1058,8 +1075,23 @@ impl Validator<'_> {
     ) -> Option<f64> {
         match s.get_ref() {
             Scalar::Int(i) => Some(*i as f64),
-            Scalar::Float(f) => Some(*f),
+            Scalar::Float(f) => self.finite(*f, s.span(), item, field),
             Scalar::Expr(src) => self.constant_expr(src, s.span(), item, field, cache),
+        }
+    }
+
+    /// TOML accepts `inf` and `nan`; no physical quantity here may be either.
+    fn finite(&mut self, v: f64, span: Range<usize>, item: &str, field: &str) -> Option<f64> {
+        if v.is_finite() {
+            Some(v)
+        } else {
+            self.err(
+                span,
+                item,
+                format!("`{field}` is {v}"),
+                "give a finite number",
+            );
+            None
         }
     }
 
@@ -1151,7 +1183,7 @@ impl Validator<'_> {
         let item = format!("parameter `{name}`");
         let v = match value {
             Scalar::Int(i) => Some(i as f64),
-            Scalar::Float(f) => Some(f),
+            Scalar::Float(f) => self.finite(f, span, &item, name),
             Scalar::Expr(src) => self.constant_expr(&src, span, &item, name, cache),
         };
         match v {
@@ -1193,6 +1225,15 @@ fn referenced_names(src: &str) -> Vec<String> {
     }
     out
 }
+
+/// Rust keywords cannot name a generated module.
+const KEYWORDS: &[&str] = &[
+    "as", "async", "await", "break", "const", "continue", "crate", "dyn", "else", "enum", "extern",
+    "false", "fn", "for", "gen", "if", "impl", "in", "let", "loop", "match", "mod", "move", "mut",
+    "pub", "ref", "return", "self", "static", "struct", "super", "trait", "true", "try", "type",
+    "unsafe", "use", "where", "while", "abstract", "become", "box", "do", "final", "macro",
+    "override", "priv", "typeof", "unsized", "virtual", "yield",
+];
 
 fn is_identifier(s: &str) -> bool {
     let mut chars = s.chars();

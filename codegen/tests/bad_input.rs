@@ -259,3 +259,106 @@ fn reserved_ground_name() {
         "reserved",
     );
 }
+
+#[test]
+fn non_finite_numbers_are_rejected() {
+    let (text, d) = single_error("amp = 0.02", "amp = nan");
+    check(
+        &d,
+        line_of(&text, "amp = nan"),
+        "parameter `amp`",
+        "`amp` is NaN",
+        "finite number",
+    );
+    let (text, d) = single_error(
+        "value = \"initial + amp * sin(t)\"",
+        "value = \"initial + amp / 0.0 * sin(t)\"",
+    );
+    check(
+        &d,
+        line_of(&text, "value ="),
+        "driver `act`",
+        "not finite",
+        "division by zero",
+    );
+}
+
+#[test]
+fn keyword_mechanism_name_is_rejected() {
+    let (text, d) = single_error(r#"name = "pair""#, r#"name = "mod""#);
+    check(
+        &d,
+        line_of(&text, r#"name = "mod""#),
+        "the file",
+        "Rust keyword",
+        "lowercase letters",
+    );
+}
+
+/// splitmix64, for reproducible mutations.
+fn next(state: &mut u64) -> u64 {
+    *state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+#[test]
+fn random_mutations_never_panic() {
+    // Delete, duplicate or corrupt lines and values; every outcome must be Ok or a
+    // diagnostic, never a panic.
+    const SNIPPETS: [&str; 12] = [
+        "",
+        "nan",
+        "inf",
+        "-1.0",
+        "0.0",
+        "[]",
+        "[1, 2]",
+        "\"x\"",
+        "\"t * t\"",
+        "= =",
+        "[[body]]",
+        "\"ground\"",
+    ];
+    let lines: Vec<&str> = GOOD.lines().collect();
+    let mut state = 7u64;
+    for case in 0..400 {
+        let mut ls: Vec<String> = lines.iter().map(|s| s.to_string()).collect();
+        for _ in 0..1 + next(&mut state) % 3 {
+            let i = (next(&mut state) % ls.len() as u64) as usize;
+            match next(&mut state) % 4 {
+                0 => {
+                    ls.remove(i);
+                }
+                1 => {
+                    let l = ls[i].clone();
+                    ls.insert(i, l);
+                }
+                2 => {
+                    if let Some(eq) = ls[i].find('=') {
+                        let snip = SNIPPETS[(next(&mut state) % SNIPPETS.len() as u64) as usize];
+                        ls[i] = format!("{}= {snip}", &ls[i][..eq]);
+                    }
+                }
+                _ => {
+                    let l = &ls[i];
+                    let cut = (next(&mut state) % (l.len() as u64 + 1)) as usize;
+                    ls[i] = l.chars().take(cut).collect();
+                }
+            }
+        }
+        let text = ls.join("\n");
+        let result = std::panic::catch_unwind(|| generate("mechanisms/pair.toml", &text));
+        match result {
+            Ok(Ok(_)) => {}
+            Ok(Err(e)) => {
+                for d in &e.0 {
+                    assert!(d.line >= 1 && !d.message.is_empty(), "case {case}: {d}");
+                }
+            }
+            Err(_) => panic!("case {case} panicked on:\n{text}"),
+        }
+    }
+}
