@@ -10,7 +10,8 @@ use std::sync::Once;
 static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
 
-fn register_font() {
+/// Registers the embedded font as `sans-serif`; every drawing function calls it first.
+pub fn register_font() {
     REGISTER.call_once(|| {
         // The font is compiled in; failing to parse it is a build defect, reported on use.
         let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, FONT);
@@ -153,4 +154,94 @@ pub fn paper_figures(run: &Run, dir: &Path) -> Result<Vec<PathBuf>, String> {
         )?;
     }
     Ok(files)
+}
+
+/// One line of a log-log chart: a name and its `(x, y)` points (non-positive points are
+/// dropped, a log axis cannot show them).
+pub struct LogSeries {
+    pub name: String,
+    pub points: Vec<(f64, f64)>,
+}
+
+/// Draws named lines (with point markers) on log-log axes, e.g. a work-precision diagram.
+pub fn draw_log_log(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[LogSeries],
+) -> Result<(), String> {
+    register_font();
+    let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
+    let usable = |&(x, y): &(f64, f64)| x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite();
+    let pts = || {
+        series
+            .iter()
+            .flat_map(|s| s.points.iter().copied().filter(usable))
+    };
+    let range = |f: fn((f64, f64)) -> f64| {
+        let (lo, hi) = pts()
+            .map(f)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
+        if lo.is_finite() {
+            // Half a decade of margin so end points and markers stay inside the frame.
+            (lo / 2.0, hi * 2.0)
+        } else {
+            (1.0, 10.0)
+        }
+    };
+    let ((x0, x1), (y0, y1)) = (range(|p| p.0), range(|p| p.1));
+    let root = BitMapBackend::new(path, (900, 640)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 22))
+        .margin(16)
+        .x_label_area_size(48)
+        .y_label_area_size(90)
+        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .y_desc(y_label)
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 17))
+        .draw()
+        .map_err(|e| err(&e))?;
+    const PALETTE: [RGBColor; 6] = [
+        RGBColor(0, 90, 181),
+        RGBColor(220, 50, 32),
+        RGBColor(0, 140, 70),
+        RGBColor(230, 150, 0),
+        RGBColor(120, 60, 170),
+        RGBColor(90, 90, 90),
+    ];
+    for (k, s) in series.iter().enumerate() {
+        let color = PALETTE[k % PALETTE.len()];
+        let p: Vec<(f64, f64)> = s.points.iter().copied().filter(usable).collect();
+        chart
+            .draw_series(LineSeries::new(p.iter().copied(), color.stroke_width(2)))
+            .map_err(|e| err(&e))?
+            .label(s.name.as_str())
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+            });
+        chart
+            .draw_series(p.iter().map(|&c| Circle::new(c, 4, color.filled())))
+            .map_err(|e| err(&e))?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 15))
+        .draw()
+        .map_err(|e| err(&e))?;
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
 }

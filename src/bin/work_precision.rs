@@ -1,0 +1,393 @@
+//! Work-precision report for the paper's scenario: wall time against error for a sweep of
+//! HHT step sizes and α, both formulations, each against a much finer reference run.
+//!
+//! `cargo run --release --bin work_precision [-- --runs N] [-- --quick]` writes
+//! `bench-results/work_precision.{csv,md,png}` and prints the Markdown table.
+//!
+//! Errors are maxima over common output times (every 0.04 s, which every step of the sweep
+//! divides, so every run lands exactly on them) of |run − reference|. The reference uses
+//! the same formulation and α with step [`REFERENCE_STEP`]; its own error is estimated by
+//! comparing it with a run at twice its step. The `paper` formulation runs over [0, 2.5] s
+//! only: its leg 6 spins into the Euler singularity at t ≈ 2.77 s (see tests/paper_scenario.rs).
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use symbody::plot::{draw_log_log, LogSeries};
+use symbody::scenario::{simulate, Options, Run};
+use symbody_runtime::Formulation;
+
+/// Step sizes of the sweep (s); each divides [`OUTPUT_STEP`].
+const STEPS: [f64; 10] = [2e-2, 1e-2, 5e-3, 4e-3, 2.5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4];
+const ALPHAS: [f64; 4] = [0.0, -0.05, -0.1, -0.3];
+/// Spacing of the compared outputs (s).
+const OUTPUT_STEP: f64 = 0.04;
+/// Step of the reference runs (s): 4× below the finest step of the sweep.
+const REFERENCE_STEP: f64 = 2.5e-5;
+/// End time of the `paper` formulation: before its Euler singularity at t ≈ 2.77 s.
+const PAPER_T_END: f64 = 2.5;
+/// The issue's accuracy target on the leg-1 upper-joint force (N).
+const FORCE_TARGET: f64 = 1e-4;
+
+fn t_end(f: Formulation) -> f64 {
+    match f {
+        Formulation::Exact => 2.0 * std::f64::consts::PI,
+        Formulation::Paper => PAPER_T_END,
+    }
+}
+
+fn name(f: Formulation) -> &'static str {
+    match f {
+        Formulation::Exact => "exact",
+        Formulation::Paper => "paper",
+    }
+}
+
+fn options(f: Formulation, step: f64, alpha: f64) -> Options {
+    Options {
+        formulation: f,
+        t_end: t_end(f),
+        step,
+        alpha,
+        output_step: OUTPUT_STEP,
+    }
+}
+
+/// Max errors against a reference: platform position (m), platform angles (rad),
+/// leg-1 upper-joint force (N), actuator forces (N).
+#[derive(Debug, Clone, Copy, Default)]
+struct Errors {
+    position: f64,
+    angle: f64,
+    force: f64,
+    actuator: f64,
+}
+
+fn errors(r: &Run, reference: &Run) -> Result<Errors, String> {
+    if r.t.len() != reference.t.len() {
+        return Err(format!(
+            "{} outputs against the reference's {}",
+            r.t.len(),
+            reference.t.len()
+        ));
+    }
+    let mut e = Errors::default();
+    let max_diff = |a: &[f64], b: &[f64]| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs())
+            .fold(0.0f64, f64::max)
+    };
+    for k in 0..r.t.len() {
+        if (r.t[k] - reference.t[k]).abs() > 1e-12 {
+            return Err(format!(
+                "output {k} at t = {} against {}",
+                r.t[k], reference.t[k]
+            ));
+        }
+        let (p, pr) = (&r.platform[k], &reference.platform[k]);
+        e.position = e.position.max(max_diff(&p[..3], &pr[..3]));
+        e.angle = e.angle.max(max_diff(&p[3..], &pr[3..]));
+        e.force = e
+            .force
+            .max(max_diff(&r.upper[k][0], &reference.upper[k][0]));
+        e.actuator = e
+            .actuator
+            .max(max_diff(&r.actuators[k], &reference.actuators[k]));
+    }
+    Ok(e)
+}
+
+/// One cell of the sweep.
+struct Row {
+    formulation: Formulation,
+    alpha: f64,
+    step: f64,
+    /// Wall times of the repeated runs (s), ascending.
+    walls: Vec<f64>,
+    outcome: Result<(Run, Errors), String>,
+}
+
+impl Row {
+    fn median_wall(&self) -> f64 {
+        self.walls
+            .get(self.walls.len() / 2)
+            .copied()
+            .unwrap_or(f64::NAN)
+    }
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut runs = 3usize;
+    let mut quick = false;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--runs" => {
+                runs = it
+                    .next()
+                    .and_then(|v| v.parse().ok())
+                    .filter(|&n: &usize| n >= 1)
+                    .unwrap_or_else(|| fail("--runs needs a positive integer"));
+            }
+            // A smoke test of the binary itself: one α, coarse steps, coarse reference.
+            "--quick" => quick = true,
+            other => fail(&format!(
+                "unknown argument `{other}` (expected --runs N or --quick)"
+            )),
+        }
+    }
+    let (steps, alphas, reference_step): (&[f64], &[f64], f64) = if quick {
+        (&STEPS[..4], &ALPHAS[1..2], 1e-3)
+    } else {
+        (&STEPS, &ALPHAS, REFERENCE_STEP)
+    };
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let dir = root.join("bench-results");
+    std::fs::create_dir_all(&dir)
+        .unwrap_or_else(|e| fail(&format!("cannot create {}: {e}", dir.display())));
+
+    let mut rows = Vec::new();
+    let mut reference_checks = Vec::new();
+    for formulation in [Formulation::Exact, Formulation::Paper] {
+        for &alpha in alphas {
+            let reference =
+                simulate(&options(formulation, reference_step, alpha)).unwrap_or_else(|e| {
+                    fail(&format!(
+                        "reference run ({}, α = {alpha}, h = {reference_step}) failed: {e}",
+                        name(formulation)
+                    ))
+                });
+            // The reference's own error, estimated from a run at twice its step.
+            let check = simulate(&options(formulation, 2.0 * reference_step, alpha))
+                .map_err(|e| e.to_string())
+                .and_then(|r| errors(&r, &reference));
+            eprintln!(
+                "{} α = {alpha}: reference {:.2} s wall; |h={} − h={}|: {check:?}",
+                name(formulation),
+                reference.wall.as_secs_f64(),
+                2.0 * reference_step,
+                reference_step
+            );
+            reference_checks.push((formulation, alpha, check));
+            for &step in steps {
+                let mut walls = Vec::new();
+                let mut outcome = Err(String::from("not run"));
+                for _ in 0..runs {
+                    match simulate(&options(formulation, step, alpha)) {
+                        Ok(r) => {
+                            walls.push(r.wall.as_secs_f64());
+                            outcome = errors(&r, &reference).map(|e| (r, e));
+                        }
+                        Err(e) => {
+                            // Deterministic: a failure repeats, so one is enough.
+                            outcome = Err(e.to_string());
+                            break;
+                        }
+                    }
+                }
+                walls.sort_by(f64::total_cmp);
+                let row = Row {
+                    formulation,
+                    alpha,
+                    step,
+                    walls,
+                    outcome,
+                };
+                match &row.outcome {
+                    Ok((r, e)) => eprintln!(
+                        "  h = {step:e}: {:.1} ms, {} steps, {} Newton; force err {:.2e} N",
+                        row.median_wall() * 1e3,
+                        r.stats.steps,
+                        r.stats.newton_iterations,
+                        e.force
+                    ),
+                    Err(m) => eprintln!("  h = {step:e}: FAILED: {m}"),
+                }
+                rows.push(row);
+            }
+        }
+    }
+
+    let csv = csv(&rows, reference_step);
+    let md = markdown(&rows, &reference_checks, reference_step, runs);
+    let write = |file: &str, text: &str| {
+        let p = dir.join(file);
+        std::fs::write(&p, text)
+            .unwrap_or_else(|e| fail(&format!("cannot write {}: {e}", p.display())));
+        eprintln!("wrote {}", p.display());
+    };
+    write("work_precision.csv", &csv);
+    write("work_precision.md", &md);
+    let series: Vec<LogSeries> = [Formulation::Exact, Formulation::Paper]
+        .iter()
+        .flat_map(|&f| alphas.iter().map(move |&a| (f, a)))
+        .map(|(f, a)| LogSeries {
+            name: format!("{} (0..{:.2} s), α = {a}", name(f), t_end(f)),
+            points: rows
+                .iter()
+                .filter(|r| r.formulation == f && r.alpha == a)
+                .filter_map(|r| {
+                    r.outcome
+                        .as_ref()
+                        .ok()
+                        .map(|(_, e)| (r.median_wall(), e.force))
+                })
+                .collect(),
+        })
+        .collect();
+    let png = dir.join("work_precision.png");
+    draw_log_log(
+        &png,
+        "Paper scenario: leg-1 upper-joint force error vs wall time",
+        "wall time (s, median)",
+        "max |F - F_ref| at leg 1 upper joint (N)",
+        &series,
+    )
+    .unwrap_or_else(|e| fail(&e));
+    eprintln!("wrote {}", png.display());
+    print!("{md}");
+}
+
+fn fail(msg: &str) -> ! {
+    eprintln!("error: {msg}");
+    std::process::exit(2)
+}
+
+fn csv(rows: &[Row], reference_step: f64) -> String {
+    let mut s = String::from(
+        "formulation,alpha,step,t_end,reference_step,status,wall_ms_median,wall_ms_runs,steps,\
+         newton_iterations,factorizations,rejected_steps,platform_position_err_m,\
+         platform_angle_err_rad,leg1_force_err_N,actuator_err_N,real_time_factor,message\n",
+    );
+    for r in rows {
+        let walls: Vec<String> = r.walls.iter().map(|w| format!("{:.3}", w * 1e3)).collect();
+        let _ = write!(
+            s,
+            "{},{},{},{:.6},{},",
+            name(r.formulation),
+            r.alpha,
+            r.step,
+            t_end(r.formulation),
+            reference_step
+        );
+        match &r.outcome {
+            Ok((run, e)) => {
+                let _ = writeln!(
+                    s,
+                    "ok,{:.3},{},{},{},{},{},{:.3e},{:.3e},{:.3e},{:.3e},{:.1},",
+                    r.median_wall() * 1e3,
+                    walls.join(";"),
+                    run.stats.steps,
+                    run.stats.newton_iterations,
+                    run.stats.factorizations,
+                    run.stats.rejected_steps,
+                    e.position,
+                    e.angle,
+                    e.force,
+                    e.actuator,
+                    t_end(r.formulation) / r.median_wall()
+                );
+            }
+            Err(m) => {
+                let _ = writeln!(s, "failed,,,,,,,,,,,,\"{}\"", m.replace('"', "'"));
+            }
+        }
+    }
+    s
+}
+
+fn markdown(
+    rows: &[Row],
+    checks: &[(Formulation, f64, Result<Errors, String>)],
+    reference_step: f64,
+    runs: usize,
+) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "Reference: same formulation and α, step {reference_step:e} s; outputs compared every \
+         {OUTPUT_STEP} s. Wall time: median of {runs} runs of the whole scenario (start, \
+         integration, recording). `exact` over [0, 2π], `paper` over [0, {PAPER_T_END}] s.\n"
+    );
+    let _ = writeln!(
+        s,
+        "| formulation | α | h (s) | wall (ms) | × real time | steps | Newton | pose err (m / rad) | leg-1 force err (N) | actuator err (N) |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
+    for r in rows {
+        let head = format!("| {} | {} | {:e} |", name(r.formulation), r.alpha, r.step);
+        match &r.outcome {
+            Ok((run, e)) => {
+                let mark = if e.force <= FORCE_TARGET { " ✓" } else { "" };
+                let _ = writeln!(
+                    s,
+                    "{head} {:.1} | {:.0} | {} | {} | {:.1e} / {:.1e} | {:.1e}{mark} | {:.1e} |",
+                    r.median_wall() * 1e3,
+                    t_end(r.formulation) / r.median_wall(),
+                    run.stats.steps,
+                    run.stats.newton_iterations,
+                    e.position,
+                    e.angle,
+                    e.force,
+                    e.actuator
+                );
+            }
+            Err(m) => {
+                let _ = writeln!(s, "{head} failed: {} | | | | | | |", m.replace('|', "/"));
+            }
+        }
+    }
+    let _ = writeln!(
+        s,
+        "\n✓: leg-1 force error ≤ {FORCE_TARGET:e} N (the issue's target).\n"
+    );
+    let _ = writeln!(
+        s,
+        "Reference check (run at step {:e} against the reference; the reference's own error \
+         is smaller still):\n",
+        2.0 * reference_step
+    );
+    let _ = writeln!(
+        s,
+        "| formulation | α | pose (m / rad) | leg-1 force (N) | actuators (N) |"
+    );
+    let _ = writeln!(s, "|---|---|---|---|---|");
+    for (f, a, c) in checks {
+        match c {
+            Ok(e) => {
+                let _ = writeln!(
+                    s,
+                    "| {} | {a} | {:.1e} / {:.1e} | {:.1e} | {:.1e} |",
+                    name(*f),
+                    e.position,
+                    e.angle,
+                    e.force,
+                    e.actuator
+                );
+            }
+            Err(m) => {
+                let _ = writeln!(s, "| {} | {a} | failed: {m} | | |", name(*f));
+            }
+        }
+    }
+    // The fastest run of the exact formulation over one period meeting the force target.
+    let best = rows
+        .iter()
+        .filter(|r| r.formulation == Formulation::Exact)
+        .filter(|r| matches!(&r.outcome, Ok((_, e)) if e.force <= FORCE_TARGET))
+        .min_by(|a, b| a.median_wall().total_cmp(&b.median_wall()));
+    if let Some(b) = best {
+        let _ = writeln!(
+            s,
+            "\nFastest `exact` run over 2π with leg-1 force error ≤ {FORCE_TARGET:e} N: \
+             α = {}, h = {:e} s, {:.1} ms ({:.0}× real time; target ≥ 100×, ≤ 63 ms).",
+            b.alpha,
+            b.step,
+            b.median_wall() * 1e3,
+            t_end(b.formulation) / b.median_wall()
+        );
+    }
+    s
+}
