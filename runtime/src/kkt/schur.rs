@@ -7,6 +7,9 @@ use super::ordering::{minimum_degree, Symbolic};
 use super::{check_kkt_len, KktError, KktPattern, KktSolver, DEFAULT_PIVOT_TOLERANCE};
 use crate::error::Error;
 
+/// Largest group of mass-matrix blocks factored together as one dense block.
+const GROUP_MAX: usize = 6;
+
 /// Marks a scatter destination in `diag` rather than in `lval`.
 const DIAG_FLAG: usize = 1 << (usize::BITS - 1);
 
@@ -15,6 +18,7 @@ const DIAG_FLAG: usize = 1 << (usize::BITS - 1);
 pub struct SchurKkt {
     n: usize,
     m: usize,
+    component_sizes: Vec<usize>,
     // Diagonal blocks of M: coordinates of block b are `block_coords[block_ptr[b]..block_ptr[b+1]]`.
     block_ptr: Vec<usize>,
     block_coords: Vec<usize>,
@@ -26,11 +30,14 @@ pub struct SchurKkt {
     // Rows of Φq touching block b: `brows[brow_ptr[b]..brow_ptr[b+1]]`, ascending.
     brow_ptr: Vec<usize>,
     brows: Vec<usize>,
-    /// Offset of block b's dense `rows × block size` slice of Φq in `pmat` / `wmat`.
+    /// Offset of block b's dense `rows × block size` slice of Φq in `wmat`.
     p_off: Vec<usize>,
-    pmat: Vec<f64>,
-    /// `L_b⁻¹ Φq_bᵀ`, stored row by row like `pmat`.
+    /// Φq_b (rows touching block b, row by row), overwritten by `W_b = L_b⁻¹ Φq_bᵀ`.
     wmat: Vec<f64>,
+    /// Reciprocals of the diagonal of the block Cholesky factors, by position in `block_coords`.
+    inv_diag: Vec<f64>,
+    /// `L_b⁻¹ f_b` between the two halves of a solve, by position in `block_coords`.
+    ustore: Vec<f64>,
     phi_q_dest: Vec<usize>,
     /// For each block, the destinations of `S[a, b]` (local rows `a ≥ b`, row-major order).
     pair_ptr: Vec<usize>,
@@ -47,7 +54,6 @@ pub struct SchurKkt {
     row_list: Vec<(usize, usize)>,
     work: Vec<f64>,
     rvec: Vec<f64>,
-    local: Vec<f64>,
     factored: bool,
     pivot_tol: f64,
 }
@@ -58,27 +64,121 @@ impl SchurKkt {
         self.lval.len()
     }
 
-    /// Sizes of the detected diagonal blocks of `M`, in order.
+    /// Sizes of the detected diagonal blocks of `M` (connected components of its pattern),
+    /// in order of their first coordinate.
     pub fn block_sizes(&self) -> Vec<usize> {
+        self.component_sizes.clone()
+    }
+
+    /// Sizes of the groups of blocks factored together (see `GROUP_MAX`).
+    pub fn group_sizes(&self) -> Vec<usize> {
         self.block_ptr.windows(2).map(|w| w[1] - w[0]).collect()
     }
 
-    fn block_solve(chol: &[f64], s: usize, v: &mut [f64]) {
-        for i in 0..s {
-            let mut t = v[i];
-            for j in 0..i {
-                t -= chol[i * s + j] * v[j];
-            }
-            v[i] = t / chol[i * s + i];
+}
+
+// The block kernels take the block size `s` as an argument and are always inlined: every
+// call site passes the literal 6 when the group has a body's six coordinates (the common
+// case), so the compiler sees a constant size, unrolls the loops and drops bounds checks;
+// other sizes run the same code with a variable `s`.
+
+/// `v ← L⁻¹ v` for the row-major lower-triangular `l` (`s × s`) with reciprocal diagonal `inv`.
+#[inline(always)]
+fn forward(l: &[f64], inv: &[f64], s: usize, v: &mut [f64]) {
+    let (l, inv, v) = (&l[..s * s], &inv[..s], &mut v[..s]);
+    for i in 0..s {
+        let mut t = v[i];
+        for j in 0..i {
+            t -= l[i * s + j] * v[j];
         }
-        for i in (0..s).rev() {
-            let mut t = v[i];
-            for j in i + 1..s {
-                t -= chol[j * s + i] * v[j];
+        v[i] = t * inv[i];
+    }
+}
+
+/// `v ← L⁻ᵀ v`.
+#[inline(always)]
+fn backward(l: &[f64], inv: &[f64], s: usize, v: &mut [f64]) {
+    let (l, inv, v) = (&l[..s * s], &inv[..s], &mut v[..s]);
+    for i in (0..s).rev() {
+        let mut t = v[i];
+        for j in i + 1..s {
+            t -= l[j * s + i] * v[j];
+        }
+        v[i] = t * inv[i];
+    }
+}
+
+#[inline(always)]
+fn dot(a: &[f64], b: &[f64], s: usize) -> f64 {
+    let (a, b) = (&a[..s], &b[..s]);
+    let mut t = 0.0;
+    for i in 0..s {
+        t += a[i] * b[i];
+    }
+    t
+}
+
+/// Cholesky of the `s × s` block `a` in place (lower triangle, row-major); `inv` gets the
+/// reciprocal diagonal. On failure returns the local index of the bad pivot and whether it
+/// was NaN.
+#[inline(always)]
+fn cholesky(a: &mut [f64], inv: &mut [f64], s: usize) -> Result<(), (usize, bool)> {
+    let (a, inv) = (&mut a[..s * s], &mut inv[..s]);
+    for j in 0..s {
+        let mut d = a[j * s + j];
+        for k in 0..j {
+            d -= a[j * s + k] * a[j * s + k];
+        }
+        if !(d > 0.0) || !d.is_finite() {
+            return Err((j, d.is_nan()));
+        }
+        let d = d.sqrt();
+        a[j * s + j] = d;
+        let r = 1.0 / d;
+        inv[j] = r;
+        for i in j + 1..s {
+            let mut t = a[i * s + j];
+            for k in 0..j {
+                t -= a[i * s + k] * a[j * s + k];
             }
-            v[i] = t / chol[i * s + i];
+            a[i * s + j] = t * r;
         }
     }
+    Ok(())
+}
+
+/// One group's share of the factorization: Cholesky of its mass block, `W = L⁻¹ Φq_bᵀ` row
+/// by row, and `S += WᵀW` scattered through the precomputed destinations.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn factor_group(
+    s: usize,
+    a: &mut [f64],
+    inv: &mut [f64],
+    w: &mut [f64],
+    dest: &[usize],
+    diag: &mut [f64],
+    lval: &mut [f64],
+) -> Result<(), (usize, bool)> {
+    cholesky(a, inv, s)?;
+    let k = w.len() / s;
+    for row in w.chunks_exact_mut(s) {
+        forward(a, inv, s, row);
+    }
+    let mut dest = dest.iter();
+    for i in 0..k {
+        let wi = &w[i * s..i * s + s];
+        for j in 0..=i {
+            let v = dot(wi, &w[j * s..j * s + s], s);
+            let d = *dest.next().expect("pair slots precomputed");
+            if d & DIAG_FLAG != 0 {
+                diag[d & !DIAG_FLAG] += v;
+            } else {
+                lval[d] += v;
+            }
+        }
+    }
+    Ok(())
 }
 
 fn find(parent: &mut [usize], mut i: usize) -> usize {
@@ -122,6 +222,21 @@ impl KktSolver for SchurKkt {
             }
             members[root_block[r]].push(c);
         }
+        let component_sizes = members.iter().map(Vec::len).collect();
+        // Consecutive components are merged into groups of up to GROUP_MAX coordinates (a
+        // body's six): with the exact formulation a body's M is three 1×1 blocks and one 3×3,
+        // with the paper's six 1×1 blocks, all touching the same constraint rows. Per-block
+        // overhead (slicing, the scatter of `S += WᵀW` pairs, four times over the same rows)
+        // cost more than the structural zeros a dense 6×6 group adds; the result is the same
+        // (Cholesky keeps those zeros exactly zero).
+        let mut groups: Vec<Vec<usize>> = Vec::new();
+        for mem in members {
+            match groups.last_mut() {
+                Some(g) if g.len() + mem.len() <= GROUP_MAX => g.extend_from_slice(&mem),
+                _ => groups.push(mem),
+            }
+        }
+        let members = groups;
         let nb = members.len();
         let mut coord_block = vec![0; n];
         let mut coord_local = vec![0; n];
@@ -233,11 +348,11 @@ impl KktSolver for SchurKkt {
             }
         }
 
-        let max_block = members.iter().map(Vec::len).max().unwrap_or(0);
         let lnnz = sym.row_idx.len();
         Ok(SchurKkt {
             n,
             m,
+            component_sizes,
             block_ptr,
             block_coords,
             chol_off,
@@ -246,8 +361,9 @@ impl KktSolver for SchurKkt {
             brow_ptr,
             brows,
             p_off,
-            pmat: vec![0.0; p_len],
             wmat: vec![0.0; p_len],
+            inv_diag: vec![0.0; n],
+            ustore: vec![0.0; n],
             phi_q_dest,
             pair_ptr,
             pair_dest,
@@ -259,7 +375,6 @@ impl KktSolver for SchurKkt {
             row_list,
             work: vec![0.0; m],
             rvec: vec![0.0; m],
-            local: vec![0.0; max_block],
             factored: false,
             pivot_tol: DEFAULT_PIVOT_TOLERANCE,
         })
@@ -270,79 +385,44 @@ impl KktSolver for SchurKkt {
         check_kkt_len(self.mass_dest.len(), mass.len())?;
         check_kkt_len(self.phi_q_dest.len(), phi_q.len())?;
 
-        // Block Cholesky of c·M (lower triangle, row-major).
+        // Per group: Cholesky of c·M_b (lower triangle, row-major), W_b = L_b⁻¹ Φq_bᵀ and
+        // S += W_bᵀ W_b.
         self.chol.fill(0.0);
         for (&d, &v) in self.mass_dest.iter().zip(mass) {
             self.chol[d] = mass_scale * v;
         }
-        let nb = self.chol_off.len();
-        for b in 0..nb {
-            let coords = &self.block_coords[self.block_ptr[b]..self.block_ptr[b + 1]];
-            let s = coords.len();
-            let a = &mut self.chol[self.chol_off[b]..self.chol_off[b] + s * s];
-            for j in 0..s {
-                let mut d = a[j * s + j];
-                for k in 0..j {
-                    d -= a[j * s + k] * a[j * s + k];
-                }
-                if !(d > 0.0) || !d.is_finite() {
-                    return Err(if d.is_nan() {
-                        KktError::NotFinite
-                    } else {
-                        KktError::MassNotPositiveDefinite { coord: coords[j] }
-                    });
-                }
-                let d = d.sqrt();
-                a[j * s + j] = d;
-                for i in j + 1..s {
-                    let mut t = a[i * s + j];
-                    for k in 0..j {
-                        t -= a[i * s + k] * a[j * s + k];
-                    }
-                    a[i * s + j] = t / d;
-                }
-            }
-        }
-
-        // W_b = L_b⁻¹ Φq_bᵀ, one forward substitution per touching row.
-        self.pmat.fill(0.0);
+        self.wmat.fill(0.0);
         for (&d, &v) in self.phi_q_dest.iter().zip(phi_q) {
             if !v.is_finite() {
                 return Err(KktError::NotFinite);
             }
-            self.pmat[d] = v;
+            self.wmat[d] = v;
         }
-        self.wmat.copy_from_slice(&self.pmat);
         self.diag.fill(0.0);
         self.lval.fill(0.0);
+        let nb = self.chol_off.len();
         for b in 0..nb {
-            let s = self.block_ptr[b + 1] - self.block_ptr[b];
-            let l = &self.chol[self.chol_off[b]..self.chol_off[b] + s * s];
+            let (c0, c1) = (self.block_ptr[b], self.block_ptr[b + 1]);
+            let s = c1 - c0;
             let k = self.brow_ptr[b + 1] - self.brow_ptr[b];
+            let a = &mut self.chol[self.chol_off[b]..self.chol_off[b] + s * s];
+            let inv = &mut self.inv_diag[c0..c1];
             let w = &mut self.wmat[self.p_off[b]..self.p_off[b] + k * s];
-            for row in w.chunks_exact_mut(s) {
-                for i in 0..s {
-                    let mut t = row[i];
-                    for j in 0..i {
-                        t -= l[i * s + j] * row[j];
+            let dest = &self.pair_dest[self.pair_ptr[b]..self.pair_ptr[b + 1]];
+            let (diag, lval) = (&mut self.diag[..], &mut self.lval[..]);
+            let done = if s == 6 {
+                factor_group(6, a, inv, w, dest, diag, lval)
+            } else {
+                factor_group(s, a, inv, w, dest, diag, lval)
+            };
+            if let Err((j, nan)) = done {
+                return Err(if nan {
+                    KktError::NotFinite
+                } else {
+                    KktError::MassNotPositiveDefinite {
+                        coord: self.block_coords[c0 + j],
                     }
-                    row[i] = t / l[i * s + i];
-                }
-            }
-            // S += W_bᵀ W_b over the rows touching this block.
-            let mut dest = self.pair_dest[self.pair_ptr[b]..self.pair_ptr[b + 1]].iter();
-            for a in 0..k {
-                let wa = &w[a * s..a * s + s];
-                for c in 0..=a {
-                    let wc = &w[c * s..c * s + s];
-                    let v: f64 = wa.iter().zip(wc).map(|(x, y)| x * y).sum();
-                    let d = *dest.next().expect("pair slots precomputed");
-                    if d & DIAG_FLAG != 0 {
-                        self.diag[d & !DIAG_FLAG] += v;
-                    } else {
-                        self.lval[d] += v;
-                    }
-                }
+                });
             }
         }
 
@@ -423,22 +503,32 @@ impl KktSolver for SchurKkt {
         check_kkt_len(self.m, y.len())?;
         let nb = self.chol_off.len();
 
-        // r = Φq M⁻¹ f − g, then S y = r.
+        // With u_b = L_b⁻¹ f_b: Φq M⁻¹ f = Σ_b W_bᵀ u_b, so r = Φq M⁻¹ f − g needs only
+        // forward substitutions, and u is kept for x below.
         for (r, &gi) in self.rvec.iter_mut().zip(g) {
             *r = -gi;
         }
         for b in 0..nb {
-            let coords = &self.block_coords[self.block_ptr[b]..self.block_ptr[b + 1]];
-            let s = coords.len();
-            let loc = &mut self.local[..s];
-            for (l, &c) in loc.iter_mut().zip(coords) {
+            let (c0, c1) = (self.block_ptr[b], self.block_ptr[b + 1]);
+            let s = c1 - c0;
+            let u = &mut self.ustore[c0..c1];
+            for (l, &c) in u.iter_mut().zip(&self.block_coords[c0..c1]) {
                 *l = f[c];
             }
-            Self::block_solve(&self.chol[self.chol_off[b]..], s, loc);
+            let l = &self.chol[self.chol_off[b]..self.chol_off[b] + s * s];
+            let inv = &self.inv_diag[c0..c1];
             let rows = &self.brows[self.brow_ptr[b]..self.brow_ptr[b + 1]];
-            let p = &self.pmat[self.p_off[b]..self.p_off[b] + rows.len() * s];
-            for (&r, prow) in rows.iter().zip(p.chunks_exact(s)) {
-                self.rvec[r] += prow.iter().zip(loc.iter()).map(|(a, b)| a * b).sum::<f64>();
+            let w = &self.wmat[self.p_off[b]..self.p_off[b] + rows.len() * s];
+            if s == 6 {
+                forward(l, inv, 6, u);
+                for (&r, wrow) in rows.iter().zip(w.chunks_exact(6)) {
+                    self.rvec[r] += dot(wrow, u, 6);
+                }
+            } else {
+                forward(l, inv, s, u);
+                for (&r, wrow) in rows.iter().zip(w.chunks_exact(s)) {
+                    self.rvec[r] += dot(wrow, u, s);
+                }
             }
         }
         let sym = &self.sym;
@@ -469,25 +559,28 @@ impl KktSolver for SchurKkt {
         }
         z.fill(0.0);
 
-        // x = M⁻¹ (f − Φqᵀ y).
+        // x = M⁻¹ (f − Φqᵀ y) = L⁻ᵀ (u − W y), group by group.
         for b in 0..nb {
-            let coords = &self.block_coords[self.block_ptr[b]..self.block_ptr[b + 1]];
-            let s = coords.len();
-            let loc = &mut self.local[..s];
-            for (l, &c) in loc.iter_mut().zip(coords) {
-                *l = f[c];
-            }
+            let (c0, c1) = (self.block_ptr[b], self.block_ptr[b + 1]);
+            let s = c1 - c0;
+            let v = &mut self.ustore[c0..c1];
+            let l = &self.chol[self.chol_off[b]..self.chol_off[b] + s * s];
+            let inv = &self.inv_diag[c0..c1];
             let rows = &self.brows[self.brow_ptr[b]..self.brow_ptr[b + 1]];
-            let p = &self.pmat[self.p_off[b]..self.p_off[b] + rows.len() * s];
-            for (&r, prow) in rows.iter().zip(p.chunks_exact(s)) {
+            let w = &self.wmat[self.p_off[b]..self.p_off[b] + rows.len() * s];
+            for (&r, wrow) in rows.iter().zip(w.chunks_exact(s)) {
                 let yr = y[r];
-                for (l, &a) in loc.iter_mut().zip(prow) {
-                    *l -= a * yr;
+                for (vi, &a) in v.iter_mut().zip(wrow) {
+                    *vi -= a * yr;
                 }
             }
-            Self::block_solve(&self.chol[self.chol_off[b]..], s, loc);
-            for (&l, &c) in loc.iter().zip(coords) {
-                x[c] = l;
+            if s == 6 {
+                backward(l, inv, 6, v);
+            } else {
+                backward(l, inv, s, v);
+            }
+            for (&vi, &c) in v.iter().zip(&self.block_coords[c0..c1]) {
+                x[c] = vi;
             }
         }
         Ok(())
