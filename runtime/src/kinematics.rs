@@ -68,14 +68,19 @@ pub struct Kinematics<K: KktSolver = SchurKkt> {
 }
 
 pub(crate) fn inf_norm(v: &[f64]) -> f64 {
-    // NaN must not hide behind `max`, so it is propagated explicitly.
-    v.iter().fold(0.0f64, |a, &b| {
-        if b.is_nan() || a.is_nan() {
-            f64::NAN
-        } else {
-            a.max(b.abs())
-        }
-    })
+    // NaN must not hide behind `max`, so it is propagated explicitly. The loop stays
+    // branch-free (it runs on every Newton iteration): `x * 0` is NaN exactly when `x` is
+    // NaN or infinite, and only then is the slow path taken.
+    let (mut m, mut poison) = (0.0f64, 0.0f64);
+    for &x in v {
+        m = m.max(x.abs());
+        poison += x * 0.0;
+    }
+    if poison.is_nan() && v.iter().any(|x| x.is_nan()) {
+        f64::NAN
+    } else {
+        m
+    }
 }
 
 /// `out = M v` from the mass nonzeros.

@@ -102,6 +102,9 @@ fn errors(r: &Run, reference: &Run) -> Result<Errors, String> {
     Ok(e)
 }
 
+/// A reference's own check: errors of the runs at half and twice its step.
+type ReferenceCheck = (Formulation, f64, [Result<Errors, String>; 2]);
+
 /// One cell of the sweep.
 struct Row {
     formulation: Formulation,
@@ -305,7 +308,7 @@ fn csv(rows: &[Row], reference_step: f64) -> String {
 
 fn markdown(
     rows: &[Row],
-    checks: &[(Formulation, f64, [Result<Errors, String>; 2])],
+    checks: &[ReferenceCheck],
     reference_step: f64,
     runs: usize,
 ) -> String {

@@ -74,7 +74,6 @@ impl SchurKkt {
     pub fn group_sizes(&self) -> Vec<usize> {
         self.block_ptr.windows(2).map(|w| w[1] - w[0]).collect()
     }
-
 }
 
 // The block kernels take the block size `s` as an argument and are always inlined: every
