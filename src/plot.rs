@@ -212,13 +212,15 @@ pub fn draw_log_log(
         .axis_desc_style(("sans-serif", 17))
         .draw()
         .map_err(|e| err(&e))?;
-    const PALETTE: [RGBColor; 6] = [
+    const PALETTE: [RGBColor; 8] = [
         RGBColor(0, 90, 181),
         RGBColor(220, 50, 32),
         RGBColor(0, 140, 70),
         RGBColor(230, 150, 0),
         RGBColor(120, 60, 170),
         RGBColor(90, 90, 90),
+        RGBColor(0, 170, 200),
+        RGBColor(200, 0, 140),
     ];
     for (k, s) in series.iter().enumerate() {
         let color = PALETTE[k % PALETTE.len()];
@@ -236,7 +238,7 @@ pub fn draw_log_log(
     }
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
+        .position(SeriesLabelPosition::MiddleRight)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 15))

@@ -18,7 +18,7 @@ use symbody::scenario::{simulate, Options, Run};
 use symbody_runtime::Formulation;
 
 /// Step sizes of the sweep (s); each divides [`OUTPUT_STEP`].
-const STEPS: [f64; 10] = [2e-2, 1e-2, 5e-3, 4e-3, 2.5e-3, 2e-3, 1e-3, 5e-4, 2e-4, 1e-4];
+const STEPS: [f64; 9] = [2e-2, 1e-2, 5e-3, 4e-3, 2.5e-3, 2e-3, 1e-3, 5e-4, 2e-4];
 const ALPHAS: [f64; 4] = [0.0, -0.05, -0.1, -0.3];
 /// Spacing of the compared outputs (s).
 const OUTPUT_STEP: f64 = 0.04;
@@ -306,12 +306,7 @@ fn csv(rows: &[Row], reference_step: f64) -> String {
     s
 }
 
-fn markdown(
-    rows: &[Row],
-    checks: &[ReferenceCheck],
-    reference_step: f64,
-    runs: usize,
-) -> String {
+fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: usize) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
