@@ -4,7 +4,7 @@
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 use std::process::ExitCode;
-use symbody::scenario::{self, largest_rotation, Options};
+use symbody::scenario::{self, largest_rotation, Options, Reactions};
 use symbody_runtime::Formulation;
 
 #[derive(Parser)]
@@ -26,6 +26,14 @@ enum FormulationArg {
     Exact,
 }
 
+#[derive(Clone, Copy, ValueEnum)]
+enum ReactionsArg {
+    /// λ from [M Φqᵀ; Φq 0][q̈; λ] = [Q; γ] at each output state.
+    Recovered,
+    /// The HHT integrator's λ.
+    Integrator,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Simulate the paper's 6-6 Stewart platform scenario (one period, 2π s, by default).
@@ -45,6 +53,10 @@ enum Command {
         /// Spacing of the rows in the CSVs (s).
         #[arg(long, default_value_t = Options::default().output_step)]
         output_step: f64,
+        /// Source of the joint and actuator forces: the saddle-point solve at each output
+        /// state (`recovered`), or the integrator's own multipliers (`integrator`).
+        #[arg(long, value_enum, default_value = "recovered")]
+        reactions: ReactionsArg,
         /// Output folder.
         #[arg(long, default_value = "out")]
         out: PathBuf,
@@ -63,6 +75,7 @@ fn main() -> ExitCode {
             step,
             alpha,
             output_step,
+            reactions,
             out,
             no_plots,
         } => {
@@ -75,6 +88,10 @@ fn main() -> ExitCode {
                 step,
                 alpha,
                 output_step,
+                reactions: match reactions {
+                    ReactionsArg::Recovered => Reactions::Recovered,
+                    ReactionsArg::Integrator => Reactions::Integrator,
+                },
             };
             match simulate(&opts, &out, !no_plots) {
                 Ok(()) => ExitCode::SUCCESS,

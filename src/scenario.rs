@@ -3,7 +3,10 @@
 
 use std::time::{Duration, Instant};
 use symbody_mechanisms::stewart_6_6::{Exact, Paper};
-use symbody_runtime::{Error, Formulation, HhtBuilder, Mechanism, MechanismInfo, Stats};
+use symbody_runtime::{
+    actuator_force, joint_force, Error, Formulation, HhtBuilder, Integrator, Kinematics, Mechanism,
+    MechanismInfo, Stats,
+};
 
 /// Options of one simulation; `Default` is the paper's scenario over one period.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -17,6 +20,21 @@ pub struct Options {
     pub alpha: f64,
     /// Spacing of recorded outputs (s); the integrator lands exactly on each.
     pub output_step: f64,
+    /// Where the recorded joint and actuator forces come from.
+    pub reactions: Reactions,
+}
+
+/// Source of the multipliers λ behind the recorded forces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Reactions {
+    /// The integrator's own λ. HHT-α satisfies the α-shifted equilibrium, and λ comes out
+    /// of constraint rows scaled by 1/(βh²), so it carries an O(h) start-up transient and
+    /// roundoff that grows like 1/h² as the step shrinks.
+    Integrator,
+    /// λ recomputed at each output from the saddle-point system
+    /// `[M Φqᵀ; Φq 0][q̈; λ] = [Q; γ]` at the integrator's (q, q̇, t): the multipliers that
+    /// belong to that state exactly, at the cost of one factorization per output.
+    Recovered,
 }
 
 impl Default for Options {
@@ -27,6 +45,7 @@ impl Default for Options {
             step: 1e-3,
             alpha: -0.05,
             output_step: 0.01,
+            reactions: Reactions::Recovered,
         }
     }
 }
@@ -165,13 +184,11 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
         .build(mech)?;
     let mut run = Run::default();
     let n_out = (opts.t_end / opts.output_step - 1e-9).ceil().max(0.0) as usize;
-    let mut phi = vec![0.0; info.n_constraints];
-    let mut phi_t = vec![0.0; info.n_constraints];
-    let mut jac = vec![0.0; info.phi_q_nnz()];
+    let mut recorder = Recorder::new(info, layout, opts.reactions)?;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(opts.t_end);
         it.advance_to(t_out)?;
-        record(&mut it, &layout, &mut run, &mut phi, &mut phi_t, &mut jac)?;
+        recorder.record(&mut it, &mut run)?;
     }
     run.stats = it.stats();
     run.wall = start.elapsed();
@@ -179,53 +196,99 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
     Ok(run)
 }
 
-fn record<M: Mechanism>(
-    it: &mut symbody_runtime::Integrator<M>,
-    layout: &Layout,
-    run: &mut Run,
-    phi: &mut [f64],
-    phi_t: &mut [f64],
-    jac: &mut [f64],
-) -> Result<(), Error> {
-    let info = it.info();
-    let (t, q, qd) = (it.t(), it.q().to_vec(), it.qd().to_vec());
-    let mech = it.mechanism();
-    mech.phi(&q, t, phi);
-    mech.phi_t(&q, t, phi_t);
-    mech.phi_q(&q, t, jac);
-    run.max_phi = run.max_phi.max(phi.iter().fold(0.0, |a, b| a.max(b.abs())));
-    // Velocity residual Φq q̇ + Φt, from the pattern.
-    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(jac.iter()) {
-        phi_t[r as usize] += v * qd[c as usize];
+/// Work memory for recording outputs, allocated once per run.
+struct Recorder {
+    layout: Layout,
+    reactions: Reactions,
+    kinematics: Kinematics,
+    phi: Vec<f64>,
+    phi_t: Vec<f64>,
+    jac: Vec<f64>,
+    qdd: Vec<f64>,
+    lambda: Vec<f64>,
+}
+
+impl Recorder {
+    fn new(
+        info: &'static MechanismInfo,
+        layout: Layout,
+        reactions: Reactions,
+    ) -> Result<Self, Error> {
+        Ok(Recorder {
+            layout,
+            reactions,
+            kinematics: Kinematics::new(info)?,
+            phi: vec![0.0; info.n_constraints],
+            phi_t: vec![0.0; info.n_constraints],
+            jac: vec![0.0; info.phi_q_nnz()],
+            qdd: vec![0.0; info.n_coords],
+            lambda: vec![0.0; info.n_constraints],
+        })
     }
-    run.max_velocity_residual = run
-        .max_velocity_residual
-        .max(phi_t.iter().fold(0.0, |a, b| a.max(b.abs())));
-    let o = info.bodies[layout.platform].coord_offset;
-    run.platform
-        .push([q[o], q[o + 1], q[o + 2], q[o + 3], q[o + 4], q[o + 5]]);
-    let mut upper = [[0.0; 3]; LEGS];
-    let mut lower = [[0.0; 3]; LEGS];
-    let mut act = [0.0; LEGS];
-    let mut power = 0.0;
-    mech.phi_t(&q, t, phi_t);
-    for i in 0..LEGS {
-        upper[i] = it.joint_force(layout.upper_joints[i], layout.platform)?;
-        lower[i] = it.joint_force(layout.lower_joints[i], layout.lower_bodies[i])?;
-        act[i] = it.actuator_force(layout.drivers[i])?;
-        // Φ_D = d(q) − c(t), so ċ = −Φt on the driver's row.
-        let row = info.joints[layout.drivers[i]].row_start;
-        power += act[i] * -phi_t[row];
+
+    fn record<M: Mechanism>(&mut self, it: &mut Integrator<M>, run: &mut Run) -> Result<(), Error> {
+        let info = it.info();
+        let layout = self.layout;
+        let (t, q, qd) = (it.t(), it.q().to_vec(), it.qd().to_vec());
+        let mech = it.mechanism();
+        mech.phi(&q, t, &mut self.phi);
+        mech.phi_t(&q, t, &mut self.phi_t);
+        mech.phi_q(&q, t, &mut self.jac);
+        run.max_phi = run.max_phi.max(inf_norm(&self.phi));
+        // ċ of each driver, before phi_t is reused: Φ_D = d(q) − c(t), so ċ = −Φt.
+        let c_dot: [f64; LEGS] =
+            std::array::from_fn(|i| -self.phi_t[info.joints[layout.drivers[i]].row_start]);
+        // Velocity residual Φq q̇ + Φt, from the pattern.
+        for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(&self.jac) {
+            self.phi_t[r as usize] += v * qd[c as usize];
+        }
+        run.max_velocity_residual = run.max_velocity_residual.max(inf_norm(&self.phi_t));
+        match self.reactions {
+            Reactions::Integrator => self.lambda.copy_from_slice(it.lambda()),
+            Reactions::Recovered => {
+                self.kinematics
+                    .acceleration(mech, t, &q, &qd, &mut self.qdd, &mut self.lambda)?
+            }
+        }
+        let o = info.bodies[layout.platform].coord_offset;
+        run.platform
+            .push([q[o], q[o + 1], q[o + 2], q[o + 3], q[o + 4], q[o + 5]]);
+        let mut upper = [[0.0; 3]; LEGS];
+        let mut lower = [[0.0; 3]; LEGS];
+        let mut act = [0.0; LEGS];
+        let mut power = 0.0;
+        for i in 0..LEGS {
+            upper[i] = joint_force(
+                info,
+                &self.jac,
+                &self.lambda,
+                layout.upper_joints[i],
+                layout.platform,
+            )?;
+            lower[i] = joint_force(
+                info,
+                &self.jac,
+                &self.lambda,
+                layout.lower_joints[i],
+                layout.lower_bodies[i],
+            )?;
+            act[i] = actuator_force(info, &self.lambda, layout.drivers[i])?;
+            power += act[i] * c_dot[i];
+        }
+        run.upper.push(upper);
+        run.lower.push(lower);
+        run.actuators.push(act);
+        run.actuator_power.push(power);
+        run.energy.push(it.energy());
+        run.t.push(t);
+        run.q.push(q);
+        run.qd.push(qd);
+        Ok(())
     }
-    run.upper.push(upper);
-    run.lower.push(lower);
-    run.actuators.push(act);
-    run.actuator_power.push(power);
-    run.energy.push(it.energy());
-    run.t.push(t);
-    run.q.push(q);
-    run.qd.push(qd);
-    Ok(())
+}
+
+fn inf_norm(v: &[f64]) -> f64 {
+    v.iter().fold(0.0, |a, b| a.max(b.abs()))
 }
 
 impl Run {

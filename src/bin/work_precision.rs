@@ -6,15 +6,17 @@
 //!
 //! Errors are maxima over common output times (every 0.04 s, which every step of the sweep
 //! divides, so every run lands exactly on them) of |run − reference|. The reference uses
-//! the same formulation and α with step [`REFERENCE_STEP`]; its own error is estimated by
-//! comparing it with a run at twice its step. The `paper` formulation runs over [0, 2.5] s
+//! the same formulation and α with step [`REFERENCE_STEP`] and recovered reactions; its own
+//! error is estimated by comparing it with runs at half and twice its step. Each (step, α)
+//! is run with both sources of forces: recovered (the saddle-point solve at each output
+//! state) and the integrator's own multipliers. The `paper` formulation runs over [0, 2.5] s
 //! only: its leg 6 spins into the Euler singularity at t ≈ 2.77 s (see tests/paper_scenario.rs).
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use symbody::plot::{draw_log_log, LogSeries};
-use symbody::scenario::{simulate, Options, Run};
+use symbody::scenario::{simulate, Options, Reactions, Run};
 use symbody_runtime::Formulation;
 
 /// Step sizes of the sweep (s); each divides [`OUTPUT_STEP`].
@@ -22,11 +24,11 @@ const STEPS: [f64; 9] = [2e-2, 1e-2, 5e-3, 4e-3, 2.5e-3, 2e-3, 1e-3, 5e-4, 2e-4]
 const ALPHAS: [f64; 4] = [0.0, -0.05, -0.1, -0.3];
 /// Spacing of the compared outputs (s).
 const OUTPUT_STEP: f64 = 0.04;
-/// Step of the reference runs (s). Not smaller: the multipliers carry roundoff that grows
-/// like ε/(βh²) (the constraint rows are scaled by 1/(βh²)) and is only partly damped by α,
-/// so at 2.5e-5 s the forces were measured to be *less* accurate (≈ 3e-4 N at α = −0.05)
-/// than at 1e-3 s. The check below compares the reference with runs at half and twice its
-/// step, which bounds its own error.
+/// Step of the reference runs (s). Their forces are recovered from the saddle-point solve:
+/// the integrator's own multipliers carry roundoff that grows like ε/(βh²) (the constraint
+/// rows are scaled by 1/(βh²)), so a fine-step reference built on them was measured to be
+/// *less* accurate (≈ 3e-4 N at α = −0.05, h = 2.5e-5 s) than a 1 ms run. The check below
+/// compares the reference with runs at half and twice its step, which bounds its own error.
 const REFERENCE_STEP: f64 = 1e-4;
 /// End time of the `paper` formulation: before its Euler singularity at t ≈ 2.77 s.
 const PAPER_T_END: f64 = 2.5;
@@ -47,8 +49,19 @@ fn name(f: Formulation) -> &'static str {
     }
 }
 
-fn options(f: Formulation, step: f64, alpha: f64) -> Options {
+/// Sources of the recorded forces compared in the sweep.
+const REACTIONS: [Reactions; 2] = [Reactions::Recovered, Reactions::Integrator];
+
+fn reactions_name(r: Reactions) -> &'static str {
+    match r {
+        Reactions::Recovered => "recovered",
+        Reactions::Integrator => "integrator",
+    }
+}
+
+fn options(f: Formulation, step: f64, alpha: f64, reactions: Reactions) -> Options {
     Options {
+        reactions,
         formulation: f,
         t_end: t_end(f),
         step,
@@ -109,6 +122,7 @@ type ReferenceCheck = (Formulation, f64, [Result<Errors, String>; 2]);
 struct Row {
     formulation: Formulation,
     alpha: f64,
+    reactions: Reactions,
     step: f64,
     /// Wall times of the repeated runs (s), ascending.
     walls: Vec<f64>,
@@ -159,16 +173,21 @@ fn main() {
     let mut reference_checks = Vec::new();
     for formulation in [Formulation::Exact, Formulation::Paper] {
         for &alpha in alphas {
-            let reference =
-                simulate(&options(formulation, reference_step, alpha)).unwrap_or_else(|e| {
-                    fail(&format!(
-                        "reference run ({}, α = {alpha}, h = {reference_step}) failed: {e}",
-                        name(formulation)
-                    ))
-                });
+            let reference = simulate(&options(
+                formulation,
+                reference_step,
+                alpha,
+                Reactions::Recovered,
+            ))
+            .unwrap_or_else(|e| {
+                fail(&format!(
+                    "reference run ({}, α = {alpha}, h = {reference_step}) failed: {e}",
+                    name(formulation)
+                ))
+            });
             // The reference's own error, bounded by runs at half and twice its step.
             let check = |h: f64| {
-                simulate(&options(formulation, h, alpha))
+                simulate(&options(formulation, h, alpha, Reactions::Recovered))
                     .map_err(|e| e.to_string())
                     .and_then(|r| errors(&r, &reference))
             };
@@ -179,11 +198,14 @@ fn main() {
                 reference.wall.as_secs_f64(),
             );
             reference_checks.push((formulation, alpha, check));
-            for &step in steps {
+            for (&reactions, &step) in REACTIONS
+                .iter()
+                .flat_map(|r| steps.iter().map(move |s| (r, s)))
+            {
                 let mut walls = Vec::new();
                 let mut outcome = Err(String::from("not run"));
                 for _ in 0..runs {
-                    match simulate(&options(formulation, step, alpha)) {
+                    match simulate(&options(formulation, step, alpha, reactions)) {
                         Ok(r) => {
                             walls.push(r.wall.as_secs_f64());
                             outcome = errors(&r, &reference).map(|e| (r, e));
@@ -199,13 +221,15 @@ fn main() {
                 let row = Row {
                     formulation,
                     alpha,
+                    reactions,
                     step,
                     walls,
                     outcome,
                 };
                 match &row.outcome {
                     Ok((r, e)) => eprintln!(
-                        "  h = {step:e}: {:.1} ms, {} steps, {} Newton; force err {:.2e} N",
+                        "  {} h = {step:e}: {:.1} ms, {} steps, {} Newton; force err {:.2e} N",
+                        reactions_name(reactions),
                         row.median_wall() * 1e3,
                         r.stats.steps,
                         r.stats.newton_iterations,
@@ -231,11 +255,17 @@ fn main() {
     let series: Vec<LogSeries> = [Formulation::Exact, Formulation::Paper]
         .iter()
         .flat_map(|&f| alphas.iter().map(move |&a| (f, a)))
-        .map(|(f, a)| LogSeries {
-            name: format!("{} (0..{:.2} s), α = {a}", name(f), t_end(f)),
+        .flat_map(|(f, a)| REACTIONS.iter().map(move |&x| (f, a, x)))
+        .map(|(f, a, x)| LogSeries {
+            name: format!(
+                "{} (0..{:.2} s), α = {a}, {}",
+                name(f),
+                t_end(f),
+                reactions_name(x)
+            ),
             points: rows
                 .iter()
-                .filter(|r| r.formulation == f && r.alpha == a)
+                .filter(|r| r.formulation == f && r.alpha == a && r.reactions == x)
                 .filter_map(|r| {
                     r.outcome
                         .as_ref()
@@ -265,7 +295,7 @@ fn fail(msg: &str) -> ! {
 
 fn csv(rows: &[Row], reference_step: f64) -> String {
     let mut s = String::from(
-        "formulation,alpha,step,t_end,reference_step,status,wall_ms_median,wall_ms_runs,steps,\
+        "formulation,alpha,reactions,step,t_end,reference_step,status,wall_ms_median,wall_ms_runs,steps,\
          newton_iterations,factorizations,rejected_steps,platform_position_err_m,\
          platform_angle_err_rad,leg1_force_err_N,actuator_err_N,real_time_factor,message\n",
     );
@@ -273,9 +303,10 @@ fn csv(rows: &[Row], reference_step: f64) -> String {
         let walls: Vec<String> = r.walls.iter().map(|w| format!("{:.3}", w * 1e3)).collect();
         let _ = write!(
             s,
-            "{},{},{},{:.6},{},",
+            "{},{},{},{},{:.6},{},",
             name(r.formulation),
             r.alpha,
+            reactions_name(r.reactions),
             r.step,
             t_end(r.formulation),
             reference_step
@@ -316,11 +347,17 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
     );
     let _ = writeln!(
         s,
-        "| formulation | α | h (s) | wall (ms) | × real time | steps | Newton | pose err (m / rad) | leg-1 force err (N) | actuator err (N) |"
+        "| formulation | α | forces | h (s) | wall (ms) | × real time | steps | Newton | pose err (m / rad) | leg-1 force err (N) | actuator err (N) |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|");
     for r in rows {
-        let head = format!("| {} | {} | {:e} |", name(r.formulation), r.alpha, r.step);
+        let head = format!(
+            "| {} | {} | {} | {:e} |",
+            name(r.formulation),
+            r.alpha,
+            reactions_name(r.reactions),
+            r.step
+        );
         match &r.outcome {
             Ok((run, e)) => {
                 let mark = if e.force <= FORCE_TARGET { " ✓" } else { "" };
@@ -350,7 +387,7 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
         s,
         "Reference check: runs at half ({:e} s) and twice ({:e} s) the reference step \
          against the reference. Their differences bound the reference's own error; the \
-         smaller step is not better (roundoff ∝ ε/(βh²) in the multipliers).\n",
+         references use recovered forces (the integrator's multipliers carry roundoff ∝ ε/(βh²)).\n",
         0.5 * reference_step,
         2.0 * reference_step
     );
@@ -389,8 +426,9 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
         let _ = writeln!(
             s,
             "\nFastest `exact` run over 2π with leg-1 force error ≤ {FORCE_TARGET:e} N: \
-             α = {}, h = {:e} s, {:.1} ms ({:.0}× real time; target ≥ 100×, ≤ 63 ms).",
+             α = {}, {} forces, h = {:e} s, {:.1} ms ({:.0}× real time; target ≥ 100×, ≤ 63 ms).",
             b.alpha,
+            reactions_name(b.reactions),
             b.step,
             b.median_wall() * 1e3,
             t_end(b.formulation) / b.median_wall()
