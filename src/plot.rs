@@ -161,6 +161,9 @@ pub fn paper_figures(run: &Run, dir: &Path) -> Result<Vec<PathBuf>, String> {
 pub struct LogSeries {
     pub name: String,
     pub points: Vec<(f64, f64)>,
+    /// Drawn with a thin line and triangle markers, to tell a second family of lines apart
+    /// when the palette repeats.
+    pub secondary: bool,
 }
 
 /// Draws named lines (with point markers) on log-log axes, e.g. a work-precision diagram.
@@ -193,9 +196,11 @@ pub fn draw_log_log(
         }
     };
     let ((x0, x1), (y0, y1)) = (range(|p| p.0), range(|p| p.1));
-    let root = BitMapBackend::new(path, (900, 640)).into_drawing_area();
+    // The chart on the left, the legend in its own column so it never hides data.
+    let root = BitMapBackend::new(path, (1240, 640)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
-    let mut chart = ChartBuilder::on(&root)
+    let (plot_area, legend_area) = root.split_horizontally(900);
+    let mut chart = ChartBuilder::on(&plot_area)
         .caption(title, ("sans-serif", 22))
         .margin(16)
         .x_label_area_size(48)
@@ -224,26 +229,34 @@ pub fn draw_log_log(
     ];
     for (k, s) in series.iter().enumerate() {
         let color = PALETTE[k % PALETTE.len()];
+        let width = if s.secondary { 1 } else { 2 };
         let p: Vec<(f64, f64)> = s.points.iter().copied().filter(usable).collect();
         chart
-            .draw_series(LineSeries::new(p.iter().copied(), color.stroke_width(2)))
-            .map_err(|e| err(&e))?
-            .label(s.name.as_str())
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
-            });
-        chart
-            .draw_series(p.iter().map(|&c| Circle::new(c, 4, color.filled())))
+            .draw_series(LineSeries::new(
+                p.iter().copied(),
+                color.stroke_width(width),
+            ))
             .map_err(|e| err(&e))?;
+        let y = 60 + 24 * k as i32;
+        legend_area
+            .draw(&PathElement::new(
+                vec![(10, y), (40, y)],
+                color.stroke_width(width),
+            ))
+            .map_err(|e| err(&e))?;
+        legend_area
+            .draw(&Text::new(s.name.as_str(), (48, y - 8), ("sans-serif", 15)))
+            .map_err(|e| err(&e))?;
+        if s.secondary {
+            chart
+                .draw_series(p.iter().map(|&c| TriangleMarker::new(c, 5, color.filled())))
+                .map_err(|e| err(&e))?;
+        } else {
+            chart
+                .draw_series(p.iter().map(|&c| Circle::new(c, 4, color.filled())))
+                .map_err(|e| err(&e))?;
+        }
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::MiddleRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 15))
-        .draw()
-        .map_err(|e| err(&e))?;
     root.present().map_err(|e| err(&e))?;
     Ok(())
 }

@@ -257,6 +257,7 @@ fn main() {
         .flat_map(|&f| alphas.iter().map(move |&a| (f, a)))
         .flat_map(|(f, a)| REACTIONS.iter().map(move |&x| (f, a, x)))
         .map(|(f, a, x)| LogSeries {
+            secondary: f == Formulation::Paper,
             name: format!(
                 "{} (0..{:.2} s), α = {a}, {}",
                 name(f),
