@@ -347,3 +347,47 @@ fn committed_code_is_fresh_and_generation_is_deterministic() {
         );
     }
 }
+
+#[test]
+fn every_angle_has_one_sine_and_one_cosine_per_evaluation() {
+    // Hash-consing makes sin(q_i) one node; emission must then compute it once per call of
+    // a public function, across all of its chunk helpers.
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let src =
+        std::fs::read_to_string(root.join("mechanisms/src/generated/stewart_6_6.rs")).unwrap();
+    let mut counts: std::collections::HashMap<(String, String), usize> = Default::default();
+    let (mut module, mut function) = (String::from("top"), String::new());
+    for line in src.lines() {
+        let l = line.trim_start();
+        if let Some(m) = l.strip_prefix("pub mod ") {
+            module = m.trim_end_matches(" {").to_string();
+        }
+        if let Some(rest) = l.strip_prefix("pub fn ").or_else(|| l.strip_prefix("fn ")) {
+            let name: String = rest
+                .chars()
+                .take_while(|c| c.is_alphanumeric() || *c == '_')
+                .collect();
+            let base = name
+                .split("_shared_")
+                .next()
+                .unwrap()
+                .split("_part_")
+                .next()
+                .unwrap();
+            function = format!("{module}::{base}");
+        }
+        for f in ["sin", "cos"] {
+            for (i, _) in line.match_indices(&format!("].{f}()")) {
+                let open = line[..i].rfind("q[").expect("trigonometry of a coordinate");
+                let call = format!("{}.{f}", &line[open..=i]);
+                *counts.entry((function.clone(), call)).or_default() += 1;
+            }
+        }
+    }
+    assert!(counts.keys().any(|(f, _)| f == "exact::eval_newton"));
+    for ((function, call), n) in &counts {
+        assert_eq!(*n, 1, "{function} computes {call} {n} times");
+    }
+    // Φ alone needs all 39 angles' sine and cosine: 78 calls.
+    assert_eq!(counts.keys().filter(|(f, _)| f == "top::phi").count(), 78);
+}
