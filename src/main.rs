@@ -105,7 +105,18 @@ fn main() -> ExitCode {
 }
 
 fn simulate(opts: &Options, out: &std::path::Path, plots: bool) -> Result<(), String> {
-    let run = scenario::simulate(opts).map_err(|e| e.to_string())?;
+    let run = scenario::simulate(opts).map_err(|e| match e {
+        scenario::ScenarioError::Runtime(symbody_runtime::Error::EulerSingularity {
+            time, ..
+        }) => {
+            format!(
+                "{e}\nhint: Euler angles cannot represent this orientation; nothing was written. \
+                 Simulate up to before t = {time:.3} s with --t-end, or use --formulation exact \
+                 (the paper formulation lacks the gyroscopic coupling and spins the legs)"
+            )
+        }
+        other => other.to_string(),
+    })?;
     let s = run.stats;
     let (xlo, xhi) = run.platform_range(0);
     let (axis, rot) = largest_rotation(&run);

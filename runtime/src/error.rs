@@ -106,7 +106,7 @@ impl fmt::Display for Error {
                 iterations,
             } => write!(
                 f,
-                "{analysis}: Newton iteration failed at t = {time} s after {iterations} \
+                "{analysis}: Newton iteration failed at t = {time:.6} s after {iterations} \
                  iterations, constraint residual |Φ|∞ = {residual:e}"
             ),
             Error::StepSizeTooSmall {
@@ -115,13 +115,13 @@ impl fmt::Display for Error {
                 residual,
             } => write!(
                 f,
-                "HHT step size {step:e} s at t = {time} s is below the minimum without \
+                "HHT step size {step:e} s at t = {time:.6} s is below the minimum without \
                  convergence, constraint residual |Φ|∞ = {residual:e}"
             ),
             Error::SingularJacobian { time, rows } => {
                 write!(
                     f,
-                    "constraint Jacobian lost rank at t = {time} s (residual not \
+                    "constraint Jacobian lost rank at t = {time:.6} s (residual not \
                      available: the system has no unique solution); dependent rows:"
                 )?;
                 for (i, r) in rows.iter().enumerate() {
@@ -131,18 +131,18 @@ impl fmt::Display for Error {
             }
             Error::MassNotPositiveDefinite { time, coord, name } => write!(
                 f,
-                "mass matrix is not positive definite at t = {time} s in the block of \
+                "mass matrix is not positive definite at t = {time:.6} s in the block of \
                  coordinate {coord} `{name}`"
             ),
             Error::EulerSingularity { time, body, beta } => write!(
                 f,
-                "body `{body}` reached β = {:.3}° at t = {time} s, too close to the Euler \
+                "body `{body}` reached β = {:.3}° at t = {time:.6} s, too close to the Euler \
                  singularity at ±90° (cos β = {:.3e})",
                 beta.to_degrees(),
                 beta.cos()
             ),
             Error::NotFinite { time, what } => {
-                write!(f, "non-finite value in {what} at t = {time} s")
+                write!(f, "non-finite value in {what} at t = {time:.6} s")
             }
             Error::InvalidSetting {
                 name,
