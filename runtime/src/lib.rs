@@ -16,6 +16,7 @@
 // `!(x > tol)` is used on purpose throughout: unlike `x <= tol` it also rejects NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod alloc_count;
 pub mod error;
 pub mod hht;
 pub mod kinematics;
