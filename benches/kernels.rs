@@ -4,7 +4,7 @@
 //! two solver hot paths (one HHT step, one warm-started forward-kinematics solve).
 //!
 //! Every kernel runs at the same state: the consistent start advanced by HHT to t = 1 s,
-//! where no coordinate or velocity is at a special value. Results: bench-results/micro_benchmarks.md.
+//! where no coordinate or velocity is at a special value. Results: the "Micro-benchmarks" section of BENCHMARKS.md.
 
 #[path = "reference/mod.rs"]
 mod reference;
