@@ -42,16 +42,16 @@ enum Command {
         #[arg(long, value_enum, default_value = "exact")]
         formulation: FormulationArg,
         /// End time (s).
-        #[arg(long, default_value_t = 2.0 * std::f64::consts::PI)]
+        #[arg(long, default_value_t = 2.0 * std::f64::consts::PI, allow_hyphen_values = true)]
         t_end: f64,
         /// HHT step (s).
-        #[arg(long, default_value_t = Options::default().step)]
+        #[arg(long, default_value_t = Options::default().step, allow_hyphen_values = true)]
         step: f64,
         /// HHT α in [−1/3, 0] (0: trapezoidal, no numerical damping).
         #[arg(long, default_value_t = Options::default().alpha, allow_hyphen_values = true)]
         alpha: f64,
         /// Spacing of the rows in the CSVs (s).
-        #[arg(long, default_value_t = Options::default().output_step)]
+        #[arg(long, default_value_t = Options::default().output_step, allow_hyphen_values = true)]
         output_step: f64,
         /// Source of the joint and actuator forces: the saddle-point solve at each output
         /// state (`recovered`), or the integrator's own multipliers (`integrator`).
@@ -104,6 +104,15 @@ fn main() -> ExitCode {
     }
 }
 
+/// "123x faster than" or "0.06x", readable at any ratio.
+fn speed(ratio: f64) -> String {
+    if ratio >= 10.0 {
+        format!("{ratio:.0}x faster than")
+    } else {
+        format!("{ratio:.2}x")
+    }
+}
+
 fn simulate(opts: &Options, out: &std::path::Path, plots: bool) -> Result<(), String> {
     let run = scenario::simulate(opts).map_err(|e| match e {
         scenario::ScenarioError::Runtime(symbody_runtime::Error::EulerSingularity {
@@ -143,9 +152,9 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool) -> Result<(), St
         s.factorizations
     );
     println!(
-        "  wall time        {:.1} ms ({:.0}x faster than real time)",
+        "  wall time        {:.1} ms ({} real time)",
         run.wall.as_secs_f64() * 1e3,
-        run.t.last().unwrap_or(&0.0) / run.wall.as_secs_f64()
+        speed(run.t.last().copied().unwrap_or(0.0) / run.wall.as_secs_f64())
     );
     println!(
         "  max |Phi|        {:.2e} (velocity residual {:.2e})",

@@ -181,6 +181,8 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
     let mut it = HhtBuilder::new()
         .alpha(opts.alpha)
         .step(opts.step)
+        // Allow step cuts well below a step chosen smaller than the default minimum.
+        .min_step((opts.step * 1e-4).min(1e-7))
         .build(mech)?;
     let mut run = Run::default();
     let n_out = (opts.t_end / opts.output_step - 1e-9).ceil().max(0.0) as usize;
