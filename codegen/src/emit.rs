@@ -26,6 +26,30 @@ pub struct Output<'a> {
     /// Parameter name, e.g. `phi_q`.
     pub name: &'a str,
     pub values: &'a [Id],
+    /// The constraint row of each value, when the output is row-indexed. A fused function
+    /// chunks its row-indexed outputs row by row (Φ, Φq, Φt, γ of one joint together), so
+    /// the subexpressions of one joint stay inside one chunk instead of crossing chunks.
+    pub rows: Option<&'a [u32]>,
+}
+
+impl<'a> Output<'a> {
+    /// An output chunked in its own order.
+    pub fn new(name: &'a str, values: &'a [Id]) -> Self {
+        Output {
+            name,
+            values,
+            rows: None,
+        }
+    }
+
+    /// An output whose values belong to constraint rows `rows`.
+    pub fn by_rows(name: &'a str, values: &'a [Id], rows: &'a [u32]) -> Self {
+        Output {
+            name,
+            values,
+            rows: Some(rows),
+        }
+    }
 }
 
 /// A function to emit.
@@ -264,12 +288,15 @@ fn input_param(input: Input, n: &Literal, used: bool, array: bool) -> TokenStrea
 pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
     let mut low = Lowering::new(arena);
     // Flatten outputs into (output index, slot, value).
-    let slots: Vec<(usize, usize, Id)> = f
+    let mut slots: Vec<(usize, usize, Id)> = f
         .outputs
         .iter()
         .enumerate()
         .flat_map(|(o, out)| out.values.iter().enumerate().map(move |(k, &v)| (o, k, v)))
         .collect();
+    // Row-indexed outputs row by row, then the others in their own order (stable sort).
+    let row_key = |&(o, k, _): &(usize, usize, Id)| f.outputs[o].rows.map_or(u32::MAX, |r| r[k]);
+    slots.sort_by_key(row_key);
 
     // Greedy chunking in output order.
     let mut chunk_of_slot = Vec::with_capacity(slots.len());
@@ -401,6 +428,7 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
             .any(|x| matches!(places[x.index()], Place::Shared(_)));
         let outs_used: Vec<usize> = {
             let mut o: Vec<usize> = members.iter().map(|&i| slots[i].0).collect();
+            o.sort_unstable();
             o.dedup();
             o
         };

@@ -95,6 +95,7 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
     let phi_q_vals = values(&sys.phi_q);
     let (pq_rows, pq_cols) = pattern(&sys.phi_q);
     let nnz = pq_rows.len();
+    let row_index: Vec<u32> = (0..m as u32).collect();
     let mut items: Vec<TokenStream> = Vec::new();
 
     let f = |name: &'static str,
@@ -119,59 +120,35 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
         "phi",
         " Constraint residual Φ(q, t).",
         QT,
-        vec![Output {
-            name: "out",
-            values: &sys.phi,
-        }],
+        vec![Output::new("out", &sys.phi)],
     ));
     items.push(f(
         "phi_q",
         " Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.",
         QT,
-        vec![Output {
-            name: "out",
-            values: &phi_q_vals,
-        }],
+        vec![Output::new("out", &phi_q_vals)],
     ));
     items.push(f(
         "phi_t",
         " Partial time derivative Φt(q, t).",
         QT,
-        vec![Output {
-            name: "out",
-            values: &sys.phi_t,
-        }],
+        vec![Output::new("out", &sys.phi_t)],
     ));
     items.push(f(
         "gamma",
         " Acceleration right-hand side γ(q, q̇, t) = −D²Φ[(q̇,1),(q̇,1)].",
         QQDT,
-        vec![Output {
-            name: "out",
-            values: &sys.gamma,
-        }],
+        vec![Output::new("out", &sys.gamma)],
     ));
     items.push(f(
         "eval_kinematics",
         " Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.",
         QQDT,
         vec![
-            Output {
-                name: "phi",
-                values: &sys.phi,
-            },
-            Output {
-                name: "phi_q",
-                values: &phi_q_vals,
-            },
-            Output {
-                name: "phi_t",
-                values: &sys.phi_t,
-            },
-            Output {
-                name: "gamma",
-                values: &sys.gamma,
-            },
+            Output::by_rows("phi", &sys.phi, &row_index),
+            Output::by_rows("phi_q", &phi_q_vals, &pq_rows),
+            Output::by_rows("phi_t", &sys.phi_t, &row_index),
+            Output::by_rows("gamma", &sys.gamma, &row_index),
         ],
     ));
     let pot = [sys.potential];
@@ -179,10 +156,7 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
         "potential_into",
         " Potential energy of gravity, written to `out[0]`.",
         Q,
-        vec![Output {
-            name: "out",
-            values: &pot,
-        }],
+        vec![Output::new("out", &pot)],
     ));
 
     let gx = model.gravity;
@@ -279,41 +253,23 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
                 "mass",
                 " Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.",
                 Q,
-                vec![Output {
-                    name: "out",
-                    values: &mass_vals,
-                }],
+                vec![Output::new("out", &mass_vals)],
             ),
             f(
                 "force",
                 " Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.",
                 QQDT,
-                vec![Output {
-                    name: "out",
-                    values: &dynamics.force,
-                }],
+                vec![Output::new("out", &dynamics.force)],
             ),
             f(
                 "eval_newton",
                 " Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.",
                 QQDT,
                 vec![
-                    Output {
-                        name: "phi",
-                        values: &sys.phi,
-                    },
-                    Output {
-                        name: "phi_q",
-                        values: &phi_q_vals,
-                    },
-                    Output {
-                        name: "mass",
-                        values: &mass_vals,
-                    },
-                    Output {
-                        name: "force",
-                        values: &dynamics.force,
-                    },
+                    Output::by_rows("phi", &sys.phi, &row_index),
+                    Output::by_rows("phi_q", &phi_q_vals, &pq_rows),
+                    Output::new("mass", &mass_vals),
+                    Output::new("force", &dynamics.force),
                 ],
             ),
         ];
