@@ -550,6 +550,16 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 self.t = t_out;
                 break;
             }
+            if remaining < self.settings.min_step {
+                // Stepping over less than the minimum step would divide roundoff by βh²
+                // beyond what the convergence test can judge.
+                return Err(Error::InvalidSetting {
+                    name: "t_out",
+                    value: t_out,
+                    reason: "closer to the current time than the minimum step; \
+                             request output times at least min_step apart",
+                });
+            }
             if remaining <= self.h * (1.0 + 1e-9) {
                 self.step_to(t_out, remaining)?;
             } else if remaining < 2.0 * self.h {
@@ -565,6 +575,15 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
 
     /// One accepted step towards `t1 = t + h` (exactly `t1` when no cut is needed).
     fn step_to(&mut self, t1: f64, h: f64) -> Result<StepReport, Error> {
+        if t1 <= self.t {
+            // h is below the rounding step of t: no step can make progress.
+            return Err(Error::InvalidSetting {
+                name: "step",
+                value: h,
+                reason: "too small to advance the current time in floating point",
+            });
+        }
+        let h_before = self.h;
         let mut h = h;
         let mut t1 = t1;
         let mut fresh_every_iteration = false;
@@ -585,6 +604,8 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             self.h = self.h.min(h);
             self.successes_since_cut = 0;
             if h < self.settings.min_step {
+                // The next call starts from the step size this one was asked to take.
+                self.h = h_before;
                 return Err(match failure {
                     Failure::Kkt(e @ KktError::RankDeficient { .. })
                     | Failure::Kkt(e @ KktError::MassNotPositiveDefinite { .. }) => {

@@ -218,10 +218,25 @@ fn output_times_are_hit_exactly() {
     // 0.01 = 3 steps of 0.003 + a remainder of 0.001; evened to 2×0.003 + 2×0.002.
     assert_eq!(s.steps, 200);
     assert!(s.newton_iterations <= 3 * s.steps, "{s:?}");
-    assert_eq!(
-        s.factorizations,
-        s.steps + s.rejected_steps.min(s.factorizations)
-    );
+    assert_eq!(s.rejected_steps, 0, "{s:?}");
+    assert_eq!(s.factorizations, s.steps, "{s:?}");
+}
+
+#[test]
+fn output_times_closer_than_the_minimum_step_are_refused() {
+    // A 1 ns step would accept accelerations judged against roundoff / (βh²): refuse it.
+    let mut hht = HhtBuilder::new()
+        .q0(&planar_q0(0.3))
+        .build(Pendulum::exact())
+        .unwrap();
+    hht.advance_to(0.1).unwrap();
+    let q = hht.q().to_vec();
+    match hht.advance_to(0.1 + 1e-9) {
+        Err(Error::InvalidSetting { name: "t_out", .. }) => {}
+        other => panic!("expected a refused output time, got {other:?}"),
+    }
+    assert_eq!(hht.q(), &q[..], "a refused request leaves the state alone");
+    hht.advance_to(0.2).unwrap();
 }
 
 #[test]
