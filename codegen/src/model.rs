@@ -493,9 +493,9 @@ impl Validator<'_> {
         };
         let mut out = Vec::new();
         for f in list.get_ref() {
-            match f.get_ref().as_str() {
-                "paper" => out.push(Formulation::Paper),
-                "exact" => out.push(Formulation::Exact),
+            let parsed = match f.get_ref().as_str() {
+                "paper" => Formulation::Paper,
+                "exact" => Formulation::Exact,
                 other => {
                     self.err(
                         f.span(),
@@ -505,7 +505,17 @@ impl Validator<'_> {
                     );
                     return None;
                 }
+            };
+            if out.contains(&parsed) {
+                self.err(
+                    f.span(),
+                    "`formulations`",
+                    format!("formulation `{}` is listed twice", f.get_ref()),
+                    "list each formulation once",
+                );
+                return None;
             }
+            out.push(parsed);
         }
         if out.is_empty() {
             self.err(
@@ -784,6 +794,15 @@ impl Validator<'_> {
             }
         };
         match parse_expr(&mut self.arena, value.get_ref(), &mut resolve) {
+            Ok(id) if self.has_non_finite_constant(id) => {
+                self.err(
+                    value.span(),
+                    item,
+                    "`value` folds to an infinite or NaN constant".into(),
+                    "check the expression for an overflow or a division by zero",
+                );
+                None
+            }
             Ok(id) if !self.arena.eval(id, &|_| 0.0).is_finite() => {
                 self.err(
                     value.span(),
@@ -808,6 +827,20 @@ impl Validator<'_> {
                 None
             }
         }
+    }
+
+    /// Whether constant folding produced ±∞ or NaN anywhere under `id` (it cannot be emitted).
+    fn has_non_finite_constant(&self, id: Id) -> bool {
+        self.arena
+            .reachable(&[id])
+            .iter()
+            .enumerate()
+            .any(|(i, &m)| {
+                m && self
+                    .arena
+                    .as_const(Id(i as u32))
+                    .is_some_and(|c| !c.is_finite())
+            })
     }
 
     /// Computes the poses of bodies given by a `placement`, in dependency order.

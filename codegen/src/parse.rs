@@ -24,6 +24,10 @@ impl ExprError {
     }
 }
 
+/// Largest |n| accepted in `powi(x, n)`: derivatives form `n − 2` and `n·(n − 1)`, and no
+/// mechanism needs more.
+const MAX_POWI: i32 = 64;
+
 const FUNC_HELP: &str = "known functions: sin, cos, tan, asin, acos, atan, atan2, exp, ln, sqrt, abs, powi, to_radians, to_degrees; constant: pi";
 
 /// Parses `src` and builds it in `arena`; `resolve` maps a name to its node.
@@ -124,12 +128,14 @@ fn call(
         "powi" => {
             arity(2)?;
             let base = build(arena, args[0], resolve)?;
-            let n = integer_literal(args[1]).ok_or_else(|| {
-                ExprError::new(
-                    "`powi` needs an integer literal exponent",
-                    "write e.g. `powi(x, 2)`",
-                )
-            })?;
+            let n = integer_literal(args[1])
+                .filter(|n| n.abs() <= MAX_POWI)
+                .ok_or_else(|| {
+                    ExprError::new(
+                        format!("`powi` needs an integer literal exponent within ±{MAX_POWI}"),
+                        "write e.g. `powi(x, 2)`; use `exp(y * ln(x))` for other powers",
+                    )
+                })?;
             Ok(arena.powi(base, n))
         }
         "atan2" => {
@@ -165,12 +171,17 @@ fn literal(arena: &mut Arena, lit: &Lit) -> Result<Id, ExprError> {
         Lit::Int(i) => i.base10_parse::<f64>().ok(),
         _ => None,
     };
-    v.map(|v| arena.constant(v)).ok_or_else(|| {
-        ExprError::new(
+    match v {
+        Some(v) if v.is_finite() => Ok(arena.constant(v)),
+        Some(_) => Err(ExprError::new(
+            "numeric literal out of the range of f64",
+            "write a number below 1.8e308 in magnitude",
+        )),
+        None => Err(ExprError::new(
             "only numeric literals are allowed in expressions",
             "write numbers like `0.02` or `3`",
-        )
-    })
+        )),
+    }
 }
 
 fn integer_literal(e: &Expr) -> Option<i32> {

@@ -284,6 +284,58 @@ fn non_finite_numbers_are_rejected() {
 }
 
 #[test]
+fn overflowing_constants_and_huge_powers_are_rejected() {
+    let (text, d) = single_error(
+        "initial + amp * sin(t)",
+        "initial + amp * sin(t) + 1.0 / (t + 1e400)",
+    );
+    check(
+        &d,
+        line_of(&text, "value ="),
+        "driver `act`",
+        "out of the range of f64",
+        "1.8e308",
+    );
+    let (text, d) = single_error(
+        "initial + amp * sin(t)",
+        "initial + amp * sin(t) + 1e300 * 1e300 * t",
+    );
+    check(
+        &d,
+        line_of(&text, "value ="),
+        "driver `act`",
+        "infinite or NaN constant",
+        "overflow",
+    );
+    let (text, d) = single_error(
+        "initial + amp * sin(t)",
+        "initial + amp * powi(t + 1.0, -2147483647)",
+    );
+    check(
+        &d,
+        line_of(&text, "value ="),
+        "driver `act`",
+        "within ±64",
+        "powi(x, 2)",
+    );
+}
+
+#[test]
+fn duplicate_formulation_is_rejected() {
+    let (text, d) = single_error(
+        r#"formulations = ["exact"]"#,
+        r#"formulations = ["exact", "exact"]"#,
+    );
+    check(
+        &d,
+        line_of(&text, "formulations"),
+        "`formulations`",
+        "listed twice",
+        "once",
+    );
+}
+
+#[test]
 fn keyword_mechanism_name_is_rejected() {
     let (text, d) = single_error(r#"name = "pair""#, r#"name = "mod""#);
     check(
@@ -293,6 +345,34 @@ fn keyword_mechanism_name_is_rejected() {
         "Rust keyword",
         "lowercase letters",
     );
+}
+
+/// Generated code must parse, and name every item once per module.
+fn assert_valid_module(code: &str, case: usize) {
+    let file = syn::parse_file(code).unwrap_or_else(|e| panic!("case {case}: invalid Rust: {e}"));
+    fn names(items: &[syn::Item], case: usize) {
+        let mut seen = std::collections::HashSet::new();
+        for item in items {
+            let name = match item {
+                syn::Item::Fn(f) => Some(f.sig.ident.to_string()),
+                syn::Item::Struct(s) => Some(s.ident.to_string()),
+                syn::Item::Static(s) => Some(s.ident.to_string()),
+                syn::Item::Const(c) => Some(c.ident.to_string()),
+                syn::Item::Type(t) => Some(t.ident.to_string()),
+                syn::Item::Mod(m) => {
+                    if let Some((_, inner)) = &m.content {
+                        names(inner, case);
+                    }
+                    Some(m.ident.to_string())
+                }
+                _ => None,
+            };
+            if let Some(n) = name {
+                assert!(seen.insert(n.clone()), "case {case}: `{n}` defined twice");
+            }
+        }
+    }
+    names(&file.items, case);
 }
 
 /// splitmix64, for reproducible mutations.
@@ -352,7 +432,7 @@ fn random_mutations_never_panic() {
         let text = ls.join("\n");
         let result = std::panic::catch_unwind(|| generate("mechanisms/pair.toml", &text));
         match result {
-            Ok(Ok(_)) => {}
+            Ok(Ok(code)) => assert_valid_module(&code, case),
             Ok(Err(e)) => {
                 for d in &e.0 {
                     assert!(d.line >= 1 && !d.message.is_empty(), "case {case}: {d}");
