@@ -278,7 +278,7 @@ fn non_finite_numbers_are_rejected() {
         &d,
         line_of(&text, "value ="),
         "driver `act`",
-        "not finite",
+        "infinite or NaN constant",
         "division by zero",
     );
 }
