@@ -5,7 +5,7 @@ use std::time::{Duration, Instant};
 use symbody_mechanisms::stewart_6_6::{Exact, Paper};
 use symbody_runtime::{
     actuator_force, joint_force, Error, Formulation, HhtBuilder, Integrator, Kinematics, Mechanism,
-    MechanismInfo, Stats,
+    MechanismInfo, ResidualWatch, Stats,
 };
 
 /// Options of one simulation; `Default` is the paper's scenario over one period.
@@ -161,20 +161,24 @@ pub fn simulate(opts: &Options) -> Result<Run, ScenarioError> {
 pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
     let info = mech.info();
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
-    if opts.output_step.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+    if !(opts.output_step.is_finite() && opts.output_step > 0.0) {
         return Err(ScenarioError::Options(format!(
-            "--output-step must be positive, got {}",
+            "--output-step must be positive and finite, got {}",
             opts.output_step
         )));
     }
-    if opts
-        .t_end
-        .partial_cmp(&0.0)
-        .is_none_or(|o| o == std::cmp::Ordering::Less)
-    {
+    if !(opts.t_end.is_finite() && opts.t_end >= 0.0) {
         return Err(ScenarioError::Options(format!(
-            "--t-end must be zero or positive, got {}",
+            "--t-end must be finite and zero or positive, got {}",
             opts.t_end
+        )));
+    }
+    // Every output is kept in memory; beyond this the run would exhaust it, not finish.
+    const MAX_OUTPUTS: f64 = 1e7;
+    if opts.t_end / opts.output_step > MAX_OUTPUTS {
+        return Err(ScenarioError::Options(format!(
+            "{} s every {:e} s is more than {MAX_OUTPUTS:e} outputs: raise --output-step",
+            opts.t_end, opts.output_step
         )));
     }
     let start = Instant::now();
@@ -203,7 +207,7 @@ struct Recorder {
     layout: Layout,
     reactions: Reactions,
     kinematics: Kinematics,
-    phi: Vec<f64>,
+    watch: ResidualWatch,
     phi_t: Vec<f64>,
     jac: Vec<f64>,
     qdd: Vec<f64>,
@@ -220,7 +224,7 @@ impl Recorder {
             layout,
             reactions,
             kinematics: Kinematics::new(info)?,
-            phi: vec![0.0; info.n_constraints],
+            watch: ResidualWatch::new(info),
             phi_t: vec![0.0; info.n_constraints],
             jac: vec![0.0; info.phi_q_nnz()],
             qdd: vec![0.0; info.n_coords],
@@ -233,18 +237,14 @@ impl Recorder {
         let layout = self.layout;
         let (t, q, qd) = (it.t(), it.q().to_vec(), it.qd().to_vec());
         let mech = it.mechanism();
-        mech.phi(&q, t, &mut self.phi);
-        mech.phi_t(&q, t, &mut self.phi_t);
+        let residuals = self.watch.check(mech, t, &q, &qd)?;
+        run.max_phi = run.max_phi.max(residuals.position);
+        run.max_velocity_residual = run.max_velocity_residual.max(residuals.velocity);
         mech.phi_q(&q, t, &mut self.jac);
-        run.max_phi = run.max_phi.max(inf_norm(&self.phi));
-        // ċ of each driver, before phi_t is reused: Φ_D = d(q) − c(t), so ċ = −Φt.
+        mech.phi_t(&q, t, &mut self.phi_t);
+        // Φ_D = d(q) − c(t), so each driver's ċ = −Φt on its row.
         let c_dot: [f64; LEGS] =
             std::array::from_fn(|i| -self.phi_t[info.joints[layout.drivers[i]].row_start]);
-        // Velocity residual Φq q̇ + Φt, from the pattern.
-        for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(&self.jac) {
-            self.phi_t[r as usize] += v * qd[c as usize];
-        }
-        run.max_velocity_residual = run.max_velocity_residual.max(inf_norm(&self.phi_t));
         match self.reactions {
             Reactions::Integrator => self.lambda.copy_from_slice(it.lambda()),
             Reactions::Recovered => {
@@ -287,10 +287,6 @@ impl Recorder {
         run.qd.push(qd);
         Ok(())
     }
-}
-
-fn inf_norm(v: &[f64]) -> f64 {
-    v.iter().fold(0.0, |a, b| a.max(b.abs()))
 }
 
 impl Run {
