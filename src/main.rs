@@ -132,10 +132,7 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool) -> Result<(), St
     let f0 = run.upper[0][0];
     println!(
         "Stewart 6-6, paper scenario ({} formulation)",
-        match opts.formulation {
-            Formulation::Paper => "paper",
-            Formulation::Exact => "exact",
-        }
+        opts.formulation.name()
     );
     println!(
         "  time span        0 .. {:.6} s, step {} s, alpha {}",

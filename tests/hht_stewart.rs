@@ -207,7 +207,11 @@ fn the_first_order_spin_error_comes_from_the_alpha_term() {
 /// beyond what the other five legs allow after a while.
 struct OverExtended;
 
-const EXTRA_ROW: usize = 66;
+/// The row of driver `act1`, looked up rather than assumed.
+fn extra_row() -> usize {
+    let info = Exact.info();
+    info.joints[info.joint_index("act1").expect("the model has act1")].row_start
+}
 
 fn extra(t: f64) -> (f64, f64, f64) {
     (0.3 * t * t, 0.6 * t, 0.6)
@@ -219,18 +223,18 @@ impl Mechanism for OverExtended {
     }
     fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
         Exact.phi(q, t, out);
-        out[EXTRA_ROW] -= extra(t).0;
+        out[extra_row()] -= extra(t).0;
     }
     fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
         Exact.phi_q(q, t, out)
     }
     fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
         Exact.phi_t(q, t, out);
-        out[EXTRA_ROW] -= extra(t).1;
+        out[extra_row()] -= extra(t).1;
     }
     fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
         Exact.gamma(q, qd, t, out);
-        out[EXTRA_ROW] += extra(t).2;
+        out[extra_row()] += extra(t).2;
     }
     fn mass(&self, q: &[f64], out: &mut [f64]) {
         Exact.mass(q, out)
@@ -253,7 +257,7 @@ impl Mechanism for OverExtended {
                 force: out.force,
             },
         );
-        out.phi[EXTRA_ROW] -= extra(t).0;
+        out.phi[extra_row()] -= extra(t).0;
     }
     fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
         Exact.eval_kinematics(
@@ -268,9 +272,9 @@ impl Mechanism for OverExtended {
             },
         );
         let (e, ed, edd) = extra(t);
-        out.phi[EXTRA_ROW] -= e;
-        out.phi_t[EXTRA_ROW] -= ed;
-        out.gamma[EXTRA_ROW] += edd;
+        out.phi[extra_row()] -= e;
+        out.phi_t[extra_row()] -= ed;
+        out.gamma[extra_row()] += edd;
     }
 }
 

@@ -2,27 +2,13 @@
 //! constraints (`benches/reference`, from paper-scenario.md) differentiated by num-dual:
 //! Φ, Φq (values and sparsity pattern) and γ must agree at random states.
 
+mod common;
 #[path = "../benches/reference/mod.rs"]
 mod reference;
 
+use common::Rng;
 use reference::{rotation, Stewart, M, N};
 use symbody_mechanisms::stewart_6_6 as st;
-
-/// splitmix64, so a failing state reproduces from its index.
-struct Rng(u64);
-
-impl Rng {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
 
 const STATES: usize = 25;
 

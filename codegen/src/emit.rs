@@ -348,13 +348,13 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
         for &m in group {
             local_places[m as usize] = Place::Local;
         }
-        let stmts = group.iter().enumerate().map(|(i, &m)| {
+        let stmts = group.iter().map(|&m| {
             let x = node_ident(Id(m));
             let e = expression(arena, &local_places, Id(m));
             let Place::Shared(k) = places[m as usize] else {
                 unreachable!()
             };
-            let (_, k) = (i, int(k));
+            let k = int(k);
             quote!(let #x = #e; s[#k] = #x;)
         });
         let stmts: Vec<TokenStream> = stmts.collect();

@@ -54,6 +54,16 @@ pub enum Formulation {
     Exact,
 }
 
+impl Formulation {
+    /// The name used in mechanism files and on the command line: `paper` or `exact`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Formulation::Paper => "paper",
+            Formulation::Exact => "exact",
+        }
+    }
+}
+
 /// Everything about a mechanism that does not depend on the state.
 #[derive(Debug, Clone, Copy)]
 pub struct MechanismInfo {

@@ -42,13 +42,6 @@ fn t_end(f: Formulation) -> f64 {
     }
 }
 
-fn name(f: Formulation) -> &'static str {
-    match f {
-        Formulation::Exact => "exact",
-        Formulation::Paper => "paper",
-    }
-}
-
 /// Sources of the recorded forces compared in the sweep.
 const REACTIONS: [Reactions; 2] = [Reactions::Recovered, Reactions::Integrator];
 
@@ -182,7 +175,7 @@ fn main() {
             .unwrap_or_else(|e| {
                 fail(&format!(
                     "reference run ({}, α = {alpha}, h = {reference_step}) failed: {e}",
-                    name(formulation)
+                    formulation.name()
                 ))
             });
             // The reference's own error, bounded by runs at half and twice its step.
@@ -194,7 +187,7 @@ fn main() {
             let check = [check(0.5 * reference_step), check(2.0 * reference_step)];
             eprintln!(
                 "{} α = {alpha}: reference {:.2} s wall; check (h/2, 2h): {check:?}",
-                name(formulation),
+                formulation.name(),
                 reference.wall.as_secs_f64(),
             );
             reference_checks.push((formulation, alpha, check));
@@ -260,7 +253,7 @@ fn main() {
             secondary: f == Formulation::Paper,
             name: format!(
                 "{} (0..{:.2} s), α = {a}, {}",
-                name(f),
+                f.name(),
                 t_end(f),
                 reactions_name(x)
             ),
@@ -305,7 +298,7 @@ fn csv(rows: &[Row], reference_step: f64) -> String {
         let _ = write!(
             s,
             "{},{},{},{},{:.6},{},",
-            name(r.formulation),
+            r.formulation.name(),
             r.alpha,
             reactions_name(r.reactions),
             r.step,
@@ -354,7 +347,7 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
     for r in rows {
         let head = format!(
             "| {} | {} | {} | {:e} |",
-            name(r.formulation),
+            r.formulation.name(),
             r.alpha,
             reactions_name(r.reactions),
             r.step
@@ -404,7 +397,7 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
                     let _ = writeln!(
                         s,
                         "| {} | {a} | {h:e} | {:.1e} / {:.1e} | {:.1e} | {:.1e} |",
-                        name(*f),
+                        f.name(),
                         e.position,
                         e.angle,
                         e.force,
@@ -412,7 +405,7 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
                     );
                 }
                 Err(m) => {
-                    let _ = writeln!(s, "| {} | {a} | {h:e} | failed: {m} | | |", name(*f));
+                    let _ = writeln!(s, "| {} | {a} | {h:e} | failed: {m} | | |", f.name());
                 }
             }
         }

@@ -142,8 +142,4 @@ impl KktSolver for DenseKkt {
         y.copy_from_slice(&b.as_slice()[n..]);
         Ok(())
     }
-
-    fn set_pivot_tolerance(&mut self, tol: f64) {
-        self.pivot_tol = tol;
-    }
 }

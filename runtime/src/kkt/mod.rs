@@ -177,9 +177,6 @@ pub trait KktSolver: Sized {
     /// Solves with the last factorization: `x` gets `n` entries, `y` gets `m`.
     fn solve(&mut self, f: &[f64], g: &[f64], x: &mut [f64], y: &mut [f64])
         -> Result<(), KktError>;
-
-    /// Sets the relative pivot below which `Φq` counts as rank deficient (default 1e-10).
-    fn set_pivot_tolerance(&mut self, tol: f64);
 }
 
 pub(crate) fn check_kkt_len(expected: usize, got: usize) -> Result<(), KktError> {

@@ -69,11 +69,6 @@ impl SchurKkt {
     pub fn block_sizes(&self) -> Vec<usize> {
         self.component_sizes.clone()
     }
-
-    /// Sizes of the groups of blocks factored together (see `GROUP_MAX`).
-    pub fn group_sizes(&self) -> Vec<usize> {
-        self.block_ptr.windows(2).map(|w| w[1] - w[0]).collect()
-    }
 }
 
 // The block kernels take the block size `s` as an argument and are always inlined: every
@@ -583,9 +578,5 @@ impl KktSolver for SchurKkt {
             }
         }
         Ok(())
-    }
-
-    fn set_pivot_tolerance(&mut self, tol: f64) {
-        self.pivot_tol = tol;
     }
 }
