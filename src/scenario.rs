@@ -301,6 +301,37 @@ impl Run {
         w
     }
 
+    /// Largest |self − reference| of the quantity `of` picks at each output, and the time
+    /// where it occurs. Both runs must have the same output times.
+    pub fn max_difference(
+        &self,
+        reference: &Run,
+        of: impl Fn(&Run, usize) -> &[f64],
+    ) -> Result<(f64, f64), String> {
+        if self.t.len() != reference.t.len() {
+            return Err(format!(
+                "{} outputs against the reference's {}",
+                self.t.len(),
+                reference.t.len()
+            ));
+        }
+        let mut worst = (0.0f64, 0.0);
+        for k in 0..self.t.len() {
+            if (self.t[k] - reference.t[k]).abs() > 1e-12 {
+                return Err(format!(
+                    "output {k} at t = {} against {}",
+                    self.t[k], reference.t[k]
+                ));
+            }
+            for (a, b) in of(self, k).iter().zip(of(reference, k)) {
+                if (a - b).abs() > worst.0 {
+                    worst = ((a - b).abs(), self.t[k]);
+                }
+            }
+        }
+        Ok(worst)
+    }
+
     /// Range of platform coordinate `k` over the run.
     pub fn platform_range(&self, k: usize) -> (f64, f64) {
         self.platform

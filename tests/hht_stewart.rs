@@ -52,19 +52,10 @@ fn energy_change_equals_actuator_work() {
     );
 }
 
+/// Largest difference of the leg-1 upper-joint force, and its time.
 fn max_force_difference(a: &Run, b: &Run) -> (f64, f64) {
-    assert_eq!(a.t.len(), b.t.len());
-    let mut worst = (0.0f64, 0.0);
-    for k in 0..a.t.len() {
-        assert!((a.t[k] - b.t[k]).abs() < 1e-12);
-        for c in 0..3 {
-            let d = (a.upper[k][0][c] - b.upper[k][0][c]).abs();
-            if d > worst.0 {
-                worst = (d, a.t[k]);
-            }
-        }
-    }
-    worst
+    a.max_difference(b, |r, k| &r.upper[k][0])
+        .unwrap_or_else(|e| panic!("runs not comparable: {e}"))
 }
 
 #[test]

@@ -74,38 +74,13 @@ struct Errors {
 }
 
 fn errors(r: &Run, reference: &Run) -> Result<Errors, String> {
-    if r.t.len() != reference.t.len() {
-        return Err(format!(
-            "{} outputs against the reference's {}",
-            r.t.len(),
-            reference.t.len()
-        ));
-    }
-    let mut e = Errors::default();
-    let max_diff = |a: &[f64], b: &[f64]| {
-        a.iter()
-            .zip(b)
-            .map(|(x, y)| (x - y).abs())
-            .fold(0.0f64, f64::max)
-    };
-    for k in 0..r.t.len() {
-        if (r.t[k] - reference.t[k]).abs() > 1e-12 {
-            return Err(format!(
-                "output {k} at t = {} against {}",
-                r.t[k], reference.t[k]
-            ));
-        }
-        let (p, pr) = (&r.platform[k], &reference.platform[k]);
-        e.position = e.position.max(max_diff(&p[..3], &pr[..3]));
-        e.angle = e.angle.max(max_diff(&p[3..], &pr[3..]));
-        e.force = e
-            .force
-            .max(max_diff(&r.upper[k][0], &reference.upper[k][0]));
-        e.actuator = e
-            .actuator
-            .max(max_diff(&r.actuators[k], &reference.actuators[k]));
-    }
-    Ok(e)
+    let max = |of: fn(&Run, usize) -> &[f64]| r.max_difference(reference, of).map(|d| d.0);
+    Ok(Errors {
+        position: max(|run, k| &run.platform[k][..3])?,
+        angle: max(|run, k| &run.platform[k][3..])?,
+        force: max(|run, k| &run.upper[k][0])?,
+        actuator: max(|run, k| &run.actuators[k])?,
+    })
 }
 
 /// A reference's own check: errors of the runs at half and twice its step.
