@@ -551,7 +551,6 @@ impl KktSolver for SchurKkt {
         for (k, &zk) in z.iter().enumerate() {
             y[sym.perm[k]] = zk;
         }
-        z.fill(0.0);
 
         // x = M⁻¹ (f − Φqᵀ y) = L⁻ᵀ (u − W y), group by group.
         for b in 0..nb {
