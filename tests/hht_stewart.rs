@@ -236,6 +236,9 @@ impl Mechanism for OverExtended {
     fn potential(&self, q: &[f64]) -> f64 {
         Exact.potential(q)
     }
+    fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
+        Exact.power_nc(q, qd, t)
+    }
     fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
         Exact.eval_newton(
             q,

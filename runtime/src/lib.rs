@@ -32,7 +32,7 @@ pub use kinematics::{InitialVelocity, KinematicSettings, Kinematics, PositionRep
 pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, SchurKkt};
 pub use mechanism::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo,
-    NewtonOutputs,
+    NewtonOutputs, Rotation,
 };
 pub use reactions::{actuator_force, joint_force};
 pub use watch::{EulerLimits, EulerWarning, ResidualWatch, Residuals};

@@ -2,8 +2,9 @@
 //! names, and the evaluation functions the generator emits.
 //!
 //! Conventions shared by every implementation:
-//! - `q`, `qd` have `n_coords` entries; each body owns six consecutive coordinates
-//!   `[X, Y, Z, θ, β, γ]` (centre of mass, then Rz(γ)·Ry(β)·Rx(θ) Euler angles).
+//! - `q`, `qd` have `n_coords` entries; each body owns consecutive coordinates: its centre
+//!   of mass `[X, Y, Z]`, then its rotation coordinates ([`Rotation`]): `[θ, β, γ]`
+//!   (A = Rz(γ)·Ry(β)·Rx(θ)) or Euler parameters `[e0, e1, e2, e3]`.
 //! - Equations of motion are `M q̈ + Φqᵀ λ = Q` and `Φq q̈ = γ`.
 //! - Sparse matrices are written as their structural nonzeros only, in the order of the
 //!   pattern arrays in [`MechanismInfo`]; zeros outside the pattern are never written.
@@ -13,21 +14,72 @@
 pub enum JointKind {
     /// Three rows: point on body 1 minus point on body 2 (or a ground point).
     Spherical,
-    /// Five rows: three Euler-angle equalities, then two no-slide rows (paper eqs. 4–8).
+    /// Spherical plus two rows keeping the axes parallel (5 rows).
+    Revolute,
+    /// Spherical plus one row keeping the two cross axes perpendicular (4 rows).
+    Universal,
+    /// Axes parallel and the points on one line (4 rows).
+    Cylindrical,
+    /// Cylindrical plus one row stopping rotation about the axis (5 rows).
     Prismatic,
-    /// One row: distance along the prismatic axis minus a function of time.
+    /// Spherical plus three rows fixing the relative orientation (6 rows).
+    Fixed,
+    /// One row: distance between the two points minus a constant.
+    Distance,
+    /// The paper's prismatic (eqs. 4–8): three Euler-angle equalities, then two no-slide rows.
+    EulerPrismatic,
+    /// One row prescribing a joint coordinate, a body coordinate or a point distance as a
+    /// function of time; see [`JointInfo::effort_sign`].
     Driver,
+    /// One row `eᵀe − 1 = 0` owned by quaternion body `body1`.
+    Normalization,
+}
+
+/// How a body's orientation is parametrized.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Rotation {
+    /// `[θ, β, γ]` of A = Rz(γ)·Ry(β)·Rx(θ): three coordinates, singular at β = ±90°.
+    Euler,
+    /// Euler parameters `[e0, e1, e2, e3]` (unit quaternion, scalar first) and the body's
+    /// normalization row; no singularity.
+    Quaternion,
+}
+
+impl Rotation {
+    /// Number of rotation coordinates: 3 or 4.
+    pub fn n_coords(self) -> usize {
+        match self {
+            Rotation::Euler => 3,
+            Rotation::Quaternion => 4,
+        }
+    }
+    /// The name used in mechanism files: `euler` or `quaternion`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Rotation::Euler => "euler",
+            Rotation::Quaternion => "quaternion",
+        }
+    }
 }
 
 /// One rigid body of the mechanism.
 #[derive(Debug, Clone, Copy)]
 pub struct BodyInfo {
     pub name: &'static str,
-    /// Index of the body's `X` coordinate; `θ, β, γ` follow at `+3, +4, +5`.
+    /// Index of the body's `X` coordinate; `Y, Z` follow, then the rotation coordinates
+    /// from `+3`.
     pub coord_offset: usize,
+    pub rotation: Rotation,
     pub mass: f64,
     /// Principal inertias about the centre of mass, local axes.
     pub inertia: [f64; 3],
+}
+
+impl BodyInfo {
+    /// Number of coordinates the body owns: 6 (Euler) or 7 (quaternion).
+    pub fn n_coords(&self) -> usize {
+        3 + self.rotation.n_coords()
+    }
 }
 
 /// One joint (or driver) and the constraint rows it owns.
@@ -43,6 +95,15 @@ pub struct JointInfo {
     pub row_start: usize,
     /// Number of constraint rows.
     pub rows: usize,
+    /// The joint point on body 1 (local coordinates; global if body 1 is the ground):
+    /// reaction moments are taken about it.
+    pub point1: [f64; 3],
+    /// Drivers only (0 otherwise): ∂Φ/∂s of the driver's row with respect to the driven
+    /// coordinate `s` where Φ = 0, so the driver's effort along `s` (force or torque, on
+    /// body 2, positive in the direction of increasing `s`) is `−effort_sign · λ`.
+    pub effort_sign: f64,
+    /// Drivers only: unit of the effort, `"N"` or `"N·m"` (`""` for other joints).
+    pub effort_unit: &'static str,
 }
 
 /// Which dynamics formulation the mass matrix and forces were generated for.
@@ -89,8 +150,17 @@ pub struct MechanismInfo {
     pub coord_names: &'static [&'static str],
     /// Human-readable name of each constraint row, e.g. `upper_sph1.y`.
     pub row_names: &'static [&'static str],
-    /// Initial coordinates written in the mechanism file (consistent or close to it).
+    /// Initial coordinates: the file's pose, assembled by the generator (consistent to
+    /// roundoff).
     pub q0: &'static [f64],
+    /// Initial velocities from the file (zero where none was given); not necessarily
+    /// consistent: project them (`InitialVelocity::ProjectGiven`).
+    pub qd0: &'static [f64],
+    /// Rows that are linear combinations of other rows at the initial pose (found by the
+    /// generator with a rank-revealing elimination): solvers drop them (λ = 0), so the
+    /// reactions of the joints they belong to, and of the rows they depend on, are not
+    /// unique. Ascending.
+    pub redundant_rows: &'static [u32],
 }
 
 impl MechanismInfo {
@@ -113,6 +183,10 @@ impl MechanismInfo {
     /// Index of the joint called `name`.
     pub fn joint_index(&self, name: &str) -> Option<usize> {
         self.joints.iter().position(|j| j.name == name)
+    }
+    /// Degrees of freedom left at the initial pose: coordinates minus independent rows.
+    pub fn dof(&self) -> usize {
+        self.n_coords - (self.n_constraints - self.redundant_rows.len())
     }
 }
 
@@ -159,8 +233,11 @@ pub trait Mechanism {
     fn mass(&self, q: &[f64], out: &mut [f64]);
     /// Generalized applied and velocity-dependent forces Q(q, q̇, t).
     fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]);
-    /// Potential energy of the applied (conservative) forces.
+    /// Potential energy of the conservative applied forces (gravity, springs).
     fn potential(&self, q: &[f64]) -> f64;
+    /// Power of the non-conservative applied forces (dampers, actuator forces, applied
+    /// forces and torques given as functions of time) at `(q, q̇, t)`.
+    fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64;
     /// Φ, Φq, M, Q at one state, sharing trigonometry: what one Newton iteration needs.
     fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>);
     /// Φ, Φq, Φt, γ at one state, sharing trigonometry: what kinematic analysis needs.
@@ -192,6 +269,9 @@ impl<T: Mechanism + ?Sized> Mechanism for &T {
     }
     fn potential(&self, q: &[f64]) -> f64 {
         (**self).potential(q)
+    }
+    fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
+        (**self).power_nc(q, qd, t)
     }
     fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
         (**self).eval_newton(q, qd, t, out)

@@ -10,7 +10,7 @@
 
 use crate::mechanism::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo,
-    NewtonOutputs,
+    NewtonOutputs, Rotation,
 };
 
 /// Standard gravity used by the fixtures (m/s²).
@@ -81,6 +81,7 @@ const COORD_NAMES: [&str; 6] = [
 const PENDULUM_BODIES: [BodyInfo; 1] = [BodyInfo {
     name: "bob",
     coord_offset: 0,
+    rotation: Rotation::Euler,
     mass: PENDULUM_MASS,
     inertia: PENDULUM_INERTIA,
 }];
@@ -91,6 +92,9 @@ const PENDULUM_JOINTS: [JointInfo; 1] = [JointInfo {
     body2: None,
     row_start: 0,
     rows: 3,
+    point1: [0.0, PENDULUM_LENGTH, 0.0],
+    effort_sign: 0.0,
+    effort_unit: "",
 }];
 const PENDULUM_ROWS: [&str; 3] = ["pivot.x", "pivot.y", "pivot.z"];
 const PENDULUM_Q0: [f64; 6] = [0.0, -PENDULUM_LENGTH, 0.0, 0.0, 0.0, 0.0];
@@ -111,6 +115,8 @@ static PENDULUM_PAPER: MechanismInfo = MechanismInfo {
     coord_names: &COORD_NAMES,
     row_names: &PENDULUM_ROWS,
     q0: &PENDULUM_Q0,
+    qd0: &[0.0; 6],
+    redundant_rows: &[],
 };
 
 static PENDULUM_EXACT: MechanismInfo = MechanismInfo {
@@ -266,6 +272,11 @@ impl Mechanism for Pendulum {
         PENDULUM_MASS * G * q[1]
     }
 
+    fn power_nc(&self, _q: &[f64], _qd: &[f64], _t: f64) -> f64 {
+        // Gravity is the only applied force, and it is conservative.
+        0.0
+    }
+
     fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
         self.phi(q, t, out.phi);
         self.phi_q(q, t, out.phi_q);
@@ -309,17 +320,21 @@ static CIRCLE: MechanismInfo = MechanismInfo {
     bodies: &[BodyInfo {
         name: "slider",
         coord_offset: 0,
+        rotation: Rotation::Euler,
         mass: CIRCLE_MASS,
         inertia: [0.01, 0.02, 0.03],
     }],
     joints: &[
         JointInfo {
             name: "guide",
-            kind: JointKind::Prismatic,
+            kind: JointKind::EulerPrismatic,
             body1: Some(0),
             body2: None,
             row_start: 0,
             rows: 5,
+            point1: [0.0; 3],
+            effort_sign: 0.0,
+            effort_unit: "",
         },
         JointInfo {
             name: "lift",
@@ -328,6 +343,10 @@ static CIRCLE: MechanismInfo = MechanismInfo {
             body2: None,
             row_start: 5,
             rows: 1,
+            point1: [0.0; 3],
+            // Φ = s − c(t) with s = √(X² + Y²): ∂Φ/∂s = 1.
+            effort_sign: 1.0,
+            effort_unit: "N",
         },
     ],
     coord_names: &[
@@ -347,6 +366,8 @@ static CIRCLE: MechanismInfo = MechanismInfo {
         "lift",
     ],
     q0: &CIRCLE_Q0,
+    qd0: &[0.0; 6],
+    redundant_rows: &[],
 };
 
 /// Rows: `X − d`, `Z`, `θ`, `β`, `γ` (the guide), then `√(X² + Y²) − c(t)` (the driver),
@@ -404,6 +425,11 @@ impl Mechanism for CircleDriver {
 
     fn potential(&self, q: &[f64]) -> f64 {
         CIRCLE_MASS * G * q[1]
+    }
+
+    fn power_nc(&self, _q: &[f64], _qd: &[f64], _t: f64) -> f64 {
+        // Gravity is the only applied force; the driver's power is a constraint power.
+        0.0
     }
 
     fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
