@@ -1,5 +1,8 @@
 //! The reference KKT solver: the whole saddle-point matrix, dense, LU with partial pivoting.
 //! Simple enough to trust, so the structured solver is tested against it.
+//!
+//! A redundant row is removed by leaving its `Φq` entries out and putting a lone pivot on
+//! its diagonal with a zero right-hand side: its `y` is 0 and it couples to nothing.
 
 use nalgebra::{DMatrix, DVector};
 
@@ -14,6 +17,8 @@ pub struct DenseKkt {
     /// Row interchanges: at elimination step `k`, row `k` was swapped with `perm[k]`.
     perm: Vec<usize>,
     rhs: DVector<f64>,
+    /// For each constraint row: declared redundant in the pattern.
+    redundant: Vec<bool>,
     factored: bool,
     pivot_tol: f64,
 }
@@ -22,11 +27,16 @@ impl KktSolver for DenseKkt {
     fn new(pattern: &KktPattern) -> Result<Self, Error> {
         pattern.validate()?;
         let size = pattern.n + pattern.m;
+        let mut redundant = vec![false; pattern.m];
+        for &r in &pattern.redundant_rows {
+            redundant[r as usize] = true;
+        }
         Ok(DenseKkt {
             pattern: pattern.clone(),
             lu: DMatrix::zeros(size, size),
             perm: vec![0; size],
             rhs: DVector::zeros(size),
+            redundant,
             factored: false,
             pivot_tol: DEFAULT_PIVOT_TOLERANCE,
         })
@@ -45,8 +55,13 @@ impl KktSolver for DenseKkt {
             a[(r as usize, c as usize)] = mass_scale * v;
         }
         for ((&r, &c), &v) in p.phi_q_rows.iter().zip(&p.phi_q_cols).zip(phi_q) {
-            a[(n + r as usize, c as usize)] = v;
-            a[(c as usize, n + r as usize)] = v;
+            if !v.is_finite() {
+                return Err(KktError::NotFinite);
+            }
+            if !self.redundant[r as usize] {
+                a[(n + r as usize, c as usize)] = v;
+                a[(c as usize, n + r as usize)] = v;
+            }
         }
         let mut scale = 0.0f64;
         for v in a.iter() {
@@ -57,6 +72,10 @@ impl KktSolver for DenseKkt {
         }
         if scale == 0.0 && size > 0 {
             return Err(KktError::SingularMatrix { column: 0 });
+        }
+        // At the matrix's own scale, so the relative pivot tolerance is unchanged.
+        for &r in &p.redundant_rows {
+            a[(n + r as usize, n + r as usize)] = scale;
         }
         let tiny = self.pivot_tol * scale;
         for k in 0..size {
@@ -120,6 +139,9 @@ impl KktSolver for DenseKkt {
         let b = &mut self.rhs;
         b.as_mut_slice()[..n].copy_from_slice(f);
         b.as_mut_slice()[n..].copy_from_slice(g);
+        for &r in &self.pattern.redundant_rows {
+            b[n + r as usize] = 0.0;
+        }
         for k in 0..size {
             b.swap_rows(k, self.perm[k]);
         }

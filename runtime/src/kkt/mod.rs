@@ -6,6 +6,11 @@
 //! solver is built once from the patterns ([`KktPattern`]), then [`KktSolver::factor`] and
 //! [`KktSolver::solve`] run any number of times without allocating.
 //!
+//! Rows listed in [`KktPattern::redundant_rows`] are dropped: both solvers solve the system
+//! without them and return `y = 0` for them, so consistent redundant constraints (a hinge
+//! modelled by two ball joints) run; the remaining multipliers are one valid choice among
+//! many.
+//!
 //! Two implementations: [`DenseKkt`] (LU with partial pivoting on the full matrix; the
 //! reference) and [`SchurKkt`] (block Cholesky of `M`, sparse LDLᵀ of the Schur complement
 //! `Φq M⁻¹ Φqᵀ` under a minimum-degree ordering; the fast one).
@@ -37,6 +42,9 @@ pub struct KktPattern {
     pub phi_q_rows: Vec<u32>,
     /// `Φq` nonzeros: columns.
     pub phi_q_cols: Vec<u32>,
+    /// Rows solved as if absent (their `y` is 0): rows the generator found to be linear
+    /// combinations of others ([`MechanismInfo::redundant_rows`]). Ascending.
+    pub redundant_rows: Vec<u32>,
 }
 
 impl KktPattern {
@@ -49,6 +57,7 @@ impl KktPattern {
             mass_cols: info.mass_cols.to_vec(),
             phi_q_rows: info.phi_q_rows.to_vec(),
             phi_q_cols: info.phi_q_cols.to_vec(),
+            redundant_rows: info.redundant_rows.to_vec(),
         }
     }
 
@@ -69,6 +78,14 @@ impl KktPattern {
         for (&r, &c) in self.phi_q_rows.iter().zip(&self.phi_q_cols) {
             if r as usize >= self.m || c as usize >= self.n {
                 return bad(format!("Φq entry ({r}, {c}) outside {}×{}", self.m, self.n));
+            }
+        }
+        for (i, &r) in self.redundant_rows.iter().enumerate() {
+            if r as usize >= self.m {
+                return bad(format!("redundant row {r} outside {} rows", self.m));
+            }
+            if i > 0 && r <= self.redundant_rows[i - 1] {
+                return bad("redundant rows are not strictly ascending".into());
             }
         }
         Ok(())

@@ -2,6 +2,11 @@
 //! `M⁻¹` is cheap and the saddle point reduces to the Schur complement `S = Φq M⁻¹ Φqᵀ`,
 //! which is symmetric positive definite exactly when `Φq` has full row rank. `S` is factored
 //! as `LDLᵀ` with a minimum-degree ordering whose pattern is computed once.
+//!
+//! Redundant rows cost nothing on the numeric path: their `Φq` nonzeros are scattered into
+//! one dummy slot of the work matrix that no block reads, so their rows of `S` stay empty
+//! (isolated in the ordering, no fill), and their zero pivot is recognised as dropped only
+//! in the rank-loss branch, where it gets `D = 1`, `1/D = 0` and hence `y = 0`.
 
 use super::ordering::{minimum_degree, Symbolic};
 use super::{check_kkt_len, KktError, KktPattern, KktSolver, DEFAULT_PIVOT_TOLERANCE};
@@ -47,8 +52,10 @@ pub struct SchurKkt {
     lval: Vec<f64>,
     /// D of `LDLᵀ` (permuted order); before factorization it holds diag(S).
     diag: Vec<f64>,
-    /// 1/D, or 0 for a dropped (rank-deficient) pivot.
+    /// 1/D, or 0 for a dropped (rank-deficient or redundant) pivot.
     dinv: Vec<f64>,
+    /// By permuted position: the row is redundant (declared in the pattern) and dropped.
+    redundant: Vec<bool>,
     /// For permuted row j, the columns k < j with `L[j,k] ≠ 0` and the slot of that entry.
     row_list_ptr: Vec<usize>,
     row_list: Vec<(usize, usize)>,
@@ -260,10 +267,16 @@ impl KktSolver for SchurKkt {
             })
             .collect();
 
-        // Rows of Φq touching each block.
+        // Rows of Φq touching each block; redundant rows touch none.
+        let mut is_redundant = vec![false; m];
+        for &r in &pattern.redundant_rows {
+            is_redundant[r as usize] = true;
+        }
         let mut touch: Vec<Vec<usize>> = vec![Vec::new(); nb];
         for (&r, &c) in pattern.phi_q_rows.iter().zip(&pattern.phi_q_cols) {
-            touch[coord_block[c as usize]].push(r as usize);
+            if !is_redundant[r as usize] {
+                touch[coord_block[c as usize]].push(r as usize);
+            }
         }
         for t in &mut touch {
             t.sort_unstable();
@@ -279,11 +292,16 @@ impl KktSolver for SchurKkt {
             p_off.push(p_len);
             p_len += t.len() * members[b].len();
         }
+        // The dummy slot past every block's slice takes the redundant rows' nonzeros.
+        let dummy = p_len;
         let phi_q_dest = pattern
             .phi_q_rows
             .iter()
             .zip(&pattern.phi_q_cols)
             .map(|(&r, &c)| {
+                if is_redundant[r as usize] {
+                    return dummy;
+                }
                 let b = coord_block[c as usize];
                 let a = touch[b].binary_search(&(r as usize)).expect("row recorded");
                 p_off[b] + a * members[b].len() + coord_local[c as usize]
@@ -343,6 +361,7 @@ impl KktSolver for SchurKkt {
         }
 
         let lnnz = sym.row_idx.len();
+        let redundant = sym.perm.iter().map(|&r| is_redundant[r]).collect();
         Ok(SchurKkt {
             n,
             m,
@@ -355,7 +374,7 @@ impl KktSolver for SchurKkt {
             brow_ptr,
             brows,
             p_off,
-            wmat: vec![0.0; p_len],
+            wmat: vec![0.0; p_len + 1],
             inv_diag: vec![0.0; n],
             ustore: vec![0.0; n],
             phi_q_dest,
@@ -365,6 +384,7 @@ impl KktSolver for SchurKkt {
             lval: vec![0.0; lnnz],
             diag: vec![0.0; m],
             dinv: vec![0.0; m],
+            redundant,
             row_list_ptr,
             row_list,
             work: vec![0.0; m],
@@ -447,6 +467,13 @@ impl KktSolver for SchurKkt {
                 return Err(KktError::NotFinite);
             }
             if !(dj > self.pivot_tol * scale) {
+                if self.redundant[j] {
+                    // Isolated in S (no L entries either way): a unit pivot with 1/D = 0
+                    // solves the row as absent and gives it y = 0.
+                    self.diag[j] = 1.0;
+                    self.dinv[j] = 0.0;
+                    continue;
+                }
                 worst = worst.min(if scale > 0.0 { dj / scale } else { 0.0 });
                 if nbad < bad.len() {
                     bad[nbad] = sym.perm[j];

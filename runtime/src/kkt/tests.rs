@@ -87,6 +87,7 @@ fn random_problem(rng: &mut Rng, n_blocks: usize, m: Option<usize>) -> Problem {
             mass_cols,
             phi_q_rows,
             phi_q_cols,
+            redundant_rows: Vec::new(),
         },
         mass,
         phi_q,
@@ -231,6 +232,7 @@ fn pattern_errors_are_reported() {
         mass_cols: vec![0],
         phi_q_rows: vec![0],
         phi_q_cols: vec![1],
+        redundant_rows: Vec::new(),
     };
     assert!(matches!(
         SchurKkt::new(&pat),
@@ -244,4 +246,172 @@ fn pattern_errors_are_reported() {
         DenseKkt::new(&pat),
         Err(Error::InvalidPattern { .. })
     ));
+}
+
+/// `p` with extra rows inserted: each `(at, combination)` puts, at final row index `at`, the
+/// combination `Σ c·row_k` of original rows. Returns the problem and the map from final
+/// rows to original rows (`None` for inserted ones). `at` must be ascending.
+fn with_combination_rows(
+    p: &Problem,
+    extra: &[(usize, Vec<(usize, f64)>)],
+) -> (Problem, Vec<Option<usize>>) {
+    let (n, m) = (p.pattern.n, p.pattern.m);
+    let mut dense = vec![vec![0.0; n]; m];
+    let mut structural = vec![vec![false; n]; m];
+    for ((&r, &c), &v) in p
+        .pattern
+        .phi_q_rows
+        .iter()
+        .zip(&p.pattern.phi_q_cols)
+        .zip(&p.phi_q)
+    {
+        dense[r as usize][c as usize] = v;
+        structural[r as usize][c as usize] = true;
+    }
+    let total = m + extra.len();
+    let mut origin = Vec::with_capacity(total);
+    let mut next = 0;
+    for row in 0..total {
+        if extra.iter().any(|(at, _)| *at == row) {
+            origin.push(None);
+        } else {
+            origin.push(Some(next));
+            next += 1;
+        }
+    }
+    let (mut rows, mut cols, mut vals) = (Vec::new(), Vec::new(), Vec::new());
+    for (row, o) in origin.iter().enumerate() {
+        let (vals_row, pat_row): (Vec<f64>, Vec<bool>) = match o {
+            Some(k) => (dense[*k].clone(), structural[*k].clone()),
+            None => {
+                let comb = &extra.iter().find(|(at, _)| *at == row).unwrap().1;
+                let v = (0..n)
+                    .map(|c| comb.iter().map(|&(k, a)| a * dense[k][c]).sum())
+                    .collect();
+                let s = (0..n)
+                    .map(|c| comb.iter().any(|&(k, _)| structural[k][c]))
+                    .collect();
+                (v, s)
+            }
+        };
+        for c in 0..n {
+            if pat_row[c] {
+                rows.push(row as u32);
+                cols.push(c as u32);
+                vals.push(vals_row[c]);
+            }
+        }
+    }
+    let pattern = KktPattern {
+        m: total,
+        phi_q_rows: rows,
+        phi_q_cols: cols,
+        redundant_rows: extra.iter().map(|(at, _)| *at as u32).collect(),
+        ..p.pattern.clone()
+    };
+    (
+        Problem {
+            pattern,
+            mass: p.mass.clone(),
+            phi_q: vals,
+        },
+        origin,
+    )
+}
+
+#[test]
+fn redundant_rows_are_solved_as_absent_with_zero_multipliers() {
+    let mut rng = Rng::new(23);
+    for trial in 0..10 {
+        let p = random_problem(&mut rng, 8, Some(7));
+        let m = p.pattern.m;
+        let c = 0.7;
+        let f: Vec<f64> = (0..p.pattern.n).map(|_| rng.uniform()).collect();
+        let g: Vec<f64> = (0..m).map(|_| rng.uniform()).collect();
+        let (x0, y0) = solve_with::<DenseKkt>(&p, c, &f, &g);
+        // A duplicate of row 2 first, and a combination of rows 1 and 5 in the middle.
+        let extra = vec![(0, vec![(2, 1.0)]), (4, vec![(1, 0.5), (5, -2.0)])];
+        let (r, origin) = with_combination_rows(&p, &extra);
+        // Consistent right-hand sides on the inserted rows (the solvers must ignore them).
+        let g1: Vec<f64> = origin
+            .iter()
+            .enumerate()
+            .map(|(row, o)| match o {
+                Some(k) => g[*k],
+                None => {
+                    let comb = &extra.iter().find(|(at, _)| *at == row).unwrap().1;
+                    comb.iter().map(|&(k, a)| a * g[k]).sum()
+                }
+            })
+            .collect();
+        let scale = x0.iter().chain(&y0).fold(1e-300f64, |a, b| a.max(b.abs()));
+        let results = [
+            ("dense", solve_with::<DenseKkt>(&r, c, &f, &g1)),
+            ("schur", solve_with::<SchurKkt>(&r, c, &f, &g1)),
+        ];
+        for (name, (x, y)) in results {
+            for (a, b) in x.iter().zip(&x0) {
+                assert!(
+                    (a - b).abs() <= 1e-10 * scale,
+                    "{name} {trial}: x {a} vs {b}"
+                );
+            }
+            for (row, o) in origin.iter().enumerate() {
+                match o {
+                    Some(k) => assert!(
+                        (y[row] - y0[*k]).abs() <= 1e-10 * scale,
+                        "{name} {trial}: y[{row}] {} vs {}",
+                        y[row],
+                        y0[*k]
+                    ),
+                    None => assert_eq!(y[row], 0.0, "{name} {trial}: dropped row {row}"),
+                }
+            }
+            // The full system, dropped rows included, holds (their λ is one valid choice).
+            assert!(
+                relative_residual(&r, c, &x, &y, &f, &g1) < 1e-12,
+                "{name} {trial}"
+            );
+        }
+
+        // Undeclared, the same rows make Φq rank deficient, as before.
+        let undeclared = Problem {
+            pattern: KktPattern {
+                redundant_rows: Vec::new(),
+                ..r.pattern.clone()
+            },
+            mass: r.mass.clone(),
+            phi_q: r.phi_q.clone(),
+        };
+        let mut s = SchurKkt::new(&undeclared.pattern).unwrap();
+        match s.factor(&undeclared.mass, c, &undeclared.phi_q) {
+            Err(KktError::RankDeficient { count, .. }) => assert_eq!(count, 2, "{trial}"),
+            other => panic!("schur {trial}: expected rank deficiency, got {other:?}"),
+        }
+        let mut d = DenseKkt::new(&undeclared.pattern).unwrap();
+        assert!(matches!(
+            d.factor(&undeclared.mass, c, &undeclared.phi_q),
+            Err(KktError::RankDeficient { .. })
+        ));
+    }
+}
+
+#[test]
+fn redundant_rows_must_be_in_range_and_ascending() {
+    let mut rng = Rng::new(2);
+    let p = random_problem(&mut rng, 3, Some(3));
+    for bad in [vec![3], vec![1, 1], vec![2, 0]] {
+        let pat = KktPattern {
+            redundant_rows: bad.clone(),
+            ..p.pattern.clone()
+        };
+        assert!(
+            matches!(SchurKkt::new(&pat), Err(Error::InvalidPattern { .. })),
+            "{bad:?}"
+        );
+        assert!(matches!(
+            DenseKkt::new(&pat),
+            Err(Error::InvalidPattern { .. })
+        ));
+    }
 }
