@@ -1,9 +1,12 @@
 //! From a validated model to symbolic equations on one DAG: Φ(q, t), structurally sparse
 //! Φq, Φt, γ (a second directional derivative), and per formulation the mass matrix M(q),
-//! the generalized forces Q(q, q̇, t) and the potential energy.
+//! the generalized forces Q(q, q̇, t), the potential energy and the power of the
+//! non-conservative loads. Joint rows come from [`crate::primitives`], applied loads from
+//! [`crate::loads`].
 
 use crate::expr::{Arena, Id, Var};
-use crate::model::{Formulation, JointKind, Model};
+use crate::model::{Formulation, Model, Rotation};
+use crate::primitives::{driver_row, joint_rows};
 
 /// A sparse matrix entry: row, column, value.
 pub type Entry = (u32, u32, Id);
@@ -30,33 +33,139 @@ pub struct System {
     pub phi_t: Vec<Id>,
     pub gamma: Vec<Id>,
     pub potential: Id,
+    /// Power of the non-conservative loads (dampers, actuators, applied loads in `t`).
+    pub power_nc: Id,
     pub dynamics: Vec<Dynamics>,
     pub row_names: Vec<String>,
     pub coord_names: Vec<String>,
-    /// First row of each joint, then of each driver (drivers have one row each).
+    /// First row of each joint, then of each driver (one row each), then of each
+    /// quaternion body's normalization row.
     pub joint_rows: Vec<usize>,
+    /// `∂Φ/∂s` of each driver's row at Φ = 0 (see `JointInfo::effort_sign`).
+    pub driver_signs: Vec<f64>,
+    /// Bodies owning a normalization row, in row order.
+    pub normalized_bodies: Vec<usize>,
 }
 
-type V3 = [Id; 3];
-type M3 = [[Id; 3]; 3];
+pub type V3s = [Id; 3];
+pub type M3s = [[Id; 3]; 3];
 
 /// Symbolic pieces of one body's coordinates.
-struct BodySym {
-    r: V3,
-    angles: V3,
-    rot: M3,
+pub struct BodySym {
+    pub r: V3s,
+    /// The rotation coordinates: `[θ, β, γ]` or `[e0, e1, e2, e3]`.
+    pub rot_coords: Vec<Id>,
+    pub rot: M3s,
+    pub rotation: Rotation,
+    pub offset: usize,
 }
 
-fn body_sym(a: &mut Arena, b: usize) -> BodySym {
-    let q = |a: &mut Arena, k: usize| a.var(Var::Q((6 * b + k) as u32));
+impl BodySym {
+    /// The body's velocity variables: `[Ẋ, Ẏ, Ż]`, then the rotation rates.
+    pub fn velocities(&self, a: &mut Arena) -> Vec<Id> {
+        (0..3 + self.rotation.n_coords())
+            .map(|k| a.var(Var::Qd((self.offset + k) as u32)))
+            .collect()
+    }
+
+    /// Global angular velocity, linear in the rates.
+    pub fn omega_global(&self, a: &mut Arena) -> V3s {
+        let qd = self.velocities(a);
+        match self.rotation {
+            Rotation::Euler => {
+                // ω = H(β, γ)(θ̇, β̇, γ̇), H columns [cγcβ, sγcβ, −sβ], [−sγ, cγ, 0], e_z.
+                let (be, ga) = (self.rot_coords[1], self.rot_coords[2]);
+                let (sb, cb) = (a.sin(be), a.cos(be));
+                let (sg, cg) = (a.sin(ga), a.cos(ga));
+                let (thd, bed, gad) = (qd[3], qd[4], qd[5]);
+                let cgcb = a.mul(cg, cb);
+                let sgcb = a.mul(sg, cb);
+                let w0 = {
+                    let p = a.mul(cgcb, thd);
+                    let q = a.mul(sg, bed);
+                    a.sub(p, q)
+                };
+                let w1 = {
+                    let p = a.mul(sgcb, thd);
+                    let q = a.mul(cg, bed);
+                    a.add(p, q)
+                };
+                let w2 = {
+                    let p = a.mul(sb, thd);
+                    a.sub(gad, p)
+                };
+                [w0, w1, w2]
+            }
+            Rotation::Quaternion => {
+                // ω = 2E(e)ė, E = [[−e1, e0, −e3, e2], [−e2, e3, e0, −e1], [−e3, −e2, e1, e0]].
+                let e = &self.rot_coords;
+                let ed = &qd[3..7];
+                let rows = [[(1, -1.0), (0, 1.0), (3, -1.0), (2, 1.0)], [(2, -1.0), (3, 1.0), (0, 1.0), (1, -1.0)], [(3, -1.0), (2, -1.0), (1, 1.0), (0, 1.0)]];
+                rows.map(|row| quaternion_row(a, e, ed, row))
+            }
+        }
+    }
+
+    /// Body-frame angular velocity, linear in the rates.
+    pub fn omega_body(&self, a: &mut Arena) -> V3s {
+        let qd = self.velocities(a);
+        match self.rotation {
+            Rotation::Euler => body_angular_velocity(
+                a,
+                [self.rot_coords[0], self.rot_coords[1], self.rot_coords[2]],
+                [qd[3], qd[4], qd[5]],
+            ),
+            Rotation::Quaternion => {
+                // ω' = 2G(e)ė, G = [[−e1, e0, e3, −e2], [−e2, −e3, e0, e1], [−e3, e2, −e1, e0]].
+                let e = &self.rot_coords;
+                let ed = &qd[3..7];
+                let rows = [[(1, -1.0), (0, 1.0), (3, 1.0), (2, -1.0)], [(2, -1.0), (3, -1.0), (0, 1.0), (1, 1.0)], [(3, -1.0), (2, 1.0), (1, -1.0), (0, 1.0)]];
+                rows.map(|row| quaternion_row(a, e, ed, row))
+            }
+        }
+    }
+}
+
+/// `2 Σ_k sign_k e[idx_k] ė_k` for one row of E or G.
+fn quaternion_row(a: &mut Arena, e: &[Id], ed: &[Id], row: [(usize, f64); 4]) -> Id {
+    let terms: Vec<Id> = row
+        .iter()
+        .zip(ed)
+        .map(|(&(i, s), &d)| {
+            let p = a.mul(e[i], d);
+            if s < 0.0 {
+                a.neg(p)
+            } else {
+                p
+            }
+        })
+        .collect();
+    let sum = a.sum(terms);
+    let two = a.constant(2.0);
+    a.mul(two, sum)
+}
+
+fn body_sym(a: &mut Arena, offset: usize, rotation: Rotation) -> BodySym {
+    let q = |a: &mut Arena, k: usize| a.var(Var::Q((offset + k) as u32));
     let r = [q(a, 0), q(a, 1), q(a, 2)];
-    let angles = [q(a, 3), q(a, 4), q(a, 5)];
-    let rot = rotation(a, angles);
-    BodySym { r, angles, rot }
+    let rot_coords: Vec<Id> = (0..rotation.n_coords()).map(|k| q(a, 3 + k)).collect();
+    let rot = match rotation {
+        Rotation::Euler => euler_rotation(a, [rot_coords[0], rot_coords[1], rot_coords[2]]),
+        Rotation::Quaternion => {
+            quaternion_rotation(a, [rot_coords[0], rot_coords[1], rot_coords[2], rot_coords[3]])
+        }
+    };
+    BodySym {
+        r,
+        rot_coords,
+        rot,
+        rotation,
+        offset,
+    }
 }
 
 /// `Rz(γ)·Ry(β)·Rx(θ)` written out, as in paper eq. 1.
-fn rotation(a: &mut Arena, [th, be, ga]: V3) -> M3 {
+fn euler_rotation(a: &mut Arena, [th, be, ga]: V3s) -> M3s {
     let (st, ct) = (a.sin(th), a.cos(th));
     let (sb, cb) = (a.sin(be), a.cos(be));
     let (sg, cg) = (a.sin(ga), a.cos(ga));
@@ -83,94 +192,80 @@ fn rotation(a: &mut Arena, [th, be, ga]: V3) -> M3 {
     [[cgcb, a01, a02], [sgcb, a11, a12], [a20, cbst, cbct]]
 }
 
-fn consts(a: &mut Arena, v: [f64; 3]) -> V3 {
-    v.map(|x| a.constant(x))
-}
-
-fn mat_vec(a: &mut Arena, m: &M3, v: V3) -> V3 {
-    [0, 1, 2].map(|i| a.dot3(m[i], v))
-}
-
-fn add3(a: &mut Arena, x: V3, y: V3) -> V3 {
-    [0, 1, 2].map(|i| a.add(x[i], y[i]))
-}
-
-fn sub3(a: &mut Arena, x: V3, y: V3) -> V3 {
-    [0, 1, 2].map(|i| a.sub(x[i], y[i]))
-}
-
-/// World position of a point fixed on a body (or a ground point).
-fn point_world(a: &mut Arena, bodies: &[BodySym], body: Option<usize>, p: [f64; 3]) -> V3 {
-    let pc = consts(a, p);
-    match body {
-        None => pc,
-        Some(b) => {
-            let w = mat_vec(a, &bodies[b].rot, pc);
-            add3(a, bodies[b].r, w)
-        }
-    }
+/// `A(e) = (2e0² − 1)I + 2(ēēᵀ + e0[ē×])`: a rotation on the unit sphere, which the body's
+/// normalization row enforces.
+fn quaternion_rotation(a: &mut Arena, [e0, e1, e2, e3]: [Id; 4]) -> M3s {
+    let two = a.constant(2.0);
+    let one = a.constant(1.0);
+    let twice = |a: &mut Arena, x: Id, y: Id, sign: f64| {
+        let p = a.mul(x, y);
+        let p = if sign < 0.0 { a.neg(p) } else { p };
+        a.mul(two, p)
+    };
+    let sq = [e0, e1, e2, e3].map(|e| a.powi(e, 2));
+    let diag = |a: &mut Arena, k: usize| {
+        let s = a.add(sq[0], sq[k]);
+        let t = a.mul(two, s);
+        a.sub(t, one)
+    };
+    let d0 = diag(a, 1);
+    let d1 = diag(a, 2);
+    let d2 = diag(a, 3);
+    let off = |a: &mut Arena, x: (Id, Id), y: (Id, Id), sign: f64| {
+        let p = twice(a, x.0, x.1, 1.0);
+        let q = twice(a, y.0, y.1, sign);
+        a.add(p, q)
+    };
+    let a01 = off(a, (e1, e2), (e0, e3), -1.0);
+    let a02 = off(a, (e1, e3), (e0, e2), 1.0);
+    let a10 = off(a, (e1, e2), (e0, e3), 1.0);
+    let a12 = off(a, (e2, e3), (e0, e1), -1.0);
+    let a20 = off(a, (e1, e3), (e0, e2), -1.0);
+    let a21 = off(a, (e2, e3), (e0, e1), 1.0);
+    [[d0, a01, a02], [a10, d1, a12], [a20, a21, d2]]
 }
 
 /// Builds every equation of `model`.
 pub fn build(model: &Model) -> System {
     let mut a = model.arena.clone();
-    let nb = model.bodies.len();
-    let bodies: Vec<BodySym> = (0..nb).map(|b| body_sym(&mut a, b)).collect();
+    let bodies: Vec<BodySym> = model
+        .bodies
+        .iter()
+        .map(|b| body_sym(&mut a, b.offset, b.rotation))
+        .collect();
     let mut phi = Vec::new();
     let mut row_names = Vec::new();
-    let mut joint_rows = Vec::new();
+    let mut joint_rows_start = Vec::new();
     for j in &model.joints {
-        joint_rows.push(phi.len());
-        match j.kind {
-            JointKind::Spherical {
-                body1,
-                point1,
-                body2,
-                point2,
-            } => {
-                let p1 = point_world(&mut a, &bodies, body1, point1);
-                let p2 = point_world(&mut a, &bodies, body2, point2);
-                let d = sub3(&mut a, p1, p2);
-                for (k, axis) in ["x", "y", "z"].iter().enumerate() {
-                    phi.push(d[k]);
-                    row_names.push(format!("{}.{axis}", j.name));
-                }
-            }
-            JointKind::Prismatic {
-                body1, body2, perp, ..
-            } => {
-                for (k, ang) in ["theta", "beta", "gamma"].iter().enumerate() {
-                    let e = a.sub(bodies[body2].angles[k], bodies[body1].angles[k]);
-                    phi.push(e);
-                    row_names.push(format!("{}.{ang}", j.name));
-                }
-                let d = sub3(&mut a, bodies[body2].r, bodies[body1].r);
-                for (k, p) in perp.iter().enumerate() {
-                    let pc = consts(&mut a, *p);
-                    let u = mat_vec(&mut a, &bodies[body1].rot, pc);
-                    phi.push(a.dot3(u, d));
-                    row_names.push(format!("{}.slide{}", j.name, k + 1));
-                }
-            }
+        joint_rows_start.push(phi.len());
+        for (name, row) in joint_rows(&mut a, &bodies, j) {
+            phi.push(row);
+            row_names.push(name);
         }
     }
+    let mut driver_signs = Vec::new();
     for d in &model.drivers {
-        joint_rows.push(phi.len());
-        let JointKind::Prismatic {
-            body1, body2, axis, ..
-        } = model.joints[d.joint].kind
-        else {
-            unreachable!("the model validated that drivers act on prismatic joints");
-        };
-        let ac = consts(&mut a, axis);
-        let u = mat_vec(&mut a, &bodies[body1].rot, ac);
-        let dr = sub3(&mut a, bodies[body2].r, bodies[body1].r);
-        let dist = a.dot3(u, dr);
-        phi.push(a.sub(dist, d.value));
+        joint_rows_start.push(phi.len());
+        let (row, sign) = driver_row(&mut a, &bodies, model, &d.target, d.value);
+        phi.push(row);
+        driver_signs.push(sign);
         row_names.push(d.name.clone());
     }
+    let mut normalized_bodies = Vec::new();
+    for (b, body) in model.bodies.iter().enumerate() {
+        if body.rotation == Rotation::Quaternion {
+            joint_rows_start.push(phi.len());
+            let e = bodies[b].rot_coords.clone();
+            let sq: Vec<Id> = e.iter().map(|&x| a.powi(x, 2)).collect();
+            let s = a.sum(sq);
+            let one = a.constant(1.0);
+            phi.push(a.sub(s, one));
+            row_names.push(format!("{}.norm", body.name));
+            normalized_bodies.push(b);
+        }
+    }
 
-    let n_coords = 6 * nb;
+    let n_coords = model.n_coords();
     let phi_q = jacobian(&mut a, &phi, n_coords);
     let one = a.constant(1.0);
     let phi_t = a.derivative(&phi, &|v| (v == Var::T).then_some(one));
@@ -185,30 +280,22 @@ pub fn build(model: &Model) -> System {
         let phi_ddot = a.derivative(&phi_dot, &seed);
         phi_ddot.into_iter().map(|x| a.neg(x)).collect()
     };
-    let potential = {
-        let terms: Vec<Id> = (0..nb)
-            .flat_map(|b| (0..3).map(move |k| (b, k)))
-            .map(|(b, k)| {
-                let c = a.constant(-model.bodies[b].mass * model.gravity[k]);
-                a.mul(c, bodies[b].r[k])
-            })
-            .collect();
-        a.sum(terms)
-    };
+    let loads = crate::loads::build(&mut a, model, &bodies);
     let dynamics = model
         .formulations
         .iter()
         .map(|f| match f {
-            Formulation::Paper => paper_dynamics(&mut a, model),
-            Formulation::Exact => exact_dynamics(&mut a, model, &bodies),
+            Formulation::Paper => paper_dynamics(&mut a, model, &loads.force),
+            Formulation::Exact => exact_dynamics(&mut a, model, &bodies, &loads.force),
         })
         .collect();
     let coord_names = model
         .bodies
         .iter()
         .flat_map(|b| {
-            ["x", "y", "z", "theta", "beta", "gamma"]
+            ["x", "y", "z"]
                 .iter()
+                .chain(b.rotation.coord_names())
                 .map(move |c| format!("{}.{c}", b.name))
         })
         .collect();
@@ -220,11 +307,14 @@ pub fn build(model: &Model) -> System {
         phi_q,
         phi_t,
         gamma,
-        potential,
+        potential: loads.potential,
+        power_nc: loads.power_nc,
         dynamics,
         row_names,
         coord_names,
-        joint_rows,
+        joint_rows: joint_rows_start,
+        driver_signs,
+        normalized_bodies,
     }
 }
 
@@ -258,10 +348,10 @@ pub fn jacobian(a: &mut Arena, rows: &[Id], n_coords: usize) -> Vec<Entry> {
     entries
 }
 
-fn paper_dynamics(a: &mut Arena, model: &Model) -> Dynamics {
+fn paper_dynamics(a: &mut Arena, model: &Model, loads: &[Id]) -> Dynamics {
     let mut mass = Vec::new();
     let mut force = Vec::new();
-    for (b, body) in model.bodies.iter().enumerate() {
+    for body in &model.bodies {
         let diag = [
             body.mass,
             body.mass,
@@ -271,14 +361,15 @@ fn paper_dynamics(a: &mut Arena, model: &Model) -> Dynamics {
             body.inertia[2],
         ];
         for (k, m) in diag.iter().enumerate() {
-            let i = (6 * b + k) as u32;
-            mass.push((i, i, a.constant(*m)));
+            let i = body.offset + k;
+            mass.push((i as u32, i as u32, a.constant(*m)));
             let f = if k < 3 {
                 body.mass * model.gravity[k]
             } else {
                 0.0
             };
-            force.push(a.constant(f));
+            let g = a.constant(f);
+            force.push(a.add(g, loads[i]));
         }
     }
     Dynamics {
@@ -292,7 +383,7 @@ fn paper_dynamics(a: &mut Arena, model: &Model) -> Dynamics {
 /// Body-frame angular velocity from Euler-angle rates:
 /// ω_b = Aᵀ(γ̇ e_z + β̇ Rz e_y + θ̇ Rz Ry e_x) = θ̇ e_x + Rxᵀ(β̇ e_y + Ryᵀ γ̇ e_z),
 /// using RzᵀRz = RyᵀRy = I exactly so the engine need not discover sin² + cos² = 1.
-pub fn body_angular_velocity(a: &mut Arena, angles: V3, rates: V3) -> V3 {
+pub fn body_angular_velocity(a: &mut Arena, angles: V3s, rates: V3s) -> V3s {
     let [th, be, _] = angles;
     let [thd, bed, gad] = rates;
     let (st, ct) = (a.sin(th), a.cos(th));
@@ -319,16 +410,17 @@ pub fn body_angular_velocity(a: &mut Arena, angles: V3, rates: V3) -> V3 {
     [w0, w1, w2]
 }
 
-fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Dynamics {
-    let n = 6 * model.bodies.len();
+fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]) -> Dynamics {
+    let n = model.n_coords();
     let half = a.constant(0.5);
     let one = a.constant(1.0);
     let mut mass = Vec::new();
     let mut force = vec![a.constant(0.0); n];
     for (b, body) in model.bodies.iter().enumerate() {
-        let off = 6 * b;
-        let qd: Vec<Id> = (0..6).map(|k| a.var(Var::Qd((off + k) as u32))).collect();
-        let omega = body_angular_velocity(a, bodies[b].angles, [qd[3], qd[4], qd[5]]);
+        let off = body.offset;
+        let nb = body.n_coords();
+        let qd = bodies[b].velocities(a);
+        let omega = bodies[b].omega_body(a);
         let mut terms = Vec::new();
         for k in 0..3 {
             let v2 = a.powi(qd[k], 2);
@@ -341,30 +433,47 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Dynamics 
         let twice_t = a.sum(terms);
         let t_kin = a.mul(half, twice_t);
         // p_i = ∂T/∂q̇_i, M_ij = ∂p_i/∂q̇_j
-        let p: Vec<Id> = (0..6)
+        let p: Vec<Id> = (0..nb)
             .map(|i| {
                 let target = Var::Qd((off + i) as u32);
                 a.derivative(&[t_kin], &|v| (v == target).then_some(one))[0]
             })
             .collect();
+        // A quaternion body's 4GᵀJG has no kinetic energy along ė ∥ e (rank 3). Adding
+        // k·e eᵀ to M and −k·e(ėᵀė) to Q changes nothing on the motion, because the
+        // normalization row gives eᵀë = −ėᵀė, and makes the block positive definite
+        // (DESIGN.md decision 15). k = 4·mean(J) matches the other eigenvalues 4·J_i.
+        let reg = (body.rotation == Rotation::Quaternion).then(|| {
+            let k = 4.0 * (body.inertia[0] + body.inertia[1] + body.inertia[2]) / 3.0;
+            (a.constant(k), bodies[b].rot_coords.clone())
+        });
         for (i, &pi) in p.iter().enumerate() {
-            for j in 0..6 {
+            for j in 0..nb {
                 let target = Var::Qd((off + j) as u32);
-                let m = a.derivative(&[pi], &|v| (v == target).then_some(one))[0];
+                let mut m = a.derivative(&[pi], &|v| (v == target).then_some(one))[0];
+                if let (Some((k, e)), true) = (&reg, i >= 3 && j >= 3) {
+                    let ee = a.mul(e[i - 3], e[j - 3]);
+                    let kee = a.mul(*k, ee);
+                    m = a.add(m, kee);
+                }
                 if !a.is_zero(m) {
                     mass.push(((off + i) as u32, (off + j) as u32, m));
                 }
             }
         }
-        // Q_i = gravity + ∂T/∂q_i − (∂p_i/∂q) q̇
+        // Q_i = gravity + loads + ∂T/∂q_i − (∂p_i/∂q) q̇
         let seed_q = |v: Var| match v {
-            Var::Q(k) if (k as usize) >= off && (k as usize) < off + 6 => {
+            Var::Q(k) if (k as usize) >= off && (k as usize) < off + nb => {
                 Some(qd[k as usize - off])
             }
             _ => None,
         };
         let pdot = a.derivative(&p, &seed_q);
-        for i in 0..6 {
+        let edot_sq = reg.as_ref().map(|_| {
+            let sq: Vec<Id> = qd[3..].iter().map(|&x| a.powi(x, 2)).collect();
+            a.sum(sq)
+        });
+        for i in 0..nb {
             let target = Var::Q((off + i) as u32);
             let dt_dq = a.derivative(&[t_kin], &|v| (v == target).then_some(one))[0];
             let g = if i < 3 {
@@ -374,7 +483,13 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Dynamics 
             };
             let gc = a.constant(g);
             let s = a.add(gc, dt_dq);
-            force[off + i] = a.sub(s, pdot[i]);
+            let mut f = a.sub(s, pdot[i]);
+            if let (Some((k, e)), Some(ed2), true) = (&reg, edot_sq, i >= 3) {
+                let ke = a.mul(*k, e[i - 3]);
+                let t = a.mul(ke, ed2);
+                f = a.sub(f, t);
+            }
+            force[off + i] = a.add(f, loads[off + i]);
         }
     }
     mass.sort_by_key(|&(r, c, _)| (r, c));

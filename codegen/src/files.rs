@@ -1,6 +1,7 @@
 //! The generated files of a workspace: which mechanism files exist, and what the Rust
 //! generated from them must contain. Shared by `cargo xtask generate` and the freshness test.
 
+use crate::model::Formulation;
 use crate::Errors;
 use std::path::{Path, PathBuf};
 
@@ -51,8 +52,16 @@ pub fn mechanism_names(root: &Path) -> Result<Vec<String>, FilesError> {
     Ok(names)
 }
 
-/// The generated module of mechanism `name`: (path relative to root, contents).
-pub fn generated_module(root: &Path, name: &str) -> Result<(PathBuf, String), FilesError> {
+/// Path of mechanism `name`'s generated module, relative to the root.
+pub fn module_path(name: &str) -> PathBuf {
+    PathBuf::from(GENERATED_DIR).join(format!("{name}.rs"))
+}
+
+/// The generated module of mechanism `name`: (path relative to root, contents and report).
+pub fn generated_module(
+    root: &Path,
+    name: &str,
+) -> Result<(PathBuf, crate::Generated), FilesError> {
     let rel = format!("{MECHANISMS_DIR}/{name}.toml");
     let path = root.join(&rel);
     if !path.exists() {
@@ -62,22 +71,37 @@ pub fn generated_module(root: &Path, name: &str) -> Result<(PathBuf, String), Fi
         });
     }
     let text = std::fs::read_to_string(&path).map_err(|e| FilesError::Io(path.clone(), e))?;
-    let code = crate::generate(&rel, &text).map_err(FilesError::Invalid)?;
-    Ok((
-        PathBuf::from(GENERATED_DIR).join(format!("{name}.rs")),
-        code,
-    ))
+    let generated = crate::generate(&rel, &text).map_err(FilesError::Invalid)?;
+    Ok((module_path(name), generated))
 }
 
-/// The `mod.rs` listing every generated module.
-pub fn generated_index(names: &[String]) -> (PathBuf, String) {
+/// The `mod.rs` listing every generated module and the registry of mechanisms
+/// (DESIGN.md decision 19): name, formulations and a constructor for each.
+pub fn generated_index(mechanisms: &[(String, Vec<Formulation>)]) -> (PathBuf, String) {
     let mut s = String::from(
-        "//! Generated mechanisms, one module each. Regenerate with `cargo xtask generate --all`.\n\n",
+        "//! Generated mechanisms, one module each, and their registry. Regenerate with\n//! `cargo xtask generate --all`.\n\n",
     );
-    for n in names {
+    for (n, _) in mechanisms {
         // prettyplease, not rustfmt, owns the layout of generated code.
         s.push_str(&format!("#[rustfmt::skip]\npub mod {n};\n"));
     }
+    s.push_str("\nuse symbody_runtime::{Formulation, Mechanism};\n\n");
+    s.push_str("/// Every generated mechanism: name, formulations (the first is the default), the\n/// mechanism in each, and the simulation end time its file suggests.\n");
+    s.push_str("pub static REGISTRY: &[crate::Entry] = &[\n");
+    for (n, forms) in mechanisms {
+        s.push_str(&format!("    crate::Entry {{\n        name: \"{n}\",\n        t_end: {n}::T_END,\n        formulations: &[\n"));
+        for f in forms {
+            let (variant, ty) = match f {
+                Formulation::Exact => ("Exact", "Exact"),
+                Formulation::Paper => ("Paper", "Paper"),
+            };
+            s.push_str(&format!(
+                "            (Formulation::{variant}, &{n}::{ty} as &(dyn Mechanism + Sync)),\n"
+            ));
+        }
+        s.push_str("        ],\n    },\n");
+    }
+    s.push_str("];\n");
     (PathBuf::from(GENERATED_DIR).join("mod.rs"), s)
 }
 
@@ -85,9 +109,12 @@ pub fn generated_index(names: &[String]) -> (PathBuf, String) {
 pub fn all_expected(root: &Path) -> Result<Vec<(PathBuf, String)>, FilesError> {
     let names = mechanism_names(root)?;
     let mut out = Vec::new();
+    let mut index = Vec::new();
     for n in &names {
-        out.push(generated_module(root, n)?);
+        let (path, g) = generated_module(root, n)?;
+        index.push((n.clone(), g.formulations.clone()));
+        out.push((path, g.code));
     }
-    out.push(generated_index(&names));
+    out.push(generated_index(&index));
     Ok(out)
 }

@@ -2,24 +2,44 @@
 //! Φ, Φq, Φt, γ, M, Q → straight-line Rust implementing `symbody_runtime::Mechanism`.
 //!
 //! One module per stage, chained by [`generate`]:
-//! [`model`] (parse and validate the TOML) → [`equations`] (build and differentiate on
-//! the [`expr`] DAG) → [`emit`] (chunked straight-line functions) → [`rust`] (the module).
+//! [`model`] (parse and validate the TOML) → [`equations`] (joint rows from
+//! [`primitives`], loads from [`loads`], built and differentiated on the [`expr`] DAG) →
+//! [`assembly`] (initial pose, rank, redundant rows) → [`emit`] (chunked straight-line
+//! functions) → [`rust`] (the module).
 
+pub mod assembly;
 pub mod diag;
 pub mod emit;
 pub mod equations;
 pub mod expr;
 pub mod files;
+pub mod geometry;
+pub mod loads;
 pub mod model;
 pub mod parse;
+pub mod primitives;
 pub mod rust;
 
+pub use assembly::Report;
 pub use diag::{Diagnostic, Errors};
+
+/// A generated module and what the generator found out about the mechanism.
+pub struct Generated {
+    pub code: String,
+    pub report: Report,
+    /// Formulations generated, the default first.
+    pub formulations: Vec<model::Formulation>,
+}
 
 /// Generates the Rust module for the mechanism file `text`; `source` names the file in
 /// messages and in the generated header (use a path relative to the workspace root).
-pub fn generate(source: &str, text: &str) -> Result<String, Errors> {
+pub fn generate(source: &str, text: &str) -> Result<Generated, Errors> {
     let model = model::load(source, text)?;
     let system = equations::build(&model);
-    Ok(rust::module(&model, &system, source))
+    let assembly = assembly::assemble(&model, &system, source)?;
+    Ok(Generated {
+        code: rust::module(&model, &system, &assembly, source),
+        report: assembly.report,
+        formulations: model.formulations.clone(),
+    })
 }

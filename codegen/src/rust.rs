@@ -4,7 +4,8 @@
 use crate::emit::{self, Function, Input, Output};
 use crate::equations::{Entry, System};
 use crate::expr::Id;
-use crate::model::{Formulation, JointKind, Model};
+use crate::assembly::Assembly;
+use crate::model::{DriverTarget, Formulation, JointKind, Model, Rotation};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 
@@ -21,7 +22,7 @@ fn pattern(entries: &[Entry]) -> (Vec<u32>, Vec<u32>) {
 }
 
 /// The header comment: provenance, regeneration command, coordinate and row order.
-fn header(model: &Model, sys: &System, source: &str) -> String {
+fn header(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
     let mut h = String::new();
     let mut line = |s: &str| {
         h.push_str("//!");
@@ -47,49 +48,68 @@ fn header(model: &Model, sys: &System, source: &str) -> String {
         sys.n_constraints,
         sys.phi_q.len()
     ));
-    line("Each body owns six coordinates `[X, Y, Z, θ, β, γ]` (centre of mass, then the");
-    line("angles of A = Rz(γ)·Ry(β)·Rx(θ)). Equations of motion: `M q̈ + Φqᵀλ = Q`, `Φq q̈ = γ`.");
+    let r = &asm.report;
+    line(&format!(
+        "Rank {} at the initial pose; mobility {} (Grübler count {}), {} DOF left with drivers.",
+        r.rank, r.mobility, r.grubler, r.dof
+    ));
+    if !r.redundant.is_empty() {
+        let names: Vec<&str> = r.redundant.iter().map(|(_, n)| n.as_str()).collect();
+        line(&format!("Redundant rows (dropped by the solvers): {}.", names.join(", ")));
+    }
+    line("Each body owns `[X, Y, Z]` (centre of mass), then `[θ, β, γ]` (A = Rz(γ)·Ry(β)·Rx(θ))");
+    line("or Euler parameters `[e0, e1, e2, e3]`. Equations of motion: `M q̈ + Φqᵀλ = Q`, `Φq q̈ = γ`.");
     line("Sparse outputs hold the pattern's nonzeros in order (row-major, columns ascending).");
     line("");
     line("Coordinates:");
-    for (b, body) in model.bodies.iter().enumerate() {
-        line(&format!("- `{}..{}` {}", 6 * b, 6 * b + 6, body.name));
+    for body in &model.bodies {
+        line(&format!(
+            "- `{}..{}` {} ({})",
+            body.offset,
+            body.offset + body.n_coords(),
+            body.name,
+            body.rotation.name()
+        ));
     }
     line("");
     line("Constraint rows:");
-    let body_name =
-        |b: Option<usize>| b.map_or("ground".to_string(), |i| model.bodies[i].name.clone());
     for (k, j) in model.joints.iter().enumerate() {
         let start = sys.joint_rows[k];
         let (b1, b2) = j.bodies();
-        let (kind, form) = match j.kind {
-            JointKind::Spherical { .. } => ("spherical", "point on body1 − point on body2"),
-            JointKind::Prismatic { .. } => (
-                "prismatic",
-                "θ, β, γ of body2 − body1, then two no-slide rows",
-            ),
-        };
         line(&format!(
-            "- `{}..{}` {} ({kind}, {} – {}): {form}",
+            "- `{}..{}` {} ({}, {} – {})",
             start,
             start + j.rows(),
             j.name,
-            body_name(b1),
-            body_name(b2)
+            j.kind.name(),
+            model.body_name(b1),
+            model.body_name(b2)
         ));
     }
     for (k, d) in model.drivers.iter().enumerate() {
         let row = sys.joint_rows[model.joints.len() + k];
+        let what = match &d.target {
+            DriverTarget::JointAngle(j) => format!("sin(f − θ) of `{}`", model.joints[*j].name),
+            DriverTarget::JointSlide(j) => format!("distance along `{}` − f", model.joints[*j].name),
+            DriverTarget::BodyCoordinate { body, coord } => {
+                format!("coordinate `{}` − f", sys.coord_names[model.bodies[*body].offset + coord])
+            }
+            DriverTarget::PointDistance { .. } => "point distance − f".to_string(),
+        };
         line(&format!(
-            "- `{row}` {} (driver on {}): axis·(r2 − r1) − ({}), initial = {:.9} m",
-            d.name, model.joints[d.joint].name, d.source, d.initial
+            "- `{row}` {} (driver): {what}, f = {}, initial = {:.9}",
+            d.name, d.source, d.initial
         ));
+    }
+    for (k, &b) in sys.normalized_bodies.iter().enumerate() {
+        let row = sys.joint_rows[model.joints.len() + model.drivers.len() + k];
+        line(&format!("- `{row}` {}.norm: eᵀe − 1", model.bodies[b].name));
     }
     h
 }
 
 /// Generates the module source for `model`, read from `source` (a path shown in the header).
-pub fn module(model: &Model, sys: &System, source: &str) -> String {
+pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
     let n = sys.n_coords;
     let m = sys.n_constraints;
     let phi_q_vals = values(&sys.phi_q);
@@ -154,57 +174,96 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
     let pot = [sys.potential];
     items.push(f(
         "potential_into",
-        " Potential energy of gravity, written to `out[0]`.",
+        " Potential energy of gravity and springs, written to `out[0]`.",
         Q,
         vec![Output::new("out", &pot)],
+    ));
+    let power = [sys.power_nc];
+    items.push(f(
+        "power_nc_into",
+        " Power of the non-conservative loads, written to `out[0]`.",
+        QQDT,
+        vec![Output::new("out", &power)],
     ));
 
     let gx = model.gravity;
     let body_infos: Vec<TokenStream> = model
         .bodies
         .iter()
-        .enumerate()
-        .map(|(b, body)| {
+        .map(|body| {
             let name = &body.name;
-            let off = 6 * b;
+            let off = body.offset;
             let mass = body.mass;
             let [ix, iy, iz] = body.inertia;
-            quote!(BodyInfo { name: #name, coord_offset: #off, mass: #mass, inertia: [#ix, #iy, #iz] })
+            let rot = match body.rotation {
+                Rotation::Euler => quote!(Rotation::Euler),
+                Rotation::Quaternion => quote!(Rotation::Quaternion),
+            };
+            quote!(BodyInfo { name: #name, coord_offset: #off, rotation: #rot, mass: #mass, inertia: [#ix, #iy, #iz] })
         })
         .collect();
     let opt = |b: Option<usize>| match b {
         Some(i) => quote!(Some(#i)),
         None => quote!(None),
     };
+    let info = |name: &str,
+                kind: TokenStream,
+                (b1, b2): (Option<usize>, Option<usize>),
+                start: usize,
+                rows: usize,
+                point1: [f64; 3],
+                (sign, unit): (f64, &str)| {
+        let (b1, b2) = (opt(b1), opt(b2));
+        quote!(JointInfo { name: #name, kind: #kind, body1: #b1, body2: #b2, row_start: #start, rows: #rows, point1: [#(#point1),*], effort_sign: #sign, effort_unit: #unit })
+    };
     let mut joint_infos: Vec<TokenStream> = model
         .joints
         .iter()
         .enumerate()
         .map(|(k, j)| {
-            let name = &j.name;
-            let (b1, b2) = j.bodies();
-            let (b1, b2) = (opt(b1), opt(b2));
-            let start = sys.joint_rows[k];
-            let rows = j.rows();
-            let kind = match j.kind {
-                JointKind::Spherical { .. } => quote!(JointKind::Spherical),
-                JointKind::Prismatic { .. } => quote!(JointKind::Prismatic),
-            };
-            quote!(JointInfo { name: #name, kind: #kind, body1: #b1, body2: #b2, row_start: #start, rows: #rows })
+            let kind = ident(match j.kind {
+                JointKind::Spherical => "Spherical",
+                JointKind::Revolute => "Revolute",
+                JointKind::Universal => "Universal",
+                JointKind::Cylindrical => "Cylindrical",
+                JointKind::Prismatic => "Prismatic",
+                JointKind::Fixed => "Fixed",
+                JointKind::Distance { .. } => "Distance",
+                JointKind::EulerPrismatic { .. } => "EulerPrismatic",
+            });
+            info(&j.name, quote!(JointKind::#kind), j.bodies(), sys.joint_rows[k], j.rows(), j.f1.point, (0.0, ""))
         })
         .collect();
     for (k, d) in model.drivers.iter().enumerate() {
-        let name = &d.name;
-        let (b1, b2) = model.joints[d.joint].bodies();
-        let (b1, b2) = (opt(b1), opt(b2));
+        let (bodies, point1) = match &d.target {
+            DriverTarget::JointAngle(j) | DriverTarget::JointSlide(j) => {
+                let j = &model.joints[*j];
+                (j.bodies(), j.f1.point)
+            }
+            DriverTarget::BodyCoordinate { body, .. } => {
+                let b = &model.bodies[*body];
+                ((None, Some(*body)), [b.q0[0], b.q0[1], b.q0[2]])
+            }
+            DriverTarget::PointDistance { f1, f2 } => ((f1.body, f2.body), f1.point),
+        };
+        let unit = if d.is_angular() { "N·m" } else { "N" };
         let start = sys.joint_rows[model.joints.len() + k];
-        joint_infos.push(quote!(JointInfo { name: #name, kind: JointKind::Driver, body1: #b1, body2: #b2, row_start: #start, rows: 1usize }));
+        joint_infos.push(info(&d.name, quote!(JointKind::Driver), bodies, start, 1, point1, (sys.driver_signs[k], unit)));
+    }
+    for (k, &b) in sys.normalized_bodies.iter().enumerate() {
+        let start = sys.joint_rows[model.joints.len() + model.drivers.len() + k];
+        let name = format!("{}.norm", model.bodies[b].name);
+        joint_infos.push(info(&name, quote!(JointKind::Normalization), (Some(b), None), start, 1, [0.0; 3], (0.0, "")));
     }
     let nb = model.bodies.len();
     let nj = joint_infos.len();
     let coord_names = &sys.coord_names;
     let row_names = &sys.row_names;
-    let q0 = model.q0();
+    let q0 = &asm.q0;
+    let qd0 = model.qd0();
+    let redundant = &asm.redundant_rows;
+    let n_red = redundant.len();
+    let t_end = model.t_end;
     let mech_name = &model.name;
     items.push(quote! {
         /// Number of generalized coordinates.
@@ -223,12 +282,24 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
         pub static COORD_NAMES: [&str; #n] = [#(#coord_names),*];
         /// Name of each constraint row.
         pub static ROW_NAMES: [&str; #m] = [#(#row_names),*];
-        /// Initial coordinates from the mechanism file.
+        /// Initial coordinates: the file's pose, assembled.
         pub static Q0: [f64; #n] = [#(#q0),*];
-        /// Potential energy of gravity.
+        /// Initial velocities from the file (to be projected onto the constraints).
+        pub static QD0: [f64; #n] = [#(#qd0),*];
+        /// Constraint rows dependent on others at the initial pose (dropped by the solvers).
+        pub static REDUNDANT_ROWS: [u32; #n_red] = [#(#redundant),*];
+        /// Simulation end time suggested by the mechanism file (s).
+        pub const T_END: f64 = #t_end;
+        /// Potential energy of gravity and springs.
         pub fn potential(q: &[f64]) -> f64 {
             let mut out = [0.0];
             potential_into(q, &mut out);
+            out[0]
+        }
+        /// Power of the non-conservative loads.
+        pub fn power_nc(q: &[f64], qd: &[f64], t: f64) -> f64 {
+            let mut out = [0.0];
+            power_nc_into(q, qd, t, &mut out);
             out[0]
         }
     });
@@ -311,6 +382,8 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
                     coord_names: &COORD_NAMES,
                     row_names: &ROW_NAMES,
                     q0: &Q0,
+                    qd0: &QD0,
+                    redundant_rows: &REDUNDANT_ROWS,
                 };
                 #(#fns)*
             }
@@ -328,6 +401,7 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
                 fn mass(&self, q: &[f64], out: &mut [f64]) { #modname::mass(q, out) }
                 fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { #modname::force(q, qd, t, out) }
                 fn potential(&self, q: &[f64]) -> f64 { potential(q) }
+                fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 { power_nc(q, qd, t) }
                 fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
                     #modname::eval_newton(q, qd, t, out.phi, out.phi_q, out.mass, out.force)
                 }
@@ -344,7 +418,7 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
 
     let file = quote! {
         #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]
-        use symbody_runtime::{BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs};
+        use symbody_runtime::{BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs, Rotation};
         #(#items)*
         #(#impls)*
         /// The formulation listed first in the mechanism file.
@@ -352,5 +426,5 @@ pub fn module(model: &Model, sys: &System, source: &str) -> String {
     };
     let syntax: syn::File = syn::parse2(file).expect("generated tokens form a valid Rust file");
     let body = prettyplease::unparse(&syntax);
-    format!("{}{}", header(model, sys, source), body)
+    format!("{}{}", header(model, sys, asm, source), body)
 }

@@ -1,5 +1,6 @@
 //! Developer tasks: `cargo xtask generate [<name>… | --all] [--check]` regenerates (or checks)
-//! the committed Rust of the mechanisms under `mechanisms/`.
+//! the committed Rust of the mechanisms under `mechanisms/`, and prints what the generator
+//! found out about each (sizes, rank, degrees of freedom, redundant rows, warnings).
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -57,14 +58,37 @@ fn generate(args: &[String]) -> Result<(), String> {
     }
     let start = Instant::now();
     let mut expected = Vec::new();
+    let mut failures = Vec::new();
     for n in &names {
-        expected.push(files::generated_module(&root, n).map_err(|e| e.to_string())?);
+        match files::generated_module(&root, n) {
+            Ok((path, g)) => {
+                eprintln!("{}", g.report);
+                expected.push((path, g.code, g.formulations));
+            }
+            Err(e) => failures.push(format!("{n}: {e}")),
+        }
     }
-    expected.push(files::generated_index(&every));
+    // The registry lists what generates now, plus mechanisms not regenerated in this run
+    // whose module already exists: a broken file never enters the module index.
+    let mut index = Vec::new();
+    for n in &every {
+        if let Some((_, _, forms)) = expected.iter().find(|(p, _, _)| *p == files::module_path(n)) {
+            index.push((n.clone(), forms.clone()));
+        } else if !names.contains(n) && root.join(files::module_path(n)).exists() {
+            match files::generated_module(&root, n) {
+                Ok((_, g)) => index.push((n.clone(), g.formulations)),
+                Err(_) => eprintln!("note: `{n}` is not valid and stays out of the module index"),
+            }
+        }
+    }
+    let (index_path, index_code) = files::generated_index(&index);
     let elapsed = start.elapsed();
 
+    let mut outputs: Vec<(PathBuf, String)> =
+        expected.into_iter().map(|(p, c, _)| (p, c)).collect();
+    outputs.push((index_path, index_code));
     let mut stale = Vec::new();
-    for (rel, contents) in &expected {
+    for (rel, contents) in &outputs {
         let path = root.join(rel);
         let current = std::fs::read_to_string(&path).ok();
         if current.as_deref() == Some(contents.as_str()) {
@@ -81,6 +105,13 @@ fn generate(args: &[String]) -> Result<(), String> {
                 .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
             eprintln!("wrote {}", rel.display());
         }
+    }
+    if !failures.is_empty() {
+        return Err(format!(
+            "{}\n\n{} mechanism file(s) failed; nothing was written for them",
+            failures.join("\n\n"),
+            failures.len()
+        ));
     }
     if !stale.is_empty() {
         let cmd = if names.len() == every.len() {

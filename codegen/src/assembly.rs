@@ -1,0 +1,256 @@
+//! Assembly at generation time: brings the file's initial pose onto the constraints
+//! (warning when a joint was violated by more than a tolerance, an error naming the rows
+//! when it cannot be done), then counts degrees of freedom and finds redundant rows with
+//! a rank-revealing elimination of Φq at the assembled pose.
+
+use crate::diag::{Diagnostic, Errors};
+use crate::equations::System;
+use crate::expr::Var;
+use crate::model::Model;
+use nalgebra::{DMatrix, DVector};
+use std::fmt;
+
+/// Residual below which the file's pose is taken as it is (its numbers reach the
+/// generated code unchanged).
+const CONSISTENT: f64 = 1e-10;
+/// Largest correction of the file's pose accepted without a warning.
+pub const WARN_CORRECTION: f64 = 1e-6;
+/// A row is dependent when the part of it independent of the rows before it is smaller
+/// than this fraction of its norm.
+const RANK_TOL: f64 = 1e-9;
+
+/// What the generator found out about the mechanism at its initial pose.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Report {
+    pub name: String,
+    pub n_bodies: usize,
+    pub n_coords: usize,
+    pub n_rows: usize,
+    pub n_drivers: usize,
+    /// Rank of Φq at the assembled pose.
+    pub rank: usize,
+    /// Grübler–Kutzbach count `6·bodies − Σ joint rows` (without drivers).
+    pub grubler: i64,
+    /// Mobility without drivers: coordinates minus the rank of the joint (and
+    /// normalization) rows.
+    pub mobility: usize,
+    /// Degrees of freedom left with the drivers: coordinates minus rank.
+    pub dof: usize,
+    /// Rows found dependent on earlier rows (index, name).
+    pub redundant: Vec<(usize, String)>,
+    /// Warnings (e.g. a corrected initial pose).
+    pub warnings: Vec<String>,
+}
+
+impl fmt::Display for Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "{}: {} bodies, {} coordinates, {} constraint rows ({} drivers), rank {} at the initial pose",
+            self.name, self.n_bodies, self.n_coords, self.n_rows, self.n_drivers, self.rank
+        )?;
+        writeln!(
+            f,
+            "  mobility: Grübler count {}, actual {} (without drivers); {} DOF left with drivers",
+            self.grubler, self.mobility, self.dof
+        )?;
+        if self.redundant.is_empty() {
+            write!(f, "  no redundant rows")?;
+        } else {
+            let names: Vec<&str> = self.redundant.iter().map(|(_, n)| n.as_str()).collect();
+            write!(
+                f,
+                "  {} redundant row(s), dropped by the solvers (their joints' reactions are not unique): {}",
+                names.len(),
+                names.join(", ")
+            )?;
+        }
+        for w in &self.warnings {
+            write!(f, "\n  warning: {w}")?;
+        }
+        Ok(())
+    }
+}
+
+/// The assembled initial pose and the report.
+pub struct Assembly {
+    pub q0: Vec<f64>,
+    pub redundant_rows: Vec<u32>,
+    pub report: Report,
+}
+
+struct Eval<'a> {
+    sys: &'a System,
+}
+
+impl Eval<'_> {
+    fn phi(&self, q: &[f64]) -> DVector<f64> {
+        let env = |v: Var| match v {
+            Var::Q(i) => q[i as usize],
+            _ => 0.0,
+        };
+        DVector::from_vec(self.sys.arena.eval_many(&self.sys.phi, &env))
+    }
+
+    fn phi_q(&self, q: &[f64]) -> DMatrix<f64> {
+        let env = |v: Var| match v {
+            Var::Q(i) => q[i as usize],
+            _ => 0.0,
+        };
+        let ids: Vec<_> = self.sys.phi_q.iter().map(|e| e.2).collect();
+        let vals = self.sys.arena.eval_many(&ids, &env);
+        let mut m = DMatrix::zeros(self.sys.n_constraints, self.sys.n_coords);
+        for (&(r, c, _), v) in self.sys.phi_q.iter().zip(vals) {
+            m[(r as usize, c as usize)] = v;
+        }
+        m
+    }
+}
+
+/// The joint (or driver, or body) that owns row `row`.
+fn owner(model: &Model, sys: &System, row: usize) -> String {
+    let k = sys.joint_rows.iter().rposition(|&s| s <= row).unwrap_or(0);
+    let nj = model.joints.len();
+    let nd = model.drivers.len();
+    if k < nj {
+        model.joints[k].name.clone()
+    } else if k < nj + nd {
+        model.drivers[k - nj].name.clone()
+    } else {
+        model.bodies[sys.normalized_bodies[k - nj - nd]].name.clone()
+    }
+}
+
+fn diagnostic(model: &Model, file: &str, item: &str, message: String, help: &str) -> Diagnostic {
+    Diagnostic {
+        file: file.to_string(),
+        line: model.lines.get(item).copied().unwrap_or(1),
+        column: 1,
+        item: item.to_string(),
+        message,
+        help: help.to_string(),
+    }
+}
+
+/// Assembles the initial pose at t = 0 and analyses Φq there.
+pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Errors> {
+    let eval = Eval { sys };
+    let q_file = model.q0();
+    let mut q = q_file.clone();
+    let mut phi = eval.phi(&q);
+    let mut warnings = Vec::new();
+    if phi.amax() > CONSISTENT {
+        // Gauss–Newton with the minimum-norm step (SVD): the smallest move onto Φ = 0.
+        let first = phi.clone();
+        for _ in 0..60 {
+            let jac = eval.phi_q(&q);
+            let svd = jac.svd(true, true);
+            let step = match svd.solve(&phi, 1e-12 * svd.singular_values.max()) {
+                Ok(s) => s,
+                Err(_) => break,
+            };
+            for (qi, s) in q.iter_mut().zip(step.iter()) {
+                *qi -= s;
+            }
+            phi = eval.phi(&q);
+            if phi.amax() < 1e-14 || step.amax() < 1e-15 {
+                break;
+            }
+        }
+        if !(phi.amax() <= 1e-9) {
+            let mut rows: Vec<usize> = (0..phi.len()).filter(|&r| phi[r].abs() > 1e-9).collect();
+            rows.sort_by(|&a, &b| phi[b].abs().total_cmp(&phi[a].abs()));
+            rows.truncate(5);
+            let worst = owner(model, sys, rows[0]);
+            let list: Vec<String> = rows
+                .iter()
+                .map(|&r| format!("`{}` ({:.3e})", sys.row_names[r], phi[r]))
+                .collect();
+            return Err(Errors(vec![diagnostic(
+                model,
+                file,
+                &worst,
+                format!(
+                    "the mechanism cannot be assembled at t = 0: rows {} keep a residual after the closest pose was sought",
+                    list.join(", ")
+                ),
+                "the joints contradict each other: check these joints' points, axes and lengths, and the drivers' values at t = 0",
+            )]));
+        }
+        let moved = q
+            .iter()
+            .zip(&q_file)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        if moved > WARN_CORRECTION {
+            let worst = first.iamax();
+            warnings.push(format!(
+                "the initial pose violates `{}` by {:.3e} (row `{}`); the generator moved the coordinates by up to {:.3e} to assemble it",
+                owner(model, sys, worst),
+                first[worst].abs(),
+                sys.row_names[worst],
+                moved
+            ));
+        }
+    } else {
+        q = q_file;
+    }
+
+    let jac = eval.phi_q(&q);
+    let m = sys.n_constraints;
+    let nj = model.joints.len();
+    let nd = model.drivers.len();
+    let driver_rows: Vec<usize> = (0..nd).map(|k| sys.joint_rows[nj + k]).collect();
+    let norm_start = sys.joint_rows.get(nj + nd).copied().unwrap_or(m);
+    // Normalization rows first (never the redundant ones), then joints, then drivers.
+    let order: Vec<usize> = (norm_start..m)
+        .chain((0..m).filter(|r| *r < norm_start && !driver_rows.contains(r)))
+        .chain(driver_rows.iter().copied())
+        .collect();
+    let mut basis: Vec<DVector<f64>> = Vec::new();
+    let mut redundant = Vec::new();
+    let mut rank_joints = 0;
+    for &r in &order {
+        let row = jac.row(r).transpose();
+        let norm = row.norm();
+        let mut v = row.clone();
+        for _ in 0..2 {
+            for b in &basis {
+                let c = b.dot(&v);
+                v -= b * c;
+            }
+        }
+        if v.norm() <= RANK_TOL * norm.max(1e-300) || norm == 0.0 {
+            redundant.push(r);
+        } else {
+            basis.push(v.normalize());
+        }
+        if !driver_rows.contains(&r) {
+            rank_joints = basis.len();
+        }
+    }
+    redundant.sort_unstable();
+    let rank = basis.len();
+    let joint_rows: i64 = model.joints.iter().map(|j| j.rows() as i64).sum();
+    let report = Report {
+        name: model.name.clone(),
+        n_bodies: model.bodies.len(),
+        n_coords: sys.n_coords,
+        n_rows: m,
+        n_drivers: nd,
+        rank,
+        grubler: 6 * model.bodies.len() as i64 - joint_rows,
+        mobility: sys.n_coords - rank_joints,
+        dof: sys.n_coords - rank,
+        redundant: redundant
+            .iter()
+            .map(|&r| (r, sys.row_names[r].clone()))
+            .collect(),
+        warnings,
+    };
+    Ok(Assembly {
+        q0: q,
+        redundant_rows: redundant.iter().map(|&r| r as u32).collect(),
+        report,
+    })
+}
