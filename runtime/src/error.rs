@@ -59,6 +59,15 @@ pub enum Error {
     },
     /// The constraint Jacobian lost rank: these rows are (numerically) dependent on others.
     SingularJacobian { time: f64, rows: Vec<ConstraintRow> },
+    /// The independent constraint rows are satisfied but these redundant rows
+    /// ([`MechanismInfo::redundant_rows`]) are not: they contradict the others, so the
+    /// mechanism's geometry (joint points, axes, lengths) is inconsistent.
+    InconsistentConstraints {
+        time: f64,
+        rows: Vec<ConstraintRow>,
+        /// Largest |Φ| over the redundant rows.
+        residual: f64,
+    },
     /// The mass matrix is not positive definite in the block holding this coordinate.
     MassNotPositiveDefinite {
         time: f64,
@@ -123,6 +132,22 @@ impl fmt::Display for Error {
                     f,
                     "constraint Jacobian lost rank at t = {time:.6} s (residual not \
                      available: the system has no unique solution); dependent rows:"
+                )?;
+                for (i, r) in rows.iter().enumerate() {
+                    write!(f, "{} {r}", if i == 0 { "" } else { "," })?;
+                }
+                Ok(())
+            }
+            Error::InconsistentConstraints {
+                time,
+                rows,
+                residual,
+            } => {
+                write!(
+                    f,
+                    "redundant constraint rows contradict the others at t = {time:.6} s: with \
+                     the independent rows satisfied they keep a residual |Φ|∞ = {residual:e}; \
+                     fix the geometry (joint points, axes or lengths) so they agree; rows:"
                 )?;
                 for (i, r) in rows.iter().enumerate() {
                     write!(f, "{} {r}", if i == 0 { "" } else { "," })?;

@@ -6,7 +6,7 @@
 //! leave free (a Stewart leg's spin about its own axis) are not moved by position
 //! corrections and get no velocity of their own unless asked for.
 
-use crate::error::{check_len, Error};
+use crate::error::{check_len, ConstraintRow, Error};
 use crate::kkt::{KktPattern, KktSolver, SchurKkt};
 use crate::mechanism::{Mechanism, MechanismInfo};
 
@@ -45,9 +45,15 @@ pub enum InitialVelocity {
 pub struct PositionReport {
     /// Newton iterations taken (0 when the start already satisfied the tolerance).
     pub iterations: usize,
-    /// Final |Φ|∞.
+    /// Final |Φ|∞ over all rows, redundant ones included.
     pub residual: f64,
 }
+
+/// Newton iterations allowed past convergence of the independent rows while a redundant
+/// row is still above the tolerance: a consistent redundant row is a combination of the
+/// others, so one more (quadratically convergent) step brings it down to roundoff; one that
+/// stays up contradicts them.
+const POLISH_ITERATIONS: usize = 2;
 
 /// Work memory and settings for kinematic analyses of one mechanism.
 #[derive(Debug, Clone)]
@@ -149,6 +155,10 @@ impl<K: KktSolver> Kinematics<K> {
     /// Solves Φ(q, t) = 0 by Newton from the given `q`, each correction the smallest in
     /// the mass norm. `q` is updated in place only on success; on failure it is left at the
     /// last iterate, and the error names the time, residual and iterations.
+    ///
+    /// Newton converges on the independent rows (the KKT solver drops the redundant ones);
+    /// the redundant rows must then hold too, or the result is
+    /// [`Error::InconsistentConstraints`] naming them.
     pub fn position<M: Mechanism>(
         &mut self,
         mech: &M,
@@ -158,22 +168,40 @@ impl<K: KktSolver> Kinematics<K> {
         self.check_mech(mech)?;
         check_len("q", self.info.n_coords, q.len())?;
         let info = self.info;
+        let tol = self.settings.position_tolerance;
         self.f.fill(0.0);
         let mut residual = f64::NAN;
+        let mut polish = 0;
         for it in 0..=self.settings.max_iterations {
             mech.phi(q, t, &mut self.phi);
+            // The redundant rows are judged separately, then zeroed: the solver ignores
+            // their right-hand side, and the independent rows decide convergence.
+            let mut redundant = 0.0f64;
+            let mut nan = false;
+            for &r in info.redundant_rows {
+                let v = self.phi[r as usize];
+                nan |= v.is_nan();
+                redundant = redundant.max(v.abs());
+                self.phi[r as usize] = 0.0;
+            }
             residual = inf_norm(&self.phi);
-            if residual.is_nan() {
+            if residual.is_nan() || nan {
                 return Err(Error::NotFinite {
                     time: t,
                     what: "constraint residual Φ in position analysis",
                 });
             }
-            if residual <= self.settings.position_tolerance {
-                return Ok(PositionReport {
-                    iterations: it,
-                    residual,
-                });
+            if residual <= tol {
+                if redundant <= tol {
+                    return Ok(PositionReport {
+                        iterations: it,
+                        residual: residual.max(redundant),
+                    });
+                }
+                if polish == POLISH_ITERATIONS || it == self.settings.max_iterations {
+                    return Err(self.inconsistent(mech, t, q, redundant));
+                }
+                polish += 1;
             }
             if it == self.settings.max_iterations {
                 break;
@@ -201,6 +229,24 @@ impl<K: KktSolver> Kinematics<K> {
             residual,
             iterations: self.settings.max_iterations,
         })
+    }
+
+    /// The error for redundant rows left unsatisfied at `q` (error path: allocates).
+    fn inconsistent<M: Mechanism>(&mut self, mech: &M, t: f64, q: &[f64], residual: f64) -> Error {
+        let info = self.info;
+        mech.phi(q, t, &mut self.phi);
+        let tol = self.settings.position_tolerance;
+        Error::InconsistentConstraints {
+            time: t,
+            rows: info
+                .redundant_rows
+                .iter()
+                .map(|&r| r as usize)
+                .filter(|&r| !(self.phi[r].abs() <= tol))
+                .map(|r| ConstraintRow::new(info, r))
+                .collect(),
+            residual,
+        }
     }
 
     /// The consistent velocity (Φq q̇ = −Φt) of least kinetic energy, written to `qd`.
@@ -328,7 +374,8 @@ mod tests {
     use super::*;
     use crate::kkt::DenseKkt;
     use crate::testmodels::{
-        CircleDriver, Pendulum, CIRCLE_C0, CIRCLE_D, CIRCLE_MASS, CIRCLE_V, G, PENDULUM_LENGTH,
+        CircleDriver, Pendulum, TwoBallHinge, CIRCLE_C0, CIRCLE_D, CIRCLE_MASS, CIRCLE_V, G,
+        HINGE_HALF_WIDTH, PENDULUM_LENGTH,
     };
 
     #[test]
@@ -444,5 +491,102 @@ mod tests {
             kin.position(&other, 0.0, &mut q6),
             Err(Error::DimensionMismatch { .. })
         ));
+    }
+
+    /// Full |Φ|∞ of the hinge, redundant row included.
+    fn hinge_residual(mech: &TwoBallHinge, q: &[f64]) -> f64 {
+        let mut phi = [0.0; 6];
+        mech.phi(q, 0.0, &mut phi);
+        inf_norm(&phi)
+    }
+
+    #[test]
+    fn consistent_redundant_rows_are_satisfied_by_the_position_solve() {
+        // Displaced off the hinge in every direction: Newton on the five independent rows
+        // must also bring the redundant row (ball2.z) to the tolerance.
+        for kkt_dense in [false, true] {
+            let mech = TwoBallHinge::new(0.0);
+            let mut q = [0.03, -0.47, 0.02, 0.05, -0.04, 0.3];
+            let rep = if kkt_dense {
+                Kinematics::<DenseKkt>::new(mech.info())
+                    .unwrap()
+                    .position(&mech, 0.0, &mut q)
+            } else {
+                Kinematics::<SchurKkt>::new(mech.info())
+                    .unwrap()
+                    .position(&mech, 0.0, &mut q)
+            }
+            .unwrap();
+            let full = hinge_residual(&mech, &q);
+            assert!(full <= 1e-11, "dense {kkt_dense}: |Φ| = {full}");
+            assert!(rep.residual >= full, "the report covers the redundant row");
+            // A hinge about Z: the body may only have swung about Z.
+            assert!(q[3].abs() < 1e-10 && q[4].abs() < 1e-10, "{q:?}");
+            // The multipliers exist and the redundant row's is zero.
+            let mut kin = Kinematics::<SchurKkt>::new(mech.info()).unwrap();
+            let (mut qd, mut qdd, mut lam) = ([0.0; 6], [0.0; 6], [1.0; 6]);
+            kin.consistent_start(
+                &mech,
+                0.0,
+                InitialVelocity::LeastKineticEnergy,
+                &mut q,
+                &mut qd,
+                &mut qdd,
+                &mut lam,
+            )
+            .unwrap();
+            assert_eq!(lam[5], 0.0);
+        }
+    }
+
+    #[test]
+    fn contradicting_redundant_rows_are_an_inconsistency_error() {
+        // Ground points 0.01 m apart in X more than the body points allow: the five
+        // independent rows are solved with the axis tilted, leaving ball2.z off by
+        // 2a − √(4a² − δ²) ≈ δ²/(4a).
+        let delta = 0.01;
+        let mech = TwoBallHinge::new(delta);
+        let mut kin = Kinematics::<SchurKkt>::new(mech.info()).unwrap();
+        let mut q = mech.info().q0.to_vec();
+        let err = kin.position(&mech, 0.25, &mut q).unwrap_err();
+        let a = HINGE_HALF_WIDTH;
+        let expect = 2.0 * a - (4.0 * a * a - delta * delta).sqrt();
+        match &err {
+            Error::InconsistentConstraints {
+                time,
+                rows,
+                residual,
+            } => {
+                assert_eq!(*time, 0.25);
+                assert_eq!(rows.len(), 1);
+                assert_eq!(
+                    (rows[0].row, rows[0].name, rows[0].joint),
+                    (5, "ball2.z", "ball2")
+                );
+                assert!(
+                    (residual - expect).abs() < 1e-3 * expect,
+                    "{residual} vs {expect}"
+                );
+            }
+            other => panic!("expected an inconsistency, got {other:?}"),
+        }
+        let msg = err.to_string();
+        assert!(
+            msg.contains("ball2.z") && msg.contains("contradict") && msg.contains("geometry"),
+            "{msg}"
+        );
+        // Without the declaration the same hinge is a rank-deficient Jacobian, as before.
+        let undeclared = TwoBallHinge {
+            declared: false,
+            ..TwoBallHinge::new(0.0)
+        };
+        let mut kin = Kinematics::<SchurKkt>::new(undeclared.info()).unwrap();
+        let mut q = [0.03, -0.47, 0.02, 0.05, -0.04, 0.3];
+        match kin.position(&undeclared, 0.0, &mut q) {
+            Err(Error::SingularJacobian { rows, .. }) => {
+                assert!(rows.iter().any(|r| r.row == 2 || r.row == 5), "{rows:?}")
+            }
+            other => panic!("expected a singular Jacobian, got {other:?}"),
+        }
     }
 }

@@ -7,6 +7,8 @@
 //!   paper (diagonal, constant mass) or exact (configuration-dependent mass) formulation.
 //! - [`CircleDriver`]: one body whose centre is held at `X = d` and driven to distance
 //!   `c(t) = c0 − v·t` from the origin; the driver becomes impossible at `t = (c0 − d)/v`.
+//! - [`TwoBallHinge`]: the exact pendulum on a hinge made of two ball joints, a redundant
+//!   constraint row (consistent, or contradicting the other joint by a misalignment).
 
 use crate::mechanism::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo,
@@ -49,6 +51,39 @@ fn h_columns(beta: f64, gamma: f64) -> [[f64; 3]; 3] {
     let (sb, cb) = beta.sin_cos();
     let (sg, cg) = gamma.sin_cos();
     [[cg * cb, sg * cb, -sb], [-sg, cg, 0.0], [0.0, 0.0, 1.0]]
+}
+
+/// Global arm `u = A s` of the local point `s` of the body at `q`.
+fn arm_of(q: &[f64], s: [f64; 3]) -> [f64; 3] {
+    mat_vec(&rotation(q[3], q[4], q[5]), s)
+}
+
+/// Columns `∂(A s)/∂(θ, β, γ) = h_k × u` of a body point whose arm is `u = A s`.
+fn arm_angle_columns(q: &[f64], u: [f64; 3]) -> [[f64; 3]; 3] {
+    let h = h_columns(q[4], q[5]);
+    [cross(h[0], u), cross(h[1], u), cross(h[2], u)]
+}
+
+/// γ of a point row `r + A s − g`: `d²(A s)/dt² = α × u + ω × (ω × u)` with
+/// `α = H p̈ + Ḣ ṗ`; γ keeps the `p̈`-free part, negated.
+fn point_gamma(q: &[f64], qd: &[f64], u: [f64; 3]) -> [f64; 3] {
+    let h = h_columns(q[4], q[5]);
+    let (td, bd, gd) = (qd[3], qd[4], qd[5]);
+    let w = [
+        h[0][0] * td + h[1][0] * bd + h[2][0] * gd,
+        h[0][1] * td + h[1][1] * bd + h[2][1] * gd,
+        h[0][2] * td + h[1][2] * bd + h[2][2] * gd,
+    ];
+    let (sb, cb) = q[4].sin_cos();
+    let (sg, cg) = q[5].sin_cos();
+    let hdot_pd = [
+        td * (-sg * cb * gd - cg * sb * bd) + bd * (-cg * gd),
+        td * (cg * cb * gd - sg * sb * bd) + bd * (-sg * gd),
+        td * (-cb * bd),
+    ];
+    let a = cross(hdot_pd, u);
+    let b = cross(w, cross(w, u));
+    [-(a[0] + b[0]), -(a[1] + b[1]), -(a[2] + b[2])]
 }
 
 /// `B` in the body-frame angular velocity `ω_b = B·(θ̇, β̇, γ̇)`, row-major.
@@ -150,7 +185,7 @@ impl Pendulum {
     }
     /// Pivot point relative to the centre of mass, global frame: `u = A·(0, L, 0)`.
     fn arm(q: &[f64]) -> [f64; 3] {
-        mat_vec(&rotation(q[3], q[4], q[5]), [0.0, PENDULUM_LENGTH, 0.0])
+        arm_of(q, [0.0, PENDULUM_LENGTH, 0.0])
     }
     /// Kinetic energy ½ q̇ᵀ M q̇ evaluated from first principles (body-frame ω), for tests.
     pub fn kinetic_energy_exact(q: &[f64], qd: &[f64]) -> f64 {
@@ -178,10 +213,7 @@ impl Mechanism for Pendulum {
     }
 
     fn phi_q(&self, q: &[f64], _t: f64, out: &mut [f64]) {
-        // ∂(A s)/∂p_k = h_k × (A s): the angle columns are rotations of the arm.
-        let u = Self::arm(q);
-        let h = h_columns(q[4], q[5]);
-        let c = [cross(h[0], u), cross(h[1], u), cross(h[2], u)];
+        let c = arm_angle_columns(q, Self::arm(q));
         out.copy_from_slice(&[
             1.0, c[0][0], c[1][0], c[2][0], //
             1.0, c[0][1], c[1][1], c[2][1], //
@@ -194,27 +226,7 @@ impl Mechanism for Pendulum {
     }
 
     fn gamma(&self, q: &[f64], qd: &[f64], _t: f64, out: &mut [f64]) {
-        // d²(A s)/dt² = α × u + ω × (ω × u) with α = H p̈ + Ḣ ṗ; γ keeps the p̈-free part.
-        let u = Self::arm(q);
-        let h = h_columns(q[4], q[5]);
-        let (td, bd, gd) = (qd[3], qd[4], qd[5]);
-        let w = [
-            h[0][0] * td + h[1][0] * bd + h[2][0] * gd,
-            h[0][1] * td + h[1][1] * bd + h[2][1] * gd,
-            h[0][2] * td + h[1][2] * bd + h[2][2] * gd,
-        ];
-        let (sb, cb) = q[4].sin_cos();
-        let (sg, cg) = q[5].sin_cos();
-        let hdot_pd = [
-            td * (-sg * cb * gd - cg * sb * bd) + bd * (-cg * gd),
-            td * (cg * cb * gd - sg * sb * bd) + bd * (-sg * gd),
-            td * (-cb * bd),
-        ];
-        let a = cross(hdot_pd, u);
-        let b = cross(w, cross(w, u));
-        for k in 0..3 {
-            out[k] = -(a[k] + b[k]);
-        }
+        out.copy_from_slice(&point_gamma(q, qd, Self::arm(q)));
     }
 
     fn mass(&self, q: &[f64], out: &mut [f64]) {
@@ -447,6 +459,172 @@ impl Mechanism for CircleDriver {
     }
 }
 
+// ---------------------------------------------------------------------------------------
+// Two-ball hinge
+
+/// Half the distance between the hinge's two ball joints, along global Z (m).
+pub const HINGE_HALF_WIDTH: f64 = 0.2;
+/// The ball joints' points on the body: `(0, L, ±a)` in local coordinates.
+pub const HINGE_POINTS: [[f64; 3]; 2] = [
+    [0.0, PENDULUM_LENGTH, HINGE_HALF_WIDTH],
+    [0.0, PENDULUM_LENGTH, -HINGE_HALF_WIDTH],
+];
+
+const HINGE_PHIQ_ROWS: [u32; 22] = [
+    0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2, //
+    3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5,
+];
+const HINGE_PHIQ_COLS: [u32; 22] = [
+    0, 3, 4, 5, 1, 3, 4, 5, 2, 3, 4, //
+    0, 3, 4, 5, 1, 3, 4, 5, 2, 3, 4,
+];
+const HINGE_JOINTS: [JointInfo; 2] = [
+    JointInfo {
+        name: "ball1",
+        kind: JointKind::Spherical,
+        body1: Some(0),
+        body2: None,
+        row_start: 0,
+        rows: 3,
+        point1: HINGE_POINTS[0],
+        effort_sign: 0.0,
+        effort_unit: "",
+    },
+    JointInfo {
+        name: "ball2",
+        kind: JointKind::Spherical,
+        body1: Some(0),
+        body2: None,
+        row_start: 3,
+        rows: 3,
+        point1: HINGE_POINTS[1],
+        effort_sign: 0.0,
+        effort_unit: "",
+    },
+];
+const HINGE_ROWS: [&str; 6] = [
+    "ball1.x", "ball1.y", "ball1.z", "ball2.x", "ball2.y", "ball2.z",
+];
+
+static HINGE: MechanismInfo = MechanismInfo {
+    name: "two_ball_hinge",
+    n_constraints: 6,
+    phi_q_rows: &HINGE_PHIQ_ROWS,
+    phi_q_cols: &HINGE_PHIQ_COLS,
+    joints: &HINGE_JOINTS,
+    row_names: &HINGE_ROWS,
+    // Both z rows read `Z + (A s)_z ∓ a`; their gradients differ by `2a·(h_k × A e_z)_z`,
+    // which vanishes while the body turns about Z: row 5 is row 2's copy.
+    redundant_rows: &[5],
+    ..PENDULUM_EXACT
+};
+
+static HINGE_UNDECLARED: MechanismInfo = MechanismInfo {
+    name: "two_ball_hinge_undeclared",
+    redundant_rows: &[],
+    ..HINGE
+};
+
+/// The exact pendulum hung from a door hinge made of two ball joints on the global Z axis:
+/// body points `(0, L, ±a)` held at ground points `(0, 0, a)` and `(δ, 0, −a)`. Six rows of
+/// rank five (row 5, `ball2.z`, is redundant); with `δ ≠ 0` the two joints contradict each
+/// other (the ground points are farther apart than the body points).
+#[derive(Debug, Clone, Copy)]
+pub struct TwoBallHinge {
+    /// `δ`, the X offset of the second ground point (m); 0 for a consistent hinge.
+    pub misalignment: f64,
+    /// Whether the info declares row 5 redundant (the generator would).
+    pub declared: bool,
+}
+
+impl TwoBallHinge {
+    /// A hinge with its redundant row declared.
+    pub fn new(misalignment: f64) -> Self {
+        TwoBallHinge {
+            misalignment,
+            declared: true,
+        }
+    }
+
+    fn ground(&self, k: usize) -> [f64; 3] {
+        [
+            if k == 0 { 0.0 } else { self.misalignment },
+            0.0,
+            HINGE_POINTS[k][2],
+        ]
+    }
+}
+
+impl Mechanism for TwoBallHinge {
+    fn info(&self) -> &'static MechanismInfo {
+        if self.declared {
+            &HINGE
+        } else {
+            &HINGE_UNDECLARED
+        }
+    }
+
+    fn phi(&self, q: &[f64], _t: f64, out: &mut [f64]) {
+        for k in 0..2 {
+            let (u, g) = (arm_of(q, HINGE_POINTS[k]), self.ground(k));
+            for i in 0..3 {
+                out[3 * k + i] = q[i] + u[i] - g[i];
+            }
+        }
+    }
+
+    fn phi_q(&self, q: &[f64], _t: f64, out: &mut [f64]) {
+        for k in 0..2 {
+            let c = arm_angle_columns(q, arm_of(q, HINGE_POINTS[k]));
+            out[11 * k..11 * k + 11].copy_from_slice(&[
+                1.0, c[0][0], c[1][0], c[2][0], //
+                1.0, c[0][1], c[1][1], c[2][1], //
+                1.0, c[0][2], c[1][2],
+            ]);
+        }
+    }
+
+    fn phi_t(&self, _q: &[f64], _t: f64, out: &mut [f64]) {
+        out.fill(0.0);
+    }
+
+    fn gamma(&self, q: &[f64], qd: &[f64], _t: f64, out: &mut [f64]) {
+        for k in 0..2 {
+            out[3 * k..3 * k + 3].copy_from_slice(&point_gamma(q, qd, arm_of(q, HINGE_POINTS[k])));
+        }
+    }
+
+    fn mass(&self, q: &[f64], out: &mut [f64]) {
+        Pendulum::exact().mass(q, out)
+    }
+
+    fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        Pendulum::exact().force(q, qd, t, out)
+    }
+
+    fn potential(&self, q: &[f64]) -> f64 {
+        Pendulum::exact().potential(q)
+    }
+
+    fn power_nc(&self, _q: &[f64], _qd: &[f64], _t: f64) -> f64 {
+        0.0
+    }
+
+    fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+        self.phi(q, t, out.phi);
+        self.phi_q(q, t, out.phi_q);
+        self.mass(q, out.mass);
+        self.force(q, qd, t, out.force);
+    }
+
+    fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
+        self.phi(q, t, out.phi);
+        self.phi_q(q, t, out.phi_q);
+        self.phi_t(q, t, out.phi_t);
+        self.gamma(q, qd, t, out.gamma);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     //! The fixtures' hand-written derivatives against finite differences of their own Φ.
@@ -520,6 +698,11 @@ mod tests {
     #[test]
     fn circle_driver_derivatives_match_finite_differences() {
         check_derivatives(&CircleDriver, &Q, &QD, 0.3);
+    }
+
+    #[test]
+    fn two_ball_hinge_derivatives_match_finite_differences() {
+        check_derivatives(&TwoBallHinge::new(0.01), &Q, &QD, 0.3);
     }
 
     #[test]
