@@ -1,10 +1,11 @@
-//! Watchdogs: constraint drift at position and velocity level, and every body's distance
-//! from the Euler-angle singularity at β = ±90° (DESIGN decision 11), so a simulation
-//! reports trouble by body name instead of producing garbage.
+//! Watchdogs: constraint drift at position and velocity level, and every Euler-angle body's
+//! distance from the singularity at β = ±90° (DESIGN decision 11), so a simulation reports
+//! trouble by body name instead of producing garbage. Quaternion bodies have no singularity
+//! and are not watched.
 
 use crate::error::{check_len, Error};
 use crate::kinematics::inf_norm;
-use crate::mechanism::{Mechanism, MechanismInfo};
+use crate::mechanism::{BodyInfo, Mechanism, MechanismInfo, Rotation};
 
 /// Thresholds on |cos β|: below `warn_cos` a warning is reported, below `error_cos` an
 /// error. Defaults: warn at |β| ≳ 80° (cos β = 0.17), fail at |β| ≳ 88° (cos β = 0.035),
@@ -34,12 +35,21 @@ pub struct EulerWarning {
     pub beta: f64,
 }
 
-/// The body with the smallest |cos β| and that value (`None` for a mechanism without bodies).
+/// β of an Euler-angle body (`None` for a quaternion body, or if `q` is too short).
+fn euler_beta(body: &BodyInfo, q: &[f64]) -> Option<f64> {
+    match body.rotation {
+        Rotation::Euler => q.get(body.coord_offset + 4).copied(),
+        Rotation::Quaternion => None,
+    }
+}
+
+/// The Euler-angle body with the smallest |cos β| and that value (`None` for a mechanism
+/// without Euler-angle bodies).
 pub fn min_cos_beta(info: &MechanismInfo, q: &[f64]) -> Option<(usize, f64)> {
     info.bodies
         .iter()
         .enumerate()
-        .filter_map(|(i, b)| q.get(b.coord_offset + 4).map(|beta| (i, beta.cos().abs())))
+        .filter_map(|(i, b)| euler_beta(b, q).map(|beta| (i, beta.cos().abs())))
         .min_by(|a, b| a.1.total_cmp(&b.1))
 }
 
@@ -65,8 +75,17 @@ impl EulerLimits {
         q: &[f64],
     ) -> Result<Option<EulerWarning>, Error> {
         check_len("q", info.n_coords, q.len())?;
-        for b in info.bodies {
-            let beta = q[b.coord_offset + 4];
+        for (i, b) in info.bodies.iter().enumerate() {
+            if b.coord_offset + b.n_coords() > q.len() {
+                return Err(Error::InvalidIndex {
+                    what: "body",
+                    index: i,
+                    reason: "its coordinates lie outside q",
+                });
+            }
+            let Some(beta) = euler_beta(b, q) else {
+                continue;
+            };
             if !(beta.cos().abs() >= self.error_cos) {
                 return Err(Error::EulerSingularity {
                     time,
@@ -200,5 +219,77 @@ mod tests {
             .check(&mech, 0.0, &q2, &[0.0, -2.0, 0.0, 0.0, 0.0, 0.0])
             .unwrap();
         assert!((r.position - 0.1).abs() < 1e-15 && (r.velocity - 2.0).abs() < 1e-15);
+    }
+
+    /// A quaternion body (coordinates 0..7) and an Euler body (7..13).
+    static MIXED: MechanismInfo = MechanismInfo {
+        name: "mixed",
+        n_coords: 13,
+        n_constraints: 0,
+        phi_q_rows: &[],
+        phi_q_cols: &[],
+        mass_rows: &[],
+        mass_cols: &[],
+        bodies: &[
+            BodyInfo {
+                name: "ball",
+                coord_offset: 0,
+                rotation: Rotation::Quaternion,
+                mass: 1.0,
+                inertia: [1.0; 3],
+            },
+            BodyInfo {
+                name: "bob",
+                coord_offset: 7,
+                rotation: Rotation::Euler,
+                mass: 1.0,
+                inertia: [1.0; 3],
+            },
+        ],
+        joints: &[],
+        coord_names: &[],
+        row_names: &[],
+        q0: &[],
+        qd0: &[],
+        redundant_rows: &[],
+        formulation: crate::mechanism::Formulation::Exact,
+        gravity: [0.0; 3],
+        mass_is_constant: false,
+    };
+
+    #[test]
+    fn quaternion_bodies_are_never_singular() {
+        let lim = EulerLimits::default();
+        let mut q = [0.0; 13];
+        // The quaternion body's coordinate +4 (e1) at π/2 would read as β = 90°.
+        q[4] = std::f64::consts::FRAC_PI_2;
+        assert_eq!(lim.check(&MIXED, 0.0, &q), Ok(None));
+        assert_eq!(min_cos_beta(&MIXED, &q), Some((1, 1.0)));
+        // The Euler body is still watched, by name.
+        q[7 + 4] = 81f64.to_radians();
+        let w = lim.check(&MIXED, 0.5, &q).unwrap().unwrap();
+        assert_eq!((w.body, w.name), (1, "bob"));
+        q[7 + 4] = 89f64.to_radians();
+        match lim.check(&MIXED, 0.5, &q) {
+            Err(Error::EulerSingularity { body, .. }) => assert_eq!(body, "bob"),
+            other => panic!("{other:?}"),
+        }
+        // Only quaternion bodies: nothing to watch.
+        let only_quaternion = MechanismInfo {
+            n_coords: 7,
+            bodies: &MIXED.bodies[..1],
+            ..MIXED
+        };
+        assert_eq!(min_cos_beta(&only_quaternion, &q[..7]), None);
+        assert_eq!(lim.check(&only_quaternion, 0.0, &q[..7]), Ok(None));
+        // A body whose coordinates run past q is an error, not a panic.
+        let short = MechanismInfo {
+            n_coords: 10,
+            ..MIXED
+        };
+        assert!(matches!(
+            lim.check(&short, 0.0, &q[..10]),
+            Err(Error::InvalidIndex { .. })
+        ));
     }
 }
