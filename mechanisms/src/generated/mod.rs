@@ -2,7 +2,17 @@
 //! `cargo xtask generate --all`.
 
 #[rustfmt::skip]
+pub mod bricard;
+#[rustfmt::skip]
+pub mod four_bar;
+#[rustfmt::skip]
+pub mod slider_crank;
+#[rustfmt::skip]
+pub mod spherical_pendulum;
+#[rustfmt::skip]
 pub mod stewart_6_6;
+#[rustfmt::skip]
+pub mod ups_stewart;
 
 use symbody_runtime::{Formulation, Mechanism};
 
@@ -10,11 +20,46 @@ use symbody_runtime::{Formulation, Mechanism};
 /// mechanism in each, and the simulation end time its file suggests.
 pub static REGISTRY: &[crate::Entry] = &[
     crate::Entry {
+        name: "bricard",
+        t_end: bricard::T_END,
+        formulations: &[
+            (Formulation::Exact, &bricard::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "four_bar",
+        t_end: four_bar::T_END,
+        formulations: &[
+            (Formulation::Exact, &four_bar::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "slider_crank",
+        t_end: slider_crank::T_END,
+        formulations: &[
+            (Formulation::Exact, &slider_crank::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "spherical_pendulum",
+        t_end: spherical_pendulum::T_END,
+        formulations: &[
+            (Formulation::Exact, &spherical_pendulum::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
         name: "stewart_6_6",
         t_end: stewart_6_6::T_END,
         formulations: &[
             (Formulation::Exact, &stewart_6_6::Exact as &(dyn Mechanism + Sync)),
             (Formulation::Paper, &stewart_6_6::Paper as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "ups_stewart",
+        t_end: ups_stewart::T_END,
+        formulations: &[
+            (Formulation::Exact, &ups_stewart::Exact as &(dyn Mechanism + Sync)),
         ],
     },
 ];
