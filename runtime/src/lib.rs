@@ -22,6 +22,7 @@ pub mod hht;
 pub mod kinematics;
 pub mod kkt;
 pub mod mechanism;
+pub mod pose;
 pub mod reactions;
 pub mod testmodels;
 pub mod watch;

@@ -209,4 +209,4 @@ pub(crate) fn check_kkt_len(expected: usize, got: usize) -> Result<(), KktError>
 pub const DEFAULT_PIVOT_TOLERANCE: f64 = 1e-10;
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
