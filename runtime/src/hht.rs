@@ -469,6 +469,18 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         reactions::actuator_force(self.info, &self.lambda, joint)
     }
 
+    /// Wrench joint `joint` exerts on its body 1 at the current state, about the joint
+    /// point ([`reactions::joint_wrench`]), from the integrator's own multipliers.
+    pub fn joint_wrench(&self, joint: usize) -> Result<reactions::Wrench, Error> {
+        reactions::joint_wrench(self.info, &self.q, &self.phi_q_state, &self.lambda, joint)
+    }
+
+    /// Effort of driver `joint` along its driven coordinate at the current state
+    /// ([`reactions::driver_effort`]).
+    pub fn driver_effort(&self, joint: usize) -> Result<f64, Error> {
+        reactions::driver_effort(self.info, &self.lambda, joint)
+    }
+
     /// Nonzeros of the mass matrix at the current state.
     #[allow(clippy::misnamed_getters)]
     pub fn mass(&self) -> &[f64] {

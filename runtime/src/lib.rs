@@ -6,7 +6,9 @@
 //!   structured default, and [`DenseKkt`], the reference).
 //! - [`kinematics`]: position/velocity/acceleration analysis and the consistent start.
 //! - [`hht`]: the HHT-α integrator ([`HhtBuilder`] → [`Integrator`]).
-//! - [`reactions`]: joint and actuator forces from the multipliers.
+//! - [`reactions`]: joint wrenches and driver efforts from the multipliers.
+//! - [`pose`]: rotation matrices, poses, angular velocities and world points of Euler-angle
+//!   and quaternion bodies.
 //! - [`watch`]: constraint-drift and Euler-singularity watchdogs.
 //! - [`error`]: the one [`Error`] type.
 //! - [`testmodels`]: hand-written fixtures (pendulum, circle driver) for tests and examples.
@@ -35,5 +37,8 @@ pub use mechanism::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo,
     NewtonOutputs, Rotation,
 };
-pub use reactions::{actuator_force, joint_force};
+pub use pose::{
+    angular_velocity, angular_velocity_jacobian, body_pose, point_world, rotation_matrix,
+};
+pub use reactions::{actuator_force, driver_effort, joint_force, joint_wrench, Wrench};
 pub use watch::{EulerLimits, EulerWarning, ResidualWatch, Residuals};

@@ -1,8 +1,161 @@
-//! Joint reaction forces and actuator forces from the Lagrange multipliers, with the sign
-//! convention of DESIGN decision 7 (`M q̈ + Φqᵀλ = Q`).
+//! Joint reaction wrenches and driver efforts from the Lagrange multipliers, with the sign
+//! convention of DESIGN decision 7 (`M q̈ + Φqᵀλ = Q`): joint `k` acts on body `i` with the
+//! generalized force `−(Φᵏ_{q_i})ᵀλᵏ` on the body's coordinates.
+//!
+//! A generalized force `g` on a body's coordinates is turned into a force and a torque by
+//! virtual work: the translational part is the force `F`; the rotational part satisfies
+//! `g_rot = J_ωᵀ τ` with `ω = J_ω q̇_rot` ([`crate::pose::angular_velocity_jacobian`]), so
+//! `τ = H⁻ᵀ g_rot` for Euler angles and `τ = E(e) g_rot / (2|e|²)` for a quaternion (the
+//! component of `g_rot` along `e`, which the normalization row absorbs, is discarded since
+//! `E e = 0`).
+
+use nalgebra::{Matrix3, Vector3};
 
 use crate::error::{check_len, Error};
-use crate::mechanism::{JointKind, MechanismInfo};
+use crate::mechanism::{JointInfo, JointKind, MechanismInfo, Rotation};
+use crate::pose;
+
+/// A force and a moment, global frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Wrench {
+    /// Force (N).
+    pub force: [f64; 3],
+    /// Moment about the stated point (N·m).
+    pub moment: [f64; 3],
+}
+
+/// |cos β| below which an Euler body's torque is not recoverable: the inverse of `Hᵀ`
+/// would amplify roundoff in the multipliers by more than 10¹².
+const SINGULAR_COS: f64 = 1e-12;
+
+fn joint_info(info: &MechanismInfo, joint: usize) -> Result<&JointInfo, Error> {
+    info.joints.get(joint).ok_or(Error::InvalidIndex {
+        what: "joint",
+        index: joint,
+        reason: "no such joint",
+    })
+}
+
+/// The wrench joint `joint` exerts on its body 1 (global frame), the moment taken about the
+/// joint point `P = r₁ + A₁·point1` (`point1` itself when body 1 is the ground). When body 1
+/// is the ground it is the wrench on the ground: minus the wrench on body 2, about the same
+/// point.
+///
+/// `q`, `phi_q` and `lambda` must belong to one state. With redundant rows the multipliers
+/// are one valid choice among many, and so are the wrenches of the joints involved.
+/// Normalization rows are not joints and are refused.
+pub fn joint_wrench(
+    info: &MechanismInfo,
+    q: &[f64],
+    phi_q: &[f64],
+    lambda: &[f64],
+    joint: usize,
+) -> Result<Wrench, Error> {
+    check_len("q", info.n_coords, q.len())?;
+    check_len("Φq nonzeros", info.phi_q_nnz(), phi_q.len())?;
+    check_len("lambda", info.n_constraints, lambda.len())?;
+    let j = joint_info(info, joint)?;
+    if j.kind == JointKind::Normalization {
+        return Err(Error::InvalidIndex {
+            what: "joint",
+            index: joint,
+            reason: "a normalization row exerts no wrench",
+        });
+    }
+    let (body, on_ground) = match (j.body1, j.body2) {
+        (Some(b), _) => (b, false),
+        (None, Some(b)) => (b, true),
+        (None, None) => {
+            return Err(Error::InvalidIndex {
+                what: "joint",
+                index: joint,
+                reason: "the joint connects no body",
+            })
+        }
+    };
+    let b = info.bodies.get(body).ok_or(Error::InvalidIndex {
+        what: "body",
+        index: body,
+        reason: "the joint names a body that does not exist",
+    })?;
+    let rows = j.row_start..j.row_start + j.rows;
+    let cols = b.coord_offset..b.coord_offset + b.n_coords();
+    if cols.end > q.len() || rows.end > lambda.len() {
+        return Err(Error::InvalidIndex {
+            what: "joint",
+            index: joint,
+            reason: "its rows or its body's coordinates lie outside the mechanism",
+        });
+    }
+    // g = −(Φ^rows_{q_i})ᵀ λ^rows on the body's coordinates.
+    let mut g = [0.0; 7];
+    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
+        let (r, c) = (r as usize, c as usize);
+        if rows.contains(&r) && cols.contains(&c) {
+            g[c - cols.start] -= v * lambda[r];
+        }
+    }
+    let force = Vector3::new(g[0], g[1], g[2]);
+    let jw = pose::angular_velocity_jacobian(b, q)?;
+    let torque = match b.rotation {
+        Rotation::Euler => {
+            let h: Matrix3<f64> = jw.fixed_columns::<3>(0).into_owned();
+            let beta = q[b.coord_offset + 4];
+            let singular = Error::EulerSingularity {
+                time: f64::NAN,
+                body: b.name,
+                beta,
+            };
+            // det H = cos β: at the singularity the Euler-angle forces do not determine τ
+            // (one torque component does no work on any angle rate).
+            if !(beta.cos().abs() > SINGULAR_COS) {
+                return Err(singular);
+            }
+            let ht_inv = h.transpose().try_inverse().ok_or(singular.clone())?;
+            ht_inv * Vector3::new(g[3], g[4], g[5])
+        }
+        Rotation::Quaternion => {
+            // J_ω = 2E: τ = (2E)ᵀ⁺ g_rot = E g_rot / (2|e|²), since E Eᵀ = |e|² I.
+            let e = &q[b.coord_offset + 3..b.coord_offset + 7];
+            let e2: f64 = e.iter().map(|x| x * x).sum();
+            jw * nalgebra::Vector4::new(g[3], g[4], g[5], g[6]) / (4.0 * e2)
+        }
+    };
+    let r = Vector3::new(q[cols.start], q[cols.start + 1], q[cols.start + 2]);
+    let p = if on_ground {
+        Vector3::from(j.point1)
+    } else {
+        pose::point_world(Some(b), q, &j.point1)?
+    };
+    let moment = torque - (p - r).cross(&force);
+    let sign = if on_ground { -1.0 } else { 1.0 };
+    Ok(Wrench {
+        force: (sign * force).into(),
+        moment: (sign * moment).into(),
+    })
+}
+
+/// The effort of driver `joint` along its driven coordinate (force in N or torque in N·m,
+/// [`JointInfo::effort_unit`]): `−effort_sign · λ` of its row.
+pub fn driver_effort(info: &MechanismInfo, lambda: &[f64], joint: usize) -> Result<f64, Error> {
+    check_len("lambda", info.n_constraints, lambda.len())?;
+    let j = joint_info(info, joint)?;
+    if j.kind != JointKind::Driver || j.rows != 1 {
+        return Err(Error::InvalidIndex {
+            what: "joint",
+            index: joint,
+            reason: "not a one-row driver",
+        });
+    }
+    lambda
+        .get(j.row_start)
+        .map(|l| -j.effort_sign * l)
+        .ok_or(Error::InvalidIndex {
+            what: "constraint row",
+            index: j.row_start,
+            reason: "driver row outside λ",
+        })
+}
 
 /// Force (global X, Y, Z) that joint `joint` exerts on body `body`: `−(Φᵏ_{r_i})ᵀ λᵏ`, where
 /// `Φᵏ_{r_i}` are the joint's rows of `Φq` in the body's three translational columns.
@@ -77,10 +230,13 @@ pub fn actuator_force(info: &MechanismInfo, lambda: &[f64], joint: usize) -> Res
 mod tests {
     use super::*;
     use crate::kinematics::{InitialVelocity, Kinematics};
+    use crate::kkt::tests::Rng;
     use crate::kkt::SchurKkt;
     use crate::mechanism::Mechanism;
+    use crate::mechanism::{BodyInfo, Formulation};
     use crate::testmodels::{
-        CircleDriver, Pendulum, CIRCLE_C0, CIRCLE_D, CIRCLE_MASS, G, PENDULUM_MASS,
+        CircleDriver, Pendulum, TwoBallHinge, CIRCLE_C0, CIRCLE_D, CIRCLE_MASS, G, PENDULUM_LENGTH,
+        PENDULUM_MASS,
     };
 
     fn start<M: Mechanism>(mech: &M) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
@@ -143,5 +299,269 @@ mod tests {
         assert!(actuator_force(info, &lam, 9).is_err());
         assert!(joint_force(info, &pq, &lam, 0, 3).is_err());
         assert!(joint_force(info, &pq[1..], &lam, 0, 0).is_err());
+    }
+
+    fn norm(v: [f64; 3]) -> f64 {
+        Vector3::from(v).norm()
+    }
+
+    #[test]
+    fn hanging_exact_pendulum_has_no_moment_about_its_pivot() {
+        let mech = Pendulum::exact();
+        let (q, pq, lam) = start(&mech);
+        let w = joint_wrench(mech.info(), &q, &pq, &lam, 0).unwrap();
+        let mg = PENDULUM_MASS * G;
+        assert!(
+            (w.force[1] - mg).abs() < 1e-12 * mg && w.force[0].abs() < 1e-12,
+            "{w:?}"
+        );
+        assert!(norm(w.moment) < 1e-12 * mg * PENDULUM_LENGTH, "{w:?}");
+    }
+
+    /// A random state on the constraint manifold with a random consistent velocity, and
+    /// the accelerations and multipliers there.
+    fn moving_state<M: Mechanism>(
+        mech: &M,
+        rng: &mut Rng,
+        q: &mut [f64],
+    ) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+        let info = mech.info();
+        let mut kin = Kinematics::<SchurKkt>::new(info).unwrap();
+        let mut qd: Vec<f64> = (0..info.n_coords).map(|_| 2.0 * rng.uniform()).collect();
+        let mut qdd = vec![0.0; info.n_coords];
+        let mut lam = vec![0.0; info.n_constraints];
+        kin.consistent_start(
+            mech,
+            0.0,
+            InitialVelocity::ProjectGiven,
+            q,
+            &mut qd,
+            &mut qdd,
+            &mut lam,
+        )
+        .unwrap();
+        let mut pq = vec![0.0; info.phi_q_nnz()];
+        mech.phi_q(q, 0.0, &mut pq);
+        (qdd, pq, lam)
+    }
+
+    #[test]
+    fn ball_joints_transmit_no_moment_about_their_points_while_moving() {
+        // Spinning and swinging: the reaction about the ball's centre must vanish, which
+        // tests τ from the rotational multipliers and its transfer to the joint point.
+        let mut rng = Rng::new(31);
+        let mech = Pendulum::exact();
+        for trial in 0..10 {
+            let mut q = [
+                0.0,
+                0.0,
+                0.0,
+                rng.uniform(),
+                rng.uniform(),
+                2.0 * rng.uniform(),
+            ];
+            let (qdd, pq, lam) = moving_state(&mech, &mut rng, &mut q);
+            let w = joint_wrench(mech.info(), &q, &pq, &lam, 0).unwrap();
+            let scale = norm(w.force) * PENDULUM_LENGTH;
+            assert!(norm(w.moment) < 1e-11 * scale, "trial {trial}: {w:?}");
+            // Newton for the centre of mass: F + m g = m r̈ (g = −G ŷ).
+            let newton = Vector3::from(w.force)
+                - PENDULUM_MASS * G * Vector3::y()
+                - PENDULUM_MASS * Vector3::new(qdd[0], qdd[1], qdd[2]);
+            assert!(newton.norm() < 1e-10 * scale, "trial {trial}: {newton}");
+        }
+        // The hinge's two balls, each about its own point (the transfer differs by 2a).
+        let mech = TwoBallHinge::new(0.0);
+        for trial in 0..5 {
+            let mut q = mech.info().q0.to_vec();
+            q[5] = 2.0 * rng.uniform();
+            let (qdd, pq, lam) = moving_state(&mech, &mut rng, &mut q);
+            let w1 = joint_wrench(mech.info(), &q, &pq, &lam, 0).unwrap();
+            let w2 = joint_wrench(mech.info(), &q, &pq, &lam, 1).unwrap();
+            let scale = (norm(w1.force) + norm(w2.force)) * PENDULUM_LENGTH;
+            assert!(norm(w1.moment) < 1e-11 * scale, "trial {trial}: {w1:?}");
+            assert!(norm(w2.moment) < 1e-11 * scale, "trial {trial}: {w2:?}");
+            let total = Vector3::from(w1.force) + Vector3::from(w2.force);
+            let expect = PENDULUM_MASS * (Vector3::new(qdd[0], qdd[1], qdd[2]) + G * Vector3::y());
+            assert!(
+                (total - expect).norm() < 1e-10 * scale,
+                "{total} vs {expect}"
+            );
+        }
+    }
+
+    const S_LOCAL: [f64; 3] = [0.3, -0.2, 0.5];
+    const P_GLOBAL: [f64; 3] = [1.0, 2.0, -0.5];
+
+    /// One body under an identity "joint" on all its coordinates (`Φq = I`), seen from the
+    /// body (`probe`, point `S_LOCAL`) and from the ground (`probe_ground`, `P_GLOBAL`).
+    macro_rules! probe_info {
+        ($name:ident, $rotation:expr, $n:literal, $rows:expr) => {
+            static $name: MechanismInfo = MechanismInfo {
+                name: "probe",
+                n_coords: $n,
+                n_constraints: $n,
+                formulation: Formulation::Exact,
+                gravity: [0.0; 3],
+                phi_q_rows: &$rows,
+                phi_q_cols: &$rows,
+                mass_rows: &[],
+                mass_cols: &[],
+                mass_is_constant: true,
+                bodies: &[BodyInfo {
+                    name: "b",
+                    coord_offset: 0,
+                    rotation: $rotation,
+                    mass: 1.0,
+                    inertia: [1.0; 3],
+                }],
+                joints: &[
+                    JointInfo {
+                        name: "probe",
+                        kind: JointKind::Fixed,
+                        body1: Some(0),
+                        body2: None,
+                        row_start: 0,
+                        rows: $n,
+                        point1: S_LOCAL,
+                        effort_sign: 0.0,
+                        effort_unit: "",
+                    },
+                    JointInfo {
+                        name: "probe_ground",
+                        kind: JointKind::Fixed,
+                        body1: None,
+                        body2: Some(0),
+                        row_start: 0,
+                        rows: $n,
+                        point1: P_GLOBAL,
+                        effort_sign: 0.0,
+                        effort_unit: "",
+                    },
+                    JointInfo {
+                        name: "norm",
+                        kind: JointKind::Normalization,
+                        body1: Some(0),
+                        body2: None,
+                        row_start: $n - 1,
+                        rows: 1,
+                        point1: [0.0; 3],
+                        effort_sign: 0.0,
+                        effort_unit: "",
+                    },
+                ],
+                coord_names: &[],
+                row_names: &[],
+                q0: &[],
+                qd0: &[],
+                redundant_rows: &[],
+            };
+        };
+    }
+    probe_info!(PROBE_EULER, Rotation::Euler, 6, [0, 1, 2, 3, 4, 5]);
+    probe_info!(PROBE_QUAT, Rotation::Quaternion, 7, [0, 1, 2, 3, 4, 5, 6]);
+
+    /// Generalized force of force `f` at body point `s` plus couple `c`, by virtual work
+    /// with central differences: `g_k = f·∂p/∂q_k + c·δθ_k`, `[δθ_k×] = skew(∂A/∂q_k Aᵀ)`.
+    fn generalized_force_fd(
+        b: &BodyInfo,
+        q: &[f64],
+        s: &[f64; 3],
+        f: Vector3<f64>,
+        c: Vector3<f64>,
+    ) -> Vec<f64> {
+        let h = 1e-6;
+        let a = pose::rotation_matrix(b, q).unwrap();
+        (0..q.len())
+            .map(|k| {
+                let (mut qp, mut qm) = (q.to_vec(), q.to_vec());
+                qp[k] += h;
+                qm[k] -= h;
+                let dp = (pose::point_world(Some(b), &qp, s).unwrap()
+                    - pose::point_world(Some(b), &qm, s).unwrap())
+                    / (2.0 * h);
+                let da = (pose::rotation_matrix(b, &qp).unwrap()
+                    - pose::rotation_matrix(b, &qm).unwrap())
+                    / (2.0 * h);
+                let x = da * a.transpose();
+                let x = 0.5 * (x - x.transpose());
+                f.dot(&dp) + c.dot(&Vector3::new(x[(2, 1)], x[(0, 2)], x[(1, 0)]))
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_known_wrench_is_recovered_from_its_generalized_force() {
+        let mut rng = Rng::new(77);
+        for info in [&PROBE_EULER, &PROBE_QUAT] {
+            let b = &info.bodies[0];
+            for trial in 0..10 {
+                let mut q: Vec<f64> = (0..info.n_coords).map(|_| 1.5 * rng.uniform()).collect();
+                if b.rotation == Rotation::Quaternion {
+                    let n = q[3..].iter().map(|x| x * x).sum::<f64>().sqrt();
+                    q[3..].iter_mut().for_each(|x| *x /= n);
+                }
+                let f = Vector3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 10.0;
+                let c = Vector3::new(rng.uniform(), rng.uniform(), rng.uniform()) * 3.0;
+                let g = generalized_force_fd(b, &q, &S_LOCAL, f, c);
+                // Φq = I and −Φqᵀλ = g.
+                let lam: Vec<f64> = g.iter().map(|x| -x).collect();
+                let pq = vec![1.0; info.n_coords];
+                let tol = 1e-7 * (f.norm() + c.norm());
+                let w = joint_wrench(info, &q, &pq, &lam, 0).unwrap();
+                assert!(
+                    (Vector3::from(w.force) - f).norm() < tol
+                        && (Vector3::from(w.moment) - c).norm() < tol,
+                    "{:?} trial {trial}: {w:?} vs {f}, {c}",
+                    b.rotation
+                );
+                // From the ground's side: minus the same wrench, about the ground point.
+                let p = pose::point_world(Some(b), &q, &S_LOCAL).unwrap();
+                let c_ground = c + (p - Vector3::from(P_GLOBAL)).cross(&f);
+                let w = joint_wrench(info, &q, &pq, &lam, 1).unwrap();
+                assert!(
+                    (Vector3::from(w.force) + f).norm() < tol
+                        && (Vector3::from(w.moment) + c_ground).norm() < tol,
+                    "{:?} trial {trial}: {w:?}",
+                    b.rotation
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn wrench_and_effort_errors() {
+        let info = &PROBE_QUAT;
+        let q = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0];
+        let (pq, lam) = ([1.0; 7], [0.0; 7]);
+        assert!(
+            joint_wrench(info, &q, &pq, &lam, 2).is_err(),
+            "normalization row"
+        );
+        assert!(
+            joint_wrench(info, &q, &pq, &lam, 3).is_err(),
+            "no such joint"
+        );
+        assert!(joint_wrench(info, &q[..6], &pq, &lam, 0).is_err());
+        assert!(joint_wrench(info, &q, &pq[..6], &lam, 0).is_err());
+        assert!(driver_effort(info, &lam, 0).is_err(), "not a driver");
+        assert!(driver_effort(info, &lam[..3], 0).is_err());
+        // An Euler body at β = 90° has no torque from its Euler-angle forces.
+        let q = [0.0, 0.0, 0.0, 0.1, std::f64::consts::FRAC_PI_2, 0.2];
+        assert!(matches!(
+            joint_wrench(&PROBE_EULER, &q, &[1.0; 6], &[1.0; 6], 0),
+            Err(Error::EulerSingularity { .. })
+        ));
+    }
+
+    #[test]
+    fn driver_effort_is_the_pushing_force() {
+        let mech = CircleDriver;
+        let (_, _, lam) = start(&mech);
+        let info = mech.info();
+        let e = driver_effort(info, &lam, 1).unwrap();
+        assert_eq!(e, actuator_force(info, &lam, 1).unwrap());
+        // Pushing up against gravity: positive along increasing distance.
+        assert!(e > CIRCLE_MASS * G, "{e}");
     }
 }
