@@ -140,6 +140,17 @@ impl<K: KktSolver> Kinematics<K> {
         self.settings
     }
 
+    /// Φq nonzeros of the last velocity or acceleration analysis, at its state (after a
+    /// position analysis: at the last Newton iterate before the converged one).
+    pub fn phi_q(&self) -> &[f64] {
+        &self.phi_q
+    }
+
+    /// Mass-matrix nonzeros of the last velocity or acceleration analysis, at its state.
+    pub fn mass(&self) -> &[f64] {
+        &self.mass
+    }
+
     fn check_mech<M: Mechanism>(&self, mech: &M) -> Result<(), Error> {
         let info = mech.info();
         check_len("mechanism coordinates", self.info.n_coords, info.n_coords)?;

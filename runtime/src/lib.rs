@@ -9,6 +9,8 @@
 //! - [`reactions`]: joint wrenches and driver efforts from the multipliers.
 //! - [`pose`]: rotation matrices, poses, angular velocities and world points of Euler-angle
 //!   and quaternion bodies.
+//! - [`energy`]: kinetic and potential energy and the work of drivers and non-conservative
+//!   forces ([`EnergyMeter`]), for energy-balance checks.
 //! - [`watch`]: constraint-drift and Euler-singularity watchdogs.
 //! - [`error`]: the one [`Error`] type.
 //! - [`testmodels`]: hand-written fixtures (pendulum, circle driver) for tests and examples.
@@ -19,6 +21,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod alloc_count;
+pub mod energy;
 pub mod error;
 pub mod hht;
 pub mod kinematics;
@@ -29,6 +32,7 @@ pub mod reactions;
 pub mod testmodels;
 pub mod watch;
 
+pub use energy::{EnergyMeter, EnergySample};
 pub use error::{ConstraintRow, Error};
 pub use hht::{HhtBuilder, Integrator, Stats, StepReport};
 pub use kinematics::{InitialVelocity, KinematicSettings, Kinematics, PositionReport};

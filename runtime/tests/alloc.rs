@@ -3,9 +3,10 @@
 
 use symbody_runtime::alloc_count::CountingAllocator;
 
-use symbody_runtime::testmodels::Pendulum;
+use symbody_runtime::testmodels::{CircleDriver, Pendulum, TwoBallHinge};
 use symbody_runtime::{
-    DenseKkt, EulerLimits, HhtBuilder, Kinematics, Mechanism, ResidualWatch, SchurKkt,
+    joint_wrench, DenseKkt, EnergyMeter, EulerLimits, HhtBuilder, Kinematics, Mechanism,
+    ResidualWatch, SchurKkt,
 };
 
 #[global_allocator]
@@ -36,6 +37,7 @@ fn hot_paths_do_not_allocate() {
         a.advance_to(0.7531).unwrap();
         b.advance_to(0.7531).unwrap();
         let _ = a.joint_force(0, 0).unwrap();
+        let _ = a.joint_wrench(0).unwrap();
         let _ = a.energy();
     });
     assert_eq!(n, 0, "HHT steps allocated {n} times");
@@ -70,4 +72,34 @@ fn hot_paths_do_not_allocate() {
         limits.check(info, 0.0, &q).unwrap();
     });
     assert_eq!(n, 0, "kinematics allocated {n} times");
+
+    // Energy records (with their saddle-point solve) and wrenches from their multipliers.
+    let mut d = HhtBuilder::new().build(CircleDriver).unwrap();
+    let mut meter = EnergyMeter::<SchurKkt>::new(CircleDriver.info()).unwrap();
+    let n = allocations(|| {
+        for _ in 0..50 {
+            d.step().unwrap();
+            meter.record(&CircleDriver, d.t(), d.q(), d.qd()).unwrap();
+            let _ =
+                joint_wrench(CircleDriver.info(), d.q(), meter.phi_q(), meter.lambda(), 0).unwrap();
+            let _ = d.driver_effort(1).unwrap();
+        }
+    });
+    assert_eq!(n, 0, "energy records allocated {n} times");
+
+    // Redundant rows: HHT and the position analysis on the two-ball hinge.
+    let hinge = TwoBallHinge::new(0.0);
+    let mut e = HhtBuilder::new()
+        .q0(&[0.2, -0.45, 0.0, 0.0, 0.0, 0.4])
+        .build(hinge)
+        .unwrap();
+    let mut kin = Kinematics::<DenseKkt>::new(hinge.info()).unwrap();
+    let mut q = [0.03, -0.47, 0.02, 0.05, -0.04, 0.3];
+    let n = allocations(|| {
+        for _ in 0..50 {
+            e.step().unwrap();
+        }
+        kin.position(&hinge, 0.0, &mut q).unwrap();
+    });
+    assert_eq!(n, 0, "redundant rows allocated {n} times");
 }

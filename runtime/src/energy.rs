@@ -1,0 +1,245 @@
+//! Energy bookkeeping: kinetic and potential energy at each recorded state and the work of
+//! drivers and non-conservative forces since the first record, so that
+//! `kinetic + potential − work` is constant along an exact solution and its drift measures
+//! an integrator's error.
+//!
+//! With `M q̈ + Φqᵀλ = Q` and `Φq q̇ = −Φt`, the energy theorem reads
+//! `d(T + V)/dt = λᵀΦt + P_nc`: the constraint power `λᵀΦt` is nonzero only on rows that
+//! depend on time (drivers), and `P_nc` is [`Mechanism::power_nc`]. The multipliers are
+//! recovered at each recorded state from `[M Φqᵀ; Φq 0][q̈; λ] = [Q; γ]` (the reactions of
+//! that state, not an integrator's α-shifted ones), and the power is integrated between
+//! records by the trapezoid rule. With redundant rows λ is not unique, but `λᵀΦt` is:
+//! two valid λ differ by `δλ` with `Φqᵀδλ = 0`, and `Φt = −Φq v` for a consistent `v`.
+
+use crate::error::{check_len, Error};
+use crate::kinematics::Kinematics;
+use crate::kkt::{KktSolver, SchurKkt};
+use crate::mechanism::{Mechanism, MechanismInfo};
+
+/// Energies at one recorded state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EnergySample {
+    /// `½ q̇ᵀ M(q) q̇` (J).
+    pub kinetic: f64,
+    /// [`Mechanism::potential`] (J).
+    pub potential: f64,
+    /// Work of drivers and non-conservative forces since the first record (J).
+    pub work: f64,
+    /// Their power at this state, `λᵀΦt + P_nc` (W).
+    pub power: f64,
+}
+
+impl EnergySample {
+    /// `kinetic + potential − work`: constant along an exact solution.
+    pub fn balance(&self) -> f64 {
+        self.kinetic + self.potential - self.work
+    }
+}
+
+/// Records energies and integrates the work of drivers and non-conservative forces; all
+/// memory is taken in [`EnergyMeter::new`], recording allocates nothing.
+#[derive(Debug, Clone)]
+pub struct EnergyMeter<K: KktSolver = SchurKkt> {
+    info: &'static MechanismInfo,
+    kin: Kinematics<K>,
+    phi_t: Vec<f64>,
+    qdd: Vec<f64>,
+    lambda: Vec<f64>,
+    /// Time and power of the last record (`None` before the first).
+    last: Option<(f64, f64)>,
+    work: f64,
+}
+
+impl<K: KktSolver> EnergyMeter<K> {
+    /// A meter for `info`'s mechanism, with no records yet.
+    pub fn new(info: &'static MechanismInfo) -> Result<Self, Error> {
+        Ok(EnergyMeter {
+            info,
+            kin: Kinematics::new(info)?,
+            phi_t: vec![0.0; info.n_constraints],
+            qdd: vec![0.0; info.n_coords],
+            lambda: vec![0.0; info.n_constraints],
+            last: None,
+            work: 0.0,
+        })
+    }
+
+    /// Forgets the records: the next one starts the work at zero.
+    pub fn reset(&mut self) {
+        self.last = None;
+        self.work = 0.0;
+    }
+
+    /// Records the state `(q, q̇)` at time `t` (not before the last record's time).
+    ///
+    /// Solves for `q̈` and λ at the state (borrow them with [`EnergyMeter::lambda`] and
+    /// [`EnergyMeter::qdd`], e.g. for [`crate::reactions::joint_wrench`] with
+    /// [`EnergyMeter::phi_q`]), then adds the trapezoid of the power since the last record.
+    pub fn record<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+    ) -> Result<EnergySample, Error> {
+        let info = self.info;
+        check_len("q", info.n_coords, q.len())?;
+        check_len("qd", info.n_coords, qd.len())?;
+        if !t.is_finite() {
+            return Err(Error::InvalidSetting {
+                name: "t",
+                value: t,
+                reason: "must be finite",
+            });
+        }
+        if let Some((t_last, _)) = self.last {
+            if !(t >= t_last) {
+                return Err(Error::InvalidSetting {
+                    name: "t",
+                    value: t,
+                    reason: "energy records must come in time order",
+                });
+            }
+        }
+        // Checks the mechanism against `info` too.
+        self.kin
+            .acceleration(mech, t, q, qd, &mut self.qdd, &mut self.lambda)?;
+        mech.phi_t(q, t, &mut self.phi_t);
+        let constraint_power: f64 = self
+            .lambda
+            .iter()
+            .zip(&self.phi_t)
+            .map(|(l, p)| l * p)
+            .sum();
+        let power = constraint_power + mech.power_nc(q, qd, t);
+        let mut kinetic = 0.0;
+        for ((&r, &c), &m) in info
+            .mass_rows
+            .iter()
+            .zip(info.mass_cols)
+            .zip(self.kin.mass())
+        {
+            kinetic += qd[r as usize] * m * qd[c as usize];
+        }
+        let kinetic = 0.5 * kinetic;
+        let potential = mech.potential(q);
+        if !(kinetic.is_finite() && potential.is_finite() && power.is_finite()) {
+            return Err(Error::NotFinite {
+                time: t,
+                what: "energy or power",
+            });
+        }
+        if let Some((t_last, p_last)) = self.last {
+            self.work += 0.5 * (p_last + power) * (t - t_last);
+        }
+        self.last = Some((t, power));
+        Ok(EnergySample {
+            kinetic,
+            potential,
+            work: self.work,
+            power,
+        })
+    }
+
+    /// Multipliers λ at the last recorded state (`M q̈ + Φqᵀλ = Q`).
+    pub fn lambda(&self) -> &[f64] {
+        &self.lambda
+    }
+
+    /// Accelerations at the last recorded state.
+    pub fn qdd(&self) -> &[f64] {
+        &self.qdd
+    }
+
+    /// Φq nonzeros at the last recorded state.
+    pub fn phi_q(&self) -> &[f64] {
+        self.kin.phi_q()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hht::HhtBuilder;
+    use crate::reactions::driver_effort;
+    use crate::testmodels::{
+        CircleDriver, Pendulum, CIRCLE_C0, CIRCLE_MASS, CIRCLE_V, G, PENDULUM_LENGTH, PENDULUM_MASS,
+    };
+
+    #[test]
+    fn circle_driver_energy_change_equals_driver_work() {
+        let mech = CircleDriver;
+        let info = mech.info();
+        let mut hht = HhtBuilder::new().step(1e-3).build(mech).unwrap();
+        let mut meter = EnergyMeter::<SchurKkt>::new(info).unwrap();
+        let first = meter.record(&mech, hht.t(), hht.q(), hht.qd()).unwrap();
+        let scale = CIRCLE_MASS * G * CIRCLE_C0;
+        let mut worst = 0.0f64;
+        let mut last = first;
+        let lift = info.joint_index("lift").unwrap();
+        for _ in 0..1000 {
+            hht.step().unwrap();
+            last = meter.record(&mech, hht.t(), hht.q(), hht.qd()).unwrap();
+            worst = worst.max((last.balance() - first.balance()).abs());
+            // The constraint power is the driver's: its effort times the rate of its
+            // driven distance, dc/dt = −v.
+            let effort = driver_effort(info, meter.lambda(), lift).unwrap();
+            assert!(
+                (last.power - effort * -CIRCLE_V).abs() < 1e-9 * scale,
+                "{} vs {}",
+                last.power,
+                effort * -CIRCLE_V
+            );
+        }
+        let change = last.kinetic + last.potential - first.kinetic - first.potential;
+        eprintln!(
+            "ΔE = {change:.6} J, W = {:.6} J, max |ΔE − W| = {worst:e} J",
+            last.work
+        );
+        assert!(worst < 1e-7 * scale, "energy balance off by {worst:e} J");
+        // The driver's work is what the balance is made of: without it the mismatch would
+        // be the whole change of energy (the slider is lowered against gravity).
+        assert!(last.work.abs() > 0.2 * scale, "W = {}", last.work);
+        assert!((change - last.work).abs() < 1e-6 * last.work.abs());
+    }
+
+    #[test]
+    fn a_free_pendulum_does_no_work_and_keeps_its_energy() {
+        // No driver, no non-conservative force: W = 0 and T + V is conserved by
+        // trapezoidal HHT to O(h²).
+        let mech = Pendulum::exact();
+        let q0 = [0.0, 0.0, 0.0, 0.5, 0.1, -0.4];
+        let mut hht = HhtBuilder::new()
+            .alpha(0.0)
+            .q0(&q0)
+            .qd0(&[0.0, 0.0, 0.0, 0.0, 0.5, 0.0])
+            .build(mech)
+            .unwrap();
+        let mut meter = EnergyMeter::<SchurKkt>::new(mech.info()).unwrap();
+        let first = meter.record(&mech, hht.t(), hht.q(), hht.qd()).unwrap();
+        let mut worst = 0.0f64;
+        for _ in 0..500 {
+            hht.step().unwrap();
+            let s = meter.record(&mech, hht.t(), hht.q(), hht.qd()).unwrap();
+            assert!(s.work.abs() < 1e-12 && s.power.abs() < 1e-12, "{s:?}");
+            worst = worst.max((s.balance() - first.balance()).abs());
+            // The integrator's own bookkeeping agrees.
+            assert!((s.kinetic + s.potential - hht.energy()).abs() < 1e-12);
+        }
+        let scale = PENDULUM_MASS * G * PENDULUM_LENGTH;
+        assert!(worst < 1e-6 * scale, "relative drift {}", worst / scale);
+    }
+
+    #[test]
+    fn records_out_of_order_or_of_the_wrong_size_are_errors() {
+        let mech = CircleDriver;
+        let mut meter = EnergyMeter::<SchurKkt>::new(mech.info()).unwrap();
+        let (q, qd) = (mech.info().q0, [0.0, -0.125, 0.0, 0.0, 0.0, 0.0]);
+        meter.record(&mech, 0.5, q, &qd).unwrap();
+        assert!(meter.record(&mech, 0.4, q, &qd).is_err());
+        assert!(meter.record(&mech, f64::NAN, q, &qd).is_err());
+        assert!(meter.record(&mech, 0.6, &q[..5], &qd).is_err());
+        meter.reset();
+        assert_eq!(meter.record(&mech, 0.0, q, &qd).unwrap().work, 0.0);
+    }
+}
