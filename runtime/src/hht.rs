@@ -154,7 +154,9 @@ impl HhtBuilder {
     }
 
     /// Initial velocities, projected onto the consistent ones in the kinetic-energy norm.
-    /// Default: the consistent velocity of least kinetic energy.
+    /// Default: the mechanism's `info.qd0` (the file's velocities, zero where none was
+    /// given), projected the same way; projecting zeros gives the consistent velocity of
+    /// least kinetic energy.
     pub fn qd0(mut self, qd0: &[f64]) -> Self {
         self.qd0 = Some(qd0.to_vec());
         self
@@ -250,15 +252,20 @@ impl HhtBuilder {
             }
             None => info.q0.to_vec(),
         };
-        let mut qd = vec![0.0; n];
-        let velocity = match &self.qd0 {
+        let qd0 = match &self.qd0 {
             Some(v) => {
                 check_len("qd0", n, v.len())?;
-                qd.copy_from_slice(v);
-                InitialVelocity::ProjectGiven
+                v.as_slice()
             }
-            None => InitialVelocity::LeastKineticEnergy,
+            None => {
+                check_len("info.qd0", n, info.qd0.len())?;
+                info.qd0
+            }
         };
+        let mut qd = qd0.to_vec();
+        // Given velocities are projected; for all-zero ones that is the same solve as
+        // least kinetic energy (the right-hand side M·0 is 0).
+        let velocity = InitialVelocity::ProjectGiven;
         let mut qdd = vec![0.0; n];
         let mut lambda = vec![0.0; m];
         let mut kin = Kinematics::<K>::with_settings(info, self.kinematics)?;

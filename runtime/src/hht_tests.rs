@@ -4,8 +4,8 @@
 use super::*;
 use crate::kkt::DenseKkt;
 use crate::testmodels::{
-    CircleDriver, Pendulum, CIRCLE_C0, CIRCLE_D, CIRCLE_V, G, PENDULUM_INERTIA, PENDULUM_LENGTH,
-    PENDULUM_MASS,
+    CircleDriver, Pendulum, TwoBallHinge, CIRCLE_C0, CIRCLE_D, CIRCLE_V, G, PENDULUM_INERTIA,
+    PENDULUM_LENGTH, PENDULUM_MASS,
 };
 
 /// Pendulum swung by `phi` about Z in the X–Y plane, at rest (exactly consistent).
@@ -327,4 +327,76 @@ fn bad_settings_are_rejected() {
     assert!(hht.advance_to(f64::INFINITY).is_err());
     // Starting from an impossible position is a kinematic failure, not a panic.
     assert!(HhtBuilder::new().t0(3.0).build(CircleDriver).is_err());
+}
+
+#[test]
+fn given_initial_velocities_are_projected_in_the_kinetic_energy_norm() {
+    // The hinge at rest, hanging: the only admissible velocity is the swing about Z,
+    // v₁ = (L, 0, 0, 0, 0, 1) per unit γ̇, and M = diag(m, m, m, I) there. The projection of
+    // a given q̇* is v₁ (v₁ᵀ M q̇*) / (v₁ᵀ M v₁).
+    let given = [0.3, -0.2, 0.5, 1.3, -0.8, 0.6];
+    let (m, i, l) = (PENDULUM_MASS, PENDULUM_INERTIA, PENDULUM_LENGTH);
+    let s = (m * l * given[0] + i[2] * given[5]) / (m * l * l + i[2]);
+    let expect = [l * s, 0.0, 0.0, 0.0, 0.0, s];
+    let hht = HhtBuilder::new()
+        .qd0(&given)
+        .build(TwoBallHinge::new(0.0))
+        .unwrap();
+    for (a, b) in hht.qd().iter().zip(&expect) {
+        assert!((a - b).abs() < 1e-12, "{:?} vs {expect:?}", hht.qd());
+    }
+    // Without qd0 the mechanism's own (zero) qd0 is projected: at rest.
+    let hht = HhtBuilder::new().build(TwoBallHinge::new(0.0)).unwrap();
+    assert!(hht.qd().iter().all(|v| v.abs() < 1e-14), "{:?}", hht.qd());
+}
+
+#[test]
+fn a_hinge_with_a_redundant_row_swings_like_the_compound_pendulum() {
+    // Two ball joints on the Z axis make a hinge: six rows of rank five. The redundant
+    // row is dropped (λ = 0), Newton converges as for the pendulum, every row holds, and
+    // the period is the compound pendulum's about Z.
+    let phi0 = 0.01;
+    let ip = PENDULUM_INERTIA[2] + PENDULUM_MASS * PENDULUM_LENGTH * PENDULUM_LENGTH;
+    let period = 2.0
+        * std::f64::consts::PI
+        * (ip / (PENDULUM_MASS * G * PENDULUM_LENGTH)).sqrt()
+        * (1.0 + phi0 * phi0 / 16.0);
+    let mech = TwoBallHinge::new(0.0);
+    let mut a = HhtBuilder::new().q0(&planar_q0(phi0)).build(mech).unwrap();
+    let mut b = HhtBuilder::new()
+        .q0(&planar_q0(phi0))
+        .build_with_solver::<_, DenseKkt>(mech)
+        .unwrap();
+    let mut crossings = Vec::new();
+    let (mut t_prev, mut x_prev) = (a.t(), a.q()[0]);
+    let mut phi = [0.0; 6];
+    for k in 1..=(2.5 * period / 1e-3) as usize {
+        a.advance_to(k as f64 * 1e-3).unwrap();
+        let x = a.q()[0];
+        if x_prev < 0.0 && x >= 0.0 {
+            crossings.push(t_prev + (a.t() - t_prev) * (-x_prev) / (x - x_prev));
+        }
+        (t_prev, x_prev) = (a.t(), x);
+        assert_eq!(a.lambda()[5], 0.0);
+        mech.phi(a.q(), a.t(), &mut phi);
+        assert!(inf_norm(&phi) <= 1e-10, "{phi:?}");
+    }
+    let measured = (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
+    assert!(
+        (measured - period).abs() < 1e-5 * period,
+        "period {measured} vs {period}"
+    );
+    let s = a.stats();
+    assert_eq!(s.rejected_steps, 0, "{s:?}");
+    assert!(s.newton_iterations <= 3 * s.steps, "{s:?}");
+    // The dense reference agrees.
+    b.advance_to(a.t()).unwrap();
+    for (x, y) in a.q().iter().zip(b.q()) {
+        assert!((x - y).abs() < 1e-10, "{x} vs {y}");
+    }
+    // And a misaligned hinge does not start: its redundant row contradicts the others.
+    match HhtBuilder::new().build(TwoBallHinge::new(0.01)) {
+        Err(Error::InconsistentConstraints { rows, .. }) => assert_eq!(rows[0].row, 5),
+        other => panic!("expected an inconsistency, got {:?}", other.map(|_| ())),
+    }
 }
