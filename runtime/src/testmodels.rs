@@ -7,6 +7,8 @@
 //!   paper (diagonal, constant mass) or exact (configuration-dependent mass) formulation.
 //! - [`CircleDriver`]: one body whose centre is held at `X = d` and driven to distance
 //!   `c(t) = c0 − v·t` from the origin; the driver becomes impossible at `t = (c0 − d)/v`.
+//! - [`QuaternionPendulum`]: the exact pendulum with Euler parameters and its
+//!   normalization row.
 //! - [`TwoBallHinge`]: the exact pendulum on a hinge made of two ball joints, a redundant
 //!   constraint row (consistent, or contradicting the other joint by a misalignment).
 
@@ -625,6 +627,228 @@ impl Mechanism for TwoBallHinge {
     }
 }
 
+// ---------------------------------------------------------------------------------------
+// Quaternion pendulum
+
+/// The augmentation `c` of the quaternion mass block `4GᵀJG + c·e eᵀ` (kg·m²): `4GᵀJG` is
+/// singular (`G e = 0`), and the block Cholesky needs a positive definite block. Adding
+/// `c·e(eᵀë + ėᵀė)`, which vanishes on the unit sphere, moves only the normalization
+/// multiplier; `c = 4·mean(J)` keeps the block's eigenvalues (`4J_i` and `c`) alike.
+pub const QUAT_AUGMENT: f64 =
+    4.0 * (PENDULUM_INERTIA[0] + PENDULUM_INERTIA[1] + PENDULUM_INERTIA[2]) / 3.0;
+
+const QUAT_PHIQ_ROWS: [u32; 19] = [0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 3, 3, 3, 3];
+const QUAT_PHIQ_COLS: [u32; 19] = [0, 3, 4, 5, 6, 1, 3, 4, 5, 6, 2, 3, 4, 5, 6, 3, 4, 5, 6];
+const QUAT_MASS_ROWS: [u32; 19] = [0, 1, 2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 6, 6, 6, 6];
+const QUAT_MASS_COLS: [u32; 19] = [0, 1, 2, 3, 4, 5, 6, 3, 4, 5, 6, 3, 4, 5, 6, 3, 4, 5, 6];
+
+static QUAT_PENDULUM: MechanismInfo = MechanismInfo {
+    name: "pendulum_quaternion",
+    n_coords: 7,
+    n_constraints: 4,
+    formulation: Formulation::Exact,
+    gravity: [0.0, -G, 0.0],
+    phi_q_rows: &QUAT_PHIQ_ROWS,
+    phi_q_cols: &QUAT_PHIQ_COLS,
+    mass_rows: &QUAT_MASS_ROWS,
+    mass_cols: &QUAT_MASS_COLS,
+    mass_is_constant: false,
+    bodies: &[BodyInfo {
+        name: "bob",
+        coord_offset: 0,
+        rotation: Rotation::Quaternion,
+        mass: PENDULUM_MASS,
+        inertia: PENDULUM_INERTIA,
+    }],
+    joints: &[
+        JointInfo {
+            name: "pivot",
+            kind: JointKind::Spherical,
+            body1: Some(0),
+            body2: None,
+            row_start: 0,
+            rows: 3,
+            point1: [0.0, PENDULUM_LENGTH, 0.0],
+            effort_sign: 0.0,
+            effort_unit: "",
+        },
+        JointInfo {
+            name: "bob.norm",
+            kind: JointKind::Normalization,
+            body1: Some(0),
+            body2: None,
+            row_start: 3,
+            rows: 1,
+            point1: [0.0; 3],
+            effort_sign: 0.0,
+            effort_unit: "",
+        },
+    ],
+    coord_names: &[
+        "bob.x", "bob.y", "bob.z", "bob.e0", "bob.e1", "bob.e2", "bob.e3",
+    ],
+    row_names: &["pivot.x", "pivot.y", "pivot.z", "bob.norm"],
+    q0: &[0.0, -PENDULUM_LENGTH, 0.0, 1.0, 0.0, 0.0, 0.0],
+    qd0: &[0.0; 7],
+    redundant_rows: &[],
+};
+
+/// The exact pendulum with Euler parameters: body point `(0, L, 0)` held at the origin,
+/// rows `r + A(e)s` and the normalization row `eᵀe − 1`; mass and forces from
+/// `T = ½m|ṙ|² + ½ω'ᵀJω' + ½c(eᵀė)²`, `ω' = 2G(e)ė` ([`QUAT_AUGMENT`]).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct QuaternionPendulum;
+
+/// `G(e)` of the body-frame angular velocity `ω' = 2G(e)ė`, row-major.
+pub fn quaternion_g(e: &[f64]) -> [[f64; 4]; 3] {
+    [
+        [-e[1], e[0], e[3], -e[2]],
+        [-e[2], -e[3], e[0], e[1]],
+        [-e[3], e[2], -e[1], e[0]],
+    ]
+}
+
+/// `(2e0² − 1)s + 2ē(ēᵀs) + 2e0(ē × s)` with the constant term scaled by `one` (1 for
+/// `A(e)s`; 0 for its quadratic part).
+fn quaternion_arm(e: &[f64], s: [f64; 3], one: f64) -> [f64; 3] {
+    let ev = [e[1], e[2], e[3]];
+    let es = ev[0] * s[0] + ev[1] * s[1] + ev[2] * s[2];
+    let c = cross(ev, s);
+    let k = 2.0 * e[0] * e[0] - one;
+    [
+        k * s[0] + 2.0 * ev[0] * es + 2.0 * e[0] * c[0],
+        k * s[1] + 2.0 * ev[1] * es + 2.0 * e[0] * c[1],
+        k * s[2] + 2.0 * ev[2] * es + 2.0 * e[0] * c[2],
+    ]
+}
+
+impl QuaternionPendulum {
+    /// Kinetic energy `T` from its definition (with `ω' = 2G(e)ė`), for tests.
+    pub fn kinetic_energy(q: &[f64], qd: &[f64]) -> f64 {
+        let g = quaternion_g(&q[3..7]);
+        let ed = &qd[3..7];
+        let w: Vec<f64> = g
+            .iter()
+            .map(|row| 2.0 * row.iter().zip(ed).map(|(a, b)| a * b).sum::<f64>())
+            .collect();
+        let i = PENDULUM_INERTIA;
+        let ee: f64 = q[3..7].iter().zip(ed).map(|(a, b)| a * b).sum();
+        0.5 * PENDULUM_MASS * (qd[0] * qd[0] + qd[1] * qd[1] + qd[2] * qd[2])
+            + 0.5 * (i[0] * w[0] * w[0] + i[1] * w[1] * w[1] + i[2] * w[2] * w[2])
+            + 0.5 * QUAT_AUGMENT * ee * ee
+    }
+}
+
+impl Mechanism for QuaternionPendulum {
+    fn info(&self) -> &'static MechanismInfo {
+        &QUAT_PENDULUM
+    }
+
+    fn phi(&self, q: &[f64], _t: f64, out: &mut [f64]) {
+        let u = quaternion_arm(&q[3..7], [0.0, PENDULUM_LENGTH, 0.0], 1.0);
+        for k in 0..3 {
+            out[k] = q[k] + u[k];
+        }
+        out[3] = q[3..7].iter().map(|x| x * x).sum::<f64>() - 1.0;
+    }
+
+    fn phi_q(&self, q: &[f64], _t: f64, out: &mut [f64]) {
+        // ∂(A s)/∂e0 = 4e0 s + 2 ē × s;  ∂(A s)/∂ē = 2((ēᵀs)I + ē sᵀ) − 2e0 [s×].
+        let e = &q[3..7];
+        let s = [0.0, PENDULUM_LENGTH, 0.0];
+        let ev = [e[1], e[2], e[3]];
+        let es = ev[0] * s[0] + ev[1] * s[1] + ev[2] * s[2];
+        let c = cross(ev, s);
+        let mut d = [[0.0; 4]; 3];
+        for i in 0..3 {
+            d[i][0] = 4.0 * e[0] * s[i] + 2.0 * c[i];
+            for k in 0..3 {
+                let ident = if i == k { es } else { 0.0 };
+                // [s×][i][k]: the i-th component of s × e_k.
+                let mut unit = [0.0; 3];
+                unit[k] = 1.0;
+                let sx = cross(s, unit)[i];
+                d[i][1 + k] = 2.0 * (ident + ev[i] * s[k]) - 2.0 * e[0] * sx;
+            }
+        }
+        for i in 0..3 {
+            out[5 * i] = 1.0;
+            out[5 * i + 1..5 * i + 5].copy_from_slice(&d[i]);
+        }
+        for k in 0..4 {
+            out[15 + k] = 2.0 * e[k];
+        }
+    }
+
+    fn phi_t(&self, _q: &[f64], _t: f64, out: &mut [f64]) {
+        out.fill(0.0);
+    }
+
+    fn gamma(&self, _q: &[f64], qd: &[f64], _t: f64, out: &mut [f64]) {
+        // A(e)s is quadratic in e: at ë = 0 its second derivative is twice its quadratic
+        // part at ė.
+        let u = quaternion_arm(&qd[3..7], [0.0, PENDULUM_LENGTH, 0.0], 0.0);
+        for k in 0..3 {
+            out[k] = -2.0 * u[k];
+        }
+        out[3] = -2.0 * qd[3..7].iter().map(|x| x * x).sum::<f64>();
+    }
+
+    fn mass(&self, q: &[f64], out: &mut [f64]) {
+        let m = PENDULUM_MASS;
+        let i = PENDULUM_INERTIA;
+        let e = &q[3..7];
+        let g = quaternion_g(e);
+        out[..3].copy_from_slice(&[m, m, m]);
+        for r in 0..4 {
+            for c in 0..4 {
+                let rot: f64 = (0..3).map(|k| 4.0 * g[k][r] * i[k] * g[k][c]).sum();
+                out[3 + 4 * r + c] = rot + QUAT_AUGMENT * e[r] * e[c];
+            }
+        }
+    }
+
+    fn force(&self, q: &[f64], qd: &[f64], _t: f64, out: &mut [f64]) {
+        // Lagrange: Q_v = 8 G(ė)ᵀ J G(ė) e − c e (ėᵀė).
+        out.fill(0.0);
+        out[1] = -PENDULUM_MASS * G;
+        let (e, ed) = (&q[3..7], &qd[3..7]);
+        let gd = quaternion_g(ed);
+        let i = PENDULUM_INERTIA;
+        let gde: Vec<f64> = gd
+            .iter()
+            .map(|row| row.iter().zip(e).map(|(a, b)| a * b).sum())
+            .collect();
+        let edd: f64 = ed.iter().map(|x| x * x).sum();
+        for r in 0..4 {
+            let v: f64 = (0..3).map(|k| 8.0 * gd[k][r] * i[k] * gde[k]).sum();
+            out[3 + r] = v - QUAT_AUGMENT * e[r] * edd;
+        }
+    }
+
+    fn potential(&self, q: &[f64]) -> f64 {
+        PENDULUM_MASS * G * q[1]
+    }
+
+    fn power_nc(&self, _q: &[f64], _qd: &[f64], _t: f64) -> f64 {
+        0.0
+    }
+
+    fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+        self.phi(q, t, out.phi);
+        self.phi_q(q, t, out.phi_q);
+        self.mass(q, out.mass);
+        self.force(q, qd, t, out.force);
+    }
+
+    fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
+        self.phi(q, t, out.phi);
+        self.phi_q(q, t, out.phi_q);
+        self.phi_t(q, t, out.phi_t);
+        self.gamma(q, qd, t, out.gamma);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     //! The fixtures' hand-written derivatives against finite differences of their own Φ.
@@ -768,6 +992,75 @@ mod tests {
                 qv[k],
                 dtdq - ddt
             );
+        }
+    }
+
+    const Q7: [f64; 7] = [0.1, -0.3, 0.2, 0.7, -0.4, 0.5, 0.3];
+    const QD7: [f64; 7] = [0.3, -0.2, 0.5, 1.3, -0.8, 0.6, -0.4];
+
+    #[test]
+    fn quaternion_pendulum_derivatives_match_finite_differences() {
+        check_derivatives(&QuaternionPendulum, &Q7, &QD7, 0.3);
+    }
+
+    #[test]
+    fn quaternion_mass_and_forces_follow_from_the_kinetic_energy() {
+        // Off the unit sphere on purpose: the formulas must hold for any e.
+        let mech = QuaternionPendulum;
+        let info = mech.info();
+        let t_of = |q: &[f64], qd: &[f64]| QuaternionPendulum::kinetic_energy(q, qd);
+        let mut mass = vec![0.0; info.mass_nnz()];
+        mech.mass(&Q7, &mut mass);
+        let mut t2 = 0.0;
+        for e in 0..mass.len() {
+            t2 += mass[e] * QD7[info.mass_rows[e] as usize] * QD7[info.mass_cols[e] as usize];
+        }
+        assert!((0.5 * t2 - t_of(&Q7, &QD7)).abs() < 1e-12);
+        let mut qv = [0.0; 7];
+        mech.force(&Q7, &QD7, 0.0, &mut qv);
+        qv[1] += PENDULUM_MASS * G;
+        let h = 1e-5;
+        for k in 0..7 {
+            let (mut qp, mut qm) = (Q7, Q7);
+            qp[k] += h;
+            qm[k] -= h;
+            let dtdq = (t_of(&qp, &QD7) - t_of(&qm, &QD7)) / (2.0 * h);
+            let p_at = |s: f64| {
+                let qs: Vec<f64> = Q7.iter().zip(&QD7).map(|(a, b)| a + s * b).collect();
+                let (mut vp, mut vm) = (QD7, QD7);
+                vp[k] += h;
+                vm[k] -= h;
+                (t_of(&qs, &vp) - t_of(&qs, &vm)) / (2.0 * h)
+            };
+            let ddt = (p_at(h) - p_at(-h)) / (2.0 * h);
+            assert!(
+                (qv[k] - (dtdq - ddt)).abs() < 1e-5,
+                "Q_v[{k}] {} vs {}",
+                qv[k],
+                dtdq - ddt
+            );
+        }
+    }
+
+    #[test]
+    fn quaternion_body_rate_is_the_rotated_global_rate() {
+        // On the unit sphere with eᵀė = 0: ω' = 2Gė must equal Aᵀω, ω = 2Eė from `pose`.
+        let info = QuaternionPendulum.info();
+        let b = &info.bodies[0];
+        let mut q = Q7;
+        let n = q[3..].iter().map(|x| x * x).sum::<f64>().sqrt();
+        q[3..].iter_mut().for_each(|x| *x /= n);
+        let mut qd = QD7;
+        let along: f64 = q[3..].iter().zip(&qd[3..]).map(|(a, b)| a * b).sum();
+        for k in 3..7 {
+            qd[k] -= along * q[k];
+        }
+        let a = crate::pose::rotation_matrix(b, &q).unwrap();
+        let w_body = a.transpose() * crate::pose::angular_velocity(b, &q, &qd).unwrap();
+        let g = quaternion_g(&q[3..]);
+        for k in 0..3 {
+            let w: f64 = 2.0 * (0..4).map(|c| g[k][c] * qd[3 + c]).sum::<f64>();
+            assert!((w - w_body[k]).abs() < 1e-14, "{w} vs {}", w_body[k]);
         }
     }
 }
