@@ -49,6 +49,7 @@ pub struct HhtBuilder {
     abs_tol_lambda: f64,
     phi_tol: f64,
     reuse_factorization: bool,
+    project_velocities: bool,
     t0: f64,
     q0: Option<Vec<f64>>,
     qd0: Option<Vec<f64>>,
@@ -68,6 +69,7 @@ impl Default for HhtBuilder {
             abs_tol_lambda: 1e-6,
             phi_tol: 1e-10,
             reuse_factorization: false,
+            project_velocities: false,
             t0: 0.0,
             q0: None,
             qd0: None,
@@ -138,6 +140,15 @@ impl HhtBuilder {
     /// factor once per step). The matrix does not depend on `h`, only on `q`.
     pub fn reuse_factorization(mut self, reuse: bool) -> Self {
         self.reuse_factorization = reuse;
+        self
+    }
+
+    /// Project the velocities onto Φq q̇ + Φt = 0 after every accepted step (a mass-weighted
+    /// correction through the step's own factorization; default off). Index-3 HHT holds
+    /// Φ = 0 but lets the velocity residual drift; on a fast-turning quaternion body at
+    /// α = 0 that drift feeds back into the motion and grows until the step fails.
+    pub fn project_velocities(mut self, on: bool) -> Self {
+        self.project_velocities = on;
         self
     }
 
@@ -529,6 +540,32 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         self.stats.evaluations += 1;
     }
 
+    /// `q̇ ← q̇ + Δ` with `[cM Φqᵀ; Φq 0][Δ; μ] = [0; −(Φq q̇ + Φt)]`, through the last
+    /// factorization (at, or one Newton iteration from, the accepted state).
+    fn project_velocity(&mut self, t: f64) -> Result<(), Error> {
+        self.mech.phi_t(&self.q, t, &mut self.res2);
+        for ((&row, &col), &v) in self
+            .info
+            .phi_q_rows
+            .iter()
+            .zip(self.info.phi_q_cols)
+            .zip(&self.phi_q)
+        {
+            self.res2[row as usize] += v * self.qd[col as usize];
+        }
+        for r in self.res2.iter_mut() {
+            *r = -*r;
+        }
+        self.res1.fill(0.0);
+        self.kkt
+            .solve(&self.res1, &self.res2, &mut self.da, &mut self.dl)
+            .map_err(|e| e.to_error(self.info, t))?;
+        for (v, d) in self.qd.iter_mut().zip(&self.da) {
+            *v += d;
+        }
+        Ok(())
+    }
+
     /// `r_prev = Φqᵀλ − Q` from the evaluation buffers and `self.lambda`.
     fn store_generalized_reaction(&mut self) {
         for (r, &f) in self.r_prev.iter_mut().zip(&self.force) {
@@ -656,6 +693,9 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         self.h_prev = h;
         std::mem::swap(&mut self.q, &mut self.q1);
         std::mem::swap(&mut self.qd, &mut self.qd1);
+        if self.settings.project_velocities {
+            self.project_velocity(t1)?;
+        }
         // The accepted values become current, the current ones the predictor's history.
         std::mem::swap(&mut self.qdd_prev, &mut self.qdd1);
         std::mem::swap(&mut self.qdd, &mut self.qdd_prev);
