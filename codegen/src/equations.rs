@@ -491,33 +491,6 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]
             }
             force[off + i] = f;
         }
-        if let Some((_, e)) = &reg {
-            // The velocity terms of a quaternion body, −4G(ė)ᵀJω', contain −2(eᵀė)p: zero
-            // for the exact motion, but index-3 integration leaves eᵀė ≠ 0 (only eᵀe = 1 is
-            // enforced), and this term then pumps energy in or out until the motion blows
-            // up (measured: the conical pendulum at α = 0, after ~9 s at any step size).
-            // Evaluating them at the tangential velocity ė − e(eᵀė) changes nothing on the
-            // constraint manifold and removes that feedback.
-            let ed = &qd[3..];
-            let radial = a.dot3([e[1], e[2], e[3]], [ed[1], ed[2], ed[3]]);
-            let e0ed0 = a.mul(e[0], ed[0]);
-            let radial = a.add(radial, e0ed0);
-            let tangential: Vec<Id> = (0..4)
-                .map(|k| {
-                    let p = a.mul(e[k], radial);
-                    a.sub(ed[k], p)
-                })
-                .collect();
-            let first = off as u32 + 3;
-            let rot: Vec<Id> = force[off + 3..off + nb].to_vec();
-            let subst = a.substitute(&rot, &|v| match v {
-                Var::Qd(k) if (first..first + 4).contains(&k) => {
-                    Some(tangential[(k - first) as usize])
-                }
-                _ => None,
-            });
-            force[off + 3..off + nb].copy_from_slice(&subst);
-        }
         for i in 0..nb {
             force[off + i] = a.add(force[off + i], loads[off + i]);
         }

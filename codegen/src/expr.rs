@@ -447,31 +447,6 @@ impl Arena {
         roots.iter().map(|r| d[r.index()]).collect()
     }
 
-    /// Every root with variables replaced: `with(v)` is the expression put in place of `v`
-    /// (`None` keeps it). The rebuilt nodes are simplified like any other.
-    pub fn substitute(&mut self, roots: &[Id], with: &dyn Fn(Var) -> Option<Id>) -> Vec<Id> {
-        let mark = self.reachable(roots);
-        let mut s: Vec<Id> = (0..mark.len() as u32).map(Id).collect();
-        for i in 0..mark.len() {
-            if !mark[i] {
-                continue;
-            }
-            let m = |x: Id| s[x.index()];
-            s[i] = match self.nodes[i] {
-                Node::Const(_) => Id(i as u32),
-                Node::Var(v) => with(v).unwrap_or(Id(i as u32)),
-                Node::Add(a, b) => self.add(m(a), m(b)),
-                Node::Mul(a, b) => self.mul(m(a), m(b)),
-                Node::Neg(a) => self.neg(m(a)),
-                Node::Recip(a) => self.recip(m(a)),
-                Node::Powi(a, n) => self.powi(m(a), n),
-                Node::Atan2(y, x) => self.atan2(m(y), m(x)),
-                Node::Call(f, a) => self.call(f, m(a)),
-            };
-        }
-        roots.iter().map(|r| s[r.index()]).collect()
-    }
-
     /// f'(a) for `node = f(a)`.
     fn func_derivative(&mut self, f: Func, a: Id, node: Id) -> Id {
         let one = self.constant(1.0);
