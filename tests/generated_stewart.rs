@@ -1,5 +1,5 @@
 //! The generated Stewart platform against independent references: finite differences of
-//! the generated Φ, a hand-written kinetic energy (paper-scenario.md's formula, nalgebra),
+//! the generated Φ, a hand-written kinetic energy (docs/paper-scenario.md's formula, nalgebra),
 //! the paper's constants, and the committed file against fresh generation.
 
 mod common;
@@ -48,7 +48,7 @@ fn initial_configuration_is_consistent() {
     let phi = phi_at(st::Q0.as_slice(), 0.0);
     let max = phi.iter().fold(0.0f64, |a, b| a.max(b.abs()));
     assert!(max <= 1e-12, "max |Φ(q0, 0)| = {max:e}");
-    // paper-scenario.md: the platform starts at Y = 0.3466575, every leg 0.400040 m long,
+    // docs/paper-scenario.md: the platform starts at Y = 0.3466575, every leg 0.400040 m long,
     // and the drivers start at c_i0 = 0.150040 m.
     assert_eq!(st::Q0[1], 0.3466575);
     let info = Exact.info();
@@ -124,7 +124,7 @@ fn gamma_matches_second_difference_along_the_motion() {
     assert!(worst <= 1e-7, "max relative |γ + Φ̈| = {worst:e}");
 }
 
-/// Kinetic energy written by hand from paper-scenario.md: ½m|v|² + ½ω_bᵀIω_b with
+/// Kinetic energy written by hand from docs/paper-scenario.md: ½m|v|² + ½ω_bᵀIω_b with
 /// ω_b = Aᵀ(γ̇ e_z + β̇ Rz(γ) e_y + θ̇ Rz(γ)Ry(β) e_x).
 fn kinetic_energy(q: &[f64], qd: &[f64]) -> f64 {
     let info = Exact.info();
@@ -239,7 +239,7 @@ fn paper_formulation_is_the_papers_diagonal() {
     let mut m = vec![0.0; info.mass_nnz()];
     Paper.mass(info.q0, &mut m);
     let d = dense_mass(info, &m);
-    // paper Table 3 and the leg table of paper-scenario.md
+    // paper Table 3 and the leg table of docs/paper-scenario.md
     let platform = [1.79, 1.79, 1.79, 0.0326, 0.065, 0.0326];
     let piston = [0.20, 0.20, 0.20, 1.046667e-3, 1.0e-5, 1.046667e-3];
     let cylinder = [0.30, 0.30, 0.30, 1.579375e-3, 3.375e-5, 1.579375e-3];

@@ -9,7 +9,7 @@ use symbody::scenario::{simulate, Options, Run, ScenarioError};
 use symbody_mechanisms::stewart_6_6::{Exact, Paper};
 use symbody_runtime::{Error, Formulation, Kinematics, Mechanism};
 
-// paper-scenario.md, Table 1 and Table 2, typed in independently of the mechanism file.
+// docs/paper-scenario.md, Table 1 and Table 2, typed in independently of the mechanism file.
 const BASE_DEG: [f64; 6] = [10.5, 109.5, 130.5, 229.5, 250.5, 349.5];
 const PLATFORM_DEG: [f64; 6] = [49.5, 70.5, 169.5, 190.5, 289.5, 310.5];
 const AMPLITUDE: [f64; 6] = [0.02, -0.06, 0.02, -0.02, 0.08, -0.02];

@@ -1,5 +1,5 @@
 //! The generated Stewart platform against a second, hand-written formulation of its
-//! constraints (`benches/reference`, from paper-scenario.md) differentiated by num-dual:
+//! constraints (`benches/reference`, from docs/paper-scenario.md) differentiated by num-dual:
 //! Φ, Φq (values and sparsity pattern) and γ must agree at random states.
 
 mod common;

@@ -1,5 +1,5 @@
 //! Hand-written reference for the Stewart platform's constraint equations Φ(q, t), written
-//! once from `shared/paper-scenario.md` (not from the generator), generic over num-dual's
+//! once from `docs/paper-scenario.md` (not from the generator), generic over num-dual's
 //! scalars so one formulation yields Φ (`f64`), Φq (`Dual64`, `DualSVec64`) and γ (`Dual2_64`).
 //!
 //! Shared by `benches/kernels.rs` (the AD baselines) and `tests/reference_model.rs` (the

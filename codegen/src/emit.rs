@@ -1,5 +1,5 @@
 //! Lowering of DAG outputs to straight-line Rust: outputs are grouped into chunks of a few
-//! hundred statements, each an `#[inline(never)]` function (DESIGN.md decision 5); nodes
+//! hundred statements, each an `#[inline(never)]` function (docs/design.md, decision 5); nodes
 //! needed by more than one chunk are computed once into a stack array shared by all chunks.
 
 use crate::expr::{Arena, Id, Node, Var};
@@ -10,7 +10,7 @@ use quote::quote;
 /// shared array, small enough that rustc compiles each function quickly. Measured on the
 /// Stewart model (callgrind, criterion): 600 cuts γ by ≈ 20 % in instructions and time
 /// against 300; 1 000–2 000 cut instructions further but made `eval_kinematics` slower in
-/// time (larger frames), and DESIGN.md records rustc crashing near 3 000.
+/// time (larger frames), and rustc was seen crashing near 3 000 (docs/design.md, decision 5).
 pub const CHUNK_STATEMENTS: usize = 600;
 
 /// An input of the generated function.

@@ -442,7 +442,7 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]
         // A quaternion body's 4GᵀJG has no kinetic energy along ė ∥ e (rank 3). Adding
         // k·e eᵀ to M and −k·e(ėᵀė) to Q changes nothing on the motion, because the
         // normalization row gives eᵀë = −ėᵀė, and makes the block positive definite
-        // (DESIGN.md decision 15). k = 4·mean(J) matches the other eigenvalues 4·J_i.
+        // (docs/design.md, decision 15). k = 4·mean(J) matches the other eigenvalues 4·J_i.
         let reg = (body.rotation == Rotation::Quaternion).then(|| {
             let k = 4.0 * (body.inertia[0] + body.inertia[1] + body.inertia[2]) / 3.0;
             (a.constant(k), bodies[b].rot_coords.clone())

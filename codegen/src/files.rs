@@ -76,7 +76,7 @@ pub fn generated_module(
 }
 
 /// The `mod.rs` listing every generated module and the registry of mechanisms
-/// (DESIGN.md decision 19): name, formulations and a constructor for each.
+/// (docs/design.md, decision 19): name, formulations and a constructor for each.
 pub fn generated_index(mechanisms: &[(String, Vec<Formulation>)]) -> (PathBuf, String) {
     let mut s = String::from(
         "//! Generated mechanisms, one module each, and their registry. Regenerate with\n//! `cargo xtask generate --all`.\n\n",

@@ -1,4 +1,4 @@
-//! Applied loads as generalized forces (DESIGN.md decision 20): gravity, spring–damper–
+//! Applied loads as generalized forces (docs/design.md, decision 20): gravity, spring–damper–
 //! actuators, torsion springs, applied forces and torques. Each load is reduced to a
 //! scalar `s(q)` with a force along it (Q += f ∂s/∂q), a force at a point (Q += J_pᵀF) or a
 //! torque (Q += (∂ω/∂q̇)ᵀτ); conservative parts add to the potential, the others to the

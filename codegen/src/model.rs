@@ -21,7 +21,7 @@ use std::ops::Range;
 
 pub use values::euler_angles_of;
 
-/// Dynamics formulation (DESIGN.md decision 7).
+/// Dynamics formulation (docs/design.md, decision 7).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Formulation {
     /// Diagonal `[m, m, m, Ixx, Iyy, Izz]` against Euler-angle accelerations (Euler bodies only).
@@ -39,7 +39,7 @@ impl Formulation {
     }
 }
 
-/// Rotation coordinates of a body (DESIGN.md decision 15).
+/// Rotation coordinates of a body (docs/design.md, decision 15).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Rotation {
     /// `[θ, β, γ]` of `Rz(γ)·Ry(β)·Rx(θ)`.
@@ -117,7 +117,7 @@ pub struct Frame {
     pub z: [f64; 3],
 }
 
-/// Joint types (DESIGN.md decision 16): compositions of the spherical, dot-1, dot-2 and
+/// Joint types (docs/design.md, decision 16): compositions of the spherical, dot-1, dot-2 and
 /// distance primitives on the two frames.
 #[derive(Debug, Clone, PartialEq)]
 pub enum JointKind {
@@ -191,7 +191,7 @@ impl Joint {
     }
 }
 
-/// What a driver prescribes (DESIGN.md decision 17).
+/// What a driver prescribes (docs/design.md, decision 17).
 #[derive(Debug, Clone, PartialEq)]
 pub enum DriverTarget {
     /// The angle of joint `0` about its axis, from `x1` to `x2`: row `sin(f − θ)`.
@@ -228,7 +228,7 @@ impl Driver {
     }
 }
 
-/// Applied force elements (DESIGN.md decision 20).
+/// Applied force elements (docs/design.md, decision 20).
 #[derive(Debug, Clone)]
 pub enum ForceKind {
     /// Spring–damper–actuator between two points: tension `k(ℓ − ℓ0) + c ℓ̇ − f(t)`.

@@ -1,4 +1,4 @@
-//! Constraint primitives on joint frames (DESIGN.md decision 16), one derivation each, and
+//! Constraint primitives on joint frames (docs/design.md, decision 16), one derivation each, and
 //! the joints and drivers composed from them. Every joint's rows are built here.
 
 use crate::equations::{BodySym, M3s, V3s};

@@ -1,6 +1,6 @@
 //! Mechanisms generated from the files in `mechanisms/`: each module implements
 //! `symbody_runtime::Mechanism` once per formulation (`Exact`, `Paper`), and [`REGISTRY`]
-//! lists them all by name (DESIGN.md decision 19), so programs dispatch on a name instead
+//! lists them all by name (docs/design.md, decision 19), so programs dispatch on a name instead
 //! of naming modules.
 //!
 //! The modules and the registry are committed; `cargo xtask generate --all` regenerates them.

@@ -1,5 +1,5 @@
 //! HHT-α for index-3 DAEs, as Negrut, Rampalli, Ottarsson and Sajdak (2007) and Project
-//! Chrono's `ChTimestepperHHT` formulate it (DESIGN decision 8).
+//! Chrono's `ChTimestepperHHT` formulate it (docs/design.md, decision 8).
 //!
 //! Per step `tₙ → tₙ₊₁ = tₙ + h` the unknowns are `q̈ₙ₊₁` and `λₙ₊₁`; positions and
 //! velocities follow from the Newmark formulas
@@ -244,7 +244,7 @@ impl HhtBuilder {
 
     /// As [`HhtBuilder::build`] with a chosen KKT solver (e.g. [`crate::DenseKkt`]).
     ///
-    /// Allocates all work memory, then runs the consistent start (DESIGN decision 9):
+    /// Allocates all work memory, then runs the consistent start (docs/design.md, decision 9):
     /// position Newton, initial velocity, initial accelerations and multipliers.
     pub fn build_with_solver<M: Mechanism, K: KktSolver>(
         self,

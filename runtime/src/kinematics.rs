@@ -33,7 +33,7 @@ impl Default for KinematicSettings {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum InitialVelocity {
     /// The consistent velocity of least kinetic energy: `[M Φqᵀ; Φq 0][q̇; μ] = [0; −Φt]`
-    /// (paper-scenario.md, "Initial velocities"). The given `qd` is ignored.
+    /// (docs/paper-scenario.md, "Initial velocities"). The given `qd` is ignored.
     #[default]
     LeastKineticEnergy,
     /// The consistent velocity closest to the given `qd` in the kinetic-energy norm.
@@ -357,7 +357,7 @@ impl<K: KktSolver> Kinematics<K> {
         Ok(())
     }
 
-    /// The consistent start (DESIGN decision 9): position Newton on `q`, then the velocity
+    /// The consistent start (docs/design.md, decision 9): position Newton on `q`, then the velocity
     /// chosen by `velocity`, then accelerations and multipliers.
     #[allow(clippy::too_many_arguments)]
     pub fn consistent_start<M: Mechanism>(

@@ -1,5 +1,5 @@
 //! Joint reaction wrenches and driver efforts from the Lagrange multipliers, with the sign
-//! convention of DESIGN decision 7 (`M q̈ + Φqᵀλ = Q`): joint `k` acts on body `i` with the
+//! convention of docs/design.md, decision 7 (`M q̈ + Φqᵀλ = Q`): joint `k` acts on body `i` with the
 //! generalized force `−(Φᵏ_{q_i})ᵀλᵏ` on the body's coordinates.
 //!
 //! A generalized force `g` on a body's coordinates is turned into a force and a torque by

@@ -1,5 +1,5 @@
 //! Watchdogs: constraint drift at position and velocity level, and every Euler-angle body's
-//! distance from the singularity at β = ±90° (DESIGN decision 11), so a simulation reports
+//! distance from the singularity at β = ±90° (docs/design.md, decision 11), so a simulation reports
 //! trouble by body name instead of producing garbage. Quaternion bodies have no singularity
 //! and are not watched.
 

@@ -1,4 +1,4 @@
-//! Drivers (DESIGN.md decision 17): a joint coordinate (revolute angle, sliding distance),
+//! Drivers (docs/design.md, decision 17): a joint coordinate (revolute angle, sliding distance),
 //! a body coordinate, or the distance between two points, prescribed as a function of `t`.
 
 use super::raw::{RawDriver, SStr, SVec};

@@ -1,4 +1,4 @@
-//! Applied force elements (DESIGN.md decision 20): translational spring–damper–actuators
+//! Applied force elements (docs/design.md, decision 20): translational spring–damper–actuators
 //! between two points, rotational spring–damper–actuators in joints, and applied forces and
 //! torques given as functions of `t`.
 
