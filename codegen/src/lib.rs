@@ -7,6 +7,9 @@
 //! [`assembly`] (initial pose, rank, redundant rows) → [`emit`] (chunked straight-line
 //! functions) → [`rust`] (the module).
 
+// `!(x > tol)` is used on purpose: unlike `x <= tol` it also rejects NaN.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub mod assembly;
 pub mod diag;
 pub mod emit;
@@ -24,6 +27,7 @@ pub use assembly::Report;
 pub use diag::{Diagnostic, Errors};
 
 /// A generated module and what the generator found out about the mechanism.
+#[derive(Debug, Clone)]
 pub struct Generated {
     pub code: String,
     pub report: Report,
