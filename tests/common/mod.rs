@@ -64,3 +64,39 @@ pub fn random_state(rng: &mut Rng, q0: &[f64]) -> (Vec<f64>, Vec<f64>, f64) {
     let t = rng.uniform(0.0, 7.0);
     (q, qd, t)
 }
+
+/// A random state of any mechanism around its `q0`, body by body (`info.bodies`): centres
+/// of mass within ±5 cm; Euler angles within ±0.5 rad with β kept inside ±1.3 rad (away
+/// from the Euler singularity); Euler parameters perturbed by ±0.3 each and normalized to
+/// |e| = 1. Velocities uniform in ±1 (quaternion rates included, so ė is not tangent to the
+/// unit sphere), time uniform in [0, 7].
+pub fn random_state_for(rng: &mut Rng, info: &MechanismInfo) -> (Vec<f64>, Vec<f64>, f64) {
+    use symbody_runtime::Rotation;
+    let mut q = info.q0.to_vec();
+    for b in info.bodies {
+        let o = b.coord_offset;
+        for x in &mut q[o..o + 3] {
+            *x += rng.uniform(-0.05, 0.05);
+        }
+        match b.rotation {
+            Rotation::Euler => {
+                for k in 3..6 {
+                    q[o + k] += rng.uniform(-0.5, 0.5);
+                }
+                q[o + 4] = q[o + 4].clamp(-1.3, 1.3);
+            }
+            Rotation::Quaternion => {
+                for k in 3..7 {
+                    q[o + k] += rng.uniform(-0.3, 0.3);
+                }
+                let norm = q[o + 3..o + 7].iter().map(|e| e * e).sum::<f64>().sqrt();
+                for e in &mut q[o + 3..o + 7] {
+                    *e /= norm;
+                }
+            }
+        }
+    }
+    let qd: Vec<f64> = (0..q.len()).map(|_| rng.uniform(-1.0, 1.0)).collect();
+    let t = rng.uniform(0.0, 7.0);
+    (q, qd, t)
+}
