@@ -107,29 +107,65 @@ impl Eval<'_> {
     }
 }
 
-/// The joint (or driver, or body) that owns row `row`.
-fn owner(model: &Model, sys: &System, row: usize) -> String {
+/// The joint (or driver, or body) that owns row `row`: its name, and the item as
+/// diagnostics name it (``joint `a0` ``, ``driver `motor` ``, ``body `rod` ``).
+fn owner(model: &Model, sys: &System, row: usize) -> (String, String) {
     let k = sys.joint_rows.iter().rposition(|&s| s <= row).unwrap_or(0);
     let nj = model.joints.len();
     let nd = model.drivers.len();
-    if k < nj {
-        model.joints[k].name.clone()
+    let (kind, name) = if k < nj {
+        ("joint", &model.joints[k].name)
     } else if k < nj + nd {
-        model.drivers[k - nj].name.clone()
+        ("driver", &model.drivers[k - nj].name)
     } else {
-        model.bodies[sys.normalized_bodies[k - nj - nd]].name.clone()
-    }
+        (
+            "body",
+            &model.bodies[sys.normalized_bodies[k - nj - nd]].name,
+        )
+    };
+    (name.clone(), format!("{kind} `{name}`"))
 }
 
-fn diagnostic(model: &Model, file: &str, item: &str, message: String, help: &str) -> Diagnostic {
+fn diagnostic(
+    model: &Model,
+    file: &str,
+    row: (String, String),
+    message: String,
+    help: &str,
+) -> Diagnostic {
+    let (name, item) = row;
     Diagnostic {
         file: file.to_string(),
-        line: model.lines.get(item).copied().unwrap_or(1),
+        line: model.lines.get(&name).copied().unwrap_or(1),
         column: 1,
-        item: item.to_string(),
+        item,
         message,
         help: help.to_string(),
     }
+}
+
+/// An error when Φ or Φq is not finite at `q` (a frame or a distance undefined there).
+fn non_finite(
+    model: &Model,
+    sys: &System,
+    eval: &Eval,
+    q: &[f64],
+    file: &str,
+) -> Result<(), Errors> {
+    let phi = eval.phi(q);
+    let jac = eval.phi_q(q);
+    let Some(r) =
+        (0..phi.len()).find(|&r| !phi[r].is_finite() || jac.row(r).iter().any(|x| !x.is_finite()))
+    else {
+        return Ok(());
+    };
+    Err(Errors(vec![diagnostic(
+        model,
+        file,
+        owner(model, sys, r),
+        format!("row `{}` or its derivative is not a finite number at the initial pose", sys.row_names[r]),
+        "check this item's points and axes: a distance between coincident points or a direction of zero length is undefined",
+    )]))
 }
 
 /// Assembles the initial pose at t = 0 and analyses Φq there.
@@ -137,6 +173,7 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
     let eval = Eval { sys };
     let q_file = model.q0();
     let mut q = q_file.clone();
+    non_finite(model, sys, &eval, &q, file)?;
     let mut phi = eval.phi(&q);
     let mut warnings = Vec::new();
     if phi.amax() > CONSISTENT {
@@ -144,6 +181,9 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
         let first = phi.clone();
         for _ in 0..60 {
             let jac = eval.phi_q(&q);
+            if !jac.iter().all(|x| x.is_finite()) {
+                break;
+            }
             let svd = jac.svd(true, true);
             let step = match svd.solve(&phi, 1e-12 * svd.singular_values.max()) {
                 Ok(s) => s,
@@ -153,15 +193,31 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
                 *qi -= s;
             }
             phi = eval.phi(&q);
-            if phi.amax() < 1e-14 || step.amax() < 1e-15 {
+            if phi.amax() < 1e-14 || step.amax() < 1e-15 || !phi.iter().all(|x| x.is_finite()) {
                 break;
             }
         }
-        if !(phi.amax() <= 1e-9) {
-            let mut rows: Vec<usize> = (0..phi.len()).filter(|&r| phi[r].abs() > 1e-9).collect();
+        if !phi.iter().all(|x| x.abs() <= 1e-9) {
+            let mut rows: Vec<usize> = (0..phi.len())
+                .filter(|&r| !(phi[r].abs() <= 1e-9))
+                .collect();
             rows.sort_by(|&a, &b| phi[b].abs().total_cmp(&phi[a].abs()));
+            // Blame the worst joint or driver row: a normalization row is only off because
+            // the least-squares compromise shrank the quaternion.
+            let norm_start = sys
+                .joint_rows
+                .get(model.joints.len() + model.drivers.len())
+                .copied()
+                .unwrap_or(phi.len());
+            let worst = owner(
+                model,
+                sys,
+                rows.iter()
+                    .copied()
+                    .find(|&r| r < norm_start)
+                    .unwrap_or(rows[0]),
+            );
             rows.truncate(5);
-            let worst = owner(model, sys, rows[0]);
             let list: Vec<String> = rows
                 .iter()
                 .map(|&r| format!("`{}` ({:.3e})", sys.row_names[r], phi[r]))
@@ -169,7 +225,7 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
             return Err(Errors(vec![diagnostic(
                 model,
                 file,
-                &worst,
+                worst,
                 format!(
                     "the mechanism cannot be assembled at t = 0: rows {} keep a residual after the closest pose was sought",
                     list.join(", ")
@@ -185,8 +241,8 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
         if moved > WARN_CORRECTION {
             let worst = first.iamax();
             warnings.push(format!(
-                "the initial pose violates `{}` by {:.3e} (row `{}`); the generator moved the coordinates by up to {:.3e} to assemble it",
-                owner(model, sys, worst),
+                "the initial pose violates {} by {:.3e} (row `{}`); the generator moved the coordinates by up to {:.3e} to assemble it",
+                owner(model, sys, worst).1,
                 first[worst].abs(),
                 sys.row_names[worst],
                 moved
@@ -195,6 +251,7 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
     } else {
         q = q_file;
     }
+    non_finite(model, sys, &eval, &q, file)?;
 
     let jac = eval.phi_q(&q);
     let m = sys.n_constraints;

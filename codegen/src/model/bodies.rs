@@ -136,6 +136,15 @@ impl Validator<'_> {
             ),
             _ => {}
         }
+        if let (Some(_), Some(o)) = (&rb.placement, rb.angles.as_ref().or(rb.quaternion.as_ref())) {
+            // The placement sets the orientation too; the file's would be ignored.
+            self.err(
+                o.span(),
+                item,
+                format!("{item} has both a `placement` and an initial orientation"),
+                "a placement orients the body (local y along the line between its joints): remove `angles`/`quaternion`, or give `position` instead of the placement",
+            );
+        }
         if let (Some(a), Some(q)) = (&rb.angles, &rb.quaternion) {
             let _ = a;
             self.err(

@@ -288,7 +288,13 @@ impl Validator<'_> {
                     span,
                     item,
                     format!("joint `{}` ({}) has no coordinate `{c}`", j.name, j.kind.name()),
-                    if a { "use `coordinate = \"angle\"`" } else { "use `coordinate = \"distance\"`" },
+                    match (a, s) {
+                        (true, true) => {
+                            "use `coordinate = \"angle\"` or `coordinate = \"distance\"`"
+                        }
+                        (true, false) => "use `coordinate = \"angle\"`",
+                        _ => "use `coordinate = \"distance\"`",
+                    },
                 );
                 return None;
             }

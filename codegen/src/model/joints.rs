@@ -156,22 +156,23 @@ impl Validator<'_> {
                 let (r1, a1) = pose(bodies, s.b1);
                 let (r2, a2) = pose(bodies, s.b2);
                 let d = (r2 + a2 * v3(p2) - r1 - a1 * v3(p1)).norm();
+                // |p2 − p1| has no derivative where the points coincide, so assembly could
+                // not start from there even with a `length`.
+                if !(d > 1e-9) {
+                    self.err(
+                        s.span.clone(),
+                        item,
+                        "the two points of a distance joint coincide at the initial pose".into(),
+                        "give two distinct points (their distance at the initial pose is the length, unless `length = <m>` is given)",
+                    );
+                    return None;
+                }
                 let length = match &r.length {
                     Some(l) => {
                         let v = self.scalar(l, item, "length")?;
                         self.positive(v, l.span(), item, "length").then_some(v)?
                     }
-                    None if d > 1e-9 => d,
-                    None => {
-                        self.err(
-                            s.span.clone(),
-                            item,
-                            "the two points of a distance joint coincide at the initial pose"
-                                .into(),
-                            "give `length = <m>` and points at that distance",
-                        );
-                        return None;
-                    }
+                    None => d,
                 };
                 JointKind::Distance { length }
             }
@@ -314,24 +315,28 @@ impl Validator<'_> {
             );
             return None;
         }
+        // The part of a given reference direction `d` (global) across the axis `z`.
+        let across = |this: &mut Self, v: &SVec, field: &str, d: V3, z: &V3| {
+            let x = d - z * z.dot(&d);
+            if x.norm() < 1e-6 {
+                this.err(
+                    v.span(),
+                    item,
+                    format!("`{field}` is parallel to the joint axis"),
+                    "give a reference direction perpendicular to the axis (angle zero)",
+                );
+                return None;
+            }
+            Some(x.normalize())
+        };
         let x1w = match (&r.reference, &r.reference1) {
             (Some(g), None) => {
                 let d = v3(self.direction(g, item, "reference")?);
-                let x = d - z1w * z1w.dot(&d);
-                if x.norm() < 1e-6 {
-                    self.err(
-                        g.span(),
-                        item,
-                        "`reference` is parallel to the joint axis".into(),
-                        "give a reference direction perpendicular to the axis (angle zero)",
-                    );
-                    return None;
-                }
-                x.normalize()
+                across(self, g, "reference", d, &z1w)?
             }
             (None, Some(l)) => {
                 let d = a1 * v3(self.direction(l, item, "reference1")?);
-                (d - z1w * z1w.dot(&d)).normalize()
+                across(self, l, "reference1", d, &z1w)?
             }
             (None, None) => perpendicular(&z1w),
             (Some(g), Some(_)) => {
@@ -345,15 +350,19 @@ impl Validator<'_> {
             }
         };
         let x2w = match &r.reference2 {
-            Some(l) => a2 * v3(self.direction(l, item, "reference2")?),
-            None => x1w,
-        };
-        let x2w = {
-            let x = x2w - z2w * z2w.dot(&x2w);
-            if x.norm() < 1e-6 {
-                perpendicular(&z2w)
-            } else {
-                x.normalize()
+            Some(l) => {
+                let d = a2 * v3(self.direction(l, item, "reference2")?);
+                across(self, l, "reference2", d, &z2w)?
+            }
+            // Body 1's reference, made perpendicular to body 2's axis (any perpendicular
+            // when it is along that axis, as it can be for a universal joint).
+            None => {
+                let x = x1w - z2w * z2w.dot(&x1w);
+                if x.norm() < 1e-6 {
+                    perpendicular(&z2w)
+                } else {
+                    x.normalize()
+                }
             }
         };
         let loc = |a: &M3, v: V3| arr(&(a.transpose() * v));
