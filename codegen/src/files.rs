@@ -105,6 +105,41 @@ pub fn generated_index(mechanisms: &[(String, Vec<Formulation>)]) -> (PathBuf, S
     (PathBuf::from(GENERATED_DIR).join("mod.rs"), s)
 }
 
+/// What the module index lists after a generation run, and what it leaves out.
+#[derive(Debug, Clone, PartialEq)]
+pub struct IndexEntries {
+    /// Mechanisms in the index, in name order, with their formulations.
+    pub entries: Vec<(String, Vec<Formulation>)>,
+    /// Mechanisms not attempted in this run whose module exists but whose file no longer
+    /// generates: they stay out of the index.
+    pub left_out: Vec<String>,
+}
+
+/// The mechanisms the module index lists after `cargo xtask generate` attempted the names
+/// in `attempted` and succeeded for those in `regenerated` (name, formulations): each
+/// regenerated mechanism, and each other mechanism file whose module already exists and
+/// that still generates. A mechanism attempted in this run that failed, or a file that no
+/// longer generates, stays out: a broken file never enters the index.
+pub fn index_entries(
+    root: &Path,
+    attempted: &[String],
+    regenerated: &[(String, Vec<Formulation>)],
+) -> Result<IndexEntries, FilesError> {
+    let mut entries = Vec::new();
+    let mut left_out = Vec::new();
+    for n in &mechanism_names(root)? {
+        if let Some((_, forms)) = regenerated.iter().find(|(r, _)| r == n) {
+            entries.push((n.clone(), forms.clone()));
+        } else if !attempted.contains(n) && root.join(module_path(n)).exists() {
+            match generated_module(root, n) {
+                Ok((_, g)) => entries.push((n.clone(), g.formulations)),
+                Err(_) => left_out.push(n.clone()),
+            }
+        }
+    }
+    Ok(IndexEntries { entries, left_out })
+}
+
 /// Every generated file of the workspace with its expected contents.
 pub fn all_expected(root: &Path) -> Result<Vec<(PathBuf, String)>, FilesError> {
     let names = mechanism_names(root)?;

@@ -63,29 +63,26 @@ fn generate(args: &[String]) -> Result<(), String> {
         match files::generated_module(&root, n) {
             Ok((path, g)) => {
                 eprintln!("{}", g.report);
-                expected.push((path, g.code, g.formulations));
+                expected.push((n.clone(), path, g.code, g.formulations));
             }
             Err(e) => failures.push(format!("{n}: {e}")),
         }
     }
     // The registry lists what generates now, plus mechanisms not regenerated in this run
     // whose module already exists: a broken file never enters the module index.
-    let mut index = Vec::new();
-    for n in &every {
-        if let Some((_, _, forms)) = expected.iter().find(|(p, _, _)| *p == files::module_path(n)) {
-            index.push((n.clone(), forms.clone()));
-        } else if !names.contains(n) && root.join(files::module_path(n)).exists() {
-            match files::generated_module(&root, n) {
-                Ok((_, g)) => index.push((n.clone(), g.formulations)),
-                Err(_) => eprintln!("note: `{n}` is not valid and stays out of the module index"),
-            }
-        }
+    let regenerated: Vec<_> = expected
+        .iter()
+        .map(|(n, _, _, forms)| (n.clone(), forms.clone()))
+        .collect();
+    let index = files::index_entries(&root, &names, &regenerated).map_err(|e| e.to_string())?;
+    for n in &index.left_out {
+        eprintln!("note: `{n}` is not valid and stays out of the module index");
     }
-    let (index_path, index_code) = files::generated_index(&index);
+    let (index_path, index_code) = files::generated_index(&index.entries);
     let elapsed = start.elapsed();
 
     let mut outputs: Vec<(PathBuf, String)> =
-        expected.into_iter().map(|(p, c, _)| (p, c)).collect();
+        expected.into_iter().map(|(_, p, c, _)| (p, c)).collect();
     outputs.push((index_path, index_code));
     let mut stale = Vec::new();
     for (rel, contents) in &outputs {
