@@ -16,16 +16,20 @@ fn main() -> Result<(), Error> {
     for k in 1..=5 {
         let t = 0.1 * k as f64;
         sim.advance_to(t)?; // lands exactly on t
-        // The multipliers of this state: [M Φqᵀ; Φq 0][q̈; λ] = [Q; γ].
+                            // The multipliers of this state: [M Φqᵀ; Φq 0][q̈; λ] = [Q; γ].
         kinematics.acceleration(sim.mechanism(), t, sim.q(), sim.qd(), &mut qdd, &mut lambda)?;
         sim.mechanism().phi_q(sim.q(), t, &mut phi_q);
         let forces: Vec<String> = (1..=6)
             .map(|i| {
-                let j = info.joint_index(&format!("act{i}")).expect("the file names act1..6");
+                let j = info
+                    .joint_index(&format!("act{i}"))
+                    .expect("the file names act1..6");
                 driver_effort(info, &lambda, j).map(|f| format!("{f:8.4}"))
             })
             .collect::<Result<_, _>>()?;
-        let sph = info.joint_index("upper_sph1").expect("the file names upper_sph1");
+        let sph = info
+            .joint_index("upper_sph1")
+            .expect("the file names upper_sph1");
         let w = joint_wrench(info, sim.q(), &phi_q, &lambda, sph)?;
         println!(
             "t = {t:.1} s  actuators [N]: {}  upper_sph1 on the platform: F = ({:.4}, {:.4}, {:.4}) N",

@@ -100,7 +100,11 @@ impl BodySym {
                 // ω = 2E(e)ė, E = [[−e1, e0, −e3, e2], [−e2, e3, e0, −e1], [−e3, −e2, e1, e0]].
                 let e = &self.rot_coords;
                 let ed = &qd[3..7];
-                let rows = [[(1, -1.0), (0, 1.0), (3, -1.0), (2, 1.0)], [(2, -1.0), (3, 1.0), (0, 1.0), (1, -1.0)], [(3, -1.0), (2, -1.0), (1, 1.0), (0, 1.0)]];
+                let rows = [
+                    [(1, -1.0), (0, 1.0), (3, -1.0), (2, 1.0)],
+                    [(2, -1.0), (3, 1.0), (0, 1.0), (1, -1.0)],
+                    [(3, -1.0), (2, -1.0), (1, 1.0), (0, 1.0)],
+                ];
                 rows.map(|row| quaternion_row(a, e, ed, row))
             }
         }
@@ -119,7 +123,11 @@ impl BodySym {
                 // ω' = 2G(e)ė, G = [[−e1, e0, e3, −e2], [−e2, −e3, e0, e1], [−e3, e2, −e1, e0]].
                 let e = &self.rot_coords;
                 let ed = &qd[3..7];
-                let rows = [[(1, -1.0), (0, 1.0), (3, 1.0), (2, -1.0)], [(2, -1.0), (3, -1.0), (0, 1.0), (1, 1.0)], [(3, -1.0), (2, 1.0), (1, -1.0), (0, 1.0)]];
+                let rows = [
+                    [(1, -1.0), (0, 1.0), (3, 1.0), (2, -1.0)],
+                    [(2, -1.0), (3, -1.0), (0, 1.0), (1, 1.0)],
+                    [(3, -1.0), (2, 1.0), (1, -1.0), (0, 1.0)],
+                ];
                 rows.map(|row| quaternion_row(a, e, ed, row))
             }
         }
@@ -151,9 +159,10 @@ fn body_sym(a: &mut Arena, offset: usize, rotation: Rotation) -> BodySym {
     let rot_coords: Vec<Id> = (0..rotation.n_coords()).map(|k| q(a, 3 + k)).collect();
     let rot = match rotation {
         Rotation::Euler => euler_rotation(a, [rot_coords[0], rot_coords[1], rot_coords[2]]),
-        Rotation::Quaternion => {
-            quaternion_rotation(a, [rot_coords[0], rot_coords[1], rot_coords[2], rot_coords[3]])
-        }
+        Rotation::Quaternion => quaternion_rotation(
+            a,
+            [rot_coords[0], rot_coords[1], rot_coords[2], rot_coords[3]],
+        ),
     };
     BodySym {
         r,

@@ -87,7 +87,7 @@ pub fn generated_index(mechanisms: &[(String, Vec<Formulation>)]) -> (PathBuf, S
     }
     s.push_str("\nuse symbody_runtime::{Formulation, Mechanism};\n\n");
     s.push_str("/// Every generated mechanism: name, formulations (the first is the default), the\n/// mechanism in each, and the simulation end time its file suggests.\n");
-    s.push_str("pub static REGISTRY: &[crate::Entry] = &[\n");
+    s.push_str("#[rustfmt::skip]\npub static REGISTRY: &[crate::Entry] = &[\n");
     for (n, forms) in mechanisms {
         s.push_str(&format!("    crate::Entry {{\n        name: \"{n}\",\n        t_end: {n}::T_END,\n        formulations: &[\n"));
         for f in forms {

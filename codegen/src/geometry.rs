@@ -103,7 +103,10 @@ mod tests {
     fn euler_round_trip() {
         for a in [[0.3, -0.7, 1.2], [-1.0, 1.1, -2.5], [0.0, 0.0, 0.0]] {
             let e = euler_angles(&euler_matrix(a));
-            assert!((0..3).all(|k| (e[k] - a[k]).abs() < 1e-12), "{e:?} vs {a:?}");
+            assert!(
+                (0..3).all(|k| (e[k] - a[k]).abs() < 1e-12),
+                "{e:?} vs {a:?}"
+            );
         }
     }
 

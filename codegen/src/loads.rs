@@ -44,9 +44,7 @@ impl Acc<'_> {
         let one = self.a.constant(1.0);
         for k in 0..3 + body.rotation.n_coords() {
             let target = Var::Qd((body.offset + k) as u32);
-            let d = self
-                .a
-                .derivative(&omega, &|v| (v == target).then_some(one));
+            let d = self.a.derivative(&omega, &|v| (v == target).then_some(one));
             let p = self.a.dot3(d.try_into().expect("three components"), tau);
             if !self.a.is_zero(p) {
                 self.force[body.offset + k].push(p);

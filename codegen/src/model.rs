@@ -129,7 +129,9 @@ pub enum JointKind {
     Prismatic,
     Fixed,
     /// `|p2 − p1| − length = 0`.
-    Distance { length: f64 },
+    Distance {
+        length: f64,
+    },
     /// The paper's prismatic: equal Euler angles and no motion of body 2's centre of mass
     /// across `axis` (local to body 1), paper eqs. 4–8.
     EulerPrismatic {
@@ -411,10 +413,7 @@ impl Validator<'_> {
         let formulations = formulations?;
         if formulations.contains(&Formulation::Paper) {
             if let Some(b) = bodies.iter().find(|b| b.rotation != Rotation::Euler) {
-                let span = raw
-                    .formulations
-                    .as_ref()
-                    .map_or(0..0, |f| f.span());
+                let span = raw.formulations.as_ref().map_or(0..0, |f| f.span());
                 self.err(
                     span,
                     "`formulations`",

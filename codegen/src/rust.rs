@@ -1,10 +1,10 @@
 //! Assembles one generated Rust module per mechanism: header, constant patterns and names,
 //! the emitted functions, and the `Mechanism` implementations (one per formulation).
 
+use crate::assembly::Assembly;
 use crate::emit::{self, Function, Input, Output};
 use crate::equations::{Entry, System};
 use crate::expr::Id;
-use crate::assembly::Assembly;
 use crate::model::{DriverTarget, Formulation, JointKind, Model, Rotation};
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
@@ -55,7 +55,10 @@ fn header(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
     ));
     if !r.redundant.is_empty() {
         let names: Vec<&str> = r.redundant.iter().map(|(_, n)| n.as_str()).collect();
-        line(&format!("Redundant rows (dropped by the solvers): {}.", names.join(", ")));
+        line(&format!(
+            "Redundant rows (dropped by the solvers): {}.",
+            names.join(", ")
+        ));
     }
     line("Each body owns `[X, Y, Z]` (centre of mass), then `[θ, β, γ]` (A = Rz(γ)·Ry(β)·Rx(θ))");
     line("or Euler parameters `[e0, e1, e2, e3]`. Equations of motion: `M q̈ + Φqᵀλ = Q`, `Φq q̈ = γ`.");
@@ -90,9 +93,14 @@ fn header(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
         let row = sys.joint_rows[model.joints.len() + k];
         let what = match &d.target {
             DriverTarget::JointAngle(j) => format!("sin(f − θ) of `{}`", model.joints[*j].name),
-            DriverTarget::JointSlide(j) => format!("distance along `{}` − f", model.joints[*j].name),
+            DriverTarget::JointSlide(j) => {
+                format!("distance along `{}` − f", model.joints[*j].name)
+            }
             DriverTarget::BodyCoordinate { body, coord } => {
-                format!("coordinate `{}` − f", sys.coord_names[model.bodies[*body].offset + coord])
+                format!(
+                    "coordinate `{}` − f",
+                    sys.coord_names[model.bodies[*body].offset + coord]
+                )
             }
             DriverTarget::PointDistance { .. } => "point distance − f".to_string(),
         };
@@ -231,7 +239,15 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
                 JointKind::Distance { .. } => "Distance",
                 JointKind::EulerPrismatic { .. } => "EulerPrismatic",
             });
-            info(&j.name, quote!(JointKind::#kind), j.bodies(), sys.joint_rows[k], j.rows(), j.f1.point, (0.0, ""))
+            info(
+                &j.name,
+                quote!(JointKind::#kind),
+                j.bodies(),
+                sys.joint_rows[k],
+                j.rows(),
+                j.f1.point,
+                (0.0, ""),
+            )
         })
         .collect();
     for (k, d) in model.drivers.iter().enumerate() {
@@ -248,12 +264,28 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
         };
         let unit = if d.is_angular() { "N·m" } else { "N" };
         let start = sys.joint_rows[model.joints.len() + k];
-        joint_infos.push(info(&d.name, quote!(JointKind::Driver), bodies, start, 1, point1, (sys.driver_signs[k], unit)));
+        joint_infos.push(info(
+            &d.name,
+            quote!(JointKind::Driver),
+            bodies,
+            start,
+            1,
+            point1,
+            (sys.driver_signs[k], unit),
+        ));
     }
     for (k, &b) in sys.normalized_bodies.iter().enumerate() {
         let start = sys.joint_rows[model.joints.len() + model.drivers.len() + k];
         let name = format!("{}.norm", model.bodies[b].name);
-        joint_infos.push(info(&name, quote!(JointKind::Normalization), (Some(b), None), start, 1, [0.0; 3], (0.0, "")));
+        joint_infos.push(info(
+            &name,
+            quote!(JointKind::Normalization),
+            (Some(b), None),
+            start,
+            1,
+            [0.0; 3],
+            (0.0, ""),
+        ));
     }
     let nb = model.bodies.len();
     let nj = joint_infos.len();

@@ -5,8 +5,7 @@ use super::joints::JointSpec;
 use super::raw::{RawBody, RawPlacement};
 use super::{Body, Rotation, Validator};
 use crate::geometry::{
-    euler_angles, euler_matrix, euler_rate_matrix, matrix_quaternion, quaternion_rates, v3, M3,
-    V3,
+    euler_angles, euler_matrix, euler_rate_matrix, matrix_quaternion, quaternion_rates, v3, M3, V3,
 };
 use std::collections::HashMap;
 use std::ops::Range;
@@ -154,8 +153,14 @@ impl Validator<'_> {
                 "give the initial orientation once",
             );
         }
-        let angles = rb.angles.as_ref().and_then(|v| self.vec3(v, item, "angles"));
-        let quaternion = rb.quaternion.as_ref().and_then(|v| self.quaternion(v, item));
+        let angles = rb
+            .angles
+            .as_ref()
+            .and_then(|v| self.vec3(v, item, "angles"));
+        let quaternion = rb
+            .quaternion
+            .as_ref()
+            .and_then(|v| self.quaternion(v, item));
         let p = position.unwrap_or([0.0; 3]);
         let mut q0 = p.to_vec();
         match (rotation, angles, quaternion) {
@@ -301,7 +306,9 @@ impl Validator<'_> {
                     (Some(s), None) => self
                         .scalar(s, &item, "offset_from_start")
                         .map(|o| start + y * o),
-                    (None, Some(s)) => self.scalar(s, &item, "offset_from_end").map(|o| end - y * o),
+                    (None, Some(s)) => self
+                        .scalar(s, &item, "offset_from_end")
+                        .map(|o| end - y * o),
                     _ => {
                         self.err(
                             p.span(),
@@ -404,7 +411,12 @@ impl Validator<'_> {
         for (body, point) in [(j.b1, p1), (j.b2, p2)] {
             match body {
                 Some(b) if b == this => {}
-                None => return self.vec3(point, item, "point").map(|p| Some(v3(p))).ok_or(()),
+                None => {
+                    return self
+                        .vec3(point, item, "point")
+                        .map(|p| Some(v3(p)))
+                        .ok_or(())
+                }
                 Some(o) if placed[o] => {
                     let p = self.vec3(point, item, "point").ok_or(())?;
                     let b = &bodies[o];

@@ -171,7 +171,11 @@ impl Validator<'_> {
         bodies: &[Body],
         body_index: &HashMap<String, usize>,
     ) -> Option<(DriverTarget, f64)> {
-        let forms = [rd.joint.is_some(), rd.body.is_some(), rd.body1.is_some() || rd.body2.is_some()];
+        let forms = [
+            rd.joint.is_some(),
+            rd.body.is_some(),
+            rd.body1.is_some() || rd.body2.is_some(),
+        ];
         if forms.iter().filter(|f| **f).count() != 1 {
             self.err(
                 span.clone(),
@@ -218,7 +222,11 @@ impl Validator<'_> {
                 self.err(
                     c.span(),
                     item,
-                    format!("body `{}` has no drivable coordinate `{}`", body.name, c.get_ref()),
+                    format!(
+                        "body `{}` has no drivable coordinate `{}`",
+                        body.name,
+                        c.get_ref()
+                    ),
                     &format!("use one of {allowed:?}{extra}"),
                 );
                 return None;
@@ -263,7 +271,10 @@ impl Validator<'_> {
                 format!("unknown joint `{}`", jname.get_ref()),
                 &match suggestion {
                     Some(s) => format!("did you mean `{s}`?"),
-                    None => "name a revolute, prismatic or cylindrical joint declared with [[joint]]".to_string(),
+                    None => {
+                        "name a revolute, prismatic or cylindrical joint declared with [[joint]]"
+                            .to_string()
+                    }
                 },
             );
             return None;
@@ -277,7 +288,10 @@ impl Validator<'_> {
                 self.err(
                     jname.span(),
                     item,
-                    format!("joint `{}` is cylindrical: both its angle and its distance can be driven", j.name),
+                    format!(
+                        "joint `{}` is cylindrical: both its angle and its distance can be driven",
+                        j.name
+                    ),
                     "add `coordinate = \"angle\"` or `coordinate = \"distance\"`",
                 );
                 return None;
@@ -287,7 +301,11 @@ impl Validator<'_> {
                 self.err(
                     span,
                     item,
-                    format!("joint `{}` ({}) has no coordinate `{c}`", j.name, j.kind.name()),
+                    format!(
+                        "joint `{}` ({}) has no coordinate `{c}`",
+                        j.name,
+                        j.kind.name()
+                    ),
                     match (a, s) {
                         (true, true) => {
                             "use `coordinate = \"angle\"` or `coordinate = \"distance\"`"

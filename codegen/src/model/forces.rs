@@ -42,9 +42,14 @@ impl Validator<'_> {
             let built = match kind.get_ref().as_str() {
                 "spring" => self.spring(rf, &span, &item, bodies, body_index),
                 "torsion" => self.torsion(rf, &span, &item, joints, bodies),
-                "force" | "torque" => {
-                    self.applied(rf, &span, &item, kind.get_ref() == "force", bodies, body_index)
-                }
+                "force" | "torque" => self.applied(
+                    rf,
+                    &span,
+                    &item,
+                    kind.get_ref() == "force",
+                    bodies,
+                    body_index,
+                ),
                 other => {
                     self.err(
                         kind.span(),
@@ -63,7 +68,12 @@ impl Validator<'_> {
     }
 
     /// An optional expression in `t` (zero when absent).
-    fn optional_time_expr(&mut self, s: &Option<super::raw::SStr>, item: &str, field: &str) -> Option<Id> {
+    fn optional_time_expr(
+        &mut self,
+        s: &Option<super::raw::SStr>,
+        item: &str,
+        field: &str,
+    ) -> Option<Id> {
         match s {
             Some(s) => self.time_expr(s, item, field, None),
             None => Some(self.arena.constant(0.0)),
@@ -146,7 +156,9 @@ impl Validator<'_> {
                 jname.span(),
                 item,
                 format!("unknown joint `{}`", jname.get_ref()),
-                &s.map_or("name a revolute or cylindrical joint".into(), |s| format!("did you mean `{s}`?")),
+                &s.map_or("name a revolute or cylindrical joint".into(), |s| {
+                    format!("did you mean `{s}`?")
+                }),
             );
             return None;
         };
@@ -154,7 +166,11 @@ impl Validator<'_> {
             self.err(
                 jname.span(),
                 item,
-                format!("joint `{}` is {}: it has no angle for a torsion spring", joints[ji].name, joints[ji].kind.name()),
+                format!(
+                    "joint `{}` is {}: it has no angle for a torsion spring",
+                    joints[ji].name,
+                    joints[ji].kind.name()
+                ),
                 "act on a revolute or cylindrical joint",
             );
             return None;
@@ -220,7 +236,10 @@ impl Validator<'_> {
             self.err(
                 value.span(),
                 item,
-                format!("`value` has {} components, expected 3", value.get_ref().len()),
+                format!(
+                    "`value` has {} components, expected 3",
+                    value.get_ref().len()
+                ),
                 "write `value = [x, y, z]`",
             );
             return None;

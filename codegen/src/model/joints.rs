@@ -254,7 +254,12 @@ impl Validator<'_> {
         let (_, a2) = pose(bodies, s.b2);
         let universal = s.kind == "universal";
         // Global directions at the initial pose of body 1's axis and body 2's axis.
-        let world = |this: &mut Self, g: &Option<SVec>, l: &Option<SVec>, a: &M3, f: &str, lf: &str| {
+        let world = |this: &mut Self,
+                     g: &Option<SVec>,
+                     l: &Option<SVec>,
+                     a: &M3,
+                     f: &str,
+                     lf: &str| {
             match (g, l) {
                 (Some(g), None) => this.direction(g, item, f).map(v3),
                 (None, Some(l)) => this.direction(l, item, lf).map(|d| a * v3(d)),

@@ -25,7 +25,7 @@ impl Validator<'_> {
         span: &Range<usize>,
         item: &str,
         field: &str,
-        unit: &str
+        unit: &str,
     ) -> Option<f64> {
         match s {
             Some(s) => self.scalar(s, item, field),
@@ -41,12 +41,7 @@ impl Validator<'_> {
         }
     }
 
-    pub(super) fn vec3(
-        &mut self,
-        v: &SVec,
-        item: &str,
-        field: &str
-    ) -> Option<[f64; 3]> {
+    pub(super) fn vec3(&mut self, v: &SVec, item: &str, field: &str) -> Option<[f64; 3]> {
         let comps = v.get_ref();
         if comps.len() != 3 {
             self.err(
@@ -68,12 +63,7 @@ impl Validator<'_> {
         Some(out)
     }
 
-    pub(super) fn scalar(
-        &mut self,
-        s: &SScalar,
-        item: &str,
-        field: &str
-    ) -> Option<f64> {
+    pub(super) fn scalar(&mut self, s: &SScalar, item: &str, field: &str) -> Option<f64> {
         match s.get_ref() {
             Scalar::Int(i) => Some(*i as f64),
             Scalar::Float(f) => self.finite(*f, s.span(), item, field),
@@ -82,7 +72,13 @@ impl Validator<'_> {
     }
 
     /// TOML accepts `inf` and `nan`; no physical quantity here may be either.
-    pub(super) fn finite(&mut self, v: f64, span: Range<usize>, item: &str, field: &str) -> Option<f64> {
+    pub(super) fn finite(
+        &mut self,
+        v: f64,
+        span: Range<usize>,
+        item: &str,
+        field: &str,
+    ) -> Option<f64> {
         if v.is_finite() {
             Some(v)
         } else {
@@ -102,7 +98,7 @@ impl Validator<'_> {
         src: &str,
         span: Range<usize>,
         item: &str,
-        field: &str
+        field: &str,
     ) -> Option<f64> {
         let mut arena = Arena::new();
         let mut missing: Vec<String> = Vec::new();
@@ -193,12 +189,12 @@ impl Validator<'_> {
             }
             None => {
                 // Leave it busy-free but unresolved so later uses do not report a false cycle.
-                self.values.insert(name.to_string(), ParamState::Done(f64::NAN));
+                self.values
+                    .insert(name.to_string(), ParamState::Done(f64::NAN));
                 None
             }
         }
     }
-
 
     pub(super) fn positive(&mut self, v: f64, span: Range<usize>, item: &str, field: &str) -> bool {
         if v > 0.0 {
@@ -213,7 +209,12 @@ impl Validator<'_> {
         false
     }
 
-    pub(super) fn non_negative(&mut self, s: &Option<SScalar>, item: &str, field: &str) -> Option<f64> {
+    pub(super) fn non_negative(
+        &mut self,
+        s: &Option<SScalar>,
+        item: &str,
+        field: &str,
+    ) -> Option<f64> {
         let Some(s) = s else { return Some(0.0) };
         let v = self.scalar(s, item, field)?;
         if v < 0.0 {
@@ -300,7 +301,12 @@ impl Validator<'_> {
                 } else {
                     e.help.clone()
                 };
-                self.err(src.span(), item, format!("in `{field}`: {}", e.message), &help);
+                self.err(
+                    src.span(),
+                    item,
+                    format!("in `{field}`: {}", e.message),
+                    &help,
+                );
                 None
             }
         }
@@ -468,7 +474,10 @@ pub(super) fn is_identifier(s: &str) -> bool {
 }
 
 /// The closest candidate by edit distance, if it is close enough to be a likely typo.
-pub(super) fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<&'a str> {
+pub(super) fn closest<'a>(
+    name: &str,
+    candidates: impl Iterator<Item = &'a str>,
+) -> Option<&'a str> {
     candidates
         .map(|c| (edit_distance(name, c), c))
         .filter(|(d, c)| *d <= 2.max(c.len() / 3))
@@ -490,7 +499,6 @@ fn edit_distance(a: &str, b: &str) -> usize {
     }
     prev[b.len()]
 }
-
 
 #[cfg(test)]
 mod tests {

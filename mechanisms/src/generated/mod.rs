@@ -18,6 +18,7 @@ use symbody_runtime::{Formulation, Mechanism};
 
 /// Every generated mechanism: name, formulations (the first is the default), the
 /// mechanism in each, and the simulation end time its file suggests.
+#[rustfmt::skip]
 pub static REGISTRY: &[crate::Entry] = &[
     crate::Entry {
         name: "bricard",
