@@ -1,6 +1,8 @@
-//! The `symbody` command-line tool's library: the paper's scenario on the generated Stewart
-//! platform, and its CSV and PNG outputs.
+//! The `symbody` command-line tool's library: any registered mechanism simulated
+//! ([`generic`]), the paper's scenario on the generated Stewart platform ([`scenario`]), and
+//! their CSV and PNG outputs.
 
+pub mod generic;
 pub mod output;
 pub mod plot;
 pub mod scenario;

@@ -1,10 +1,12 @@
-//! `symbody simulate`: runs the paper's Stewart platform scenario with the generated
-//! equations and writes CSVs and the paper's figures.
+//! `symbody list` and `symbody simulate [<mechanism>]`: every generated mechanism by name
+//! from the registry; without a name, the paper's Stewart platform scenario and its figures.
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 use std::process::ExitCode;
+use symbody::generic;
 use symbody::scenario::{self, largest_rotation, Options, Reactions};
+use symbody_mechanisms::REGISTRY;
 use symbody_runtime::Formulation;
 
 #[derive(Parser)]
@@ -36,27 +38,34 @@ enum ReactionsArg {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Simulate the paper's 6-6 Stewart platform scenario (one period, 2π s, by default).
+    /// List every generated mechanism: sizes, redundant rows, degrees of freedom.
+    List,
+    /// Simulate a generated mechanism; without a name, the paper's 6-6 Stewart platform
+    /// scenario (one period, 2π s) with the paper's figures.
     Simulate {
-        /// Dynamics formulation.
-        #[arg(long, value_enum, default_value = "exact")]
-        formulation: FormulationArg,
-        /// End time (s).
-        #[arg(long, default_value_t = 2.0 * std::f64::consts::PI, allow_hyphen_values = true)]
-        t_end: f64,
+        /// A mechanism from `symbody list` (default: the paper's scenario).
+        mechanism: Option<String>,
+        /// Dynamics formulation (default: the mechanism's first; the paper scenario: exact).
+        #[arg(long, value_enum)]
+        formulation: Option<FormulationArg>,
+        /// End time (s) (default: the mechanism file's `t_end`; the paper scenario: 2π).
+        #[arg(long, allow_hyphen_values = true)]
+        t_end: Option<f64>,
         /// HHT step (s).
         #[arg(long, default_value_t = Options::default().step, allow_hyphen_values = true)]
         step: f64,
-        /// HHT α in [−1/3, 0] (0: trapezoidal, no numerical damping).
-        #[arg(long, default_value_t = Options::default().alpha, allow_hyphen_values = true)]
-        alpha: f64,
+        /// HHT α in [−1/3, 0] (0: trapezoidal, no numerical damping) (default: 0 for a named
+        /// mechanism, with velocity projection; −0.05 for the paper scenario).
+        #[arg(long, allow_hyphen_values = true)]
+        alpha: Option<f64>,
         /// Spacing of the rows in the CSVs (s).
         #[arg(long, default_value_t = Options::default().output_step, allow_hyphen_values = true)]
         output_step: f64,
-        /// Source of the joint and actuator forces: the saddle-point solve at each output
-        /// state (`recovered`), or the integrator's own multipliers (`integrator`).
-        #[arg(long, value_enum, default_value = "recovered")]
-        reactions: ReactionsArg,
+        /// Paper scenario only: source of the joint and actuator forces, the saddle-point
+        /// solve at each output state (`recovered`) or the integrator's own multipliers
+        /// (`integrator`).
+        #[arg(long, value_enum)]
+        reactions: Option<ReactionsArg>,
         /// Output folder.
         #[arg(long, default_value = "out")]
         out: PathBuf,
@@ -68,8 +77,13 @@ enum Command {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    match cli.command {
+    let result = match cli.command {
+        Command::List => {
+            list();
+            Ok(())
+        }
         Command::Simulate {
+            mechanism: Some(name),
             formulation,
             t_end,
             step,
@@ -79,29 +93,177 @@ fn main() -> ExitCode {
             out,
             no_plots,
         } => {
-            let opts = Options {
-                formulation: match formulation {
-                    FormulationArg::Paper => Formulation::Paper,
-                    FormulationArg::Exact => Formulation::Exact,
-                },
-                t_end,
-                step,
-                alpha,
-                output_step,
-                reactions: match reactions {
-                    ReactionsArg::Recovered => Reactions::Recovered,
-                    ReactionsArg::Integrator => Reactions::Integrator,
-                },
-            };
-            match simulate(&opts, &out, !no_plots) {
-                Ok(()) => ExitCode::SUCCESS,
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    ExitCode::FAILURE
-                }
+            if reactions.is_some() {
+                Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string())
+            } else {
+                let defaults = generic::Options::default();
+                let opts = generic::Options {
+                    formulation: formulation.map(FormulationArg::formulation),
+                    t_end,
+                    step,
+                    alpha: alpha.unwrap_or(defaults.alpha),
+                    output_step,
+                };
+                simulate_named(&name, &opts, &out, !no_plots)
             }
         }
+        Command::Simulate {
+            mechanism: None,
+            formulation,
+            t_end,
+            step,
+            alpha,
+            output_step,
+            reactions,
+            out,
+            no_plots,
+        } => {
+            let defaults = Options::default();
+            let opts = Options {
+                formulation: formulation.map_or(defaults.formulation, FormulationArg::formulation),
+                t_end: t_end.unwrap_or(defaults.t_end),
+                step,
+                alpha: alpha.unwrap_or(defaults.alpha),
+                output_step,
+                reactions: match reactions {
+                    Some(ReactionsArg::Integrator) => Reactions::Integrator,
+                    Some(ReactionsArg::Recovered) | None => Reactions::Recovered,
+                },
+            };
+            simulate(&opts, &out, !no_plots)
+        }
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
     }
+}
+
+impl FormulationArg {
+    fn formulation(self) -> Formulation {
+        match self {
+            FormulationArg::Paper => Formulation::Paper,
+            FormulationArg::Exact => Formulation::Exact,
+        }
+    }
+}
+
+fn list() {
+    println!(
+        "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7}",
+        "mechanism", "formulations", "bodies", "coords", "rows", "redundant", "DOF", "t_end"
+    );
+    for e in REGISTRY {
+        let info = e.default_mechanism().info();
+        let forms: Vec<&str> = e.formulations.iter().map(|(f, _)| f.name()).collect();
+        println!(
+            "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7.3}",
+            e.name,
+            forms.join(","),
+            info.bodies.len(),
+            info.n_coords,
+            info.n_constraints,
+            info.redundant_rows.len(),
+            info.dof(),
+            e.t_end
+        );
+    }
+}
+
+/// The registry entry called `name`, or an error listing the known ones.
+fn entry(name: &str) -> Result<&'static symbody_mechanisms::Entry, String> {
+    symbody_mechanisms::find(name).ok_or_else(|| {
+        let known: Vec<&str> = REGISTRY.iter().map(|e| e.name).collect();
+        let close = known
+            .iter()
+            .filter(|k| k.contains(name) || name.contains(*k))
+            .map(|k| format!(" (did you mean `{k}`?)"))
+            .next()
+            .unwrap_or_default();
+        format!(
+            "no mechanism `{name}`{close}; known: {}. A new one needs mechanisms/{name}.toml and `cargo xtask generate {name}`",
+            known.join(", ")
+        )
+    })
+}
+
+fn simulate_named(
+    name: &str,
+    opts: &generic::Options,
+    out: &std::path::Path,
+    plots: bool,
+) -> Result<(), String> {
+    let entry = entry(name)?;
+    let rec = generic::run(entry, opts).map_err(|e| e.to_string())?;
+    let info = rec.info;
+    let s = rec.stats;
+    let span = rec.t.last().copied().unwrap_or(0.0);
+    println!("{} ({} formulation)", info.name, info.formulation.name());
+    println!(
+        "  size             {} bodies, {} coordinates, {} rows, {} DOF",
+        info.bodies.len(),
+        info.n_coords,
+        info.n_constraints,
+        info.dof()
+    );
+    println!(
+        "  time span        0 .. {span:.6} s, step {} s, alpha {}, velocities projected",
+        opts.step, opts.alpha
+    );
+    println!(
+        "  steps            {} accepted, {} rejected; {} Newton iterations ({:.2}/step), {} factorizations",
+        s.steps,
+        s.rejected_steps,
+        s.newton_iterations,
+        s.newton_iterations as f64 / s.steps.max(1) as f64,
+        s.factorizations
+    );
+    println!(
+        "  wall time        {:.1} ms ({} real time)",
+        rec.wall.as_secs_f64() * 1e3,
+        speed(span / rec.wall.as_secs_f64())
+    );
+    println!(
+        "  max |Phi|        {:.2e} (velocity residual {:.2e}; quaternion norms {:.2e})",
+        rec.max_phi, rec.max_velocity_residual, rec.max_norm_error
+    );
+    let (drift, scale) = rec.energy_balance();
+    println!(
+        "  energy balance   max |dT + dV - W| = {drift:.3e} J on a scale of {scale:.4} J ({:.1e})",
+        drift / scale.max(f64::MIN_POSITIVE)
+    );
+    if !info.redundant_rows.is_empty() {
+        let names: Vec<&str> = info
+            .redundant_rows
+            .iter()
+            .map(|&r| info.row_names[r as usize])
+            .collect();
+        println!(
+            "  redundant rows   {} (λ = 0: the reactions of their joints are one valid choice, not unique)",
+            names.join(", ")
+        );
+    }
+    if let Some(w) = rec.euler_warning {
+        println!(
+            "  warning: body `{}` reached beta = {:.3} rad at t = {:.3} s (Euler singularity at ±pi/2; use rotation = \"quaternion\")",
+            w.name, w.beta, w.time
+        );
+    }
+    let files = generic::write_csvs(&rec, out)
+        .map_err(|e| format!("cannot write CSVs to {}: {e}", out.display()))?;
+    let mut names: Vec<String> = files
+        .iter()
+        .filter_map(|f| Some(f.file_name()?.to_str()?.to_string()))
+        .collect();
+    if plots {
+        let pngs = generic::write_plots(&rec, out)?;
+        names.push(format!("{} PNG figures", pngs.len()));
+    }
+    println!("  wrote {}/: {}", out.display(), names.join(", "));
+    Ok(())
 }
 
 /// "123x faster than" or "0.06x", readable at any ratio.

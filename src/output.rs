@@ -5,7 +5,8 @@ use std::fmt::Write as _;
 use std::io;
 use std::path::Path;
 
-fn write(path: &Path, header: &str, rows: impl Iterator<Item = Vec<f64>>) -> io::Result<()> {
+/// Writes a CSV: the header line, then one line per row (shortest round-trip numbers).
+pub fn write(path: &Path, header: &str, rows: impl Iterator<Item = Vec<f64>>) -> io::Result<()> {
     let mut s = String::with_capacity(1 << 16);
     s.push_str(header);
     s.push('\n');

@@ -161,26 +161,7 @@ pub fn simulate(opts: &Options) -> Result<Run, ScenarioError> {
 pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
     let info = mech.info();
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
-    if !(opts.output_step.is_finite() && opts.output_step > 0.0) {
-        return Err(ScenarioError::Options(format!(
-            "--output-step must be positive and finite, got {}",
-            opts.output_step
-        )));
-    }
-    if !(opts.t_end.is_finite() && opts.t_end >= 0.0) {
-        return Err(ScenarioError::Options(format!(
-            "--t-end must be finite and zero or positive, got {}",
-            opts.t_end
-        )));
-    }
-    // Every output is kept in memory; beyond this the run would exhaust it, not finish.
-    const MAX_OUTPUTS: f64 = 1e7;
-    if opts.t_end / opts.output_step > MAX_OUTPUTS {
-        return Err(ScenarioError::Options(format!(
-            "{} s every {:e} s is more than {MAX_OUTPUTS:e} outputs: raise --output-step",
-            opts.t_end, opts.output_step
-        )));
-    }
+    let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
     let mut it = HhtBuilder::new()
         .alpha(opts.alpha)
@@ -189,7 +170,6 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
         .min_step((opts.step * 1e-4).min(1e-7))
         .build(mech)?;
     let mut run = Run::default();
-    let n_out = (opts.t_end / opts.output_step - 1e-9).ceil().max(0.0) as usize;
     let mut recorder = Recorder::new(info, layout, opts.reactions)?;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(opts.t_end);
@@ -200,6 +180,29 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
     run.wall = start.elapsed();
     run.euler_warning = it.first_euler_warning().map(|w| (w.time, w.name, w.beta));
     Ok(run)
+}
+
+/// Number of output intervals of `t_end` at `output_step` (outputs at 0, Δ, …, t_end),
+/// after checking both.
+pub fn output_count(t_end: f64, output_step: f64) -> Result<usize, ScenarioError> {
+    if !(output_step.is_finite() && output_step > 0.0) {
+        return Err(ScenarioError::Options(format!(
+            "--output-step must be positive and finite, got {output_step}"
+        )));
+    }
+    if !(t_end.is_finite() && t_end >= 0.0) {
+        return Err(ScenarioError::Options(format!(
+            "--t-end must be finite and zero or positive, got {t_end}"
+        )));
+    }
+    // Every output is kept in memory; beyond this the run would exhaust it, not finish.
+    const MAX_OUTPUTS: f64 = 1e7;
+    if t_end / output_step > MAX_OUTPUTS {
+        return Err(ScenarioError::Options(format!(
+            "{t_end} s every {output_step:e} s is more than {MAX_OUTPUTS:e} outputs: raise --output-step"
+        )));
+    }
+    Ok((t_end / output_step - 1e-9).ceil().max(0.0) as usize)
 }
 
 /// Work memory for recording outputs, allocated once per run.
