@@ -10,7 +10,8 @@ use std::time::{Duration, Instant};
 use symbody_mechanisms::Entry;
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, EulerWarning, Formulation,
-    HhtBuilder, JointKind, Mechanism, MechanismInfo, ResidualWatch, Rotation, Stats, Wrench,
+    HhtBuilder, Integrator, JointKind, Mechanism, MechanismInfo, ResidualWatch, Rotation, Stats,
+    Wrench,
 };
 
 /// Options of one run; `None` takes the mechanism's own default.
@@ -162,40 +163,20 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, ScenarioError> {
     // Sub-steps per output interval, so the meter sees every integration step.
     let sub = (opts.output_step / opts.step).ceil().max(1.0) as usize;
     let mut sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
-    record(
-        &mut rec,
-        &meter,
-        &mut watch,
-        mech,
-        it.t(),
-        it.q(),
-        it.qd(),
-        sample,
-    )?;
-    for k in 1..=n_out {
-        let (t0, t1) = (
-            ((k - 1) as f64 * opts.output_step).min(t_end),
-            (k as f64 * opts.output_step).min(t_end),
-        );
-        for j in 1..=sub {
-            let t = if j == sub {
-                t1
-            } else {
-                t0 + (t1 - t0) * j as f64 / sub as f64
-            };
-            it.advance_to(t)?;
-            sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
+    for k in 0..=n_out {
+        if k > 0 {
+            let (t0, t1) = (it.t(), (k as f64 * opts.output_step).min(t_end));
+            for j in 1..=sub {
+                let t = if j == sub {
+                    t1
+                } else {
+                    t0 + (t1 - t0) * j as f64 / sub as f64
+                };
+                it.advance_to(t)?;
+                sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
+            }
         }
-        record(
-            &mut rec,
-            &meter,
-            &mut watch,
-            mech,
-            it.t(),
-            it.q(),
-            it.qd(),
-            sample,
-        )?;
+        record(&mut rec, &meter, &mut watch, &it, sample)?;
     }
     rec.stats = it.stats();
     rec.euler_warning = it.first_euler_warning();
@@ -204,20 +185,17 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, ScenarioError> {
 }
 
 /// Appends one output; the meter has just recorded this state.
-#[allow(clippy::too_many_arguments)]
-fn record(
+fn record<M: Mechanism>(
     rec: &mut Recording,
     meter: &EnergyMeter,
     watch: &mut ResidualWatch,
-    mech: &dyn Mechanism,
-    t: f64,
-    q: &[f64],
-    qd: &[f64],
+    it: &Integrator<M>,
     sample: EnergySample,
 ) -> Result<(), ScenarioError> {
+    let (t, q, qd) = (it.t(), it.q(), it.qd());
     let info = rec.info;
     let (lambda, phi_q) = (meter.lambda(), meter.phi_q());
-    let r = watch.check(&mech, t, q, qd)?;
+    let r = watch.check(it.mechanism(), t, q, qd)?;
     rec.max_phi = rec.max_phi.max(r.position);
     rec.max_velocity_residual = rec.max_velocity_residual.max(r.velocity);
     for b in info

@@ -213,19 +213,7 @@ fn simulate_named(
         "  time span        0 .. {span:.6} s, step {} s, alpha {}, velocities projected",
         opts.step, opts.alpha
     );
-    println!(
-        "  steps            {} accepted, {} rejected; {} Newton iterations ({:.2}/step), {} factorizations",
-        s.steps,
-        s.rejected_steps,
-        s.newton_iterations,
-        s.newton_iterations as f64 / s.steps.max(1) as f64,
-        s.factorizations
-    );
-    println!(
-        "  wall time        {:.1} ms ({} real time)",
-        rec.wall.as_secs_f64() * 1e3,
-        speed(span / rec.wall.as_secs_f64())
-    );
+    print_work(&s, span, rec.wall);
     println!(
         "  max |Phi|        {:.2e} (velocity residual {:.2e}; quaternion norms {:.2e})",
         rec.max_phi, rec.max_velocity_residual, rec.max_norm_error
@@ -266,6 +254,23 @@ fn simulate_named(
     Ok(())
 }
 
+/// The solver statistics and wall time lines of a run summary.
+fn print_work(s: &symbody_runtime::Stats, span: f64, wall: std::time::Duration) {
+    println!(
+        "  steps            {} accepted, {} rejected; {} Newton iterations ({:.2}/step), {} factorizations",
+        s.steps,
+        s.rejected_steps,
+        s.newton_iterations,
+        s.newton_iterations as f64 / s.steps.max(1) as f64,
+        s.factorizations
+    );
+    println!(
+        "  wall time        {:.1} ms ({} real time)",
+        wall.as_secs_f64() * 1e3,
+        speed(span / wall.as_secs_f64())
+    );
+}
+
 /// "123x faster than" or "0.06x", readable at any ratio.
 fn speed(ratio: f64) -> String {
     if ratio >= 10.0 {
@@ -302,19 +307,7 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool) -> Result<(), St
         opts.step,
         opts.alpha
     );
-    println!(
-        "  steps            {} accepted, {} rejected; {} Newton iterations ({:.2}/step), {} factorizations",
-        s.steps,
-        s.rejected_steps,
-        s.newton_iterations,
-        s.newton_iterations as f64 / s.steps.max(1) as f64,
-        s.factorizations
-    );
-    println!(
-        "  wall time        {:.1} ms ({} real time)",
-        run.wall.as_secs_f64() * 1e3,
-        speed(run.t.last().copied().unwrap_or(0.0) / run.wall.as_secs_f64())
-    );
+    print_work(&s, run.t.last().copied().unwrap_or(0.0), run.wall);
     println!(
         "  max |Phi|        {:.2e} (velocity residual {:.2e})",
         run.max_phi, run.max_velocity_residual

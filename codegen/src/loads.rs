@@ -18,7 +18,10 @@ pub struct Loads {
 
 struct Acc<'a> {
     a: &'a mut Arena,
+    /// Terms of each generalized force, of the potential, and of the non-conservative power.
     force: Vec<Vec<Id>>,
+    potential: Vec<Id>,
+    power: Vec<Id>,
     n: usize,
 }
 
@@ -52,6 +55,23 @@ impl Acc<'_> {
         }
     }
 
+    /// A spring–damper–actuator along the scalar `coord`: generalized force
+    /// `−k·stretch − c·rate + f(t)` along it, potential `½k·stretch²`, non-conservative
+    /// power `(f(t) − c·rate)·rate`.
+    fn spring_damper(&mut self, coord: Id, stretch: Id, rate: Id, (k, c, f): (f64, f64, Id)) {
+        let a = &mut *self.a;
+        let (kc, cc) = (a.constant(k), a.constant(c));
+        let elastic = a.mul(kc, stretch);
+        let viscous = a.mul(cc, rate);
+        let nc = a.sub(f, viscous);
+        let total = a.sub(nc, elastic);
+        let half_k = a.constant(0.5 * k);
+        let s2 = a.powi(stretch, 2);
+        self.potential.push(a.mul(half_k, s2));
+        self.power.push(a.mul(nc, rate));
+        self.along(coord, total);
+    }
+
     /// Rate of change of `x` along the velocities.
     fn rate(&mut self, x: &[Id]) -> Vec<Id> {
         let qd: Vec<Id> = (0..self.n).map(|i| self.a.var(Var::Qd(i as u32))).collect();
@@ -64,19 +84,20 @@ impl Acc<'_> {
 
 pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Loads {
     let n = model.n_coords();
-    let mut potential = Vec::new();
-    for (b, body) in model.bodies.iter().enumerate() {
-        for k in 0..3 {
-            let c = a.constant(-body.mass * model.gravity[k]);
-            potential.push(a.mul(c, bodies[b].r[k]));
-        }
-    }
-    let mut power = Vec::new();
     let mut acc = Acc {
         a,
         force: vec![Vec::new(); n],
+        potential: Vec::new(),
+        power: Vec::new(),
         n,
     };
+    for (b, body) in model.bodies.iter().enumerate() {
+        for k in 0..3 {
+            let c = acc.a.constant(-body.mass * model.gravity[k]);
+            let v = acc.a.mul(c, bodies[b].r[k]);
+            acc.potential.push(v);
+        }
+    }
     for f in &model.forces {
         match &f.kind {
             ForceKind::Spring {
@@ -92,21 +113,9 @@ pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Loads {
                 let s2 = sym_frame(a, bodies, f2);
                 let len = distance(a, &s1, &s2);
                 let len_dot = acc.rate(&[len])[0];
-                let a = &mut *acc.a;
-                let l0 = a.constant(*free_length);
-                let stretch = a.sub(len, l0);
-                let k = a.constant(*stiffness);
-                let c = a.constant(*damping);
-                // Force along the separation (pushing apart): −k(ℓ − ℓ0) − c ℓ̇ + f(t).
-                let elastic = a.mul(k, stretch);
-                let viscous = a.mul(c, len_dot);
-                let nc = a.sub(*actuator, viscous);
-                let total = a.sub(nc, elastic);
-                let half_k = a.constant(0.5 * stiffness);
-                let s2 = a.powi(stretch, 2);
-                potential.push(a.mul(half_k, s2));
-                power.push(a.mul(nc, len_dot));
-                acc.along(len, total);
+                let l0 = acc.a.constant(*free_length);
+                let stretch = acc.a.sub(len, l0);
+                acc.spring_damper(len, stretch, len_dot, (*stiffness, *damping, *actuator));
             }
             ForceKind::Torsion {
                 joint,
@@ -136,18 +145,7 @@ pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Loads {
                 };
                 let delta = a.atan2(y, x);
                 let delta_dot = acc.rate(&[delta])[0];
-                let a = &mut *acc.a;
-                let k = a.constant(*stiffness);
-                let cd = a.constant(*damping);
-                let elastic = a.mul(k, delta);
-                let viscous = a.mul(cd, delta_dot);
-                let nc = a.sub(*torque, viscous);
-                let total = a.sub(nc, elastic);
-                let half_k = a.constant(0.5 * stiffness);
-                let d2 = a.powi(delta, 2);
-                potential.push(a.mul(half_k, d2));
-                power.push(a.mul(nc, delta_dot));
-                acc.along(delta, total);
+                acc.spring_damper(delta, delta, delta_dot, (*stiffness, *damping, *torque));
             }
             ForceKind::Force {
                 at,
@@ -163,7 +161,8 @@ pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Loads {
                     *value
                 };
                 let v = acc.rate(&p);
-                power.push(acc.a.dot3(f, [v[0], v[1], v[2]]));
+                let power = acc.a.dot3(f, [v[0], v[1], v[2]]);
+                acc.power.push(power);
                 acc.at_point(p, f);
             }
             ForceKind::Torque {
@@ -178,12 +177,19 @@ pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Loads {
                     *value
                 };
                 let omega = bodies[*body].omega_global(a);
-                power.push(a.dot3(tau, omega));
+                let p = a.dot3(tau, omega);
+                acc.power.push(p);
                 acc.torque(&bodies[*body], omega, tau);
             }
         }
     }
-    let Acc { a, force, .. } = acc;
+    let Acc {
+        a,
+        force,
+        potential,
+        power,
+        ..
+    } = acc;
     let force = force.into_iter().map(|terms| a.sum(terms)).collect();
     Loads {
         force,
