@@ -79,9 +79,29 @@ impl SchurKkt {
 }
 
 // The block kernels take the block size `s` as an argument and are always inlined: every
-// call site passes the literal 6 when the group has a body's six coordinates (the common
-// case), so the compiler sees a constant size, unrolls the loops and drops bounds checks;
-// other sizes run the same code with a variable `s`.
+// call site goes through `sized!`, which passes a literal 6 or 7 when the group has a body's
+// six (Euler) or seven (quaternion) coordinates, so the compiler sees a constant size,
+// unrolls the loops and drops bounds checks; other sizes run the same code with a variable.
+
+/// Evaluates `$body` with `$n` bound to the literal group size for 6 and 7, else to `$s`.
+macro_rules! sized {
+    ($s:expr, |$n:ident| $body:expr) => {
+        match $s {
+            6 => {
+                let $n = 6;
+                $body
+            }
+            7 => {
+                let $n = 7;
+                $body
+            }
+            _ => {
+                let $n = $s;
+                $body
+            }
+        }
+    };
+}
 
 /// `v ← L⁻¹ v` for the row-major lower-triangular `l` (`s × s`) with reciprocal diagonal `inv`.
 #[inline(always)]
@@ -234,6 +254,10 @@ impl KktSolver for SchurKkt {
         for mem in members {
             match groups.last_mut() {
                 Some(g) if g.len() + mem.len() <= GROUP_MAX => g.extend_from_slice(&mem),
+                // A quaternion body: three translations and its 4×4 rotation block. Kept
+                // together rather than split across the next body's coordinates, so its
+                // group touches only its own body's rows.
+                Some(g) if g.len() == 3 && mem.len() == 4 => g.extend_from_slice(&mem),
                 _ => groups.push(mem),
             }
         }
@@ -424,11 +448,7 @@ impl KktSolver for SchurKkt {
             let w = &mut self.wmat[self.p_off[b]..self.p_off[b] + k * s];
             let dest = &self.pair_dest[self.pair_ptr[b]..self.pair_ptr[b + 1]];
             let (diag, lval) = (&mut self.diag[..], &mut self.lval[..]);
-            let done = if s == 6 {
-                factor_group(6, a, inv, w, dest, diag, lval)
-            } else {
-                factor_group(s, a, inv, w, dest, diag, lval)
-            };
+            let done = sized!(s, |n| factor_group(n, a, inv, w, dest, diag, lval));
             if let Err((j, nan)) = done {
                 return Err(if nan {
                     KktError::NotFinite
@@ -540,17 +560,12 @@ impl KktSolver for SchurKkt {
             let inv = &self.inv_diag[c0..c1];
             let rows = &self.brows[self.brow_ptr[b]..self.brow_ptr[b + 1]];
             let w = &self.wmat[self.p_off[b]..self.p_off[b] + rows.len() * s];
-            if s == 6 {
-                forward(l, inv, 6, u);
-                for (&r, wrow) in rows.iter().zip(w.chunks_exact(6)) {
-                    self.rvec[r] += dot(wrow, u, 6);
+            sized!(s, |n| {
+                forward(l, inv, n, u);
+                for (&r, wrow) in rows.iter().zip(w.chunks_exact(n)) {
+                    self.rvec[r] += dot(wrow, u, n);
                 }
-            } else {
-                forward(l, inv, s, u);
-                for (&r, wrow) in rows.iter().zip(w.chunks_exact(s)) {
-                    self.rvec[r] += dot(wrow, u, s);
-                }
-            }
+            });
         }
         let sym = &self.sym;
         let z = &mut self.work;
@@ -594,11 +609,7 @@ impl KktSolver for SchurKkt {
                     *vi -= a * yr;
                 }
             }
-            if s == 6 {
-                backward(l, inv, 6, v);
-            } else {
-                backward(l, inv, s, v);
-            }
+            sized!(s, |n| backward(l, inv, n, v));
             for (&vi, &c) in v.iter().zip(&self.block_coords[c0..c1]) {
                 x[c] = vi;
             }
