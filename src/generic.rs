@@ -7,12 +7,17 @@ use crate::plot::{draw, Panel};
 use crate::scenario::{output_count, ScenarioError};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
-use symbody_mechanisms::Entry;
+use symbody_mechanisms::{Entry, REGISTRY};
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, EulerWarning, Formulation,
     HhtBuilder, Integrator, JointKind, Mechanism, MechanismInfo, ResidualWatch, Rotation, Stats,
     Wrench,
 };
+
+/// Why a run could not be made: an option out of range or not available for the mechanism
+/// (naming it), or a solver failure (with time and residual). The paper scenario's error
+/// type, so both paths report alike.
+pub type Error = ScenarioError;
 
 /// Options of one run; `None` takes the mechanism's own default.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,34 +51,54 @@ impl Default for Options {
     }
 }
 
-/// The recorded time series of one run, one entry per output time.
+/// The recorded time series of one run. Every `Vec` indexed by output has one entry per
+/// output time `t[k]` (0, Δ, 2Δ, …, t_end).
 #[derive(Debug, Clone)]
 pub struct Recording {
+    /// The simulated mechanism (names of bodies, joints, rows; the formulation run).
     pub info: &'static MechanismInfo,
+    /// Output times (s).
     pub t: Vec<f64>,
+    /// Per output: all coordinates (`info.coord_names`).
     pub q: Vec<Vec<f64>>,
+    /// Per output: all velocities, projected onto the velocity constraints.
     pub qd: Vec<Vec<f64>>,
-    /// Per output, per body: centre of mass and unit quaternion `[w, x, y, z]`.
+    /// Per output, per body (`info.bodies` order): centre of mass (m) and unit quaternion
+    /// `[w, x, y, z]` with `w ≥ 0` ([`body_pose`]), whatever the body's coordinates.
     pub poses: Vec<Vec<([f64; 3], [f64; 4])>>,
     /// Indices (in `info.joints`) of the joints whose wrenches are recorded: every joint
     /// except drivers and normalization rows.
     pub joints: Vec<usize>,
-    /// Per output, per recorded joint: the wrench on its first body (global, about the
-    /// joint point).
+    /// Per output, per recorded joint (`joints` order): the wrench the joint exerts on its
+    /// first body, global frame, moment about the joint point ([`joint_wrench`]; on the
+    /// ground when body 1 is the ground), from the multipliers of the saddle-point solve at
+    /// that output state.
     pub wrenches: Vec<Vec<Wrench>>,
-    /// Indices of the drivers.
+    /// Indices (in `info.joints`) of the drivers.
     pub drivers: Vec<usize>,
-    /// Per output, per driver: the effort along the driven coordinate.
+    /// Per output, per driver (`drivers` order): its effort ([`driver_effort`]), the force
+    /// (N) or torque (N·m, `JointInfo::effort_unit`) on the driven body along the driven
+    /// coordinate, positive in the direction the coordinate increases.
     pub efforts: Vec<Vec<f64>>,
-    /// Kinetic and potential energy and cumulative work at each output.
+    /// Per output: kinetic and potential energy, and the work of drivers and
+    /// non-conservative loads since t = 0, integrated by the trapezoid rule over every
+    /// integration step.
     pub energy: Vec<EnergySample>,
+    /// The integrator's counters over the run.
     pub stats: Stats,
-    /// Largest |Φ|∞ and |Φq q̇ + Φt|∞ at the outputs.
+    /// Largest |Φ|∞ at the outputs.
     pub max_phi: f64,
+    /// Largest |Φq q̇ + Φt|∞ at the outputs.
     pub max_velocity_residual: f64,
-    /// Largest |eᵀe − 1| over quaternion bodies and outputs.
+    /// Largest |eᵀe − 1| over quaternion bodies and outputs (0 without quaternion bodies).
     pub max_norm_error: f64,
+    /// Accepted steps the energy meter did not see: a step cut after a failed attempt
+    /// while landing on an output time takes two steps where one was planned, and the work
+    /// trapezoid spans both. 0 unless steps were rejected.
+    pub unmetered_steps: usize,
+    /// The first Euler-angle body that came near β = ±90°, if any.
     pub euler_warning: Option<EulerWarning>,
+    /// Wall time of the run (integration and recording, not writing).
     pub wall: Duration,
 }
 
@@ -90,12 +115,50 @@ impl Recording {
     }
 }
 
+/// The registry entry called `name`, or an error listing the known ones (with the closest
+/// as a suggestion) and how to add a new one.
+pub fn find(name: &str) -> Result<&'static Entry, Error> {
+    symbody_mechanisms::find(name).ok_or_else(|| {
+        let known: Vec<&str> = REGISTRY.iter().map(|e| e.name).collect();
+        // A typo is a few edits away; anything farther is not worth suggesting.
+        let close = known
+            .iter()
+            .map(|k| (edit_distance(k, name), *k))
+            .filter(|&(d, k)| d <= 2.max(k.len() / 3))
+            .min()
+            .map(|(_, k)| format!(" (did you mean `{k}`?)"))
+            .unwrap_or_default();
+        ScenarioError::Options(format!(
+            "no mechanism `{name}`{close}; known: {}. A new one needs mechanisms/{name}.toml and `cargo xtask generate {name}`",
+            known.join(", ")
+        ))
+    })
+}
+
+/// Levenshtein distance (insertions, deletions, substitutions) between `a` and `b`.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diag = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let next = (diag + usize::from(ca != cb))
+                .min(row[j] + 1)
+                .min(row[j + 1] + 1);
+            diag = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
 /// The mechanism of `entry` in formulation `f` (or its default), with an error naming the
 /// generated ones.
 pub fn mechanism(
     entry: &Entry,
     f: Option<Formulation>,
-) -> Result<&'static (dyn Mechanism + Sync), ScenarioError> {
+) -> Result<&'static (dyn Mechanism + Sync), Error> {
     match f {
         None => Ok(entry.default_mechanism()),
         Some(f) => entry.mechanism(f).ok_or_else(|| {
@@ -110,13 +173,13 @@ pub fn mechanism(
     }
 }
 
-/// Simulates `entry` with `opts`.
+/// Simulates `entry` with `opts`: what `symbody simulate <name>` runs before writing.
 ///
 /// The integrator projects the velocities onto the constraints after every step, and the
 /// energy meter records after every step, so the work of drivers and non-conservative
 /// loads is integrated at the integration step. Reactions come from the multipliers of the
 /// saddle-point solve at each output state.
-pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, ScenarioError> {
+pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
     let mech = mechanism(entry, opts.formulation)?;
     let info = mech.info();
     let t_end = opts.t_end.unwrap_or(entry.t_end);
@@ -157,24 +220,18 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, ScenarioError> {
         max_phi: 0.0,
         max_velocity_residual: 0.0,
         max_norm_error: 0.0,
+        unmetered_steps: 0,
         euler_warning: None,
         wall: Duration::ZERO,
     };
-    // Sub-steps per output interval, so the meter sees every integration step.
-    let sub = (opts.output_step / opts.step).ceil().max(1.0) as usize;
     let mut sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
     for k in 0..=n_out {
-        if k > 0 {
-            let (t0, t1) = (it.t(), (k as f64 * opts.output_step).min(t_end));
-            for j in 1..=sub {
-                let t = if j == sub {
-                    t1
-                } else {
-                    t0 + (t1 - t0) * j as f64 / sub as f64
-                };
-                it.advance_to(t)?;
-                sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
-            }
+        let t_out = (k as f64 * opts.output_step).min(t_end);
+        while it.t() < t_out {
+            let steps = it.stats().steps;
+            step_towards(&mut it, t_out)?;
+            rec.unmetered_steps += (it.stats().steps - steps).saturating_sub(1);
+            sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
         }
         record(&mut rec, &meter, &mut watch, &it, sample)?;
     }
@@ -184,6 +241,27 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, ScenarioError> {
     Ok(rec)
 }
 
+/// One accepted step towards `t_out`, landing on it exactly.
+///
+/// [`Integrator::advance_to`] would take all the steps to `t_out` at once; the energy
+/// meter must see each. So this takes the same steps one call at a time: the nominal step
+/// while two or more fit, then the remainder evened out over two steps, the last landing
+/// on `t_out` (advance_to's own rule, which keeps slivers of a step out of the βh²-scaled
+/// rows). A step that fails is retried at half size inside the integrator; only then can
+/// one call take two steps (counted in [`Recording::unmetered_steps`]).
+fn step_towards<M: Mechanism>(it: &mut Integrator<M>, t_out: f64) -> Result<(), Error> {
+    let (t, h) = (it.t(), it.step_size());
+    let remaining = t_out - t;
+    if remaining <= h * (1.0 + 1e-9) {
+        it.advance_to(t_out)?;
+    } else if remaining < 2.0 * h {
+        it.advance_to(t + 0.5 * remaining)?;
+    } else {
+        it.step()?;
+    }
+    Ok(())
+}
+
 /// Appends one output; the meter has just recorded this state.
 fn record<M: Mechanism>(
     rec: &mut Recording,
@@ -191,7 +269,7 @@ fn record<M: Mechanism>(
     watch: &mut ResidualWatch,
     it: &Integrator<M>,
     sample: EnergySample,
-) -> Result<(), ScenarioError> {
+) -> Result<(), Error> {
     let (t, q, qd) = (it.t(), it.q(), it.qd());
     let info = rec.info;
     let (lambda, phi_q) = (meter.lambda(), meter.phi_q());
@@ -234,6 +312,18 @@ fn record<M: Mechanism>(
     rec.qd.push(qd.to_vec());
     rec.energy.push(sample);
     Ok(())
+}
+
+/// Writes everything `symbody simulate <name>` writes into `dir`: the CSVs
+/// ([`write_csvs`]) and, with `plots`, the figures ([`write_plots`]). Returns the files
+/// written; the error names the folder or file that could not be written.
+pub fn write_outputs(rec: &Recording, dir: &Path, plots: bool) -> Result<Vec<PathBuf>, String> {
+    let mut files =
+        write_csvs(rec, dir).map_err(|e| format!("cannot write CSVs to {}: {e}", dir.display()))?;
+    if plots {
+        files.extend(write_plots(rec, dir)?);
+    }
+    Ok(files)
 }
 
 /// Writes `bodies.csv`, `joints.csv`, `drivers.csv` and `energy.csv` into `dir`.

@@ -173,30 +173,13 @@ fn list() {
     }
 }
 
-/// The registry entry called `name`, or an error listing the known ones.
-fn entry(name: &str) -> Result<&'static symbody_mechanisms::Entry, String> {
-    symbody_mechanisms::find(name).ok_or_else(|| {
-        let known: Vec<&str> = REGISTRY.iter().map(|e| e.name).collect();
-        let close = known
-            .iter()
-            .filter(|k| k.contains(name) || name.contains(*k))
-            .map(|k| format!(" (did you mean `{k}`?)"))
-            .next()
-            .unwrap_or_default();
-        format!(
-            "no mechanism `{name}`{close}; known: {}. A new one needs mechanisms/{name}.toml and `cargo xtask generate {name}`",
-            known.join(", ")
-        )
-    })
-}
-
 fn simulate_named(
     name: &str,
     opts: &generic::Options,
     out: &std::path::Path,
     plots: bool,
 ) -> Result<(), String> {
-    let entry = entry(name)?;
+    let entry = generic::find(name).map_err(|e| e.to_string())?;
     let rec = generic::run(entry, opts).map_err(|e| e.to_string())?;
     let info = rec.info;
     let s = rec.stats;
@@ -240,16 +223,17 @@ fn simulate_named(
             w.name, w.beta, w.time
         );
     }
-    let files = generic::write_csvs(&rec, out)
-        .map_err(|e| format!("cannot write CSVs to {}: {e}", out.display()))?;
-    let mut names: Vec<String> = files
-        .iter()
-        .filter_map(|f| Some(f.file_name()?.to_str()?.to_string()))
-        .collect();
-    if plots {
-        let pngs = generic::write_plots(&rec, out)?;
-        names.push(format!("{} PNG figures", pngs.len()));
+    if rec.unmetered_steps > 0 {
+        println!(
+            "  note: {} steps were cut after a failed attempt while landing on an output time; the work integral spans each with its neighbour",
+            rec.unmetered_steps
+        );
     }
+    let files = generic::write_outputs(&rec, out, plots)?;
+    let names: Vec<&str> = files
+        .iter()
+        .filter_map(|f| f.file_name()?.to_str())
+        .collect();
     println!("  wrote {}/: {}", out.display(), names.join(", "));
     Ok(())
 }
