@@ -131,8 +131,13 @@ pub fn index_entries(
         if let Some((_, forms)) = regenerated.iter().find(|(r, _)| r == n) {
             entries.push((n.clone(), forms.clone()));
         } else if !attempted.contains(n) && root.join(module_path(n)).exists() {
-            match generated_module(root, n) {
-                Ok((_, g)) => entries.push((n.clone(), g.formulations)),
+            // Reading the file is enough to list it (generating it again would cost the full
+            // derivation of every mechanism each time one is regenerated).
+            let rel = format!("{MECHANISMS_DIR}/{n}.toml");
+            let path = root.join(&rel);
+            let text = std::fs::read_to_string(&path).map_err(|e| FilesError::Io(path, e))?;
+            match crate::model::load(&rel, &text) {
+                Ok(m) => entries.push((n.clone(), m.formulations)),
                 Err(_) => left_out.push(n.clone()),
             }
         }
