@@ -419,7 +419,8 @@ pub fn write_csvs(rec: &Recording, dir: &Path) -> std::io::Result<Vec<PathBuf>> 
     Ok(written)
 }
 
-/// Draws `drivers.png` (one panel per driver) and `position_<body>.png` for every body.
+/// Draws `drivers.png` (one panel per driver, if any) and `position_<body>.png` (X, Y, Z
+/// panels of its centre of mass) for every body.
 pub fn write_plots(rec: &Recording, dir: &Path) -> Result<Vec<PathBuf>, String> {
     let info = rec.info;
     let mut files = Vec::new();
@@ -447,17 +448,22 @@ pub fn write_plots(rec: &Recording, dir: &Path) -> Result<Vec<PathBuf>, String> 
         files.push(path);
     }
     for (b, body) in info.bodies.iter().enumerate() {
-        let coord = |c: usize| rec.poses.iter().map(|p| p[b].0[c]).collect::<Vec<f64>>();
-        let panel = Panel {
-            y_label: "centre of mass (m)",
-            series: vec![("x", coord(0)), ("y", coord(1)), ("z", coord(2))],
-        };
+        // One panel per axis: a coordinate that barely moves keeps its own scale instead
+        // of being flattened by the others' range.
+        let panels: Vec<Panel> = ["X (m)", "Y (m)", "Z (m)"]
+            .into_iter()
+            .enumerate()
+            .map(|(c, label)| Panel {
+                y_label: label,
+                series: vec![(label, rec.poses.iter().map(|p| p[b].0[c]).collect())],
+            })
+            .collect();
         let path = dir.join(format!("position_{}.png", body.name));
         draw(
             &path,
-            &format!("{}: {}", info.name, body.name),
+            &format!("{}: centre of mass of {}", info.name, body.name),
             &rec.t,
-            &[panel],
+            &panels,
         )?;
         files.push(path);
     }

@@ -56,7 +56,14 @@ pub fn draw(path: &Path, title: &str, t: &[f64], panels: &[Panel<'_>]) -> Result
         if !lo.is_finite() || !hi.is_finite() {
             (lo, hi) = (-1.0, 1.0);
         }
-        let pad = ((hi - lo) * 0.08).max(1e-9 * (1.0 + hi.abs()));
+        // A series flat to roundoff (a planar mechanism's Z) gets a readable unit-scale
+        // axis instead of one spanning 1e-9 whose tick labels all round to the same value.
+        let scale = 1.0 + hi.abs().max(lo.abs());
+        let pad = if hi - lo <= 1e-9 * scale {
+            0.1 * scale
+        } else {
+            (hi - lo) * 0.08
+        };
         let mut chart = ChartBuilder::on(area)
             .margin(12)
             .x_label_area_size(40)
