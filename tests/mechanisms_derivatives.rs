@@ -26,9 +26,8 @@
 
 mod common;
 
-use common::{dense_mass, dense_phi_q, random_state_for, Rng};
-use nalgebra::{DMatrix, Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
-use std::ops::{Add, Mul, Sub};
+use common::{d1, dense_mass, dense_phi_q, random_state_for, rotation, Rng};
+use nalgebra::{DMatrix, Vector3};
 use symbody_mechanisms::REGISTRY;
 use symbody_runtime::{BodyInfo, Formulation, Mechanism, MechanismInfo, Rotation};
 
@@ -58,34 +57,6 @@ fn mass_dense(mech: &dyn Mechanism, q: &[f64]) -> DMatrix<f64> {
     let mut m = vec![0.0; info.mass_nnz()];
     mech.mass(q, &mut m);
     dense_mass(info, &m)
-}
-
-/// First derivative of `f` at 0 by the fourth-order central stencil
-/// (f(−2h) − 8f(−h) + 8f(h) − f(2h)) / 12h.
-fn d1<T>(f: impl Fn(f64) -> T, h: f64) -> T
-where
-    T: Add<Output = T> + Sub<Output = T> + Mul<f64, Output = T>,
-{
-    (f(-2.0 * h) - f(2.0 * h) + (f(h) - f(-h)) * 8.0) * (1.0 / (12.0 * h))
-}
-
-/// The body's rotation matrix (local → global) from nalgebra: Rz(γ)·Ry(β)·Rx(θ) for Euler
-/// angles, the unit quaternion e/|e| (scalar first) for Euler parameters.
-fn rotation(body: &BodyInfo, q: &[f64]) -> Matrix3<f64> {
-    let r = &q[body.coord_offset + 3..];
-    match body.rotation {
-        Rotation::Euler => {
-            let rz = Rotation3::from_axis_angle(&Vector3::z_axis(), r[2]);
-            let ry = Rotation3::from_axis_angle(&Vector3::y_axis(), r[1]);
-            let rx = Rotation3::from_axis_angle(&Vector3::x_axis(), r[0]);
-            (rz * ry * rx).into_inner()
-        }
-        Rotation::Quaternion => {
-            UnitQuaternion::from_quaternion(Quaternion::new(r[0], r[1], r[2], r[3]))
-                .to_rotation_matrix()
-                .into_inner()
-        }
-    }
 }
 
 /// Body-frame angular velocity ω' from skew(ω') = AᵀȦ, with Ȧ = dA(q + s q̇)/ds at s = 0 by

@@ -2,8 +2,8 @@
 //! dense-matrix utilities over the generated sparse outputs.
 #![allow(dead_code)]
 
-use nalgebra::DMatrix;
-use symbody_runtime::MechanismInfo;
+use nalgebra::{DMatrix, Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
+use symbody_runtime::{BodyInfo, MechanismInfo, Rotation};
 
 /// splitmix64: deterministic, so a failing configuration reproduces.
 pub struct Rng(pub u64);
@@ -71,7 +71,6 @@ pub fn random_state(rng: &mut Rng, q0: &[f64]) -> (Vec<f64>, Vec<f64>, f64) {
 /// |e| = 1. Velocities uniform in ±1 (quaternion rates included, so ė is not tangent to the
 /// unit sphere), time uniform in [0, 7].
 pub fn random_state_for(rng: &mut Rng, info: &MechanismInfo) -> (Vec<f64>, Vec<f64>, f64) {
-    use symbody_runtime::Rotation;
     let mut q = info.q0.to_vec();
     for b in info.bodies {
         let o = b.coord_offset;
@@ -99,4 +98,32 @@ pub fn random_state_for(rng: &mut Rng, info: &MechanismInfo) -> (Vec<f64>, Vec<f
     let qd: Vec<f64> = (0..q.len()).map(|_| rng.uniform(-1.0, 1.0)).collect();
     let t = rng.uniform(0.0, 7.0);
     (q, qd, t)
+}
+
+/// First derivative of `f` at 0 by the fourth-order central stencil
+/// (f(−2h) − 8f(−h) + 8f(h) − f(2h)) / 12h.
+pub fn d1<T>(f: impl Fn(f64) -> T, h: f64) -> T
+where
+    T: std::ops::Add<Output = T> + std::ops::Sub<Output = T> + std::ops::Mul<f64, Output = T>,
+{
+    (f(-2.0 * h) - f(2.0 * h) + (f(h) - f(-h)) * 8.0) * (1.0 / (12.0 * h))
+}
+
+/// The body's rotation matrix (local → global) from nalgebra: Rz(γ)·Ry(β)·Rx(θ) for Euler
+/// angles, the unit quaternion e/|e| (scalar first) for Euler parameters.
+pub fn rotation(body: &BodyInfo, q: &[f64]) -> Matrix3<f64> {
+    let r = &q[body.coord_offset + 3..];
+    match body.rotation {
+        Rotation::Euler => {
+            let rz = Rotation3::from_axis_angle(&Vector3::z_axis(), r[2]);
+            let ry = Rotation3::from_axis_angle(&Vector3::y_axis(), r[1]);
+            let rx = Rotation3::from_axis_angle(&Vector3::x_axis(), r[0]);
+            (rz * ry * rx).into_inner()
+        }
+        Rotation::Quaternion => {
+            UnitQuaternion::from_quaternion(Quaternion::new(r[0], r[1], r[2], r[3]))
+                .to_rotation_matrix()
+                .into_inner()
+        }
+    }
 }
