@@ -35,8 +35,21 @@ fn list_shows_every_registered_mechanism() {
             .find(|l| l.split_whitespace().next() == Some(e.name))
             .unwrap_or_else(|| panic!("{} missing from\n{out}", e.name));
         let cols: Vec<&str> = line.split_whitespace().collect();
+        let forms: Vec<&str> = e.formulations.iter().map(|(f, _)| f.name()).collect();
+        assert_eq!(cols[1], forms.join(","), "{line}");
+        assert_eq!(cols[2], info.bodies.len().to_string(), "{line}");
         assert_eq!(cols[3], info.n_coords.to_string(), "{line}");
+        assert_eq!(cols[4], info.n_constraints.to_string(), "{line}");
+        assert_eq!(cols[5], info.redundant_rows.len().to_string(), "{line}");
         assert_eq!(cols[6], info.dof().to_string(), "{line}");
+        assert_eq!(
+            cols[7]
+                .parse::<f64>()
+                .ok()
+                .map(|t| (t - e.t_end).abs() < 1e-3),
+            Some(true),
+            "{line}"
+        );
     }
 }
 
@@ -89,6 +102,39 @@ fn simulate_writes_the_four_csvs_with_their_columns() {
                 "{f}: {l}"
             );
         }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn simulate_draws_the_drivers_and_each_body_and_prints_the_balance() {
+    let dir = temp_dir("four_bar_plots");
+    let (ok, out, err) = symbody(&[
+        "simulate",
+        "four_bar",
+        "--t-end",
+        "0.05",
+        "--out",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(ok, "{out}\n{err}");
+    for f in [
+        "drivers.png",
+        "position_crank.png",
+        "position_coupler.png",
+        "position_rocker.png",
+    ] {
+        let bytes = std::fs::read(dir.join(f)).expect(f);
+        assert!(bytes.starts_with(b"\x89PNG"), "{f}");
+    }
+    for line in [
+        "time span",
+        "steps",
+        "wall time",
+        "max |Phi|",
+        "energy balance",
+    ] {
+        assert!(out.contains(line), "{line} missing from\n{out}");
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
