@@ -186,8 +186,9 @@ fn simulate_named(
     let span = rec.t.last().copied().unwrap_or(0.0);
     println!("{} ({} formulation)", info.name, info.formulation.name());
     println!(
-        "  size             {} bodies, {} coordinates, {} rows, {} DOF",
+        "  size             {} bod{}, {} coordinates, {} rows, {} DOF",
         info.bodies.len(),
+        if info.bodies.len() == 1 { "y" } else { "ies" },
         info.n_coords,
         info.n_constraints,
         info.dof()
@@ -197,9 +198,18 @@ fn simulate_named(
         opts.step, opts.alpha
     );
     print_work(&s, span, rec.wall);
+    let norms = if info
+        .bodies
+        .iter()
+        .any(|b| b.rotation == symbody_runtime::Rotation::Quaternion)
+    {
+        format!("; quaternion norms |e'e - 1| {:.2e}", rec.max_norm_error)
+    } else {
+        String::new()
+    };
     println!(
-        "  max |Phi|        {:.2e} (velocity residual {:.2e}; quaternion norms {:.2e})",
-        rec.max_phi, rec.max_velocity_residual, rec.max_norm_error
+        "  max |Phi|        {:.2e} (velocity residual {:.2e}{norms})",
+        rec.max_phi, rec.max_velocity_residual
     );
     let (drift, scale) = rec.energy_balance();
     println!(
