@@ -81,8 +81,8 @@ pub struct Recording {
     /// coordinate, positive in the direction the coordinate increases.
     pub efforts: Vec<Vec<f64>>,
     /// Per output: kinetic and potential energy, and the work of drivers and
-    /// non-conservative loads since t = 0, integrated by the trapezoid rule over every
-    /// integration step.
+    /// non-conservative loads since t = 0, integrated by [`EnergyMeter`] from its samples
+    /// after every integration step.
     pub energy: Vec<EnergySample>,
     /// The integrator's counters over the run.
     pub stats: Stats,
@@ -94,7 +94,7 @@ pub struct Recording {
     pub max_norm_error: f64,
     /// Accepted steps the energy meter did not see: a step cut after a failed attempt
     /// while landing on an output time takes two steps where one was planned, and the work
-    /// trapezoid spans both. 0 unless steps were rejected.
+    /// integral has one sample for both. 0 unless steps were rejected.
     pub unmetered_steps: usize,
     /// The first Euler-angle body that came near β = ±90°, if any.
     pub euler_warning: Option<EulerWarning>,
@@ -534,8 +534,8 @@ mod tests {
     }
 
     /// The meter records after every step, not every output: the work integral is the same
-    /// whether outputs come every step or every ten. Recorded only at outputs, the
-    /// trapezoid over 10 ms would be off by 4e-4 J (of 1.1 J) on this driven four-bar.
+    /// whether outputs come every step or every ten. Recorded only at outputs, a trapezoid
+    /// over 10 ms would be off by 4e-4 J (of 1.1 J) on this driven four-bar.
     #[test]
     fn work_is_integrated_at_the_step_not_the_output_spacing() {
         let every = |output_step: f64| {
