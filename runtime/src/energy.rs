@@ -8,13 +8,14 @@
 //! depend on time (drivers), and `P_nc` is [`Mechanism::power_nc`]. The multipliers are
 //! recovered at each recorded state from `[M Φqᵀ; Φq 0][q̈; λ] = [Q; γ]` (the reactions of
 //! that state, not an integrator's α-shifted ones), and the power is integrated between
-//! records by the trapezoid rule. With redundant rows λ is not unique, but `λᵀΦt` is:
+//! records by the corrected trapezoid rule of [`crate::quadrature`]. With redundant rows λ is not unique, but `λᵀΦt` is:
 //! two valid λ differ by `δλ` with `Φqᵀδλ = 0`, and `Φt = −Φq v` for a consistent `v`.
 
 use crate::error::{check_len, Error};
 use crate::kinematics::Kinematics;
 use crate::kkt::{KktSolver, SchurKkt};
 use crate::mechanism::{Mechanism, MechanismInfo};
+use crate::quadrature::RunningIntegral;
 
 /// Energies at one recorded state.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -45,9 +46,9 @@ pub struct EnergyMeter<K: KktSolver = SchurKkt> {
     phi_t: Vec<f64>,
     qdd: Vec<f64>,
     lambda: Vec<f64>,
-    /// Time and power of the last record (`None` before the first).
-    last: Option<(f64, f64)>,
-    work: f64,
+    /// Time of the last record (`None` before the first).
+    last: Option<f64>,
+    work: RunningIntegral,
 }
 
 impl<K: KktSolver> EnergyMeter<K> {
@@ -60,21 +61,21 @@ impl<K: KktSolver> EnergyMeter<K> {
             qdd: vec![0.0; info.n_coords],
             lambda: vec![0.0; info.n_constraints],
             last: None,
-            work: 0.0,
+            work: RunningIntegral::default(),
         })
     }
 
     /// Forgets the records: the next one starts the work at zero.
     pub fn reset(&mut self) {
         self.last = None;
-        self.work = 0.0;
+        self.work.reset();
     }
 
     /// Records the state `(q, q̇)` at time `t` (not before the last record's time).
     ///
     /// Solves for `q̈` and λ at the state (borrow them with [`EnergyMeter::lambda`] and
     /// [`EnergyMeter::qdd`], e.g. for [`crate::reactions::joint_wrench`] with
-    /// [`EnergyMeter::phi_q`]), then adds the trapezoid of the power since the last record.
+    /// [`EnergyMeter::phi_q`]), then integrates the power up to `t`.
     pub fn record<M: Mechanism>(
         &mut self,
         mech: &M,
@@ -92,7 +93,7 @@ impl<K: KktSolver> EnergyMeter<K> {
                 reason: "must be finite",
             });
         }
-        if let Some((t_last, _)) = self.last {
+        if let Some(t_last) = self.last {
             if !(t >= t_last) {
                 return Err(Error::InvalidSetting {
                     name: "t",
@@ -129,14 +130,11 @@ impl<K: KktSolver> EnergyMeter<K> {
                 what: "energy or power",
             });
         }
-        if let Some((t_last, p_last)) = self.last {
-            self.work += 0.5 * (p_last + power) * (t - t_last);
-        }
-        self.last = Some((t, power));
+        self.last = Some(t);
         Ok(EnergySample {
             kinetic,
             potential,
-            work: self.work,
+            work: self.work.push(t, power),
             power,
         })
     }

@@ -28,6 +28,7 @@ pub mod kinematics;
 pub mod kkt;
 pub mod mechanism;
 pub mod pose;
+pub mod quadrature;
 pub mod reactions;
 pub mod testmodels;
 pub mod watch;
