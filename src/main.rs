@@ -180,7 +180,7 @@ fn simulate_named(
     plots: bool,
 ) -> Result<(), String> {
     let entry = generic::find(name).map_err(|e| e.to_string())?;
-    let rec = generic::run(entry, opts).map_err(|e| e.to_string())?;
+    let rec = generic::run(entry, opts).map_err(|e| format!("{name}: {e}"))?;
     let info = rec.info;
     let s = rec.stats;
     let span = rec.t.last().copied().unwrap_or(0.0);
