@@ -9,6 +9,15 @@ use symbody::scenario::{self, largest_rotation, Options, Reactions};
 use symbody_mechanisms::REGISTRY;
 use symbody_runtime::Formulation;
 
+/// `println!` that ignores a closed standard output (e.g. piped into `head`) instead of
+/// panicking: the run still writes its files.
+macro_rules! say {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($arg)*);
+    }};
+}
+
 #[derive(Parser)]
 #[command(
     name = "symbody",
@@ -152,14 +161,21 @@ impl FormulationArg {
 }
 
 fn list() {
-    println!(
+    say!(
         "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7}",
-        "mechanism", "formulations", "bodies", "coords", "rows", "redundant", "DOF", "t_end"
+        "mechanism",
+        "formulations",
+        "bodies",
+        "coords",
+        "rows",
+        "redundant",
+        "DOF",
+        "t_end"
     );
     for e in REGISTRY {
         let info = e.default_mechanism().info();
         let forms: Vec<&str> = e.formulations.iter().map(|(f, _)| f.name()).collect();
-        println!(
+        say!(
             "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7.3}",
             e.name,
             forms.join(","),
@@ -184,8 +200,8 @@ fn simulate_named(
     let info = rec.info;
     let s = rec.stats;
     let span = rec.t.last().copied().unwrap_or(0.0);
-    println!("{} ({} formulation)", info.name, info.formulation.name());
-    println!(
+    say!("{} ({} formulation)", info.name, info.formulation.name());
+    say!(
         "  size             {} bod{}, {} coordinates, {} rows, {} DOF",
         info.bodies.len(),
         if info.bodies.len() == 1 { "y" } else { "ies" },
@@ -193,9 +209,10 @@ fn simulate_named(
         info.n_constraints,
         info.dof()
     );
-    println!(
+    say!(
         "  time span        0 .. {span:.6} s, step {} s, alpha {}, velocities projected",
-        opts.step, opts.alpha
+        opts.step,
+        opts.alpha
     );
     print_work(&s, span, rec.wall);
     let norms = if info
@@ -207,12 +224,13 @@ fn simulate_named(
     } else {
         String::new()
     };
-    println!(
+    say!(
         "  max |Phi|        {:.2e} (velocity residual {:.2e}{norms})",
-        rec.max_phi, rec.max_velocity_residual
+        rec.max_phi,
+        rec.max_velocity_residual
     );
     let (drift, scale) = rec.energy_balance();
-    println!(
+    say!(
         "  energy balance   max |dT + dV - W| = {drift:.3e} J on a scale of {scale:.4} J ({:.1e})",
         drift / scale.max(f64::MIN_POSITIVE)
     );
@@ -222,19 +240,19 @@ fn simulate_named(
             .iter()
             .map(|&r| info.row_names[r as usize])
             .collect();
-        println!(
+        say!(
             "  redundant rows   {} (λ = 0: the reactions of their joints are one valid choice, not unique)",
             names.join(", ")
         );
     }
     if let Some(w) = rec.euler_warning {
-        println!(
+        say!(
             "  warning: body `{}` reached beta = {:.3} rad at t = {:.3} s (Euler singularity at ±pi/2; use rotation = \"quaternion\")",
             w.name, w.beta, w.time
         );
     }
     if rec.unmetered_steps > 0 {
-        println!(
+        say!(
             "  note: {} steps were cut after a failed attempt while landing on an output time; the work integral spans each with its neighbour",
             rec.unmetered_steps
         );
@@ -244,13 +262,13 @@ fn simulate_named(
         .iter()
         .filter_map(|f| f.file_name()?.to_str())
         .collect();
-    println!("  wrote {}/: {}", out.display(), names.join(", "));
+    say!("  wrote {}/: {}", out.display(), names.join(", "));
     Ok(())
 }
 
 /// The solver statistics and wall time lines of a run summary.
 fn print_work(s: &symbody_runtime::Stats, span: f64, wall: std::time::Duration) {
-    println!(
+    say!(
         "  steps            {} accepted, {} rejected; {} Newton iterations ({:.2}/step), {} factorizations",
         s.steps,
         s.rejected_steps,
@@ -258,7 +276,7 @@ fn print_work(s: &symbody_runtime::Stats, span: f64, wall: std::time::Duration) 
         s.newton_iterations as f64 / s.steps.max(1) as f64,
         s.factorizations
     );
-    println!(
+    say!(
         "  wall time        {:.1} ms ({} real time)",
         wall.as_secs_f64() * 1e3,
         speed(span / wall.as_secs_f64())
@@ -291,39 +309,42 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool) -> Result<(), St
     let (xlo, xhi) = run.platform_range(0);
     let (axis, rot) = largest_rotation(&run);
     let f0 = run.upper[0][0];
-    println!(
+    say!(
         "Stewart 6-6, paper scenario ({} formulation)",
         opts.formulation.name()
     );
-    println!(
+    say!(
         "  time span        0 .. {:.6} s, step {} s, alpha {}",
         run.t.last().unwrap_or(&0.0),
         opts.step,
         opts.alpha
     );
     print_work(&s, run.t.last().copied().unwrap_or(0.0), run.wall);
-    println!(
+    say!(
         "  max |Phi|        {:.2e} (velocity residual {:.2e})",
-        run.max_phi, run.max_velocity_residual
+        run.max_phi,
+        run.max_velocity_residual
     );
-    println!("  platform X range [{xlo:.5}, {xhi:.5}] m");
-    println!("  largest rotation {rot:.4} rad, {axis}");
-    println!(
+    say!("  platform X range [{xlo:.5}, {xhi:.5}] m");
+    say!("  largest rotation {rot:.4} rad, {axis}");
+    say!(
         "  F on platform at leg 1 upper joint, t=0: ({:.5}, {:.5}, {:.5}) N",
-        f0[0], f0[1], f0[2]
+        f0[0],
+        f0[1],
+        f0[2]
     );
     if let Some((t, body, beta)) = run.euler_warning {
-        println!("  warning: body `{body}` reached beta = {beta:.3} rad at t = {t:.3} s (Euler singularity at ±pi/2)");
+        say!("  warning: body `{body}` reached beta = {beta:.3} rad at t = {t:.3} s (Euler singularity at ±pi/2)");
     }
     symbody::output::write_csvs(&run, out)
         .map_err(|e| format!("cannot write CSVs to {}: {e}", out.display()))?;
-    println!(
+    say!(
         "  wrote {}/platform.csv, joint_forces.csv, actuators.csv",
         out.display()
     );
     if plots {
         let files = symbody::plot::paper_figures(&run, out)?;
-        println!(
+        say!(
             "  wrote {} figures: {}",
             files.len(),
             files
