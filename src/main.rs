@@ -209,9 +209,10 @@ fn simulate_named(
         info.n_constraints,
         info.dof()
     );
+    // Every output time is landed on, so no step is longer than the output spacing.
     say!(
         "  time span        0 .. {span:.6} s, step {} s, alpha {}, velocities projected",
-        opts.step,
+        opts.step.min(opts.output_step),
         opts.alpha
     );
     print_work(&s, span, rec.wall);
