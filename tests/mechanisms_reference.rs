@@ -506,3 +506,93 @@ fn max_leg_spin(rec: &Recording) -> f64 {
     }
     worst
 }
+
+/// The closed-form motion of `m ẍ + c ẋ + k x = Fc + Σ (a sin ωt + b cos ωt)` from x(0) = x0,
+/// ẋ(0) = v0 (underdamped), evaluated at `t`.
+fn forced_oscillator(
+    (m, c, k): (f64, f64, f64),
+    constant: f64,
+    harmonics: &[(f64, f64, f64)],
+    (x0, v0): (f64, f64),
+    t: f64,
+) -> f64 {
+    // Particular solution: Fc/k plus A sin ωt + B cos ωt per harmonic.
+    let parts: Vec<(f64, f64, f64)> = harmonics
+        .iter()
+        .map(|&(w, a, b)| {
+            let (p, q) = (k - m * w * w, c * w);
+            let det = p * p + q * q;
+            (w, (p * a + q * b) / det, (p * b - q * a) / det)
+        })
+        .collect();
+    let xp = |t: f64| {
+        constant / k
+            + parts
+                .iter()
+                .map(|&(w, a, b)| a * (w * t).sin() + b * (w * t).cos())
+                .sum::<f64>()
+    };
+    let vp0: f64 = parts.iter().map(|&(w, a, _)| a * w).sum();
+    let sigma = c / (2.0 * m);
+    let wd = (k / m - sigma * sigma).sqrt();
+    let c1 = x0 - xp(0.0);
+    let c2 = (v0 - vp0 + sigma * c1) / wd;
+    xp(t) + (-sigma * t).exp() * (c1 * (wd * t).cos() + c2 * (wd * t).sin())
+}
+
+/// Largest errors of the slider's X and the rotor's angle about Y against their closed forms
+/// (`mechanisms/oscillators.toml`), and the energy balance, for one step size.
+fn oscillator_errors(step: f64) -> (f64, f64, f64) {
+    let rec = simulate(
+        "oscillators",
+        &Options {
+            step,
+            ..Options::default()
+        },
+    );
+    let (slider, rotor) = (body(&rec, "slider"), body(&rec, "rotor"));
+    let (mut ex, mut eth) = (0.0f64, 0.0f64);
+    for (k, &t) in rec.t.iter().enumerate() {
+        let x = forced_oscillator((2.0, 0.8, 50.0), 1.0, &[(4.0, 3.0, 0.0)], (0.1, 0.0), t);
+        let theta = forced_oscillator(
+            (0.2, 0.1, 2.0),
+            0.0,
+            &[(3.0, 0.0, 0.5), (1.0, 0.2, 0.0)],
+            (0.0, 1.0),
+            t,
+        );
+        ex = ex.max((rec.poses[k][slider].0[0] - x).abs());
+        // The rotor turns about +Y only: e = (cos θ/2, 0, sin θ/2, 0).
+        let e = rec.poses[k][rotor].1;
+        eth = eth.max((2.0 * e[2].atan2(e[0]) - theta).abs());
+    }
+    (ex, eth, relative_energy_error(&rec))
+}
+
+/// The load library against closed forms (`mechanisms/oscillators.toml`): a slider held by
+/// a spring–damper whose actuator forces it at ω = 4 rad/s, plus a constant applied force;
+/// a rotor on a torsion spring–damper whose actuator and an applied torque force it at two
+/// frequencies. Both motions are solved here analytically (particular plus damped
+/// homogeneous solution). The errors are the trapezoidal rule's, so halving the step
+/// divides them by ≈ 4; the energy balance includes the work of dampers, actuators and the
+/// applied loads.
+#[test]
+fn forced_damped_oscillators_follow_their_closed_forms() {
+    let (ex, eth, energy) = oscillator_errors(1e-3);
+    let (ex2, eth2, _) = oscillator_errors(5e-4);
+    eprintln!(
+        "oscillators: slider |x − closed form| {ex:e} m (h/2: {ex2:e}), rotor |θ − closed form| \
+         {eth:e} rad (h/2: {eth2:e}), energy error {energy:e} of the scale"
+    );
+    assert!(
+        ex <= 1e-5 && eth <= 1e-4,
+        "slider {ex:e} m, rotor {eth:e} rad"
+    );
+    for (a, b) in [(ex, ex2), (eth, eth2)] {
+        assert!(
+            (3.5..4.5).contains(&(a / b)),
+            "second order expected: {a:e} → {b:e}"
+        );
+    }
+    assert!(energy <= 1e-6, "energy error {energy:e} of the scale");
+}

@@ -6,6 +6,8 @@ pub mod bricard;
 #[rustfmt::skip]
 pub mod four_bar;
 #[rustfmt::skip]
+pub mod oscillators;
+#[rustfmt::skip]
 pub mod slider_crank;
 #[rustfmt::skip]
 pub mod spherical_pendulum;
@@ -32,6 +34,13 @@ pub static REGISTRY: &[crate::Entry] = &[
         t_end: four_bar::T_END,
         formulations: &[
             (Formulation::Exact, &four_bar::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "oscillators",
+        t_end: oscillators::T_END,
+        formulations: &[
+            (Formulation::Exact, &oscillators::Exact as &(dyn Mechanism + Sync)),
         ],
     },
     crate::Entry {
