@@ -92,7 +92,7 @@ fn main() -> ExitCode {
             Ok(())
         }
         Command::Simulate {
-            mechanism: Some(name),
+            mechanism,
             formulation,
             t_end,
             step,
@@ -101,10 +101,9 @@ fn main() -> ExitCode {
             reactions,
             out,
             no_plots,
-        } => {
-            if reactions.is_some() {
-                Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string())
-            } else {
+        } => match mechanism {
+            Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
+            Some(name) => {
                 let defaults = generic::Options::default();
                 let opts = generic::Options {
                     formulation: formulation.map(FormulationArg::formulation),
@@ -115,32 +114,22 @@ fn main() -> ExitCode {
                 };
                 simulate_named(&name, &opts, &out, !no_plots)
             }
-        }
-        Command::Simulate {
-            mechanism: None,
-            formulation,
-            t_end,
-            step,
-            alpha,
-            output_step,
-            reactions,
-            out,
-            no_plots,
-        } => {
-            let defaults = Options::default();
-            let opts = Options {
-                formulation: formulation.map_or(defaults.formulation, FormulationArg::formulation),
-                t_end: t_end.unwrap_or(defaults.t_end),
-                step,
-                alpha: alpha.unwrap_or(defaults.alpha),
-                output_step,
-                reactions: match reactions {
-                    Some(ReactionsArg::Integrator) => Reactions::Integrator,
-                    Some(ReactionsArg::Recovered) | None => Reactions::Recovered,
-                },
-            };
-            simulate(&opts, &out, !no_plots)
-        }
+            None => {
+                let defaults = Options::default();
+                let opts = Options {
+                    formulation: formulation.map_or(defaults.formulation, FormulationArg::formulation),
+                    t_end: t_end.unwrap_or(defaults.t_end),
+                    step,
+                    alpha: alpha.unwrap_or(defaults.alpha),
+                    output_step,
+                    reactions: match reactions {
+                        Some(ReactionsArg::Integrator) => Reactions::Integrator,
+                        Some(ReactionsArg::Recovered) | None => Reactions::Recovered,
+                    },
+                };
+                simulate(&opts, &out, !no_plots)
+            }
+        },
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
