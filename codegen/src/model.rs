@@ -14,7 +14,7 @@ mod values;
 
 use crate::diag::{Diagnostic, Errors, SourceMap};
 use crate::expr::{Arena, Id};
-use crate::geometry::{euler_matrix, quaternion_matrix, M3, V3};
+use crate::geometry::{euler_matrix, quaternion_matrix, v3, M3, V3};
 use raw::RawFile;
 use std::collections::HashMap;
 use std::ops::Range;
@@ -538,6 +538,3 @@ impl Validator<'_> {
     }
 }
 
-fn v3(a: [f64; 3]) -> V3 {
-    crate::geometry::v3(a)
-}
