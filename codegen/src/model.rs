@@ -537,4 +537,3 @@ impl Validator<'_> {
         Some(out)
     }
 }
-
