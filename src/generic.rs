@@ -92,10 +92,6 @@ pub struct Recording {
     pub max_velocity_residual: f64,
     /// Largest |eᵀe − 1| over quaternion bodies and outputs (0 without quaternion bodies).
     pub max_norm_error: f64,
-    /// Accepted steps the energy meter did not see: a step cut after a failed attempt
-    /// while landing on an output time takes two steps where one was planned, and the work
-    /// integral has one sample for both. 0 unless steps were rejected.
-    pub unmetered_steps: usize,
     /// The first Euler-angle body that came near β = ±90°, if any.
     pub euler_warning: Option<EulerWarning>,
     /// Wall time of the run (integration and recording, not writing).
@@ -214,17 +210,14 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
         max_phi: 0.0,
         max_velocity_residual: 0.0,
         max_norm_error: 0.0,
-        unmetered_steps: 0,
         euler_warning: None,
         wall: Duration::ZERO,
     };
     let mut sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(t_end);
-        while it.t() < t_out {
-            let steps = it.stats().steps;
-            step_towards(&mut it, t_out)?;
-            rec.unmetered_steps += (it.stats().steps - steps).saturating_sub(1);
+        // One accepted step per call, so the meter sees every step.
+        while it.step_toward(t_out)?.is_some() {
             sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
         }
         record(&mut rec, &meter, &mut watch, &it, sample)?;
@@ -250,27 +243,6 @@ fn integrator(
         .qd0(info.qd0)
         .project_velocities(true)
         .build(mech)?)
-}
-
-/// One accepted step towards `t_out`, landing on it exactly.
-///
-/// [`Integrator::advance_to`] would take all the steps to `t_out` at once; the energy
-/// meter must see each. So this takes the same steps one call at a time: the nominal step
-/// while two or more fit, then the remainder evened out over two steps, the last landing
-/// on `t_out` (advance_to's own rule, which keeps slivers of a step out of the βh²-scaled
-/// rows). A step that fails is retried at half size inside the integrator; only then can
-/// one call take two steps (counted in [`Recording::unmetered_steps`]).
-fn step_towards<M: Mechanism>(it: &mut Integrator<M>, t_out: f64) -> Result<(), Error> {
-    let (t, h) = (it.t(), it.step_size());
-    let remaining = t_out - t;
-    if remaining <= h * (1.0 + 1e-9) {
-        it.advance_to(t_out)?;
-    } else if remaining < 2.0 * h {
-        it.advance_to(t + 0.5 * remaining)?;
-    } else {
-        it.step()?;
-    }
-    Ok(())
 }
 
 /// Appends one output; the meter has just recorded this state.
@@ -520,7 +492,6 @@ mod tests {
         };
         let rec = run(four_bar(), &opts).unwrap();
         assert_eq!(rec.stats.steps, 10 * 4);
-        assert_eq!(rec.unmetered_steps, 0);
         let mut it = integrator(four_bar().default_mechanism(), &opts).unwrap();
         for (k, (t, q)) in rec.t.iter().zip(&rec.q).enumerate() {
             it.advance_to(k as f64 * opts.output_step).unwrap();

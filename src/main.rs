@@ -241,12 +241,6 @@ fn simulate_named(
             w.name, w.beta, w.time
         );
     }
-    if rec.unmetered_steps > 0 {
-        say!(
-            "  note: {} steps were cut after a failed attempt while landing on an output time; the work integral spans each with its neighbour",
-            rec.unmetered_steps
-        );
-    }
     let files = generic::write_outputs(&rec, out, plots)?;
     let names: Vec<&str> = files
         .iter()

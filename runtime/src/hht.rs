@@ -591,6 +591,16 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     /// Integrates up to exactly `t_out` (the last step is shortened to land on it, and the
     /// one before evened out so no sliver of a step remains).
     pub fn advance_to(&mut self, t_out: f64) -> Result<(), Error> {
+        while self.step_toward(t_out)?.is_some() {}
+        Ok(())
+    }
+
+    /// One accepted step towards `t_out`, the steps [`Integrator::advance_to`] takes one
+    /// call at a time (for callers that look at every step, e.g. an energy meter): the
+    /// nominal step while two or more fit, then the remainder evened out over two steps, the
+    /// last landing on `t_out` exactly. `Ok(None)` once `t_out` is reached (a floating-point
+    /// sliver short of it is absorbed rather than stepped over).
+    pub fn step_toward(&mut self, t_out: f64) -> Result<Option<StepReport>, Error> {
         if !(t_out >= self.t) || !t_out.is_finite() {
             return Err(Error::InvalidSetting {
                 name: "t_out",
@@ -598,35 +608,35 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 reason: "must be finite and not before the current time",
             });
         }
-        while self.t < t_out {
-            let remaining = t_out - self.t;
-            // A floating-point sliver (t_out computed with a rounding error) is absorbed
-            // rather than stepped over: a step of ~1e-16 s would divide roundoff by βh².
-            if remaining <= 16.0 * f64::EPSILON * t_out.abs().max(1.0) {
-                self.t = t_out;
-                break;
-            }
-            if remaining < self.settings.min_step {
-                // Stepping over less than the minimum step would divide roundoff by βh²
-                // beyond what the convergence test can judge.
-                return Err(Error::InvalidSetting {
-                    name: "t_out",
-                    value: t_out,
-                    reason: "closer to the current time than the minimum step; \
-                             request output times at least min_step apart",
-                });
-            }
-            if remaining <= self.h * (1.0 + 1e-9) {
-                self.step_to(t_out, remaining)?;
-            } else if remaining < 2.0 * self.h {
-                let h = 0.5 * remaining;
-                self.step_to(self.t + h, h)?;
-            } else {
-                let h = self.h;
-                self.step_to(self.t + h, h)?;
-            }
+        let remaining = t_out - self.t;
+        if remaining == 0.0 {
+            return Ok(None);
         }
-        Ok(())
+        // A step of ~1e-16 s would divide roundoff by βh².
+        if remaining <= 16.0 * f64::EPSILON * t_out.abs().max(1.0) {
+            self.t = t_out;
+            return Ok(None);
+        }
+        if remaining < self.settings.min_step {
+            // Stepping over less than the minimum step would divide roundoff by βh²
+            // beyond what the convergence test can judge.
+            return Err(Error::InvalidSetting {
+                name: "t_out",
+                value: t_out,
+                reason: "closer to the current time than the minimum step; \
+                         request output times at least min_step apart",
+            });
+        }
+        let report = if remaining <= self.h * (1.0 + 1e-9) {
+            self.step_to(t_out, remaining)?
+        } else if remaining < 2.0 * self.h {
+            let h = 0.5 * remaining;
+            self.step_to(self.t + h, h)?
+        } else {
+            let h = self.h;
+            self.step_to(self.t + h, h)?
+        };
+        Ok(Some(report))
     }
 
     /// One accepted step towards `t1 = t + h` (exactly `t1` when no cut is needed).
