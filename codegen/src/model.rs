@@ -19,8 +19,6 @@ use raw::RawFile;
 use std::collections::HashMap;
 use std::ops::Range;
 
-pub use values::euler_angles_of;
-
 /// Dynamics formulation (docs/design.md, decision 7).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
 pub enum Formulation {

@@ -8,12 +8,6 @@ use crate::parse::parse_expr;
 use std::collections::HashMap;
 use std::ops::Range;
 
-/// Euler angles `[θ, β, γ]` of a row-major rotation matrix (for callers without nalgebra).
-pub fn euler_angles_of(a: &[[f64; 3]; 3]) -> [f64; 3] {
-    let m = crate::geometry::M3::from_fn(|i, j| a[i][j]);
-    crate::geometry::euler_angles(&m)
-}
-
 pub(super) fn is_keyword(s: &str) -> bool {
     KEYWORDS.contains(&s)
 }
