@@ -1,11 +1,13 @@
 //! Assembly at generation time: brings the file's initial pose onto the constraints
 //! (warning when a joint was violated by more than a tolerance, an error naming the rows
 //! when it cannot be done), then counts degrees of freedom and finds redundant rows with
-//! a rank-revealing elimination of Φq at the assembled pose.
+//! a rank-revealing elimination of Φq at the assembled pose, and recognizes a six-leg
+//! platform there ([`crate::legs`]).
 
 use crate::diag::{Diagnostic, Errors};
 use crate::equations::System;
 use crate::expr::Var;
+use crate::legs::{self, Platform};
 use crate::model::Model;
 use nalgebra::{DMatrix, DVector};
 use std::fmt;
@@ -38,6 +40,8 @@ pub struct Report {
     pub dof: usize,
     /// Rows found dependent on earlier rows (index, name).
     pub redundant: Vec<(usize, String)>,
+    /// A six-leg platform: its body's name and the leg drivers' names.
+    pub platform: Option<(String, Vec<String>)>,
     /// Warnings (e.g. a corrected initial pose).
     pub warnings: Vec<String>,
 }
@@ -65,6 +69,14 @@ impl fmt::Display for Report {
                 names.join(", ")
             )?;
         }
+        if let Some((body, legs)) = &self.platform {
+            write!(
+                f,
+                "\n  platform: body \"{body}\" held by {} driven legs ({}): forward kinematics available",
+                legs.len(),
+                legs.join(", ")
+            )?;
+        }
         for w in &self.warnings {
             write!(f, "\n  warning: {w}")?;
         }
@@ -76,6 +88,8 @@ impl fmt::Display for Report {
 pub struct Assembly {
     pub q0: Vec<f64>,
     pub redundant_rows: Vec<u32>,
+    /// The six-leg platform, when the mechanism is one.
+    pub platform: Option<Platform>,
     pub report: Report,
 }
 
@@ -289,6 +303,7 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
     redundant.sort_unstable();
     let rank = basis.len();
     let joint_rows: i64 = model.joints.iter().map(|j| j.rows() as i64).sum();
+    let platform = legs::detect(model, &q);
     let report = Report {
         name: model.name.clone(),
         n_bodies: model.bodies.len(),
@@ -303,11 +318,16 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
             .iter()
             .map(|&r| (r, sys.row_names[r].clone()))
             .collect(),
+        platform: platform.as_ref().map(|p| {
+            let legs = p.legs.iter().map(|l| model.drivers[l.driver].name.clone());
+            (model.bodies[p.body].name.clone(), legs.collect())
+        }),
         warnings,
     };
     Ok(Assembly {
         q0: q,
         redundant_rows: redundant.iter().map(|&r| r as u32).collect(),
+        platform,
         report,
     })
 }

@@ -4,8 +4,8 @@
 //! One module per stage, chained by [`generate`]:
 //! [`model`] (parse and validate the TOML) → [`equations`] (joint rows from
 //! [`primitives`], loads from [`loads`], built and differentiated on the [`expr`] DAG) →
-//! [`assembly`] (initial pose, rank, redundant rows) → [`emit`] (chunked straight-line
-//! functions) → [`rust`] (the module).
+//! [`assembly`] (initial pose, rank, redundant rows, and [`legs`]: a six-leg platform for
+//! forward kinematics) → [`emit`] (chunked straight-line functions) → [`rust`] (the module).
 
 // `!(x > tol)` is used on purpose: unlike `x <= tol` it also rejects NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -17,6 +17,7 @@ pub mod equations;
 pub mod expr;
 pub mod files;
 pub mod geometry;
+pub mod legs;
 pub mod loads;
 pub mod model;
 pub mod parse;

@@ -297,6 +297,20 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
     let n_red = redundant.len();
     let t_end = model.t_end;
     let mech_name = &model.name;
+    let platform = match &asm.platform {
+        None => quote!(None),
+        Some(p) => {
+            let body = p.body;
+            let legs = p.legs.iter().map(|l| {
+                let driver = &model.drivers[l.driver].name;
+                assert_eq!(&sys.row_names[l.row], driver, "legs::detect numbers rows as Φ does");
+                let (base, top, row) = (l.base, l.platform, l.row);
+                quote!(LegInfo { driver: #driver, base: [#(#base),*], platform: [#(#top),*], row: #row })
+            });
+            quote!(Some(PlatformInfo { body: #body, legs: &[#(#legs),*] }))
+        }
+    };
+    let leg_import = asm.platform.as_ref().map(|_| quote!(LegInfo,));
     items.push(quote! {
         /// Number of generalized coordinates.
         pub const N_COORDS: usize = #n;
@@ -322,6 +336,9 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
         pub static REDUNDANT_ROWS: [u32; #n_red] = [#(#redundant),*];
         /// Simulation end time suggested by the mechanism file (s).
         pub const T_END: f64 = #t_end;
+        /// The platform held by six legs of driven length, for forward kinematics (`None`:
+        /// not such a mechanism).
+        pub const PLATFORM: Option<PlatformInfo> = #platform;
         /// Potential energy of gravity and springs.
         pub fn potential(q: &[f64]) -> f64 {
             let mut out = [0.0];
@@ -416,6 +433,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
                     q0: &Q0,
                     qd0: &QD0,
                     redundant_rows: &REDUNDANT_ROWS,
+                    platform: PLATFORM,
                 };
                 #(#fns)*
             }
@@ -450,7 +468,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
 
     let file = quote! {
         #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]
-        use symbody_runtime::{BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs, Rotation};
+        use symbody_runtime::{BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, PlatformInfo, Rotation};
         #(#items)*
         #(#impls)*
         /// The formulation listed first in the mechanism file.

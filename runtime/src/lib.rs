@@ -39,8 +39,8 @@ pub use hht::{HhtBuilder, Integrator, Stats, StepReport};
 pub use kinematics::{InitialVelocity, KinematicSettings, Kinematics, PositionReport};
 pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, SchurKkt};
 pub use mechanism::{
-    BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism, MechanismInfo,
-    NewtonOutputs, Rotation,
+    BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo, Mechanism,
+    MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
 };
 pub use pose::{
     angular_velocity, angular_velocity_jacobian, body_pose, point_world, rotation_matrix,

@@ -161,6 +161,35 @@ pub struct MechanismInfo {
     /// reactions of the joints they belong to, and of the rows they depend on, are not
     /// unique. Ascending.
     pub redundant_rows: &'static [u32],
+    /// Detected by the generator: the body held to the ground by six legs of driven length,
+    /// for forward kinematics. `None` when the mechanism is not such a platform.
+    pub platform: Option<PlatformInfo>,
+}
+
+/// One leg of a platform held to the ground by legs of driven length (forward kinematics).
+#[derive(Debug, Clone, Copy)]
+pub struct LegInfo {
+    /// Name of the driver that sets the leg's length.
+    pub driver: &'static str,
+    /// Base joint centre, global frame.
+    pub base: [f64; 3],
+    /// Platform joint centre, local to the platform body (relative to its centre of mass,
+    /// like every body point).
+    pub platform: [f64; 3],
+    /// The driver's constraint row. Its row has unit slope in the leg length, so the length
+    /// the driver prescribes at time `t` is `|leg(q)| − Φ_row(q, t)` for any `q` at which the
+    /// legs' own joints hold (use `q0`).
+    pub row: usize,
+}
+
+/// A body held to the ground by six legs of driven length (S-P-S, U-P-S or distance
+/// drivers): what forward kinematics needs.
+#[derive(Debug, Clone, Copy)]
+pub struct PlatformInfo {
+    /// Index of the platform body.
+    pub body: usize,
+    /// The legs, in driver order.
+    pub legs: &'static [LegInfo],
 }
 
 impl MechanismInfo {

@@ -455,6 +455,7 @@ mod tests {
                 q0: &[],
                 qd0: &[],
                 redundant_rows: &[],
+                platform: None,
             };
         };
     }

@@ -154,6 +154,7 @@ static PENDULUM_PAPER: MechanismInfo = MechanismInfo {
     q0: &PENDULUM_Q0,
     qd0: &[0.0; 6],
     redundant_rows: &[],
+    platform: None,
 };
 
 static PENDULUM_EXACT: MechanismInfo = MechanismInfo {
@@ -382,6 +383,7 @@ static CIRCLE: MechanismInfo = MechanismInfo {
     q0: &CIRCLE_Q0,
     qd0: &[0.0; 6],
     redundant_rows: &[],
+    platform: None,
 };
 
 /// Rows: `X − d`, `Z`, `θ`, `β`, `γ` (the guide), then `√(X² + Y²) − c(t)` (the driver),
@@ -691,6 +693,7 @@ static QUAT_PENDULUM: MechanismInfo = MechanismInfo {
     q0: &[0.0, -PENDULUM_LENGTH, 0.0, 1.0, 0.0, 0.0, 0.0],
     qd0: &[0.0; 7],
     redundant_rows: &[],
+    platform: None,
 };
 
 /// The exact pendulum with Euler parameters: body point `(0, L, 0)` held at the origin,

@@ -252,6 +252,7 @@ mod tests {
         q0: &[],
         qd0: &[],
         redundant_rows: &[],
+        platform: None,
         formulation: crate::mechanism::Formulation::Exact,
         gravity: [0.0; 3],
         mass_is_constant: false,

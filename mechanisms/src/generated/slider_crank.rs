@@ -30,7 +30,7 @@
 )]
 use symbody_runtime::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
-    MechanismInfo, NewtonOutputs, Rotation,
+    MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -2187,6 +2187,9 @@ pub static QD0: [f64; 21usize] = [
 pub static REDUNDANT_ROWS: [u32; 0usize] = [];
 /// Simulation end time suggested by the mechanism file (s).
 pub const T_END: f64 = 2f64;
+/// The platform held by six legs of driven length, for forward kinematics (`None`:
+/// not such a mechanism).
+pub const PLATFORM: Option<PlatformInfo> = None;
 /// Potential energy of gravity and springs.
 pub fn potential(q: &[f64]) -> f64 {
     let mut out = [0.0];
@@ -2237,6 +2240,7 @@ pub mod exact {
         q0: &Q0,
         qd0: &QD0,
         redundant_rows: &REDUNDANT_ROWS,
+        platform: PLATFORM,
     };
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
     pub fn mass(q: &[f64], out: &mut [f64]) {

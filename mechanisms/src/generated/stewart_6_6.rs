@@ -55,8 +55,8 @@
     clippy::unreadable_literal
 )]
 use symbody_runtime::{
-    BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
-    MechanismInfo, NewtonOutputs, Rotation,
+    BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo, Mechanism,
+    MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -9760,6 +9760,49 @@ pub static QD0: [f64; 78usize] = [
 pub static REDUNDANT_ROWS: [u32; 0usize] = [];
 /// Simulation end time suggested by the mechanism file (s).
 pub const T_END: f64 = 6.283185307179586f64;
+/// The platform held by six legs of driven length, for forward kinematics (`None`:
+/// not such a mechanism).
+pub const PLATFORM: Option<PlatformInfo> = Some(PlatformInfo {
+    body: 0usize,
+    legs: &[
+        LegInfo {
+            driver: "act1",
+            base: [0.2654788250422678f64, 0f64, -0.04920359188287982f64],
+            platform: [0.06819204507466928f64, 0f64, -0.07984262638800324f64],
+            row: 66usize,
+        },
+        LegInfo {
+            driver: "act2",
+            base: [-0.09012785199311818f64, 0f64, -0.2545132025948882f64],
+            platform: [0.03504972021954594f64, 0f64, -0.09897735656467874f64],
+            row: 67usize,
+        },
+        LegInfo {
+            driver: "act3",
+            base: [-0.17535097304914957f64, 0f64, -0.2053096107120084f64],
+            platform: [-0.10324176529421522f64, 0f64, -0.01913473017667551f64],
+            row: 68usize,
+        },
+        LegInfo {
+            driver: "act4",
+            base: [-0.17535097304914954f64, 0f64, 0.20530961071200843f64],
+            platform: [-0.10324176529421523f64, 0f64, 0.019134730176675482f64],
+            row: 69usize,
+        },
+        LegInfo {
+            driver: "act5",
+            base: [-0.09012785199311824f64, 0f64, 0.2545132025948882f64],
+            platform: [0.03504972021954594f64, 0f64, 0.09897735656467874f64],
+            row: 70usize,
+        },
+        LegInfo {
+            driver: "act6",
+            base: [0.2654788250422677f64, 0f64, 0.04920359188287992f64],
+            platform: [0.0681920450746693f64, 0f64, 0.07984262638800323f64],
+            row: 71usize,
+        },
+    ],
+});
 /// Potential energy of gravity and springs.
 pub fn potential(q: &[f64]) -> f64 {
     let mut out = [0.0];
@@ -9824,6 +9867,7 @@ pub mod exact {
         q0: &Q0,
         qd0: &QD0,
         redundant_rows: &REDUNDANT_ROWS,
+        platform: PLATFORM,
     };
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
     pub fn mass(q: &[f64], out: &mut [f64]) {
@@ -15505,6 +15549,7 @@ pub mod paper {
         q0: &Q0,
         qd0: &QD0,
         redundant_rows: &REDUNDANT_ROWS,
+        platform: PLATFORM,
     };
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
     pub fn mass(q: &[f64], out: &mut [f64]) {
