@@ -8,6 +8,7 @@ use crate::scenario::{output_count, ScenarioError};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 use symbody_mechanisms::{Entry, REGISTRY};
+use symbody_runtime::fk::{ModeWatch, Platform};
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, EulerWarning, Formulation,
     HhtBuilder, Integrator, JointKind, Mechanism, MechanismInfo, ResidualWatch, Rotation, Stats,
@@ -213,11 +214,20 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
         euler_warning: None,
         wall: Duration::ZERO,
     };
+    // A six-leg platform must stay on its assembly mode: a step across a parallel
+    // singularity would continue on another one without any solver noticing.
+    let modes = match info.platform {
+        Some(_) => Some(ModeWatch::new(&Platform::new(mech)?, it.q(), 1e8)?),
+        None => None,
+    };
     let mut sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(t_end);
         // One accepted step per call, so the meter sees every step.
         while it.step_toward(t_out)?.is_some() {
+            if let Some(w) = &modes {
+                w.check(it.q(), it.t())?;
+            }
             sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
         }
         record(&mut rec, &meter, &mut watch, &it, sample)?;

@@ -2,6 +2,7 @@
 //! ([`generic`]), the paper's scenario on the generated Stewart platform ([`scenario`]), and
 //! their CSV and PNG outputs.
 
+pub mod fk;
 pub mod generic;
 pub mod output;
 pub mod plot;

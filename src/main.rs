@@ -1,12 +1,14 @@
-//! `symbody list` and `symbody simulate [<mechanism>]`: every generated mechanism by name
-//! from the registry; without a name, the paper's Stewart platform scenario and its figures.
+//! `symbody list`, `symbody simulate [<mechanism>]` and `symbody fk <mechanism>`: every
+//! generated mechanism by name from the registry; without a name, the paper's Stewart platform
+//! scenario and its figures; forward kinematics of the six-leg platforms.
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 use std::process::ExitCode;
-use symbody::generic;
 use symbody::scenario::{self, largest_rotation, Options, Reactions};
+use symbody::{fk, generic};
 use symbody_mechanisms::REGISTRY;
+use symbody_runtime::fk::Pose;
 use symbody_runtime::Formulation;
 
 /// `println!` that ignores a closed standard output (e.g. piped into `head`) instead of
@@ -82,6 +84,38 @@ enum Command {
         #[arg(long)]
         no_plots: bool,
     },
+    /// Forward kinematics of a platform held by six legs of driven length: the pose reached
+    /// by continuation from a known pose, with its leg-length residual and the condition
+    /// number of the platform's Jacobian; with --all every assembly mode.
+    Fk {
+        /// A mechanism from `symbody list` whose FK column says yes.
+        mechanism: String,
+        /// Six leg lengths l1,…,l6 (m), joint centre to joint centre (default: what the
+        /// drivers prescribe at --at).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        lengths: Option<Vec<f64>>,
+        /// Pose to continue from: x,y,z (m) of the platform frame and its Euler angles θ,β,γ
+        /// (rad) of Rz(γ)·Ry(β)·Rx(θ) (default: the mechanism file's initial pose).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        from: Option<Vec<f64>>,
+        /// Time at which the drivers give the default lengths (s).
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        at: f64,
+        /// Every assembly mode (all complex solutions by homotopy continuation; the real
+        /// ones written to <out>/assembly_modes.csv, the tracked one marked `current`).
+        #[arg(long)]
+        all: bool,
+        /// Follow the drivers' motion over the file's t_end and find every assembly mode at
+        /// this many equally spaced times: <out>/assembly_modes_over_time.{csv,png}.
+        #[arg(long)]
+        over_time: Option<usize>,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Skip the PNG figure.
+        #[arg(long)]
+        no_plots: bool,
+    },
 }
 
 fn main() -> ExitCode {
@@ -130,6 +164,27 @@ fn main() -> ExitCode {
                 simulate(&opts, &out, !no_plots)
             }
         },
+        Command::Fk {
+            mechanism,
+            lengths,
+            from,
+            at,
+            all,
+            over_time,
+            out,
+            no_plots,
+        } => {
+            six("--lengths", lengths.as_deref())
+                .and_then(|l| {
+                    let from = six("--from", from.as_deref())?;
+                    Ok(fk::Request {
+                        lengths: l,
+                        from: from.map(|p| Pose::from_euler([p[0], p[1], p[2]], [p[3], p[4], p[5]])),
+                        at,
+                    })
+                })
+                .and_then(|req| forward_kinematics(&mechanism, &req, all, over_time, &out, !no_plots))
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -151,7 +206,7 @@ impl FormulationArg {
 
 fn list() {
     say!(
-        "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7}",
+        "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7} {:>3}",
         "mechanism",
         "formulations",
         "bodies",
@@ -159,13 +214,14 @@ fn list() {
         "rows",
         "redundant",
         "DOF",
-        "t_end"
+        "t_end",
+        "FK"
     );
     for e in REGISTRY {
         let info = e.default_mechanism().info();
         let forms: Vec<&str> = e.formulations.iter().map(|(f, _)| f.name()).collect();
         say!(
-            "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7.3}",
+            "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7.3} {:>3}",
             e.name,
             forms.join(","),
             info.bodies.len(),
@@ -173,7 +229,8 @@ fn list() {
             info.n_constraints,
             info.redundant_rows.len(),
             info.dof(),
-            e.t_end
+            e.t_end,
+            if info.platform.is_some() { "yes" } else { "-" }
         );
     }
 }
@@ -220,10 +277,16 @@ fn simulate_named(
         rec.max_velocity_residual
     );
     let (drift, scale) = rec.energy_balance();
-    say!(
-        "  energy balance   max |dT + dV - W| = {drift:.3e} J on a scale of {scale:.4} J ({:.1e})",
-        drift / scale.max(f64::MIN_POSITIVE)
-    );
+    if scale > 0.0 {
+        say!(
+            "  energy balance   max |dT + dV - W| = {drift:.3e} J on a scale of {scale:.4} J ({:.1e})",
+            drift / scale
+        );
+    } else {
+        say!(
+            "  energy balance   no energy anywhere in the run (max |dT + dV - W| = {drift:.1e} J)"
+        );
+    }
     if !info.redundant_rows.is_empty() {
         let names: Vec<&str> = info
             .redundant_rows
@@ -339,4 +402,137 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool) -> Result<(), St
         );
     }
     Ok(())
+}
+
+/// Six comma-separated numbers, or an error naming the option.
+fn six(option: &str, v: Option<&[f64]>) -> Result<Option<[f64; 6]>, String> {
+    match v {
+        None => Ok(None),
+        Some(v) if v.len() == 6 && v.iter().all(|x| x.is_finite()) => {
+            Ok(Some(std::array::from_fn(|i| v[i])))
+        }
+        Some(v) => Err(format!(
+            "{option} needs six finite comma-separated numbers, got {}: {v:?}",
+            v.len()
+        )),
+    }
+}
+
+fn forward_kinematics(
+    name: &str,
+    req: &fk::Request,
+    all: bool,
+    over_time: Option<usize>,
+    out: &std::path::Path,
+    plots: bool,
+) -> Result<(), String> {
+    let entry = generic::find(name).map_err(|e| e.to_string())?;
+    let p = fk::platform(entry).map_err(|e| e.to_string())?;
+    let names = p.leg_names();
+    say!(
+        "{name}: platform `{}` on legs {}",
+        p.body().name,
+        names.join(", ")
+    );
+    let answer = fk::solve(&p, req).map_err(|e| {
+        format!(
+            "{name}: continuing the pose along the straight leg-length path from the start \
+             pose (t = 0) to the requested lengths (t = 1): {e}"
+        )
+    });
+    match &answer {
+        Ok(a) => {
+            let s = a.tracked.solution;
+            let [x, y, z] = [s.pose.position.x, s.pose.position.y, s.pose.position.z];
+            let [th, be, ga] = s.pose.euler_angles();
+            say!("  lengths          {}", join(&a.lengths, 9));
+            say!("  position         {x:.12} {y:.12} {z:.12} m");
+            say!("  euler angles     {th:.12} {be:.12} {ga:.12} rad (theta, beta, gamma)");
+            for r in 0..3 {
+                say!(
+                    "  rotation row {}   {}",
+                    r + 1,
+                    join(&[0, 1, 2].map(|c| s.pose.rotation[(r, c)]), 12)
+                );
+            }
+            say!(
+                "  residual         {:.2e} m (largest leg-length error)",
+                s.residual
+            );
+            say!(
+                "  continuation     {} steps from the start pose; {} Newton iterations in the last",
+                a.tracked.steps,
+                s.iterations
+            );
+            say!(
+                "  condition        {:.4e} (Jacobian, rotation columns scaled by the platform radius {:.4} m); det sign {:+}",
+                s.condition,
+                p.legs().characteristic_length(),
+                s.det_sign
+            );
+            say!("  wall time        {:.3} ms", a.wall.as_secs_f64() * 1e3);
+        }
+        Err(e) if all => say!("  no tracked pose: {e}"),
+        Err(e) => return Err(e.clone()),
+    }
+    if all {
+        let lengths = answer
+            .as_ref()
+            .map(|a| a.lengths)
+            .unwrap_or_else(|_| req.lengths.unwrap_or_else(|| p.lengths_at(req.at)));
+        let current = answer.as_ref().ok().map(|a| a.tracked.solution.pose);
+        let (modes, index, wall) =
+            fk::all_modes(&p, &lengths, current.as_ref()).map_err(|e| e.to_string())?;
+        say!(
+            "  assembly modes   {} real of {} complex (general platform: 40); {} paths in {} attempt{}, {:.1} ms",
+            modes.real.len(),
+            modes.complex,
+            modes.paths,
+            modes.attempts,
+            if modes.attempts == 1 { "" } else { "s" },
+            wall.as_secs_f64() * 1e3
+        );
+        let worst = modes.real.iter().map(|m| m.residual).fold(0.0, f64::max);
+        say!("  worst residual   {worst:.2e} m over the real modes");
+        match index {
+            Some(k) => say!(
+                "  current          mode {} of the CSV (row {})",
+                k + 1,
+                k + 2
+            ),
+            None => say!("  current          none: no tracked pose to compare with"),
+        }
+        fk::write_modes(out, &modes, index)?;
+        say!("  wrote {}/assembly_modes.csv", out.display());
+    }
+    if let Some(n) = over_time {
+        if n == 0 {
+            return Err("--over-time needs at least 1 interval".to_string());
+        }
+        let clock = std::time::Instant::now();
+        let samples = fk::over_time(&p, entry.t_end, n).map_err(|e| format!("{name}: {e}"))?;
+        let lo = samples.iter().map(|s| s.real).min().unwrap_or(0);
+        let hi = samples.iter().map(|s| s.real).max().unwrap_or(0);
+        let near = samples
+            .iter()
+            .map(|s| s.nearest)
+            .fold(f64::INFINITY, f64::min);
+        let cond = samples.iter().map(|s| s.condition).fold(0.0, f64::max);
+        say!(
+            "  over time        0 .. {:.4} s, {} samples: {lo}..{hi} real modes; nearest other mode at least {near:.4} m away; condition at most {cond:.3e}; {:.0} ms",
+            entry.t_end,
+            samples.len(),
+            clock.elapsed().as_secs_f64() * 1e3
+        );
+        let files = fk::write_over_time(out, &samples, plots)?;
+        say!("  wrote {}/: {}", out.display(), files.join(", "));
+    }
+    Ok(())
+}
+
+fn join(v: &[f64], digits: usize) -> String {
+    v.iter()
+        .map(|x| format!("{x:.digits$}"))
+        .collect::<Vec<_>>()
+        .join(" ")
 }

@@ -3,6 +3,7 @@
 
 use std::time::{Duration, Instant};
 use symbody_mechanisms::stewart_6_6::{Exact, Paper};
+use symbody_runtime::fk::{ModeWatch, Platform};
 use symbody_runtime::{
     actuator_force, joint_force, Error, Formulation, HhtBuilder, Integrator, Kinematics, Mechanism,
     MechanismInfo, ResidualWatch, Stats,
@@ -171,9 +172,13 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
         .build(mech)?;
     let mut run = Run::default();
     let mut recorder = Recorder::new(info, layout, opts.reactions)?;
+    // The platform's determinant sign is watched at the outputs: a pose that crossed a
+    // parallel singularity between two outputs is on another assembly mode at the next.
+    let modes = ModeWatch::new(&Platform::new(it.mechanism())?, it.q(), 1e8)?;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(opts.t_end);
         it.advance_to(t_out)?;
+        modes.check(it.q(), it.t())?;
         recorder.record(&mut it, &mut run)?;
     }
     run.stats = it.stats();

@@ -81,6 +81,20 @@ pub enum Error {
         /// β in radians.
         beta: f64,
     },
+    /// A platform held by six legs of driven length reached a parallel (type-II)
+    /// singularity while its pose was tracked along the legs' lengths: there the lengths stop
+    /// determining the pose, and beyond it the pose can continue on another assembly mode.
+    PlatformSingularity {
+        /// Time (or path parameter) of the singular pose.
+        time: f64,
+        /// Condition number of the platform's homogeneous Jacobian there.
+        condition: f64,
+        /// The legs (one-based) whose lines became linearly dependent.
+        legs: Vec<usize>,
+        /// `true` when the tracked pose had already passed to another assembly mode (the
+        /// Jacobian's determinant changed sign), `false` when it was stopped before.
+        switched: bool,
+    },
     /// A NaN or infinity appeared in the named quantity.
     NotFinite { time: f64, what: &'static str },
     /// A setting is out of its valid range.
@@ -166,6 +180,35 @@ impl fmt::Display for Error {
                 beta.to_degrees(),
                 beta.cos()
             ),
+            Error::PlatformSingularity {
+                time,
+                condition,
+                legs,
+                switched,
+            } => {
+                let legs: Vec<String> = legs.iter().map(|l| l.to_string()).collect();
+                write!(
+                    f,
+                    "the platform reaches a parallel singularity at t = {time:.6} (condition \
+                     number {condition:.3e} of its Jacobian; the lines of legs {} are nearly \
+                     dependent): ",
+                    legs.join(", ")
+                )?;
+                if *switched {
+                    write!(
+                        f,
+                        "the tracked pose passed to another assembly mode there (the \
+                         Jacobian's determinant changed sign)"
+                    )
+                } else {
+                    write!(
+                        f,
+                        "the leg lengths stop determining the pose, and beyond it the pose \
+                         would have to jump to another assembly mode; change the leg-length \
+                         path to keep away from it"
+                    )
+                }
+            }
             Error::NotFinite { time, what } => {
                 write!(f, "non-finite value in {what} at t = {time:.6} s")
             }

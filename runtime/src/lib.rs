@@ -23,6 +23,7 @@
 pub mod alloc_count;
 pub mod energy;
 pub mod error;
+pub mod fk;
 pub mod hht;
 pub mod kinematics;
 pub mod kkt;

@@ -4,6 +4,8 @@
 #[rustfmt::skip]
 pub mod bricard;
 #[rustfmt::skip]
+pub mod dietmaier_6_6;
+#[rustfmt::skip]
 pub mod four_bar;
 #[rustfmt::skip]
 pub mod oscillators;
@@ -27,6 +29,13 @@ pub static REGISTRY: &[crate::Entry] = &[
         t_end: bricard::T_END,
         formulations: &[
             (Formulation::Exact, &bricard::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "dietmaier_6_6",
+        t_end: dietmaier_6_6::T_END,
+        formulations: &[
+            (Formulation::Exact, &dietmaier_6_6::Exact as &(dyn Mechanism + Sync)),
         ],
     },
     crate::Entry {

@@ -1,0 +1,254 @@
+//! `symbody fk` and the forward-kinematics library against independent references: the
+//! paper's scenario (its actuator law typed in from docs/paper-scenario.md, its pose tracked
+//! by the 78-coordinate dynamics), Dietmaier's published geometry (lengths recomputed from
+//! each reported pose), and a leg-length path that must cross a parallel singularity.
+
+use nalgebra::{Rotation3, Vector3};
+use std::process::Command;
+use symbody::fk::{self, Request};
+use symbody::scenario::{simulate, Options};
+use symbody_mechanisms::find;
+use symbody_runtime::fk::{Legs, Pose};
+use symbody_runtime::Error;
+
+// docs/paper-scenario.md, Tables 1 and 2, typed in independently of the mechanism file.
+const BASE_DEG: [f64; 6] = [10.5, 109.5, 130.5, 229.5, 250.5, 349.5];
+const PLATFORM_DEG: [f64; 6] = [49.5, 70.5, 169.5, 190.5, 289.5, 310.5];
+const AMPLITUDE: [f64; 6] = [0.02, -0.06, 0.02, -0.02, 0.08, -0.02];
+const Y0: f64 = 0.3466575;
+
+fn point(r: f64, deg: f64) -> Vector3<f64> {
+    let a = deg.to_radians();
+    Vector3::new(r * a.cos(), 0.0, -r * a.sin())
+}
+
+fn paper_legs() -> Legs {
+    Legs {
+        base: BASE_DEG.map(|d| point(0.27, d)),
+        top: PLATFORM_DEG.map(|d| point(0.105, d)),
+    }
+}
+
+fn home() -> Pose {
+    Pose::from_euler([0.0, Y0, 0.0], [0.0, 0.0, 0.0])
+}
+
+/// The paper's actuator law: each leg grows by aᵢ sin t from its length at the home pose.
+fn paper_lengths(t: f64) -> [f64; 6] {
+    let l0 = paper_legs().lengths(&home());
+    std::array::from_fn(|i| l0[i] + AMPLITUDE[i] * t.sin())
+}
+
+fn symbody(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_symbody"))
+        .args(args)
+        .output()
+        .expect("the symbody binary runs")
+}
+
+#[test]
+fn the_generator_finds_the_paper_platform_legs() {
+    let p = fk::platform(find("stewart_6_6").unwrap()).unwrap();
+    let reference = paper_legs();
+    for i in 0..6 {
+        assert!((p.legs().base[i] - reference.base[i]).norm() < 1e-15);
+        assert!((p.legs().top[i] - reference.top[i]).norm() < 1e-15);
+    }
+    for t in [0.0, 0.7, 2.0, 4.5] {
+        let (a, b) = (p.lengths_at(t), paper_lengths(t));
+        for i in 0..6 {
+            assert!(
+                (a[i] - b[i]).abs() < 1e-14,
+                "t = {t}, leg {i}: {} vs {}",
+                a[i],
+                b[i]
+            );
+        }
+    }
+    assert!(fk::platform(find("four_bar").unwrap()).is_err());
+}
+
+/// The dynamics track the pose with 78 coordinates and 72 rows; `fk` solves six equations
+/// from the home pose. Both must give the same pose.
+#[test]
+fn fk_agrees_with_the_pose_tracked_by_the_paper_scenario() {
+    let run = simulate(&Options::default()).unwrap();
+    let p = fk::platform(find("stewart_6_6").unwrap()).unwrap();
+    let n = run.t.len() - 1;
+    let mut worst = 0.0_f64;
+    for k in 1..=10 {
+        let i = k * n / 10;
+        let t = run.t[i];
+        let req = Request {
+            lengths: Some(paper_lengths(t)),
+            from: Some(home()),
+            at: 0.0,
+        };
+        let a = fk::solve(&p, &req).unwrap();
+        let [x, y, z, th, be, ga] = run.platform[i];
+        let r = Rotation3::from_axis_angle(&Vector3::z_axis(), ga)
+            * Rotation3::from_axis_angle(&Vector3::y_axis(), be)
+            * Rotation3::from_axis_angle(&Vector3::x_axis(), th);
+        let s = a.tracked.solution;
+        let dp = (s.pose.position - Vector3::new(x, y, z)).amax();
+        let dr = (s.pose.rotation - r.matrix()).amax();
+        worst = worst.max(dp).max(dr);
+        assert!(s.residual <= 1e-13, "t = {t}: residual {}", s.residual);
+    }
+    assert!(worst <= 1e-12, "largest pose difference {worst:e}");
+}
+
+#[test]
+fn fk_all_finds_dietmaiers_forty_real_poses() {
+    let out = std::env::temp_dir().join(format!("symbody-fk-{}", std::process::id()));
+    let o = symbody(&[
+        "fk",
+        "dietmaier_6_6",
+        "--all",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(stdout.contains("40 real of 40 complex"), "{stdout}");
+    let csv = std::fs::read_to_string(out.join("assembly_modes.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33,cond,current"
+    );
+    // Dietmaier's data, typed in from the mechanism file's source.
+    let v = Vector3::new;
+    let base = [
+        v(0.0, 0.0, 0.0),
+        v(1.107915, 0.0, 0.0),
+        v(0.549094, 0.756063, 0.0),
+        v(0.735077, -0.223935, 0.525991),
+        v(0.514188, -0.526063, -0.368418),
+        v(0.590473, 0.094733, -0.205018),
+    ];
+    let top = [
+        v(0.0, 0.0, 0.0),
+        v(0.542805, 0.0, 0.0),
+        v(0.956919, -0.528915, 0.0),
+        v(0.665885, -0.353482, 1.402538),
+        v(0.478359, 1.158742, 0.107672),
+        v(-0.137087, -0.235121, 0.353913),
+    ];
+    let lengths = [1.0, 0.645275, 1.086284, 1.503439, 1.281933, 0.771071];
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 40);
+    assert_eq!(rows.iter().filter(|r| r[13] == 1.0).count(), 1);
+    for r in &rows {
+        let p = v(r[0], r[1], r[2]);
+        let rot = nalgebra::Matrix3::from_row_slice(&r[3..12]);
+        for i in 0..6 {
+            // The CSV's 17 significant digits carry the pose to roundoff.
+            let l = (p + rot * top[i] - base[i]).norm();
+            assert!(
+                (l - lengths[i]).abs() <= 1e-10,
+                "leg {i}: {l} vs {}",
+                lengths[i]
+            );
+        }
+    }
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// Shortening every leg of the paper's platform to 0.1 m lowers it into the base plane, where
+/// the legs' lines become coplanar (a parallel singularity) and the branch folds back: no
+/// pose of the start's assembly mode has these lengths. `fk` must say so, with where along
+/// the path it happened, instead of answering with a pose of another mode.
+#[test]
+fn fk_reports_the_singularity_between_the_start_and_the_requested_lengths() {
+    let o = symbody(&["fk", "stewart_6_6", "--lengths", "0.1,0.1,0.1,0.1,0.1,0.1"]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success());
+    assert!(stderr.contains("parallel singularity"), "{stderr}");
+
+    let p = fk::platform(find("stewart_6_6").unwrap()).unwrap();
+    let req = Request {
+        lengths: Some([0.1; 6]),
+        ..Request::default()
+    };
+    match fk::solve(&p, &req) {
+        Err(symbody::scenario::ScenarioError::Runtime(Error::PlatformSingularity {
+            time,
+            condition,
+            switched,
+            ..
+        })) => {
+            assert!(time > 0.0 && time < 1.0, "path parameter {time}");
+            assert!(condition > 1e3, "condition {condition}");
+            assert!(!switched, "stopped before passing it");
+        }
+        other => panic!("expected a platform singularity, got {other:?}"),
+    }
+}
+
+/// Continuation keeps the start's assembly mode. The paper's platform twisted by 100° about
+/// the vertical is past the 90° singularity, on another mode; by the geometry's symmetry the
+/// 80° twist at another height has the same lengths (checked here from the poses alone), and
+/// that is the pose continuation from the home pose must reach.
+#[test]
+fn fk_continuation_stays_on_the_start_mode() {
+    let legs = paper_legs();
+    let twisted = Pose::from_euler([0.0, Y0, 0.0], [0.0, 100f64.to_radians(), 0.0]);
+    let l = legs.lengths(&twisted);
+    let p = fk::platform(find("stewart_6_6").unwrap()).unwrap();
+    let req = Request {
+        lengths: Some(l),
+        ..Request::default()
+    };
+    let s = fk::solve(&p, &req).unwrap().tracked.solution;
+    let [_, beta, _] = s.pose.euler_angles();
+    assert!((beta - 80f64.to_radians()).abs() < 1e-12, "beta {beta}");
+    let reached = legs.lengths(&s.pose);
+    assert!((0..6).all(|i| (reached[i] - l[i]).abs() < 1e-13));
+    let det = |pose: &Pose| legs.jacobian(pose).determinant();
+    assert!(det(&s.pose) * det(&home()) > 0.0 && det(&twisted) * det(&home()) < 0.0);
+    // Started on the twisted pose's own side, the same lengths give the twisted pose.
+    let past = Pose::from_euler([0.0, Y0, 0.0], [0.0, 95f64.to_radians(), 0.0]);
+    let a = fk::solve(
+        &p,
+        &Request {
+            lengths: Some(l),
+            from: Some(past),
+            at: 0.0,
+        },
+    )
+    .unwrap();
+    assert!(a.tracked.solution.pose.distance(&twisted, 0.1) < 1e-12);
+}
+
+/// The dynamics' watch: a platform state past the twist singularity (another assembly mode)
+/// is refused with the time, and the start state is accepted.
+#[test]
+fn simulations_refuse_a_platform_state_on_another_assembly_mode() {
+    use symbody_runtime::fk::ModeWatch;
+    let mech = find("stewart_6_6").unwrap().default_mechanism();
+    let p = fk::platform(find("stewart_6_6").unwrap()).unwrap();
+    let info = mech.info();
+    let watch = ModeWatch::new(&p, info.q0, 1e8).unwrap();
+    assert!(watch.check(info.q0, 0.0).is_ok());
+    let mut q = info.q0.to_vec();
+    // The paper platform's Euler angles θ, β, γ follow its position; β turns about the vertical.
+    let beta = p.body().coord_offset + 4;
+    q[beta] = 100f64.to_radians();
+    match watch.check(&q, 1.25) {
+        Err(Error::PlatformSingularity { time, switched, .. }) => {
+            assert_eq!(time, 1.25);
+            assert!(switched);
+        }
+        other => panic!("expected a platform singularity, got {other:?}"),
+    }
+    q[beta] = 90f64.to_radians();
+    let r = watch.check(&q, 1.0);
+    assert!(matches!(r, Err(Error::PlatformSingularity { .. })), "{r:?}");
+}
