@@ -3,15 +3,19 @@
 //!
 //! Why this formulation: in Study's kinematic-image coordinates (rotation quaternion `e`,
 //! translation part `g = ½ p e`) a leg's equation `|p + R b − a|² = L²` becomes, multiplied
-//! by `eᵀe`, the quadric `N(e b − a e + 2g) − L² N(e) = 0` (`N` the quaternion norm), and the
-//! Study condition `e · g = 0` is a quadric too. Seven homogeneous quadrics in 8 unknowns on a
-//! random affine patch: a total-degree start system has 2⁷ = 128 paths, few enough to track
-//! all of them in milliseconds, and the general platform's 40 poses (Raghavan 1993) are among
-//! the endpoints; the other 88 paths end on the degenerate set `e = 0` (no rotation), which is
-//! recognised and dropped. An elimination to one degree-40 polynomial is faster but fragile
-//! (its coefficients are badly conditioned); continuation needs only 8 × 8 complex solves.
-//! The random complex `γ` in `H = γ(1 − t)G + tF` keeps every path regular for `t < 1` with
-//! probability one.
+//! by `eᵀe`, the quadric `Fᵢ = N(e b − a e + 2g) − L² N(e) = 0` (`N` the quaternion norm),
+//! and the Study condition `e · g = 0` is a quadric too: seven homogeneous quadrics in 8
+//! unknowns, solved on a random affine patch. The differences `Fᵢ − F₁` lose the `N(g)` term,
+//! so five equations are products of a form in `e` and a form in `(e, g)`, the Study
+//! condition a form in `e` times one in `g`, and only `F₁` needs two general forms. A start
+//! system of products of random linear forms with exactly that structure has 84 regular
+//! solutions (against 2⁷ = 128 for a total-degree start: the 44 it saves would all end on
+//! the degenerate set `e = 0`); by the theory of linear-product homotopies its paths reach
+//! every isolated solution, here the general platform's 40 poses (Raghavan 1993). The other
+//! 44 paths end on `e = 0`, recognised and dropped. An elimination to one degree-40 polynomial
+//! is faster but fragile (its coefficients are badly conditioned); continuation needs only
+//! 8 × 8 complex solves. The random complex `γ` in `H = γ(1 − t)G + tF` keeps every path
+//! regular for `t < 1` with probability one.
 
 use nalgebra::{Complex, Matrix3, Matrix4, SMatrix, SVector, Vector3};
 
@@ -37,16 +41,16 @@ pub struct Mode {
 /// All assembly modes found.
 #[derive(Debug, Clone)]
 pub struct Modes {
-    /// The real poses, sorted by height of the platform origin along the base's normal…
-    /// here simply by `z`, then `y`, then `x`, so the order is reproducible.
+    /// The real poses, sorted by the platform origin's `z`, then `y`, then `x`, so the order
+    /// is reproducible.
     pub real: Vec<Mode>,
     /// Distinct finite complex solutions found, real ones included (40 for a general
     /// platform; fewer for special geometries).
     pub complex: usize,
     /// Paths tracked over all attempts.
     pub paths: usize,
-    /// Attempts (each with a fresh random `γ` and patch) until all 40 were found or the
-    /// attempts ran out.
+    /// Attempts, each with a fresh random `γ` and patch: one when all 40 are found, else
+    /// until an attempt adds nothing new (at most 4).
     pub attempts: usize,
 }
 
@@ -84,8 +88,13 @@ pub fn assembly_modes(legs: &Legs, lengths: &[f64; 6]) -> Result<Modes, Error> {
     let mut real: Vec<Pose> = Vec::new();
     let mut paths = 0;
     let mut attempts = 0;
-    while attempts < 4 && found.len() < GENERIC_COUNT {
+    // A special geometry has fewer than 40 finite solutions; an attempt with a fresh γ and
+    // patch that adds none says the count is complete (a path lost to bad luck in one
+    // attempt is found by the next).
+    let mut added = usize::MAX;
+    while attempts < 4 && found.len() < GENERIC_COUNT && added > 0 {
         attempts += 1;
+        let before = found.len();
         let h = Homotopy::new(&unit, &l_unit, &mut rng);
         for start in h.starts() {
             paths += 1;
@@ -105,6 +114,7 @@ pub fn assembly_modes(legs: &Legs, lengths: &[f64; 6]) -> Result<Modes, Error> {
                 });
             }
         }
+        added = found.len() - before;
     }
     let settings = Settings {
         tolerance: 1e-14 * scale,
@@ -153,18 +163,31 @@ pub fn assembly_modes(legs: &Legs, lengths: &[f64; 6]) -> Result<Modes, Error> {
     })
 }
 
-/// The 7 quadrics `F` (6 legs, Study condition), the start system `G` and the patch.
+/// The 7 quadrics `F` (5 leg differences, leg 1, Study condition), the start system `G`
+/// and the patch.
 struct Homotopy {
-    /// `e b − a e = M e` for each leg.
-    m: [Matrix4<f64>; 6],
+    /// `e b − a e = M e` for each leg, and `Mᵀ`, both complex once for all evaluations.
+    m: [SMatrix<C, 4, 4>; 6],
+    mt: [SMatrix<C, 4, 4>; 6],
     l2: [f64; 6],
+    /// `G_k = (A_k · z)(B_k · z)`: the two random linear forms of each start equation, with
+    /// the supports of `F_k`'s structure.
+    forms: [[Z; 2]; 7],
     patch: Z,
     gamma: C,
 }
 
+/// Which unknowns a start form may involve.
+#[derive(Clone, Copy, PartialEq)]
+enum Support {
+    E,
+    G,
+    All,
+}
+
 impl Homotopy {
     fn new(legs: &Legs, lengths: &[f64; 6], rng: &mut SplitMix) -> Self {
-        let m = std::array::from_fn(|i| {
+        let m: [SMatrix<C, 4, 4>; 6] = std::array::from_fn(|i| {
             let (a, b) = (legs.base[i], legs.top[i]);
             let (d, s) = (b - a, b + a);
             // e b − a e = (ε·(a − b), e0 (b − a) + ε × (b + a)) for pure a, b.
@@ -174,48 +197,75 @@ impl Homotopy {
                 d.y, -s.z, 0.0, s.x, //
                 d.z, s.y, -s.x, 0.0,
             )
+            .map(|x| C::new(x, 0.0))
+        });
+        let mut form = |support: Support| {
+            Z::from_fn(|k, _| match (support, k < 4) {
+                (Support::E, false) | (Support::G, true) => C::new(0.0, 0.0),
+                _ => rng.complex(),
+            })
+        };
+        let forms = std::array::from_fn(|k| match k {
+            0..=4 => [form(Support::E), form(Support::All)],
+            5 => [form(Support::All), form(Support::All)],
+            _ => [form(Support::E), form(Support::G)],
         });
         Homotopy {
+            mt: m.map(|m| m.transpose()),
             m,
             l2: lengths.map(|l| l * l),
+            forms,
             patch: Z::from_fn(|_, _| rng.complex()),
             gamma: rng.complex(),
         }
     }
 
-    /// The 128 start points: `z_k = ±z_7` for k < 7, scaled onto the patch.
+    /// The start points: one factor of each start equation set to zero, with the patch.
+    /// Choices that zero four forms in `e` give `e = 0`, a positive-dimensional solution set
+    /// of `G`, not a start point: 84 of the 128 choices remain.
     fn starts(&self) -> impl Iterator<Item = Z> + '_ {
-        (0..128u32).map(|signs| {
-            let z = Z::from_fn(|k, _| {
-                if k < 7 && signs & (1 << k) != 0 {
-                    C::new(-1.0, 0.0)
-                } else {
-                    C::new(1.0, 0.0)
-                }
-            });
-            let s = self.patch.dot(&z);
-            z / s
+        (0..128u32).filter_map(|choice| {
+            let pick = |k: usize| (choice >> k) as usize & 1;
+            let e_only = (0..5).filter(|&k| pick(k) == 0).count() + usize::from(pick(6) == 0);
+            if e_only > 3 {
+                return None;
+            }
+            let mut a = J::zeros();
+            for k in 0..7 {
+                a.row_mut(k).copy_from(&self.forms[k][pick(k)].transpose());
+            }
+            a.row_mut(7).copy_from(&self.patch.transpose());
+            let mut rhs = Z::zeros();
+            rhs[7] = C::new(1.0, 0.0);
+            a.lu().solve(&rhs)
         })
     }
 
-    /// `F(z)` and `∂F/∂z` (rows 0..7; row 7 is the patch).
+    /// `F(z)` and `∂F/∂z`: rows 0..5 `F_{k+1} − F_0`, row 5 `F_0`, row 6 the Study
+    /// condition, row 7 the patch.
     fn target(&self, z: &Z) -> (Z, J) {
         let e = z.fixed_rows::<4>(0).into_owned();
         let g = z.fixed_rows::<4>(4).into_owned();
         let ee = e.dot(&e);
+        let mut legs = [C::new(0.0, 0.0); 6];
+        let mut grads = [Z::zeros(); 6];
+        for i in 0..6 {
+            let w = self.m[i] * e + g * C::new(2.0, 0.0);
+            legs[i] = w.dot(&w) - ee * self.l2[i];
+            let de = self.mt[i] * w * C::new(2.0, 0.0) - e * C::new(2.0 * self.l2[i], 0.0);
+            let dg = w * C::new(4.0, 0.0);
+            grads[i].fixed_rows_mut::<4>(0).copy_from(&de);
+            grads[i].fixed_rows_mut::<4>(4).copy_from(&dg);
+        }
         let mut f = Z::zeros();
         let mut j = J::zeros();
-        for i in 0..6 {
-            let mc = self.m[i].map(|x| C::new(x, 0.0));
-            let w = mc * e + g * C::new(2.0, 0.0);
-            f[i] = w.dot(&w) - ee * self.l2[i];
-            let de = mc.transpose() * w * C::new(2.0, 0.0) - e * C::new(2.0 * self.l2[i], 0.0);
-            let dg = w * C::new(4.0, 0.0);
-            for k in 0..4 {
-                j[(i, k)] = de[k];
-                j[(i, 4 + k)] = dg[k];
-            }
+        for k in 0..5 {
+            f[k] = legs[k + 1] - legs[0];
+            j.row_mut(k)
+                .copy_from(&(grads[k + 1] - grads[0]).transpose());
         }
+        f[5] = legs[0];
+        j.row_mut(5).copy_from(&grads[0].transpose());
         f[6] = e.dot(&g);
         for k in 0..4 {
             j[(6, k)] = g[k];
@@ -232,9 +282,10 @@ impl Homotopy {
         let mut g = Z::zeros();
         let mut jg = J::zeros();
         for k in 0..7 {
-            g[k] = z[k] * z[k] - z[7] * z[7];
-            jg[(k, k)] += z[k] * 2.0;
-            jg[(k, 7)] -= z[7] * 2.0;
+            let [a, b] = &self.forms[k];
+            let (az, bz) = (a.dot(z), b.dot(z));
+            g[k] = az * bz;
+            jg.row_mut(k).copy_from(&(a * bz + b * az).transpose());
         }
         let (s, u) = (self.gamma * (1.0 - t), C::new(t, 0.0));
         let mut h = g * s + f * u;
@@ -310,7 +361,7 @@ impl Homotopy {
             let dz = jh.lu().solve(&(-h))?;
             z += dz;
             let (step, size) = (dz.camax(), 1.0 + z.camax());
-            if step <= 1e-10 * size {
+            if step <= 1e-8 * size {
                 return Some(z);
             }
             // A first correction this large means the prediction left the path's basin.
