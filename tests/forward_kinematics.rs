@@ -252,3 +252,39 @@ fn simulations_refuse_a_platform_state_on_another_assembly_mode() {
     let r = watch.check(&q, 1.0);
     assert!(matches!(r, Err(Error::PlatformSingularity { .. })), "{r:?}");
 }
+
+#[test]
+fn fk_over_time_follows_the_paper_period_and_bad_options_are_named() {
+    let out = std::env::temp_dir().join(format!("symbody-fk-ot-{}", std::process::id()));
+    let o = symbody(&[
+        "fk",
+        "stewart_6_6",
+        "--over-time",
+        "2",
+        "--no-plots",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let csv = std::fs::read_to_string(out.join("assembly_modes_over_time.csv")).unwrap();
+    let rows: Vec<Vec<f64>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 3);
+    for r in &rows {
+        // Every sample has the tracked mode among an even number of real modes (the planar
+        // base and platform pair each pose with its mirror image through the base plane).
+        assert!(r[1] >= 2.0 && r[1] % 2.0 == 0.0, "{r:?}");
+        assert!(r[3] > 1.0 && r[3] < 10.0, "condition {}", r[3]);
+    }
+    std::fs::remove_dir_all(&out).ok();
+
+    let o = symbody(&["fk", "stewart_6_6", "--lengths", "0.4,0.4"]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && stderr.contains("--lengths needs six"), "{stderr}");
+    let o = symbody(&["fk", "four_bar"]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && stderr.contains("no forward kinematics"), "{stderr}");
+}
