@@ -7,3 +7,4 @@ pub mod generic;
 pub mod output;
 pub mod plot;
 pub mod scenario;
+pub mod session;
