@@ -283,8 +283,14 @@ fn fk_over_time_follows_the_paper_period_and_bad_options_are_named() {
 
     let o = symbody(&["fk", "stewart_6_6", "--lengths", "0.4,0.4"]);
     let stderr = String::from_utf8_lossy(&o.stderr);
-    assert!(!o.status.success() && stderr.contains("--lengths needs six"), "{stderr}");
+    assert!(
+        !o.status.success() && stderr.contains("--lengths needs six"),
+        "{stderr}"
+    );
     let o = symbody(&["fk", "four_bar"]);
     let stderr = String::from_utf8_lossy(&o.stderr);
-    assert!(!o.status.success() && stderr.contains("no forward kinematics"), "{stderr}");
+    assert!(
+        !o.status.success() && stderr.contains("no forward kinematics"),
+        "{stderr}"
+    );
 }
