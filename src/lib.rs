@@ -8,3 +8,4 @@ pub mod output;
 pub mod plot;
 pub mod scenario;
 pub mod session;
+pub mod viewer;

@@ -6,10 +6,10 @@ use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use symbody::scenario::{self, largest_rotation, Options, Reactions};
-use symbody::{fk, generic};
+use symbody::{fk, generic, viewer};
 use symbody_mechanisms::REGISTRY;
 use symbody_runtime::fk::Pose;
-use symbody_runtime::Formulation;
+use symbody_runtime::{body_pose, Formulation};
 
 /// `println!` that ignores a closed standard output (e.g. piped into `head`) instead of
 /// panicking: the run still writes its files.
@@ -83,6 +83,9 @@ enum Command {
         /// Skip the PNG figures.
         #[arg(long)]
         no_plots: bool,
+        /// Also write <out>/view.html: a self-contained 3D animation of the run.
+        #[arg(long)]
+        html: bool,
     },
     /// Forward kinematics of a platform held by six legs of driven length: the pose reached
     /// by continuation from a known pose, with its leg-length residual and the condition
@@ -135,6 +138,7 @@ fn main() -> ExitCode {
             reactions,
             out,
             no_plots,
+            html,
         } => match mechanism {
             Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
             Some(name) => {
@@ -146,7 +150,7 @@ fn main() -> ExitCode {
                     alpha: alpha.unwrap_or(defaults.alpha),
                     output_step,
                 };
-                simulate_named(&name, &opts, &out, !no_plots)
+                simulate_named(&name, &opts, &out, !no_plots, html)
             }
             None => {
                 let defaults = Options::default();
@@ -161,7 +165,7 @@ fn main() -> ExitCode {
                         Some(ReactionsArg::Recovered) | None => Reactions::Recovered,
                     },
                 };
-                simulate(&opts, &out, !no_plots)
+                simulate(&opts, &out, !no_plots, html)
             }
         },
         Command::Fk {
@@ -240,6 +244,7 @@ fn simulate_named(
     opts: &generic::Options,
     out: &std::path::Path,
     plots: bool,
+    html: bool,
 ) -> Result<(), String> {
     let entry = generic::find(name).map_err(|e| e.to_string())?;
     let rec = generic::run(entry, opts).map_err(|e| format!("{name}: {e}"))?;
@@ -310,6 +315,22 @@ fn simulate_named(
         .filter_map(|f| f.file_name()?.to_str())
         .collect();
     say!("  wrote {}/: {}", out.display(), names.join(", "));
+    if html {
+        let forces: Vec<viewer::Force<'_>> = rec
+            .drivers
+            .iter()
+            .enumerate()
+            .map(|(i, &j)| viewer::Force {
+                name: info.joints[j].name,
+                unit: info.joints[j].effort_unit,
+                values: rec.efforts.iter().map(|e| e[i]).collect(),
+            })
+            .collect();
+        let path = out.join("view.html");
+        let title = format!("{} ({} formulation)", info.name, info.formulation.name());
+        viewer::write(&path, &title, info, &rec.t, &rec.poses, &forces)?;
+        say!("  wrote {}", path.display());
+    }
     Ok(())
 }
 
@@ -339,7 +360,7 @@ fn speed(ratio: f64) -> String {
     }
 }
 
-fn simulate(opts: &Options, out: &std::path::Path, plots: bool) -> Result<(), String> {
+fn simulate(opts: &Options, out: &std::path::Path, plots: bool, html: bool) -> Result<(), String> {
     let run = scenario::simulate(opts).map_err(|e| match e {
         scenario::ScenarioError::Runtime(symbody_runtime::Error::EulerSingularity {
             time, ..
@@ -400,6 +421,34 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool) -> Result<(), St
                 .collect::<Vec<_>>()
                 .join(", ")
         );
+    }
+    if html {
+        let info = scenario::mechanism_info(opts.formulation);
+        let poses = run
+            .q
+            .iter()
+            .map(|q| {
+                info.bodies
+                    .iter()
+                    .map(|b| body_pose(b, q))
+                    .collect::<Result<Vec<_>, _>>()
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| e.to_string())?;
+        let forces: Vec<viewer::Force<'_>> = (0..6)
+            .map(|i| viewer::Force {
+                name: ["act1", "act2", "act3", "act4", "act5", "act6"][i],
+                unit: "N",
+                values: run.actuators.iter().map(|a| a[i]).collect(),
+            })
+            .collect();
+        let path = out.join("view.html");
+        let title = format!(
+            "Stewart 6-6, paper scenario ({} formulation)",
+            opts.formulation.name()
+        );
+        viewer::write(&path, &title, info, &run.t, &poses, &forces)?;
+        say!("  wrote {}", path.display());
     }
     Ok(())
 }

@@ -150,6 +150,14 @@ impl From<Error> for ScenarioError {
     }
 }
 
+/// The generated platform the scenario runs in formulation `f`.
+pub fn mechanism_info(f: Formulation) -> &'static MechanismInfo {
+    match f {
+        Formulation::Exact => Exact.info(),
+        Formulation::Paper => Paper.info(),
+    }
+}
+
 /// Runs the paper's scenario with `opts`.
 pub fn simulate(opts: &Options) -> Result<Run, ScenarioError> {
     match opts.formulation {

@@ -219,10 +219,10 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
                 (b1, b2): (Option<usize>, Option<usize>),
                 start: usize,
                 rows: usize,
-                point1: [f64; 3],
+                (point1, point2): ([f64; 3], [f64; 3]),
                 (sign, unit): (f64, &str)| {
         let (b1, b2) = (opt(b1), opt(b2));
-        quote!(JointInfo { name: #name, kind: #kind, body1: #b1, body2: #b2, row_start: #start, rows: #rows, point1: [#(#point1),*], effort_sign: #sign, effort_unit: #unit })
+        quote!(JointInfo { name: #name, kind: #kind, body1: #b1, body2: #b2, row_start: #start, rows: #rows, point1: [#(#point1),*], point2: [#(#point2),*], effort_sign: #sign, effort_unit: #unit })
     };
     let mut joint_infos: Vec<TokenStream> = model
         .joints
@@ -245,22 +245,22 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
                 j.bodies(),
                 sys.joint_rows[k],
                 j.rows(),
-                j.f1.point,
+                (j.f1.point, j.f2.point),
                 (0.0, ""),
             )
         })
         .collect();
     for (k, d) in model.drivers.iter().enumerate() {
-        let (bodies, point1) = match &d.target {
+        let (bodies, points) = match &d.target {
             DriverTarget::JointAngle(j) | DriverTarget::JointSlide(j) => {
                 let j = &model.joints[*j];
-                (j.bodies(), j.f1.point)
+                (j.bodies(), (j.f1.point, j.f2.point))
             }
             DriverTarget::BodyCoordinate { body, .. } => {
                 let b = &model.bodies[*body];
-                ((None, Some(*body)), [b.q0[0], b.q0[1], b.q0[2]])
+                ((None, Some(*body)), ([b.q0[0], b.q0[1], b.q0[2]], [0.0; 3]))
             }
-            DriverTarget::PointDistance { f1, f2 } => ((f1.body, f2.body), f1.point),
+            DriverTarget::PointDistance { f1, f2 } => ((f1.body, f2.body), (f1.point, f2.point)),
         };
         let unit = if d.is_angular() { "N·m" } else { "N" };
         let start = sys.joint_rows[model.joints.len() + k];
@@ -270,7 +270,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
             bodies,
             start,
             1,
-            point1,
+            points,
             (sys.driver_signs[k], unit),
         ));
     }
@@ -283,7 +283,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
             (Some(b), None),
             start,
             1,
-            [0.0; 3],
+            ([0.0; 3], [0.0; 3]),
             (0.0, ""),
         ));
     }
