@@ -366,9 +366,9 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool, html: bool) -> R
             time, ..
         }) => {
             format!(
-                "{e}\nhint: Euler angles cannot represent this orientation; nothing was written. \
-                 Simulate up to before t = {time:.3} s with --t-end, or use --formulation exact \
-                 (the paper formulation lacks the gyroscopic coupling and spins the legs)"
+                "{e}\nhint: the exact formulation's mass matrix is singular at β = ±90° (Euler \
+                 rates); nothing was written. Simulate up to before t = {time:.3} s with --t-end, \
+                 or give that body quaternion coordinates (rotation = \"quaternion\")"
             )
         }
         other => other.to_string(),
@@ -403,6 +403,9 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool, html: bool) -> R
     );
     if let Some((t, body, beta)) = run.euler_warning {
         say!("  warning: body `{body}` reached beta = {beta:.3} rad at t = {t:.3} s (Euler singularity at ±pi/2)");
+        if opts.formulation == Formulation::Paper {
+            say!("           the constant mass matrix keeps the run regular; the leg's spin is the paper model's flaw (README, Formulations)");
+        }
     }
     symbody::output::write_csvs(&run, out)
         .map_err(|e| format!("cannot write CSVs to {}: {e}", out.display()))?;
