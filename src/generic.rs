@@ -8,7 +8,7 @@ use crate::scenario::{output_count, ScenarioError};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 use symbody_mechanisms::{Entry, REGISTRY};
-use symbody_runtime::fk::{ModeWatch, Platform};
+use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, EulerWarning, Formulation,
     HhtBuilder, Integrator, JointKind, Mechanism, MechanismInfo, ResidualWatch, Rotation, Stats,
@@ -217,7 +217,11 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
     // A six-leg platform must stay on its assembly mode: a step across a parallel
     // singularity would continue on another one without any solver noticing.
     let modes = match info.platform {
-        Some(_) => Some(ModeWatch::new(&Platform::new(mech)?, it.q(), 1e8)?),
+        Some(_) => Some(ModeWatch::new(
+            &Platform::new(mech)?,
+            it.q(),
+            SIMULATION_MAX_CONDITION,
+        )?),
         None => None,
     };
     let mut sample = meter.record(&mech, it.t(), it.q(), it.qd())?;

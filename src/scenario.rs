@@ -3,7 +3,7 @@
 
 use std::time::{Duration, Instant};
 use symbody_mechanisms::stewart_6_6::{Exact, Paper};
-use symbody_runtime::fk::{ModeWatch, Platform};
+use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
     actuator_force, joint_force, Error, Formulation, HhtBuilder, Integrator, Kinematics, Mechanism,
     MechanismInfo, ResidualWatch, Stats,
@@ -182,7 +182,11 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
     let mut recorder = Recorder::new(info, layout, opts.reactions)?;
     // The platform's determinant sign is watched at the outputs: a pose that crossed a
     // parallel singularity between two outputs is on another assembly mode at the next.
-    let modes = ModeWatch::new(&Platform::new(it.mechanism())?, it.q(), 1e8)?;
+    let modes = ModeWatch::new(
+        &Platform::new(it.mechanism())?,
+        it.q(),
+        SIMULATION_MAX_CONDITION,
+    )?;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(opts.t_end);
         it.advance_to(t_out)?;

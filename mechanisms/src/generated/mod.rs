@@ -8,6 +8,8 @@ pub mod dietmaier_6_6;
 #[rustfmt::skip]
 pub mod four_bar;
 #[rustfmt::skip]
+pub mod hexapod_twist;
+#[rustfmt::skip]
 pub mod oscillators;
 #[rustfmt::skip]
 pub mod slider_crank;
@@ -43,6 +45,13 @@ pub static REGISTRY: &[crate::Entry] = &[
         t_end: four_bar::T_END,
         formulations: &[
             (Formulation::Exact, &four_bar::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "hexapod_twist",
+        t_end: hexapod_twist::T_END,
+        formulations: &[
+            (Formulation::Exact, &hexapod_twist::Exact as &(dyn Mechanism + Sync)),
         ],
     },
     crate::Entry {

@@ -16,7 +16,7 @@ use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 use crate::error::Error;
 
 pub use modes::{assembly_modes, Mode, Modes};
-pub use platform::{ModeWatch, Platform};
+pub use platform::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 pub use track::{track, TrackSettings, Tracked};
 
 /// The six legs' attachment points.

@@ -93,6 +93,11 @@ impl<'m, M: Mechanism + ?Sized> Platform<'m, M> {
     }
 }
 
+/// The condition number at which simulations stop a six-leg platform: there the legs
+/// amplify load and length errors a thousandfold, and a few milliseconds later (on the
+/// hexapod_twist mechanism) the integrator can no longer converge at all.
+pub const SIMULATION_MAX_CONDITION: f64 = 1e3;
+
 /// Watches a simulated platform's pose for a parallel singularity: the sign of the legs'
 /// Jacobian's determinant must not change between checks, and its condition must stay below
 /// a limit. Allocates nothing per check.
