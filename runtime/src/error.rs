@@ -56,6 +56,9 @@ pub enum Error {
         step: f64,
         /// Unscaled constraint residual |Φ|∞ of the last failed attempt.
         residual: f64,
+        /// The row where that residual is largest (what could not be satisfied), when the
+        /// attempt got far enough to evaluate Φ.
+        row: Option<ConstraintRow>,
     },
     /// The constraint Jacobian lost rank: these rows are (numerically) dependent on others.
     SingularJacobian { time: f64, rows: Vec<ConstraintRow> },
@@ -136,11 +139,18 @@ impl fmt::Display for Error {
                 time,
                 step,
                 residual,
-            } => write!(
-                f,
-                "HHT step size {step:e} s at t = {time:.6} s is below the minimum without \
-                 convergence, constraint residual |Φ|∞ = {residual:e}"
-            ),
+                row,
+            } => {
+                write!(
+                    f,
+                    "HHT step size {step:e} s at t = {time:.6} s is below the minimum without \
+                     convergence, constraint residual |Φ|∞ = {residual:e}"
+                )?;
+                match row {
+                    Some(r) => write!(f, ", largest in {r}"),
+                    None => Ok(()),
+                }
+            }
             Error::SingularJacobian { time, rows } => {
                 write!(
                     f,

@@ -30,7 +30,7 @@
 //! step is retried with a fresh factorization at every iteration, then halved; below the
 //! minimum step the integrator returns an error and keeps the last accepted state.
 
-use crate::error::{check_len, Error};
+use crate::error::{check_len, ConstraintRow, Error};
 use crate::kinematics::{inf_norm, mass_times, InitialVelocity, KinematicSettings, Kinematics};
 use crate::kkt::{KktError, KktPattern, KktSolver, SchurKkt};
 use crate::mechanism::{Mechanism, MechanismInfo, NewtonOutputs};
@@ -368,7 +368,11 @@ pub struct StepReport {
 /// Why one attempt failed; the caller decides whether to retry.
 #[derive(Debug, Clone, Copy)]
 enum Failure {
-    NotConverged { residual: f64 },
+    /// `row`: the constraint row with the largest |Φ| at the last iterate.
+    NotConverged {
+        residual: f64,
+        row: usize,
+    },
     Kkt(KktError),
     NotFinite,
 }
@@ -677,15 +681,17 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                     | Failure::Kkt(e @ KktError::MassNotPositiveDefinite { .. }) => {
                         e.to_error(self.info, self.t)
                     }
-                    Failure::NotConverged { residual } => Error::StepSizeTooSmall {
+                    Failure::NotConverged { residual, row } => Error::StepSizeTooSmall {
                         time: self.t,
                         step: h,
                         residual,
+                        row: Some(ConstraintRow::new(self.info, row)),
                     },
                     Failure::Kkt(_) | Failure::NotFinite => Error::StepSizeTooSmall {
                         time: self.t,
                         step: h,
                         residual: f64::NAN,
+                        row: None,
                     },
                 });
             }
@@ -844,7 +850,10 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             }
             if iter >= 1 && err > SLOW_RATE * last_err {
                 if err > 4.0 * last_err && iter >= 2 {
-                    return Err(Failure::NotConverged { residual });
+                    return Err(Failure::NotConverged {
+                        residual,
+                        row: worst_row(&self.phi),
+                    });
                 }
                 self.need_factor = true;
             }
@@ -856,8 +865,18 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             }
             last_err = err;
         }
-        Err(Failure::NotConverged { residual })
+        Err(Failure::NotConverged {
+            residual,
+            row: worst_row(&self.phi),
+        })
     }
+}
+
+/// Index of the entry with the largest magnitude (0 for an empty slice).
+fn worst_row(phi: &[f64]) -> usize {
+    (0..phi.len())
+        .max_by(|&a, &b| phi[a].abs().total_cmp(&phi[b].abs()))
+        .unwrap_or(0)
 }
 
 #[cfg(test)]
