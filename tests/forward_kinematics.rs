@@ -305,7 +305,10 @@ fn a_driver_path_into_a_parallel_singularity_stops_the_simulation_first() {
     let legs = paper_legs();
     let twist = |deg: f64| Pose::from_euler([0.0, Y0, 0.0], [0.0, deg.to_radians(), 0.0]);
     let det = |deg: f64| legs.jacobian(&twist(deg)).determinant();
-    assert!(det(89.9) * det(90.1) < 0.0, "90° twist is where the determinant changes sign");
+    assert!(
+        det(89.9) * det(90.1) < 0.0,
+        "90° twist is where the determinant changes sign"
+    );
 
     let entry = find("hexapod_twist").unwrap();
     let err = symbody::generic::run(entry, &symbody::generic::Options::default()).unwrap_err();
