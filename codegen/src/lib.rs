@@ -16,6 +16,7 @@ pub mod emit;
 pub mod equations;
 pub mod expr;
 pub mod files;
+pub mod fuzz;
 pub mod geometry;
 pub mod legs;
 pub mod loads;

@@ -1,0 +1,60 @@
+//! A seeded share of the generator fuzzer (`cargo run --release -p symbody-codegen --bin
+//! fuzz` runs 10⁶ inputs): mutants of every shipped mechanism file must be rejected with
+//! errors or generated, never panic; every input the fuzzer ever kept
+//! (`tests/fuzz_regressions/`) is replayed.
+
+use std::path::Path;
+use symbody_codegen::fuzz::{mutate, run_one, Outcome, Rng};
+
+#[test]
+fn mutated_mechanism_files_never_panic() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../mechanisms");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "toml") && !p.ends_with("Cargo.toml"))
+        .collect();
+    files.sort();
+    let texts: Vec<String> = files
+        .iter()
+        .map(|p| std::fs::read_to_string(p).unwrap())
+        .collect();
+    let mut outcomes = [0usize; 4];
+    let mut generated_small = 0;
+    for i in 0..3000u64 {
+        let mut rng = Rng(0x5eed ^ i);
+        let text = &texts[rng.below(texts.len())];
+        let mutant = mutate(text, &mut rng);
+        // Full generation of the large files takes ~0.5 s: only the small ones here.
+        let full = mutant.len() < 4000 && generated_small < 60;
+        let o = run_one(&mutant, full);
+        if o == Outcome::Generated {
+            generated_small += 1;
+        }
+        assert_ne!(o, Outcome::Panicked, "input {i} panicked:\n{mutant}");
+        outcomes[o as usize] += 1;
+    }
+    // The share exercises both fates: rejected files and files that load.
+    assert!(outcomes[Outcome::Rejected as usize] > 1000, "{outcomes:?}");
+    assert!(
+        outcomes[Outcome::Loaded as usize] + outcomes[Outcome::Generated as usize] > 100,
+        "{outcomes:?}"
+    );
+}
+
+#[test]
+fn kept_fuzz_inputs_never_panic_again() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fuzz_regressions");
+    for entry in std::fs::read_dir(dir).into_iter().flatten().flatten() {
+        let path = entry.path();
+        if path.extension().is_some_and(|x| x == "toml") {
+            let text = std::fs::read_to_string(&path).unwrap();
+            assert_ne!(
+                run_one(&text, true),
+                Outcome::Panicked,
+                "{}",
+                path.display()
+            );
+        }
+    }
+}
