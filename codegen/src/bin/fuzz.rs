@@ -63,7 +63,9 @@ fn main() {
                 let mutant = mutate(text, &mut rng);
                 let mut outcome = run_one(&mutant, false);
                 if outcome == Outcome::Loaded
-                    && loaded_seen.fetch_add(1, Ordering::Relaxed) % every == 0
+                    && loaded_seen
+                        .fetch_add(1, Ordering::Relaxed)
+                        .is_multiple_of(every)
                 {
                     outcome = run_one(&mutant, true);
                 }
@@ -77,7 +79,7 @@ fn main() {
                         path.display()
                     );
                 }
-                if i > 0 && i % 100_000 == 0 {
+                if i > 0 && i.is_multiple_of(100_000) {
                     eprintln!("{i} inputs, {:.0} s", start.elapsed().as_secs_f64());
                 }
             });
