@@ -1,0 +1,533 @@
+//! The registered mechanisms for C: their names, and for one looked up by name and
+//! formulation its sizes, sparsity patterns, initial pose, driver names and generated
+//! equations, evaluated into the caller's buffers.
+
+use crate::status::{arg, arg_mut, guard, guard_value, input, output, string, Failure};
+use crate::status::{SymbodyFormulation, SymbodyStatus};
+use std::ffi::{c_char, c_int, CString};
+use std::sync::OnceLock;
+use symbody_core::session::Dyn;
+use symbody_mechanisms::REGISTRY;
+use symbody_runtime::{Formulation, JointKind, MechanismInfo};
+
+/// One generated mechanism in one formulation (opaque). Made by `symbody_mechanism_new` or
+/// `symbody_session_mechanism`, released by `symbody_mechanism_free`. It holds no state:
+/// every function taking a `const SymbodyMechanism*` may be called from any thread.
+pub struct SymbodyMechanism {
+    pub(crate) mech: Dyn,
+    /// NUL-terminated driver names, in `symbody_session_driver_efforts` order.
+    driver_names: Vec<CString>,
+}
+
+impl SymbodyMechanism {
+    pub(crate) fn new(mech: Dyn) -> SymbodyMechanism {
+        let driver_names = mech
+            .info()
+            .joints
+            .iter()
+            .filter(|j| j.kind == JointKind::Driver)
+            .map(|j| CString::new(j.name).expect("generated names have no NUL"))
+            .collect();
+        SymbodyMechanism { mech, driver_names }
+    }
+
+    fn info(&self) -> &'static MechanismInfo {
+        self.mech.info()
+    }
+}
+
+/// The formulation code `f` as `None` (default) or a formulation.
+pub(crate) fn formulation(f: c_int) -> Result<Option<Formulation>, Failure> {
+    match f {
+        f if f == SymbodyFormulation::Default as c_int => Ok(None),
+        f if f == SymbodyFormulation::Paper as c_int => Ok(Some(Formulation::Paper)),
+        f if f == SymbodyFormulation::Exact as c_int => Ok(Some(Formulation::Exact)),
+        _ => Err(Failure::new(
+            SymbodyStatus::InvalidArgument,
+            format!("formulation {f} is none of 0 (default), 1 (paper), 2 (exact)"),
+        )),
+    }
+}
+
+/// The registered mechanism `name` in formulation code `f`.
+pub(crate) fn lookup(name: &str, f: c_int) -> Result<Dyn, Failure> {
+    let f = formulation(f)?;
+    let entry = symbody_core::generic::find(name)
+        .map_err(|e| Failure::from_session(e, SymbodyStatus::UnknownName))?;
+    match f {
+        None => Ok(entry.default_mechanism()),
+        Some(f) => entry.mechanism(f).ok_or_else(|| {
+            Failure::new(
+                SymbodyStatus::InvalidArgument,
+                format!("`{name}` was not generated in the {} formulation", f.name()),
+            )
+        }),
+    }
+}
+
+fn names() -> &'static [CString] {
+    static NAMES: OnceLock<Vec<CString>> = OnceLock::new();
+    NAMES.get_or_init(|| {
+        REGISTRY
+            .iter()
+            .map(|e| CString::new(e.name).expect("generated names have no NUL"))
+            .collect()
+    })
+}
+
+/// Number of registered mechanisms.
+#[no_mangle]
+pub extern "C" fn symbody_mechanism_count() -> usize {
+    guard_value(0, || Ok(REGISTRY.len()))
+}
+
+/// Name of registered mechanism `i` (0-based, below `symbody_mechanism_count()`), a static
+/// NUL-terminated string; NULL (with an error message) if `i` is out of range.
+#[no_mangle]
+pub extern "C" fn symbody_mechanism_name(i: usize) -> *const c_char {
+    guard_value(std::ptr::null(), || {
+        names().get(i).map(|n| n.as_ptr()).ok_or_else(|| {
+            Failure::new(
+                SymbodyStatus::InvalidArgument,
+                format!("mechanism index {i}: there are {}", REGISTRY.len()),
+            )
+        })
+    })
+}
+
+/// Looks up the registered mechanism `name` in `formulation` (a `SymbodyFormulation`) and
+/// stores a new handle in `*out` (NULL on failure). Release it with
+/// `symbody_mechanism_free`.
+///
+/// Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the registered names),
+/// `SYMBODY_STATUS_INVALID_ARGUMENT` for a bad formulation code or one the mechanism was
+/// not generated in.
+///
+/// # Safety
+/// `name` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
+/// for one pointer.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_new(
+    name: *const c_char,
+    formulation: c_int,
+    out: *mut *mut SymbodyMechanism,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract above.
+        let out = unsafe { arg_mut(out, "out")? };
+        *out = std::ptr::null_mut();
+        // SAFETY: the caller's contract above.
+        let name = unsafe { string(name, "name")? };
+        let mech = lookup(name, formulation)?;
+        *out = Box::into_raw(Box::new(SymbodyMechanism::new(mech)));
+        Ok(())
+    })
+}
+
+/// Releases a mechanism handle; NULL is ignored.
+///
+/// # Safety
+/// `m` is NULL or a handle from this library not yet freed; it is not used afterwards.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_free(m: *mut SymbodyMechanism) {
+    guard_value((), || {
+        if !m.is_null() {
+            // SAFETY: made by Box::into_raw and, by the caller's contract, not yet freed.
+            drop(unsafe { Box::from_raw(m) });
+        }
+        Ok(())
+    })
+}
+
+/// Runs `f` on the handle's info; `fallback` (and an error message) if `m` is NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+unsafe fn size<T>(
+    m: *const SymbodyMechanism,
+    fallback: T,
+    f: impl FnOnce(&SymbodyMechanism) -> T,
+) -> T {
+    guard_value(fallback, || {
+        // SAFETY: the caller's contract.
+        Ok(f(unsafe { arg(m, "mechanism")? }))
+    })
+}
+
+/// Number of coordinates `q` (and of velocities `qd`); 0 if `m` is NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_n_coords(m: *const SymbodyMechanism) -> usize {
+    // SAFETY: the caller's contract.
+    unsafe { size(m, 0, |m| m.info().n_coords) }
+}
+
+/// Number of constraint rows (entries of Φ, γ and the multipliers); 0 if `m` is NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_n_constraints(m: *const SymbodyMechanism) -> usize {
+    // SAFETY: the caller's contract.
+    unsafe { size(m, 0, |m| m.info().n_constraints) }
+}
+
+/// Number of structural nonzeros of the constraint Jacobian Φq; 0 if `m` is NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_phi_q_nnz(m: *const SymbodyMechanism) -> usize {
+    // SAFETY: the caller's contract.
+    unsafe { size(m, 0, |m| m.info().phi_q_nnz()) }
+}
+
+/// Number of structural nonzeros of the (symmetric, both triangles stored) mass matrix;
+/// 0 if `m` is NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_mass_nnz(m: *const SymbodyMechanism) -> usize {
+    // SAFETY: the caller's contract.
+    unsafe { size(m, 0, |m| m.info().mass_nnz()) }
+}
+
+/// The handle's formulation: `SYMBODY_FORMULATION_PAPER` or `SYMBODY_FORMULATION_EXACT`
+/// (never `_DEFAULT`: that resolves to one of them); -1 if `m` is NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_formulation(m: *const SymbodyMechanism) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe {
+        size(m, -1, |m| match m.info().formulation {
+            Formulation::Paper => SymbodyFormulation::Paper as c_int,
+            Formulation::Exact => SymbodyFormulation::Exact as c_int,
+        })
+    }
+}
+
+/// Number of drivers (entries of `symbody_session_driver_efforts`); 0 if `m` is NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_driver_count(m: *const SymbodyMechanism) -> usize {
+    // SAFETY: the caller's contract.
+    unsafe { size(m, 0, |m| m.driver_names.len()) }
+}
+
+/// Name of driver `i` (0-based, in `symbody_session_driver_efforts` order), NUL-terminated
+/// and valid until `m` is freed; NULL (with an error message) if `m` is NULL or `i` is out
+/// of range.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_driver_name(
+    m: *const SymbodyMechanism,
+    i: usize,
+) -> *const c_char {
+    guard_value(std::ptr::null(), || {
+        // SAFETY: the caller's contract.
+        let m = unsafe { arg(m, "mechanism")? };
+        m.driver_names.get(i).map(|n| n.as_ptr()).ok_or_else(|| {
+            Failure::new(
+                SymbodyStatus::InvalidArgument,
+                format!(
+                    "driver index {i}: `{}` has {} drivers",
+                    m.info().name,
+                    m.driver_names.len()
+                ),
+            )
+        })
+    })
+}
+
+/// Copies a sparsity pattern into the caller's buffers.
+///
+/// # Safety
+/// As for the public pattern functions.
+unsafe fn pattern(
+    m: *const SymbodyMechanism,
+    rows: *mut u32,
+    cols: *mut u32,
+    len: usize,
+    which: fn(&MechanismInfo) -> (&'static [u32], &'static [u32]),
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        let m = unsafe { arg(m, "mechanism")? };
+        let (r, c) = which(m.info());
+        // SAFETY: the caller's contract; lengths checked inside.
+        let rows = unsafe { output(rows, len, r.len(), "rows")? };
+        // SAFETY: as above.
+        let cols = unsafe { output(cols, len, c.len(), "cols")? };
+        rows.copy_from_slice(r);
+        cols.copy_from_slice(c);
+        Ok(())
+    })
+}
+
+/// Copies the Φq sparsity pattern: the 0-based row and column of each structural nonzero,
+/// in the order `symbody_mechanism_phi_q` writes the values (row-major, columns
+/// ascending). `rows` and `cols` each hold `len >= symbody_mechanism_phi_q_nnz(m)` entries.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `rows` and `cols` are NULL or point to `len` writable
+/// `uint32_t` each.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_phi_q_pattern(
+    m: *const SymbodyMechanism,
+    rows: *mut u32,
+    cols: *mut u32,
+    len: usize,
+) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe { pattern(m, rows, cols, len, |i| (i.phi_q_rows, i.phi_q_cols)) }
+}
+
+/// Copies the mass matrix's sparsity pattern (both triangles), in the order
+/// `symbody_mechanism_mass` writes the values. `rows` and `cols` each hold
+/// `len >= symbody_mechanism_mass_nnz(m)` entries.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `rows` and `cols` are NULL or point to `len` writable
+/// `uint32_t` each.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_mass_pattern(
+    m: *const SymbodyMechanism,
+    rows: *mut u32,
+    cols: *mut u32,
+    len: usize,
+) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe { pattern(m, rows, cols, len, |i| (i.mass_rows, i.mass_cols)) }
+}
+
+/// Copies the initial coordinates (the mechanism file's pose, assembled) into `out`, which
+/// holds `out_len >= symbody_mechanism_n_coords(m)` entries.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `out` is NULL or points to `out_len` writable doubles.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_q0(
+    m: *const SymbodyMechanism,
+    out: *mut f64,
+    out_len: usize,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        let m = unsafe { arg(m, "mechanism")? };
+        let q0 = m.info().q0;
+        // SAFETY: the caller's contract; length checked inside.
+        unsafe { output(out, out_len, q0.len(), "out")? }.copy_from_slice(q0);
+        Ok(())
+    })
+}
+
+/// The inputs and output of one evaluation, checked.
+struct Eval<'a> {
+    mech: Dyn,
+    q: &'a [f64],
+    qd: &'a [f64],
+    out: &'a mut [f64],
+}
+
+/// Checks an evaluation's arguments (`qd` may be absent) and runs `f` on them.
+///
+/// # Safety
+/// As for the public evaluation functions.
+#[allow(clippy::too_many_arguments)]
+unsafe fn eval(
+    m: *const SymbodyMechanism,
+    q: *const f64,
+    q_len: usize,
+    qd: Option<(*const f64, usize)>,
+    out: *mut f64,
+    out_len: usize,
+    out_size: fn(&MechanismInfo) -> usize,
+    f: impl FnOnce(Eval<'_>),
+) -> c_int {
+    guard(|| {
+        // SAFETY (all four): the caller's contract; lengths checked inside.
+        let m = unsafe { arg(m, "mechanism")? };
+        let info = m.info();
+        let q = unsafe { input(q, q_len, info.n_coords, "q")? };
+        let qd = match qd {
+            Some((p, len)) => unsafe { input(p, len, info.n_coords, "qd")? },
+            None => &[],
+        };
+        let out = unsafe { output(out, out_len, out_size(info), "out")? };
+        f(Eval {
+            mech: m.mech,
+            q,
+            qd,
+            out,
+        });
+        Ok(())
+    })
+}
+
+/// Evaluates the constraint residual Φ(q, t) into `out` (`symbody_mechanism_n_constraints`
+/// entries). `q` holds `q_len >= symbody_mechanism_n_coords(m)` entries; longer buffers
+/// are fine (the extra entries are ignored or left alone).
+///
+/// # Safety
+/// `m` is NULL or a live handle; `q` is NULL or points to `q_len` readable doubles; `out`
+/// is NULL or points to `out_len` writable doubles not overlapping `q`.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_phi(
+    m: *const SymbodyMechanism,
+    q: *const f64,
+    q_len: usize,
+    t: f64,
+    out: *mut f64,
+    out_len: usize,
+) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe {
+        eval(
+            m,
+            q,
+            q_len,
+            None,
+            out,
+            out_len,
+            |i| i.n_constraints,
+            |e| e.mech.phi(e.q, t, e.out),
+        )
+    }
+}
+
+/// Evaluates the constraint Jacobian's nonzeros Φq(q, t) into `out`
+/// (`symbody_mechanism_phi_q_nnz` entries, in `symbody_mechanism_phi_q_pattern` order).
+///
+/// # Safety
+/// `m` is NULL or a live handle; `q` is NULL or points to `q_len` readable doubles; `out`
+/// is NULL or points to `out_len` writable doubles not overlapping `q`.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_phi_q(
+    m: *const SymbodyMechanism,
+    q: *const f64,
+    q_len: usize,
+    t: f64,
+    out: *mut f64,
+    out_len: usize,
+) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe {
+        eval(
+            m,
+            q,
+            q_len,
+            None,
+            out,
+            out_len,
+            |i| i.phi_q_nnz(),
+            |e| e.mech.phi_q(e.q, t, e.out),
+        )
+    }
+}
+
+/// Evaluates the acceleration right-hand side γ(q, q̇, t) = −(Φq q̇)q q̇ − 2Φqt q̇ − Φtt
+/// into `out` (`symbody_mechanism_n_constraints` entries).
+///
+/// # Safety
+/// `m` is NULL or a live handle; `q` and `qd` are NULL or point to `q_len` and `qd_len`
+/// readable doubles; `out` is NULL or points to `out_len` writable doubles not overlapping
+/// the inputs.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn symbody_mechanism_gamma(
+    m: *const SymbodyMechanism,
+    q: *const f64,
+    q_len: usize,
+    qd: *const f64,
+    qd_len: usize,
+    t: f64,
+    out: *mut f64,
+    out_len: usize,
+) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe {
+        eval(
+            m,
+            q,
+            q_len,
+            Some((qd, qd_len)),
+            out,
+            out_len,
+            |i| i.n_constraints,
+            |e| e.mech.gamma(e.q, e.qd, t, e.out),
+        )
+    }
+}
+
+/// Evaluates the mass matrix's nonzeros M(q) into `out` (`symbody_mechanism_mass_nnz`
+/// entries, in `symbody_mechanism_mass_pattern` order).
+///
+/// # Safety
+/// `m` is NULL or a live handle; `q` is NULL or points to `q_len` readable doubles; `out`
+/// is NULL or points to `out_len` writable doubles not overlapping `q`.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_mass(
+    m: *const SymbodyMechanism,
+    q: *const f64,
+    q_len: usize,
+    out: *mut f64,
+    out_len: usize,
+) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe {
+        eval(
+            m,
+            q,
+            q_len,
+            None,
+            out,
+            out_len,
+            |i| i.mass_nnz(),
+            |e| e.mech.mass(e.q, e.out),
+        )
+    }
+}
+
+/// Evaluates the generalized applied and velocity-dependent forces Q(q, q̇, t) into `out`
+/// (`symbody_mechanism_n_coords` entries); the equations of motion are
+/// `M q̈ + Φqᵀ λ = Q`, `Φq q̈ = γ`.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `q` and `qd` are NULL or point to `q_len` and `qd_len`
+/// readable doubles; `out` is NULL or points to `out_len` writable doubles not overlapping
+/// the inputs.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn symbody_mechanism_force(
+    m: *const SymbodyMechanism,
+    q: *const f64,
+    q_len: usize,
+    qd: *const f64,
+    qd_len: usize,
+    t: f64,
+    out: *mut f64,
+    out_len: usize,
+) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe {
+        eval(
+            m,
+            q,
+            q_len,
+            Some((qd, qd_len)),
+            out,
+            out_len,
+            |i| i.n_coords,
+            |e| e.mech.force(e.q, e.qd, t, e.out),
+        )
+    }
+}

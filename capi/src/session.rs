@@ -1,0 +1,294 @@
+//! A running simulation for C: `symbody::session::Session` behind an opaque handle (make,
+//! step or advance, read the state, the multipliers, driver efforts and joint wrenches).
+
+use crate::mechanism::{lookup, SymbodyMechanism};
+use crate::status::{arg, arg_mut, guard, guard_value, output, string, Failure, SymbodyStatus};
+use std::ffi::{c_char, c_int};
+use symbody_core::session::{Session, Settings};
+
+/// A running simulation of one mechanism (opaque): HHT-α from a consistent start at t = 0.
+/// Made by `symbody_session_new`, released by `symbody_session_free`. A handle may be
+/// moved between threads but used by one at a time; distinct handles are independent.
+pub struct SymbodySession {
+    session: Session,
+}
+
+/// Builds a session of the registered mechanism `name` in `formulation` (a
+/// `SymbodyFormulation`) with HHT parameter `alpha` in [-1/3, 0] and step `step` (s)
+/// (the paper's: -0.05 and 1e-3), started consistently at t = 0 from the mechanism file's
+/// pose and velocities, and stores it in `*out` (NULL on failure). Release it with
+/// `symbody_session_free`.
+///
+/// Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the registered names),
+/// `SYMBODY_STATUS_INVALID_ARGUMENT` (formulation, alpha, step), `SYMBODY_STATUS_SOLVER`
+/// (no consistent start).
+///
+/// # Safety
+/// `name` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
+/// for one pointer.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_new(
+    name: *const c_char,
+    formulation: c_int,
+    alpha: f64,
+    step: f64,
+    out: *mut *mut SymbodySession,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract above.
+        let out = unsafe { arg_mut(out, "out")? };
+        *out = std::ptr::null_mut();
+        // SAFETY: the caller's contract above.
+        let name = unsafe { string(name, "name")? };
+        // Resolves the name and formulation with this API's statuses first.
+        let mech = lookup(name, formulation)?;
+        let settings = Settings {
+            formulation: Some(mech.info().formulation),
+            alpha,
+            step,
+            ..Settings::default()
+        };
+        let session = Session::new(name, settings)
+            .map_err(|e| Failure::from_session(e, SymbodyStatus::InvalidArgument))?;
+        *out = Box::into_raw(Box::new(SymbodySession { session }));
+        Ok(())
+    })
+}
+
+/// Releases a session; NULL is ignored.
+///
+/// # Safety
+/// `s` is NULL or a handle from this library not yet freed; it is not used afterwards.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_free(s: *mut SymbodySession) {
+    guard_value((), || {
+        if !s.is_null() {
+            // SAFETY: made by Box::into_raw and, by the caller's contract, not yet freed.
+            drop(unsafe { Box::from_raw(s) });
+        }
+        Ok(())
+    })
+}
+
+/// Stores a new handle to the session's mechanism (its formulation) in `*out` (NULL on
+/// failure), for its sizes, names and equations. Release it with `symbody_mechanism_free`;
+/// it stays valid after the session is freed.
+///
+/// # Safety
+/// `s` is NULL or a live handle; `out` is NULL or points to writable storage for one
+/// pointer.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_mechanism(
+    s: *const SymbodySession,
+    out: *mut *mut SymbodyMechanism,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract above.
+        let out = unsafe { arg_mut(out, "out")? };
+        *out = std::ptr::null_mut();
+        // SAFETY: the caller's contract above.
+        let s = unsafe { arg(s, "session")? };
+        *out = Box::into_raw(Box::new(SymbodyMechanism::new(s.session.mechanism())));
+        Ok(())
+    })
+}
+
+/// The session's time (s); NaN (with an error message) if `s` is NULL.
+///
+/// # Safety
+/// `s` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_t(s: *const SymbodySession) -> f64 {
+    guard_value(f64::NAN, || {
+        // SAFETY: the caller's contract above.
+        Ok(unsafe { arg(s, "session")? }.session.t())
+    })
+}
+
+/// The session behind `s`.
+///
+/// # Safety
+/// `s` is NULL or a live handle used by no other thread during `'a`.
+unsafe fn session<'a>(s: *mut SymbodySession) -> Result<&'a mut Session, Failure> {
+    // SAFETY: the caller's contract.
+    Ok(&mut unsafe { arg_mut(s, "session")? }.session)
+}
+
+fn solver(e: symbody_core::session::Error) -> Failure {
+    Failure::from_session(e, SymbodyStatus::InvalidArgument)
+}
+
+/// Takes one HHT step of the nominal size (cut internally on failure).
+///
+/// # Safety
+/// `s` is NULL or a live handle used by no other thread during the call.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_step(s: *mut SymbodySession) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        unsafe { session(s)? }.step().map_err(solver)
+    })
+}
+
+/// Steps until exactly time `t` (s), the last step shortened to land on it. `t` must be
+/// finite and not before the session's time (`SYMBODY_STATUS_INVALID_ARGUMENT`).
+///
+/// # Safety
+/// `s` is NULL or a live handle used by no other thread during the call.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_advance_to(s: *mut SymbodySession, t: f64) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        unsafe { session(s)? }.advance_to(t).map_err(solver)
+    })
+}
+
+/// Copies the coordinates q into `buf`, which holds `len >= symbody_mechanism_n_coords`
+/// entries.
+///
+/// # Safety
+/// `s` is NULL or a live handle; `buf` is NULL or points to `len` writable doubles.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_q(
+    s: *const SymbodySession,
+    buf: *mut f64,
+    len: usize,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract above; length checked inside.
+        let q = unsafe { arg(s, "session")? }.session.q();
+        unsafe { output(buf, len, q.len(), "buf")? }.copy_from_slice(q);
+        Ok(())
+    })
+}
+
+/// Copies the velocities q̇ into `buf`, which holds `len >= symbody_mechanism_n_coords`
+/// entries.
+///
+/// # Safety
+/// `s` is NULL or a live handle; `buf` is NULL or points to `len` writable doubles.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_qd(
+    s: *const SymbodySession,
+    buf: *mut f64,
+    len: usize,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract above; length checked inside.
+        let qd = unsafe { arg(s, "session")? }.session.qd();
+        unsafe { output(buf, len, qd.len(), "buf")? }.copy_from_slice(qd);
+        Ok(())
+    })
+}
+
+/// Copies the Lagrange multipliers λ of the current state (one per constraint row, from
+/// `[M Φqᵀ; Φq 0][q̈; λ] = [Q; γ]`) into `buf`, which holds
+/// `len >= symbody_mechanism_n_constraints` entries. Redundant rows have λ = 0.
+///
+/// # Safety
+/// `s` is NULL or a live handle used by no other thread during the call; `buf` is NULL or
+/// points to `len` writable doubles.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_multipliers(
+    s: *mut SymbodySession,
+    buf: *mut f64,
+    len: usize,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        let s = unsafe { session(s)? };
+        let lambda = s.multipliers().map_err(solver)?;
+        // SAFETY: the caller's contract; length checked inside.
+        unsafe { output(buf, len, lambda.len(), "buf")? }.copy_from_slice(lambda);
+        Ok(())
+    })
+}
+
+/// Writes the effort of every driver (force in N or torque in N·m on the driven body,
+/// positive along increasing driven coordinate) into `buf`, in driver order
+/// (`symbody_mechanism_driver_name`), and the number of drivers into `*n_written`. If
+/// `len` is shorter than that, nothing is written to `buf`, `*n_written` still receives
+/// the number needed, and the status is `SYMBODY_STATUS_BUFFER_TOO_SHORT`.
+///
+/// # Safety
+/// `s` is NULL or a live handle used by no other thread during the call; `buf` is NULL or
+/// points to `len` writable doubles; `n_written` is NULL or points to a writable `size_t`.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_driver_efforts(
+    s: *mut SymbodySession,
+    buf: *mut f64,
+    len: usize,
+    n_written: *mut usize,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        let s = unsafe { session(s)? };
+        // SAFETY: the caller's contract.
+        let n_written = unsafe { arg_mut(n_written, "n_written")? };
+        *n_written = 0;
+        let need = s.driver_efforts(&mut []).map_err(solver)?;
+        *n_written = need;
+        // SAFETY: the caller's contract; length checked inside.
+        let buf = unsafe { output(buf, len, need, "buf")? };
+        s.driver_efforts(buf).map_err(solver)?;
+        Ok(())
+    })
+}
+
+/// Stores the effort of the driver called `name` (see `symbody_session_driver_efforts`) in
+/// `*out`. Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the joints),
+/// `SYMBODY_STATUS_INVALID_ARGUMENT` if the joint is not a driver.
+///
+/// # Safety
+/// `s` is NULL or a live handle used by no other thread during the call; `name` is NULL or
+/// a NUL-terminated string; `out` is NULL or points to a writable double.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_driver_effort(
+    s: *mut SymbodySession,
+    name: *const c_char,
+    out: *mut f64,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        let s = unsafe { session(s)? };
+        // SAFETY (both): the caller's contract.
+        let name = unsafe { string(name, "name")? };
+        let out = unsafe { arg_mut(out, "out")? };
+        *out = s
+            .driver_effort(name)
+            .map_err(|e| Failure::from_session(e, SymbodyStatus::UnknownName))?;
+        Ok(())
+    })
+}
+
+/// Writes the wrench the joint (or driver) called `name` exerts on its first body, in the
+/// global frame: `force` (N, 3 entries) and `moment` about the joint point (N·m, 3
+/// entries). Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the joints),
+/// `SYMBODY_STATUS_INVALID_ARGUMENT` when the reaction is not recoverable there.
+///
+/// # Safety
+/// `s` is NULL or a live handle used by no other thread during the call; `name` is NULL or
+/// a NUL-terminated string; `force` and `moment` are NULL or point to 3 writable doubles
+/// each.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_joint_wrench(
+    s: *mut SymbodySession,
+    name: *const c_char,
+    force: *mut f64,
+    moment: *mut f64,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        let s = unsafe { session(s)? };
+        // SAFETY (all three): the caller's contract.
+        let name = unsafe { string(name, "name")? };
+        let force = unsafe { output(force, 3, 3, "force")? };
+        let moment = unsafe { output(moment, 3, 3, "moment")? };
+        let w = s
+            .joint_wrench(name)
+            .map_err(|e| Failure::from_session(e, SymbodyStatus::UnknownName))?;
+        force.copy_from_slice(&w.force);
+        moment.copy_from_slice(&w.moment);
+        Ok(())
+    })
+}

@@ -1,0 +1,591 @@
+//! The C ABI called as C calls it (raw pointers, lengths, statuses), from Rust: the session's
+//! numbers are the Rust session's bit for bit, the mechanism functions are the generated
+//! code's, and every misuse (unknown names, null pointers, short buffers, bad settings) is a
+//! status with a message, never a panic or a crash.
+
+use std::ffi::{c_char, c_int, CStr, CString};
+use std::ptr::{null, null_mut};
+use symbody::*;
+use symbody_core::session::{paper_leg1_force_at_1s, Session, Settings};
+
+const OK: c_int = SymbodyStatus::Ok as c_int;
+
+fn status(s: SymbodyStatus) -> c_int {
+    s as c_int
+}
+
+fn last_error() -> String {
+    // SAFETY: the library's NUL-terminated message, read before the next call.
+    unsafe { CStr::from_ptr(symbody_last_error_message()) }
+        .to_str()
+        .expect("UTF-8 message")
+        .to_string()
+}
+
+fn cstr(s: &str) -> CString {
+    CString::new(s).unwrap()
+}
+
+/// A session of the paper scenario (the defaults of `Settings`).
+fn paper_session() -> *mut SymbodySession {
+    let mut s = null_mut();
+    let name = cstr("stewart_6_6");
+    let d = Settings::default();
+    // SAFETY: valid string and out pointer.
+    let rc = unsafe { symbody_session_new(name.as_ptr(), 0, d.alpha, d.step, &mut s) };
+    assert_eq!(rc, OK, "{}", last_error());
+    assert!(!s.is_null());
+    s
+}
+
+fn mechanism(name: &str, formulation: c_int) -> Result<*mut SymbodyMechanism, (c_int, String)> {
+    let mut m = null_mut();
+    let name = cstr(name);
+    // SAFETY: valid string and out pointer.
+    match unsafe { symbody_mechanism_new(name.as_ptr(), formulation, &mut m) } {
+        OK => Ok(m),
+        rc => {
+            assert!(m.is_null(), "a failed call leaves *out NULL");
+            Err((rc, last_error()))
+        }
+    }
+}
+
+#[test]
+fn the_leg_1_force_is_the_rust_sessions_bit_for_bit() {
+    let s = paper_session();
+    let act1 = cstr("act1");
+    let mut force = f64::NAN;
+    // SAFETY: live handle, valid string, valid out pointer.
+    unsafe {
+        assert_eq!(symbody_session_advance_to(s, 1.0), OK, "{}", last_error());
+        assert_eq!(symbody_session_t(s), 1.0);
+        assert_eq!(
+            symbody_session_driver_effort(s, act1.as_ptr(), &mut force),
+            OK,
+            "{}",
+            last_error()
+        );
+    }
+    let rust = paper_leg1_force_at_1s().unwrap();
+    assert_eq!(
+        force.to_bits(),
+        rust.to_bits(),
+        "C ABI {force} vs Rust {rust}"
+    );
+
+    // The rest of the state agrees with a Rust session advanced the same way.
+    let mut r = Session::new("stewart_6_6", Settings::default()).unwrap();
+    r.advance_to(1.0).unwrap();
+    let n = r.q().len();
+    let (mut q, mut qd) = (vec![0.0; n], vec![0.0; n]);
+    let mut lambda = vec![0.0; r.info().n_constraints];
+    let mut efforts = [0.0; 6];
+    let mut written = 0;
+    let (mut f, mut m) = ([0.0; 3], [0.0; 3]);
+    let sph = cstr("upper_sph1");
+    // SAFETY: live handle, buffers of the stated lengths.
+    unsafe {
+        assert_eq!(symbody_session_q(s, q.as_mut_ptr(), n), OK);
+        assert_eq!(symbody_session_qd(s, qd.as_mut_ptr(), n), OK);
+        let nl = lambda.len();
+        assert_eq!(symbody_session_multipliers(s, lambda.as_mut_ptr(), nl), OK);
+        assert_eq!(
+            symbody_session_driver_efforts(s, efforts.as_mut_ptr(), 6, &mut written),
+            OK
+        );
+        assert_eq!(
+            symbody_session_joint_wrench(s, sph.as_ptr(), f.as_mut_ptr(), m.as_mut_ptr()),
+            OK,
+            "{}",
+            last_error()
+        );
+    }
+    assert_eq!(q, r.q());
+    assert_eq!(qd, r.qd());
+    assert_eq!(lambda, r.multipliers().unwrap());
+    assert_eq!(written, 6);
+    let mut rust_efforts = [0.0; 6];
+    assert_eq!(r.driver_efforts(&mut rust_efforts).unwrap(), 6);
+    assert_eq!(efforts, rust_efforts);
+    assert_eq!(efforts[0].to_bits(), rust.to_bits());
+    let w = r.joint_wrench("upper_sph1").unwrap();
+    assert_eq!((f, m), (w.force, w.moment));
+
+    // One more step moves time by the nominal step.
+    // SAFETY: live handle, freed once.
+    unsafe {
+        assert_eq!(symbody_session_step(s), OK);
+        assert!((symbody_session_t(s) - 1.001).abs() < 1e-12);
+        symbody_session_free(s);
+    }
+}
+
+#[test]
+fn the_mechanism_functions_are_the_generated_code() {
+    // SAFETY: index in range; static strings.
+    let names: Vec<String> = (0..symbody_mechanism_count())
+        .map(|i| unsafe { CStr::from_ptr(symbody_mechanism_name(i)) })
+        .map(|c| c.to_str().unwrap().to_string())
+        .collect();
+    let registry: Vec<&str> = Session::mechanisms().collect();
+    assert_eq!(names, registry);
+    assert!(symbody_mechanism_name(names.len()).is_null());
+    assert!(last_error().contains("mechanism index"), "{}", last_error());
+
+    for (code, f) in [
+        (1, symbody_runtime::Formulation::Paper),
+        (2, symbody_runtime::Formulation::Exact),
+    ] {
+        let m = mechanism("stewart_6_6", code).unwrap();
+        let rust = symbody_mechanisms::find("stewart_6_6")
+            .unwrap()
+            .mechanism(f)
+            .unwrap();
+        let info = rust.info();
+        // SAFETY: live handle; every buffer has the length passed with it.
+        unsafe {
+            assert_eq!(symbody_mechanism_formulation(m), code);
+            let (n, nc) = (
+                symbody_mechanism_n_coords(m),
+                symbody_mechanism_n_constraints(m),
+            );
+            assert_eq!((n, nc), (info.n_coords, info.n_constraints));
+            let nnz = symbody_mechanism_phi_q_nnz(m);
+            let mnz = symbody_mechanism_mass_nnz(m);
+            assert_eq!((nnz, mnz), (info.phi_q_nnz(), info.mass_nnz()));
+
+            let (mut rows, mut cols) = (vec![0u32; nnz], vec![0u32; nnz]);
+            let rc = symbody_mechanism_phi_q_pattern(m, rows.as_mut_ptr(), cols.as_mut_ptr(), nnz);
+            assert_eq!(rc, OK);
+            assert_eq!((&rows[..], &cols[..]), (info.phi_q_rows, info.phi_q_cols));
+            let (mut rows, mut cols) = (vec![0u32; mnz], vec![0u32; mnz]);
+            let rc = symbody_mechanism_mass_pattern(m, rows.as_mut_ptr(), cols.as_mut_ptr(), mnz);
+            assert_eq!(rc, OK);
+            assert_eq!((&rows[..], &cols[..]), (info.mass_rows, info.mass_cols));
+
+            // A longer buffer is fine; the extra entries are left alone.
+            let mut q = vec![7.0; n + 2];
+            assert_eq!(symbody_mechanism_q0(m, q.as_mut_ptr(), n + 2), OK);
+            assert_eq!(&q[..n], info.q0);
+            assert_eq!(&q[n..], [7.0, 7.0]);
+            q.truncate(n);
+            // A state off the initial pose, so nothing is trivially zero.
+            let qd: Vec<f64> = (0..n).map(|i| 0.01 * (i as f64 + 1.0)).collect();
+            for (i, x) in q.iter_mut().enumerate() {
+                *x += 1e-3 * (i as f64).sin();
+            }
+            let t = 0.3;
+            let mut c = vec![0.0; nc];
+            let mut r = vec![0.0; nc];
+            assert_eq!(
+                symbody_mechanism_phi(m, q.as_ptr(), n, t, c.as_mut_ptr(), nc),
+                OK
+            );
+            rust.phi(&q, t, &mut r);
+            assert_eq!(c, r);
+            let (mut c, mut r) = (vec![0.0; nnz], vec![0.0; nnz]);
+            assert_eq!(
+                symbody_mechanism_phi_q(m, q.as_ptr(), n, t, c.as_mut_ptr(), nnz),
+                OK
+            );
+            rust.phi_q(&q, t, &mut r);
+            assert_eq!(c, r);
+            let (mut c, mut r) = (vec![0.0; nc], vec![0.0; nc]);
+            let rc =
+                symbody_mechanism_gamma(m, q.as_ptr(), n, qd.as_ptr(), n, t, c.as_mut_ptr(), nc);
+            assert_eq!(rc, OK);
+            rust.gamma(&q, &qd, t, &mut r);
+            assert_eq!(c, r);
+            let (mut c, mut r) = (vec![0.0; mnz], vec![0.0; mnz]);
+            assert_eq!(
+                symbody_mechanism_mass(m, q.as_ptr(), n, c.as_mut_ptr(), mnz),
+                OK
+            );
+            rust.mass(&q, &mut r);
+            assert_eq!(c, r);
+            let (mut c, mut r) = (vec![0.0; n], vec![0.0; n]);
+            let rc =
+                symbody_mechanism_force(m, q.as_ptr(), n, qd.as_ptr(), n, t, c.as_mut_ptr(), n);
+            assert_eq!(rc, OK);
+            rust.force(&q, &qd, t, &mut r);
+            assert_eq!(c, r);
+
+            let drivers: Vec<String> = (0..symbody_mechanism_driver_count(m))
+                .map(|i| CStr::from_ptr(symbody_mechanism_driver_name(m, i)))
+                .map(|c| c.to_str().unwrap().to_string())
+                .collect();
+            assert_eq!(drivers, ["act1", "act2", "act3", "act4", "act5", "act6"]);
+            assert!(symbody_mechanism_driver_name(m, 6).is_null());
+            symbody_mechanism_free(m);
+        }
+    }
+}
+
+#[test]
+fn unknown_names_are_errors_that_list_the_known_ones() {
+    let (rc, msg) = mechanism("stewart", 0).unwrap_err();
+    assert_eq!(rc, status(SymbodyStatus::UnknownName));
+    assert!(
+        msg.contains("stewart_6_6") && msg.contains("four_bar"),
+        "{msg}"
+    );
+
+    let mut s = null_mut();
+    let name = cstr("no_such_thing");
+    // SAFETY: valid string and out pointer.
+    let rc = unsafe { symbody_session_new(name.as_ptr(), 0, -0.05, 1e-3, &mut s) };
+    assert_eq!(rc, status(SymbodyStatus::UnknownName));
+    assert!(s.is_null());
+    assert!(last_error().contains("stewart_6_6"), "{}", last_error());
+
+    let s = paper_session();
+    let act9 = cstr("act9");
+    let mut out = 0.0;
+    let (mut f, mut m) = ([0.0; 3], [0.0; 3]);
+    // SAFETY: live handle, valid strings and out pointers; freed once.
+    unsafe {
+        let rc = symbody_session_driver_effort(s, act9.as_ptr(), &mut out);
+        assert_eq!(rc, status(SymbodyStatus::UnknownName));
+        assert!(last_error().contains("act1"), "{}", last_error());
+        let rc = symbody_session_joint_wrench(s, act9.as_ptr(), f.as_mut_ptr(), m.as_mut_ptr());
+        assert_eq!(rc, status(SymbodyStatus::UnknownName));
+        // A joint that is not a driver has no driver effort.
+        let sph = cstr("upper_sph1");
+        let rc = symbody_session_driver_effort(s, sph.as_ptr(), &mut out);
+        assert_eq!(
+            rc,
+            status(SymbodyStatus::InvalidArgument),
+            "{}",
+            last_error()
+        );
+        symbody_session_free(s);
+    }
+}
+
+#[test]
+fn bad_settings_and_formulations_are_invalid_arguments() {
+    let name = cstr("stewart_6_6");
+    let mut s = null_mut();
+    for (formulation, alpha, step, what) in [
+        (3, -0.05, 1e-3, "formulation"),
+        (-1, -0.05, 1e-3, "formulation"),
+        (0, 0.5, 1e-3, "alpha"),
+        (0, f64::NAN, 1e-3, "alpha"),
+        (0, -0.05, 0.0, "step"),
+        (0, -0.05, f64::INFINITY, "step"),
+    ] {
+        // SAFETY: valid string and out pointer.
+        let rc = unsafe { symbody_session_new(name.as_ptr(), formulation, alpha, step, &mut s) };
+        assert_eq!(rc, status(SymbodyStatus::InvalidArgument), "{what}");
+        assert!(s.is_null());
+        assert!(last_error().contains(what), "{what}: {}", last_error());
+    }
+    let (rc, _) = mechanism("stewart_6_6", 7).unwrap_err();
+    assert_eq!(rc, status(SymbodyStatus::InvalidArgument));
+
+    let session = paper_session();
+    // SAFETY: live handle; freed once.
+    unsafe {
+        for t in [f64::NAN, f64::INFINITY, -1.0] {
+            let rc = symbody_session_advance_to(session, t);
+            assert_eq!(rc, status(SymbodyStatus::InvalidArgument), "t = {t}");
+        }
+        assert_eq!(
+            symbody_session_t(session),
+            0.0,
+            "a refused call leaves the session alone"
+        );
+        symbody_session_free(session);
+    }
+    // Not UTF-8.
+    let bad = [0xffu8 as c_char, 0];
+    // SAFETY: NUL-terminated.
+    let rc = unsafe { symbody_session_new(bad.as_ptr(), 0, -0.05, 1e-3, &mut s) };
+    assert_eq!(rc, status(SymbodyStatus::InvalidArgument));
+    assert!(last_error().contains("UTF-8"), "{}", last_error());
+}
+
+#[test]
+fn null_pointers_are_errors() {
+    let null_status = status(SymbodyStatus::NullPointer);
+    let name = cstr("stewart_6_6");
+    let mut buf = [0.0; 1000];
+    let b = buf.as_mut_ptr();
+    let q = b as *const f64;
+    let mut out = 0.0;
+    let mut n = 0usize;
+    let mut s = null_mut();
+    let mut m = null_mut();
+    // SAFETY: every non-null pointer is valid; the null ones are what is tested.
+    unsafe {
+        assert_eq!(
+            symbody_session_new(null(), 0, -0.05, 1e-3, &mut s),
+            null_status
+        );
+        assert!(last_error().contains("`name`"), "{}", last_error());
+        assert_eq!(
+            symbody_session_new(name.as_ptr(), 0, -0.05, 1e-3, null_mut()),
+            null_status
+        );
+        assert!(last_error().contains("`out`"), "{}", last_error());
+        assert_eq!(symbody_mechanism_new(null(), 0, &mut m), null_status);
+        assert_eq!(
+            symbody_mechanism_new(name.as_ptr(), 0, null_mut()),
+            null_status
+        );
+
+        // A null handle.
+        let ns: *mut SymbodySession = null_mut();
+        assert_eq!(symbody_session_step(ns), null_status);
+        assert!(last_error().contains("`session`"), "{}", last_error());
+        assert_eq!(symbody_session_advance_to(ns, 1.0), null_status);
+        assert!(symbody_session_t(ns).is_nan());
+        assert_eq!(symbody_session_q(ns, b, 64), null_status);
+        assert_eq!(symbody_session_qd(ns, b, 64), null_status);
+        assert_eq!(symbody_session_multipliers(ns, b, 64), null_status);
+        let act1 = cstr("act1");
+        assert_eq!(
+            symbody_session_driver_effort(ns, act1.as_ptr(), &mut out),
+            null_status
+        );
+        assert_eq!(
+            symbody_session_driver_efforts(ns, b, 64, &mut n),
+            null_status
+        );
+        let (f, mo) = (b, b.add(3));
+        assert_eq!(
+            symbody_session_joint_wrench(ns, act1.as_ptr(), f, mo),
+            null_status
+        );
+        assert_eq!(symbody_session_mechanism(ns, &mut m), null_status);
+        symbody_session_free(ns);
+
+        let nm: *const SymbodyMechanism = null();
+        assert_eq!(symbody_mechanism_n_coords(nm), 0);
+        assert!(last_error().contains("`mechanism`"), "{}", last_error());
+        assert_eq!(symbody_mechanism_n_constraints(nm), 0);
+        assert_eq!(symbody_mechanism_phi_q_nnz(nm), 0);
+        assert_eq!(symbody_mechanism_mass_nnz(nm), 0);
+        assert_eq!(symbody_mechanism_driver_count(nm), 0);
+        assert_eq!(symbody_mechanism_formulation(nm), -1);
+        assert!(symbody_mechanism_driver_name(nm, 0).is_null());
+        assert_eq!(symbody_mechanism_q0(nm, b, 64), null_status);
+        assert_eq!(
+            symbody_mechanism_phi(nm, q, 64, 0.0, &mut out, 1),
+            null_status
+        );
+        symbody_mechanism_free(null_mut());
+
+        // Null buffers with a live handle.
+        let s = paper_session();
+        assert_eq!(symbody_session_q(s, null_mut(), 64), null_status);
+        assert!(last_error().contains("`buf`"), "{}", last_error());
+        assert_eq!(
+            symbody_session_driver_effort(s, null(), &mut out),
+            null_status
+        );
+        assert_eq!(
+            symbody_session_driver_effort(s, act1.as_ptr(), null_mut()),
+            null_status
+        );
+        assert_eq!(
+            symbody_session_driver_efforts(s, b, 64, null_mut()),
+            null_status
+        );
+        assert_eq!(
+            symbody_session_joint_wrench(s, act1.as_ptr(), null_mut(), mo),
+            null_status
+        );
+        assert_eq!(
+            symbody_session_joint_wrench(s, act1.as_ptr(), f, null_mut()),
+            null_status
+        );
+        let mut sm = null_mut();
+        assert_eq!(symbody_session_mechanism(s, &mut sm), OK);
+        let nc = symbody_mechanism_n_coords(sm);
+        assert_eq!(
+            symbody_mechanism_phi(sm, null(), nc, 0.0, b, 64),
+            null_status
+        );
+        assert!(last_error().contains("`q`"), "{}", last_error());
+        let mut big = vec![0.0; 1000];
+        let rc = symbody_mechanism_gamma(sm, q, 1000, null(), 1000, 0.0, big.as_mut_ptr(), 1000);
+        assert_eq!(rc, null_status);
+        assert!(last_error().contains("`qd`"), "{}", last_error());
+        let mut rows = [0u32; 1000];
+        let rc = symbody_mechanism_phi_q_pattern(sm, rows.as_mut_ptr(), null_mut(), 1000);
+        assert_eq!(rc, null_status);
+        assert!(last_error().contains("`cols`"), "{}", last_error());
+        // A misaligned pointer is refused like a null one.
+        let misaligned = (b as *mut u8).add(1) as *mut f64;
+        assert_eq!(symbody_session_q(s, misaligned, 8), null_status);
+        symbody_mechanism_free(sm);
+        symbody_session_free(s);
+    }
+}
+
+#[test]
+fn short_buffers_are_errors_that_say_what_is_needed() {
+    let too_short = status(SymbodyStatus::BufferTooShort);
+    let s = paper_session();
+    let mut m = null_mut();
+    // SAFETY: live handles; every buffer is at least as long as the length passed with it.
+    unsafe {
+        assert_eq!(symbody_session_mechanism(s, &mut m), OK);
+        let (n, nc) = (
+            symbody_mechanism_n_coords(m),
+            symbody_mechanism_n_constraints(m),
+        );
+        let nnz = symbody_mechanism_phi_q_nnz(m);
+        let mut buf = vec![0.0; 1000];
+        let b = buf.as_mut_ptr();
+        assert_eq!(symbody_session_q(s, b, n - 1), too_short);
+        assert!(
+            last_error().contains(&format!("length {}; this call needs {n}", n - 1)),
+            "{}",
+            last_error()
+        );
+        assert_eq!(symbody_session_qd(s, b, 0), too_short);
+        assert_eq!(symbody_session_multipliers(s, b, nc - 1), too_short);
+        let mut written = 99;
+        assert_eq!(
+            symbody_session_driver_efforts(s, b, 5, &mut written),
+            too_short
+        );
+        assert_eq!(written, 6, "the number needed");
+        assert_eq!(symbody_mechanism_q0(m, b, n - 1), too_short);
+
+        let mut q = vec![0.0; n];
+        assert_eq!(symbody_mechanism_q0(m, q.as_mut_ptr(), n), OK);
+        let mut out = vec![0.0; 1000];
+        let o = out.as_mut_ptr();
+        // Short input.
+        assert_eq!(
+            symbody_mechanism_phi(m, q.as_ptr(), n - 1, 0.0, o, 1000),
+            too_short
+        );
+        assert!(last_error().contains("`q`"), "{}", last_error());
+        let rc = symbody_mechanism_gamma(m, q.as_ptr(), n, q.as_ptr(), n - 1, 0.0, o, 1000);
+        assert_eq!(rc, too_short);
+        assert!(last_error().contains("`qd`"), "{}", last_error());
+        // Short outputs.
+        assert_eq!(
+            symbody_mechanism_phi(m, q.as_ptr(), n, 0.0, o, nc - 1),
+            too_short
+        );
+        assert!(last_error().contains("`out`"), "{}", last_error());
+        assert_eq!(
+            symbody_mechanism_phi_q(m, q.as_ptr(), n, 0.0, o, nnz - 1),
+            too_short
+        );
+        let mnz = symbody_mechanism_mass_nnz(m);
+        assert_eq!(
+            symbody_mechanism_mass(m, q.as_ptr(), n, o, mnz - 1),
+            too_short
+        );
+        let rc = symbody_mechanism_force(m, q.as_ptr(), n, q.as_ptr(), n, 0.0, o, n - 1);
+        assert_eq!(rc, too_short);
+        let (mut rows, mut cols) = (vec![0u32; nnz], vec![0u32; nnz]);
+        let rc = symbody_mechanism_phi_q_pattern(m, rows.as_mut_ptr(), cols.as_mut_ptr(), nnz - 1);
+        assert_eq!(rc, too_short);
+        symbody_mechanism_free(m);
+        symbody_session_free(s);
+    }
+}
+
+/// Every entry point fed garbage (nulls, zero lengths, NaN, out-of-range codes) answers
+/// with a status: none reports a caught panic, and nothing escapes the boundary.
+#[test]
+fn garbage_in_is_a_status_out_never_a_panic() {
+    let panic = status(SymbodyStatus::Panic);
+    let result = std::panic::catch_unwind(|| {
+        let mut statuses = Vec::new();
+        let s = paper_session();
+        let mut m = null_mut();
+        let name = cstr("stewart_6_6");
+        let empty = cstr("");
+        let mut buf = vec![0.0; 1000];
+        let b = buf.as_mut_ptr();
+        let mut n = 0usize;
+        let mut x = 0.0;
+        // SAFETY: live handles; every non-null buffer is as long as its length.
+        unsafe {
+            assert_eq!(symbody_mechanism_new(name.as_ptr(), 0, &mut m), OK);
+            statuses.push(symbody_session_new(
+                empty.as_ptr(),
+                0,
+                -0.05,
+                1e-3,
+                &mut null_mut(),
+            ));
+            statuses.push(symbody_session_new(
+                name.as_ptr(),
+                i32::MIN,
+                0.0,
+                1e-3,
+                &mut null_mut(),
+            ));
+            statuses.push(symbody_session_new(
+                name.as_ptr(),
+                0,
+                -1e300,
+                -1e300,
+                &mut null_mut(),
+            ));
+            statuses.push(symbody_session_new(
+                name.as_ptr(),
+                0,
+                -0.05,
+                1e-300,
+                &mut null_mut(),
+            ));
+            statuses.push(symbody_mechanism_new(empty.as_ptr(), 0, &mut null_mut()));
+            statuses.push(symbody_session_advance_to(s, f64::NEG_INFINITY));
+            statuses.push(symbody_session_advance_to(s, 1e-12));
+            statuses.push(symbody_session_q(s, b, 0));
+            statuses.push(symbody_session_driver_efforts(s, b, 0, &mut n));
+            statuses.push(symbody_session_driver_effort(s, empty.as_ptr(), &mut x));
+            let (f, mo) = (b, b.add(3));
+            statuses.push(symbody_session_joint_wrench(s, empty.as_ptr(), f, mo));
+            statuses.push(symbody_mechanism_phi(m, b, 0, f64::NAN, b.add(500), 0));
+            statuses.push(symbody_mechanism_phi_q(
+                m,
+                b,
+                usize::MAX,
+                f64::NAN,
+                null_mut(),
+                0,
+            ));
+            statuses.push(symbody_mechanism_mass(m, b, 0, b.add(500), usize::MAX));
+            statuses.push(symbody_mechanism_phi_q_pattern(
+                m,
+                null_mut(),
+                null_mut(),
+                0,
+            ));
+            let mut rows = [0u32; 4];
+            let r = rows.as_mut_ptr();
+            statuses.push(symbody_mechanism_mass_pattern(m, r, r, 0));
+            assert!(symbody_mechanism_name(usize::MAX).is_null());
+            assert!(symbody_mechanism_driver_name(m, usize::MAX).is_null());
+            // NaN inputs evaluate (the generated code is branch-free) rather than fail.
+            std::slice::from_raw_parts_mut(b, 100).fill(f64::NAN);
+            let rc = symbody_mechanism_phi(m, b, 100, f64::NAN, b.add(500), 400);
+            statuses.push(rc);
+            symbody_mechanism_free(m);
+            symbody_session_free(s);
+        }
+        statuses
+    });
+    let statuses = result.expect("no panic crosses the boundary");
+    assert!(
+        statuses.iter().all(|&s| s != panic && (0..=6).contains(&s)),
+        "{statuses:?}: {}",
+        last_error()
+    );
+    assert!(
+        statuses[..statuses.len() - 1].iter().all(|&s| s != OK),
+        "{statuses:?}"
+    );
+}
