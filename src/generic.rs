@@ -323,25 +323,32 @@ pub fn write_outputs(rec: &Recording, dir: &Path, plots: bool) -> Result<Vec<Pat
     Ok(files)
 }
 
-/// Writes `bodies.csv`, `joints.csv`, `drivers.csv` and `energy.csv` into `dir`.
-pub fn write_csvs(rec: &Recording, dir: &Path) -> std::io::Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir)?;
+/// One output table of a run: what `symbody simulate <name>` writes to `<stem>.csv` and what
+/// the Python package returns as `simulate(name)[stem]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// File stem: `bodies`, `joints`, `drivers` or `energy`.
+    pub stem: &'static str,
+    /// Column names, `t` first.
+    pub columns: Vec<String>,
+    /// One row per output time, `columns.len()` values each.
+    pub rows: Vec<Vec<f64>>,
+}
+
+/// The four tables of a run: body poses, joint wrenches, driver efforts and energies, one
+/// column group per body, recorded joint and driver.
+pub fn tables(rec: &Recording) -> [Table; 4] {
     let info = rec.info;
-    let header = |names: Vec<String>| {
-        std::iter::once("t".to_string())
-            .chain(names)
-            .collect::<Vec<_>>()
-            .join(",")
-    };
+    let header = |names: Vec<String>| std::iter::once("t".to_string()).chain(names).collect();
     let with_t = |k: usize, values: Vec<f64>| {
         std::iter::once(rec.t[k])
             .chain(values)
             .collect::<Vec<f64>>()
     };
-    let files = [
-        (
-            "bodies.csv",
-            header(
+    [
+        Table {
+            stem: "bodies",
+            columns: header(
                 info.bodies
                     .iter()
                     .flat_map(|b| {
@@ -349,7 +356,7 @@ pub fn write_csvs(rec: &Recording, dir: &Path) -> std::io::Result<Vec<PathBuf>> 
                     })
                     .collect(),
             ),
-            (0..rec.t.len())
+            rows: (0..rec.t.len())
                 .map(|k| {
                     with_t(
                         k,
@@ -359,11 +366,11 @@ pub fn write_csvs(rec: &Recording, dir: &Path) -> std::io::Result<Vec<PathBuf>> 
                             .collect(),
                     )
                 })
-                .collect::<Vec<_>>(),
-        ),
-        (
-            "joints.csv",
-            header(
+                .collect(),
+        },
+        Table {
+            stem: "joints",
+            columns: header(
                 rec.joints
                     .iter()
                     .flat_map(|&j| {
@@ -372,7 +379,7 @@ pub fn write_csvs(rec: &Recording, dir: &Path) -> std::io::Result<Vec<PathBuf>> 
                     })
                     .collect(),
             ),
-            (0..rec.t.len())
+            rows: (0..rec.t.len())
                 .map(|k| {
                     with_t(
                         k,
@@ -383,34 +390,39 @@ pub fn write_csvs(rec: &Recording, dir: &Path) -> std::io::Result<Vec<PathBuf>> 
                     )
                 })
                 .collect(),
-        ),
-        (
-            "drivers.csv",
-            header(
+        },
+        Table {
+            stem: "drivers",
+            columns: header(
                 rec.drivers
                     .iter()
                     .map(|&j| info.joints[j].name.to_string())
                     .collect(),
             ),
-            (0..rec.t.len())
+            rows: (0..rec.t.len())
                 .map(|k| with_t(k, rec.efforts[k].clone()))
                 .collect(),
-        ),
-        (
-            "energy.csv",
-            "t,kinetic,potential,work".to_string(),
-            (0..rec.t.len())
+        },
+        Table {
+            stem: "energy",
+            columns: header(["kinetic", "potential", "work"].map(String::from).to_vec()),
+            rows: (0..rec.t.len())
                 .map(|k| {
                     let e = &rec.energy[k];
                     with_t(k, vec![e.kinetic, e.potential, e.work])
                 })
                 .collect(),
-        ),
-    ];
+        },
+    ]
+}
+
+/// Writes `bodies.csv`, `joints.csv`, `drivers.csv` and `energy.csv` ([`tables`]) into `dir`.
+pub fn write_csvs(rec: &Recording, dir: &Path) -> std::io::Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir)?;
     let mut written = Vec::new();
-    for (name, head, rows) in files {
-        let path = dir.join(name);
-        write(&path, &head, rows.into_iter())?;
+    for table in tables(rec) {
+        let path = dir.join(format!("{}.csv", table.stem));
+        write(&path, &table.columns.join(","), table.rows.into_iter())?;
         written.push(path);
     }
     Ok(written)

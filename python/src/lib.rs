@@ -1,0 +1,530 @@
+//! `symbody._native`: the compiled half of the Python package `symbody` (PyO3, stable ABI).
+//!
+//! Every entry point calls the same Rust the command line and the C ABI call — the registry
+//! ([`symbody::generic::find`]), a run and its tables ([`symbody::generic::run`],
+//! [`symbody::generic::tables`]), a [`symbody::session::Session`], forward kinematics
+//! ([`symbody::fk`]) and the generated [`symbody_runtime::Mechanism`] functions — so the
+//! three languages print the same numbers. Vectors and matrices cross as NumPy arrays; Rust
+//! errors become `ValueError` (a bad name, option or argument) or `RuntimeError` (a solver
+//! failure), with the Rust message. `python/symbody/__init__.py` wraps the tables and the
+//! forward-kinematics answers in small Python classes.
+
+use nalgebra::{Matrix3, Vector3};
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+use symbody::generic;
+use symbody::scenario::ScenarioError;
+use symbody::session::{self, Dyn};
+use symbody_runtime::fk::Pose;
+use symbody_runtime::{Error as RuntimeError, Formulation, JointKind, MechanismInfo};
+
+/// A Rust error as the Python exception of its kind, with the Rust message.
+fn py_err(e: ScenarioError) -> PyErr {
+    let bad_input = match &e {
+        ScenarioError::Options(_) | ScenarioError::Layout(_) => true,
+        ScenarioError::Runtime(r) => matches!(
+            r,
+            RuntimeError::InvalidSetting { .. }
+                | RuntimeError::DimensionMismatch { .. }
+                | RuntimeError::InvalidIndex { .. }
+        ),
+    };
+    if bad_input {
+        PyValueError::new_err(e.to_string())
+    } else {
+        PyRuntimeError::new_err(e.to_string())
+    }
+}
+
+fn formulation(name: Option<&str>) -> PyResult<Option<Formulation>> {
+    match name {
+        None => Ok(None),
+        Some("paper") => Ok(Some(Formulation::Paper)),
+        Some("exact") => Ok(Some(Formulation::Exact)),
+        Some(other) => Err(PyValueError::new_err(format!(
+            "formulation must be \"paper\" or \"exact\" \
+             (or None for the mechanism's first), got {other:?}"
+        ))),
+    }
+}
+
+/// A float vector of length `n` from a NumPy array or any sequence of numbers.
+fn vector(x: &Bound<'_, PyAny>, n: usize, what: &str) -> PyResult<Vec<f64>> {
+    let v: Vec<f64> = match x.extract::<PyReadonlyArray1<'_, f64>>() {
+        Ok(a) => a.as_array().to_vec(),
+        Err(_) => x.extract().map_err(|_| {
+            PyValueError::new_err(format!("{what} must be a sequence of {n} numbers"))
+        })?,
+    };
+    if v.len() != n {
+        return Err(PyValueError::new_err(format!(
+            "{what} must have {n} entries, got {}",
+            v.len()
+        )));
+    }
+    Ok(v)
+}
+
+/// A NumPy float vector.
+type Vector<'py> = Bound<'py, PyArray1<f64>>;
+/// A NumPy float matrix.
+type Matrix<'py> = Bound<'py, PyArray2<f64>>;
+
+fn array1<'py>(py: Python<'py>, v: &[f64]) -> Vector<'py> {
+    PyArray1::from_slice(py, v)
+}
+
+/// A `rows × cols` array from row-major values.
+fn array2(py: Python<'_>, rows: usize, cols: usize, values: Vec<f64>) -> Matrix<'_> {
+    Array2::from_shape_vec((rows, cols), values)
+        .expect("rows × cols values")
+        .into_pyarray(py)
+}
+
+/// `(data, (rows, cols))`: a sparse matrix in SciPy's COO form.
+fn coo<'py>(
+    py: Python<'py>,
+    data: &[f64],
+    rows: &[u32],
+    cols: &[u32],
+) -> PyResult<Bound<'py, PyTuple>> {
+    let index = |v: &[u32]| PyArray1::from_iter(py, v.iter().map(|&i| i64::from(i)));
+    let pattern = PyTuple::new(py, [index(rows), index(cols)])?;
+    PyTuple::new(py, [array1(py, data).into_any(), pattern.into_any()])
+}
+
+/// Names of every registered mechanism, in registry order.
+#[pyfunction]
+fn mechanisms() -> Vec<&'static str> {
+    session::Session::mechanisms().collect()
+}
+
+/// One run of `symbody simulate <name>`: `[(stem, columns, data)]` for `bodies`, `joints`,
+/// `drivers` and `energy`, `data` an outputs × columns array.
+#[pyfunction]
+#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation))]
+fn simulate<'py>(
+    py: Python<'py>,
+    name: &str,
+    t_end: Option<f64>,
+    step: f64,
+    alpha: f64,
+    output_step: f64,
+    formulation: Option<&str>,
+) -> PyResult<Vec<(&'static str, Vec<String>, Matrix<'py>)>> {
+    let entry = generic::find(name).map_err(py_err)?;
+    let opts = generic::Options {
+        formulation: self::formulation(formulation)?,
+        t_end,
+        step,
+        alpha,
+        output_step,
+    };
+    let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;
+    Ok(generic::tables(&rec)
+        .into_iter()
+        .map(|t| {
+            let (n, m) = (t.rows.len(), t.columns.len());
+            let data = array2(py, n, m, t.rows.into_iter().flatten().collect());
+            (t.stem, t.columns, data)
+        })
+        .collect())
+}
+
+/// The pose to continue from: six numbers `x, y, z, θ, β, γ` (as `symbody fk --from`), or a
+/// pair `(position (3,), rotation (3, 3))`.
+fn start_pose(x: &Bound<'_, PyAny>) -> PyResult<Pose> {
+    if let Ok((p, r)) = x.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>() {
+        let p = vector(&p, 3, "start position")?;
+        let r: PyReadonlyArray2<'_, f64> = r
+            .extract()
+            .map_err(|_| PyValueError::new_err("start rotation must be a (3, 3) float64 array"))?;
+        let r = r.as_array();
+        if r.shape() != [3, 3] {
+            return Err(PyValueError::new_err(format!(
+                "start rotation must be (3, 3), got {:?}",
+                r.shape()
+            )));
+        }
+        return Ok(Pose {
+            position: Vector3::new(p[0], p[1], p[2]),
+            rotation: Matrix3::from_fn(|i, j| r[[i, j]]),
+        });
+    }
+    let v = vector(x, 6, "start (x, y, z, theta, beta, gamma)")?;
+    Ok(Pose::from_euler([v[0], v[1], v[2]], [v[3], v[4], v[5]]))
+}
+
+/// Forward kinematics of a six-leg platform (`symbody fk`): a dict of the pose reached by
+/// continuation and, with `all`, every real assembly mode.
+#[pyfunction]
+#[pyo3(signature = (name, lengths, start, at, all))]
+fn fk<'py>(
+    py: Python<'py>,
+    name: &str,
+    lengths: Option<Bound<'py, PyAny>>,
+    start: Option<Bound<'py, PyAny>>,
+    at: f64,
+    all: bool,
+) -> PyResult<Bound<'py, PyDict>> {
+    let entry = generic::find(name).map_err(py_err)?;
+    let p = symbody::fk::platform(entry).map_err(py_err)?;
+    let req = symbody::fk::Request {
+        lengths: match lengths {
+            None => None,
+            Some(l) => {
+                let v = vector(&l, 6, "lengths")?;
+                Some(std::array::from_fn(|i| v[i]))
+            }
+        },
+        from: start.as_ref().map(start_pose).transpose()?,
+        at,
+    };
+    let out = PyDict::new(py);
+    out.set_item("legs", p.leg_names().to_vec())?;
+    let answer = match py.detach(|| symbody::fk::solve(&p, &req)) {
+        Ok(a) => Some(a),
+        // As `symbody fk --all`: the modes are found without a tracked pose to mark.
+        Err(e) if all => {
+            out.set_item("error", e.to_string())?;
+            None
+        }
+        Err(e) => return Err(py_err(e)),
+    };
+    let lengths = match &answer {
+        Some(a) => a.lengths,
+        None => req.lengths.unwrap_or_else(|| p.lengths_at(req.at)),
+    };
+    out.set_item("lengths", array1(py, &lengths))?;
+    if let Some(a) = &answer {
+        let s = a.tracked.solution;
+        out.set_item("position", array1(py, s.pose.position.as_slice()))?;
+        let r = (0..9).map(|i| s.pose.rotation[(i / 3, i % 3)]).collect();
+        out.set_item("rotation", array2(py, 3, 3, r))?;
+        out.set_item("euler", array1(py, &s.pose.euler_angles()))?;
+        out.set_item("residual", s.residual)?;
+        out.set_item("iterations", s.iterations)?;
+        out.set_item("condition", s.condition)?;
+        out.set_item("det_sign", s.det_sign)?;
+        out.set_item("steps", a.tracked.steps)?;
+    }
+    if all {
+        let current = answer.as_ref().map(|a| a.tracked.solution.pose);
+        let (modes, index, _) = py
+            .detach(|| symbody::fk::all_modes(&p, &lengths, current.as_ref()))
+            .map_err(py_err)?;
+        let rows: Vec<f64> = symbody::fk::mode_rows(&modes, index)
+            .into_iter()
+            .flatten()
+            .collect();
+        let cols = symbody::fk::MODE_COLUMNS.len();
+        out.set_item("modes", array2(py, modes.real.len(), cols, rows))?;
+        out.set_item("mode_columns", symbody::fk::MODE_COLUMNS.to_vec())?;
+        out.set_item("complex", modes.complex)?;
+        out.set_item("current", index)?;
+        let worst = modes.real.iter().map(|m| m.residual).fold(0.0, f64::max);
+        out.set_item("modes_residual", worst)?;
+    }
+    Ok(out)
+}
+
+/// Names of the drivers of `info`, in joint order.
+fn driver_names(info: &MechanismInfo) -> Vec<&'static str> {
+    info.joints
+        .iter()
+        .filter(|j| j.kind == JointKind::Driver)
+        .map(|j| j.name)
+        .collect()
+}
+
+/// One simulation to drive step by step, as `symbody::session::Session`: HHT-α from the
+/// mechanism's consistent start.
+#[pyclass(module = "symbody")]
+struct Session {
+    inner: session::Session,
+}
+
+#[pymethods]
+impl Session {
+    #[new]
+    #[pyo3(signature = (name, formulation=None, alpha=-0.05, step=1e-3, project_velocities=false))]
+    fn new(
+        name: &str,
+        formulation: Option<&str>,
+        alpha: f64,
+        step: f64,
+        project_velocities: bool,
+    ) -> PyResult<Self> {
+        let settings = session::Settings {
+            formulation: self::formulation(formulation)?,
+            alpha,
+            step,
+            project_velocities,
+        };
+        Ok(Session {
+            inner: session::Session::new(name, settings).map_err(py_err)?,
+        })
+    }
+
+    /// The mechanism's name.
+    #[getter]
+    fn name(&self) -> &'static str {
+        self.inner.info().name
+    }
+    /// `"paper"` or `"exact"`.
+    #[getter]
+    fn formulation(&self) -> &'static str {
+        self.inner.info().formulation.name()
+    }
+    /// Current time (s).
+    #[getter]
+    fn t(&self) -> f64 {
+        self.inner.t()
+    }
+    /// Coordinates (a copy).
+    #[getter]
+    fn q<'py>(&self, py: Python<'py>) -> Vector<'py> {
+        array1(py, self.inner.q())
+    }
+    /// Velocities (a copy).
+    #[getter]
+    fn qd<'py>(&self, py: Python<'py>) -> Vector<'py> {
+        array1(py, self.inner.qd())
+    }
+    /// Name of each coordinate, `q` order.
+    #[getter]
+    fn coord_names(&self) -> Vec<&'static str> {
+        self.inner.info().coord_names.to_vec()
+    }
+    /// Name of every joint and driver, as `joint_wrench` and `driver_effort` take them.
+    #[getter]
+    fn joint_names(&self) -> Vec<&'static str> {
+        self.inner.info().joints.iter().map(|j| j.name).collect()
+    }
+    /// Name of each driver, `driver_efforts()` order.
+    #[getter]
+    fn driver_names(&self) -> Vec<&'static str> {
+        driver_names(self.inner.info())
+    }
+
+    /// One HHT step of the nominal size.
+    fn step(&mut self, py: Python<'_>) -> PyResult<()> {
+        let s = &mut self.inner;
+        py.detach(|| s.step()).map_err(py_err)
+    }
+
+    /// Steps until exactly `t` (the last step shortened to land on it).
+    fn advance_to(&mut self, py: Python<'_>, t: f64) -> PyResult<()> {
+        let s = &mut self.inner;
+        py.detach(|| s.advance_to(t)).map_err(py_err)
+    }
+
+    /// Lagrange multipliers of the current state, one per constraint row.
+    fn multipliers<'py>(&mut self, py: Python<'py>) -> PyResult<Vector<'py>> {
+        Ok(array1(py, self.inner.multipliers().map_err(py_err)?))
+    }
+
+    /// Effort of the driver `name`: force (N) or torque (N·m) along the driven coordinate.
+    fn driver_effort(&mut self, name: &str) -> PyResult<f64> {
+        self.inner.driver_effort(name).map_err(py_err)
+    }
+
+    /// Effort of every driver, `driver_names` order.
+    fn driver_efforts<'py>(&mut self, py: Python<'py>) -> PyResult<Vector<'py>> {
+        let mut out = vec![0.0; driver_names(self.inner.info()).len()];
+        self.inner.driver_efforts(&mut out).map_err(py_err)?;
+        Ok(array1(py, &out))
+    }
+
+    /// `(force, moment)` joint `name` exerts on its first body: global frame, moment about
+    /// the joint point.
+    fn joint_wrench<'py>(
+        &mut self,
+        py: Python<'py>,
+        name: &str,
+    ) -> PyResult<(Vector<'py>, Vector<'py>)> {
+        let w = self.inner.joint_wrench(name).map_err(py_err)?;
+        Ok((array1(py, &w.force), array1(py, &w.moment)))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Session({:?}, formulation={:?}, t={})",
+            self.inner.info().name,
+            self.inner.info().formulation.name(),
+            self.inner.t()
+        )
+    }
+}
+
+/// The generated functions of one mechanism, evaluated at any state: constraints, their
+/// Jacobian (sparse), γ, mass matrix (sparse) and generalized forces.
+/// `symbody.Mechanism` subclasses it to return the sparse matrices as `symbody.Coo`.
+#[pyclass(module = "symbody._native", frozen, subclass)]
+struct Mechanism {
+    mech: Dyn,
+}
+
+impl Mechanism {
+    fn info(&self) -> &'static MechanismInfo {
+        self.mech.info()
+    }
+    fn q(&self, q: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+        vector(q, self.info().n_coords, "q")
+    }
+    fn qd(&self, qd: &Bound<'_, PyAny>) -> PyResult<Vec<f64>> {
+        vector(qd, self.info().n_coords, "qd")
+    }
+}
+
+#[pymethods]
+impl Mechanism {
+    #[new]
+    #[pyo3(signature = (name, formulation=None))]
+    fn new(name: &str, formulation: Option<&str>) -> PyResult<Self> {
+        let entry = generic::find(name).map_err(py_err)?;
+        let mech = generic::mechanism(entry, self::formulation(formulation)?).map_err(py_err)?;
+        Ok(Mechanism { mech })
+    }
+
+    #[getter]
+    fn name(&self) -> &'static str {
+        self.info().name
+    }
+    /// `"paper"` or `"exact"`.
+    #[getter]
+    fn formulation(&self) -> &'static str {
+        self.info().formulation.name()
+    }
+    #[getter]
+    fn n_coords(&self) -> usize {
+        self.info().n_coords
+    }
+    #[getter]
+    fn n_constraints(&self) -> usize {
+        self.info().n_constraints
+    }
+    /// The file's assembled initial coordinates.
+    #[getter]
+    fn q0<'py>(&self, py: Python<'py>) -> Vector<'py> {
+        array1(py, self.info().q0)
+    }
+    /// The file's initial velocities (not projected onto the constraints).
+    #[getter]
+    fn qd0<'py>(&self, py: Python<'py>) -> Vector<'py> {
+        array1(py, self.info().qd0)
+    }
+    #[getter]
+    fn coord_names(&self) -> Vec<&'static str> {
+        self.info().coord_names.to_vec()
+    }
+    #[getter]
+    fn row_names(&self) -> Vec<&'static str> {
+        self.info().row_names.to_vec()
+    }
+    /// Constraint rows the generator found redundant at the initial pose.
+    #[getter]
+    fn redundant_rows(&self) -> Vec<u32> {
+        self.info().redundant_rows.to_vec()
+    }
+
+    /// Φ(q, t), one entry per constraint row.
+    #[pyo3(signature = (q, t=0.0))]
+    fn phi<'py>(&self, py: Python<'py>, q: &Bound<'py, PyAny>, t: f64) -> PyResult<Vector<'py>> {
+        let mut out = vec![0.0; self.info().n_constraints];
+        self.mech.phi(&self.q(q)?, t, &mut out);
+        Ok(array1(py, &out))
+    }
+
+    /// Φq(q, t) as `(data, (rows, cols))`, shape `(n_constraints, n_coords)`.
+    #[pyo3(signature = (q, t=0.0))]
+    fn phi_q<'py>(
+        &self,
+        py: Python<'py>,
+        q: &Bound<'py, PyAny>,
+        t: f64,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let info = self.info();
+        let mut out = vec![0.0; info.phi_q_nnz()];
+        self.mech.phi_q(&self.q(q)?, t, &mut out);
+        coo(py, &out, info.phi_q_rows, info.phi_q_cols)
+    }
+
+    /// ∂Φ/∂t(q, t).
+    #[pyo3(signature = (q, t=0.0))]
+    fn phi_t<'py>(&self, py: Python<'py>, q: &Bound<'py, PyAny>, t: f64) -> PyResult<Vector<'py>> {
+        let mut out = vec![0.0; self.info().n_constraints];
+        self.mech.phi_t(&self.q(q)?, t, &mut out);
+        Ok(array1(py, &out))
+    }
+
+    /// γ(q, q̇, t), the right-hand side of the acceleration constraints Φq q̈ = γ.
+    #[pyo3(signature = (q, qd, t=0.0))]
+    fn gamma<'py>(
+        &self,
+        py: Python<'py>,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        t: f64,
+    ) -> PyResult<Vector<'py>> {
+        let mut out = vec![0.0; self.info().n_constraints];
+        self.mech.gamma(&self.q(q)?, &self.qd(qd)?, t, &mut out);
+        Ok(array1(py, &out))
+    }
+
+    /// M(q) as `(data, (rows, cols))` (both triangles), shape `(n_coords, n_coords)`.
+    fn mass<'py>(&self, py: Python<'py>, q: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyTuple>> {
+        let info = self.info();
+        let mut out = vec![0.0; info.mass_nnz()];
+        self.mech.mass(&self.q(q)?, &mut out);
+        coo(py, &out, info.mass_rows, info.mass_cols)
+    }
+
+    /// Generalized forces Q(q, q̇, t): applied loads and velocity-dependent terms.
+    #[pyo3(signature = (q, qd, t=0.0))]
+    fn force<'py>(
+        &self,
+        py: Python<'py>,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        t: f64,
+    ) -> PyResult<Vector<'py>> {
+        let mut out = vec![0.0; self.info().n_coords];
+        self.mech.force(&self.q(q)?, &self.qd(qd)?, t, &mut out);
+        Ok(array1(py, &out))
+    }
+
+    /// Potential energy V(q) (J).
+    fn potential(&self, q: &Bound<'_, PyAny>) -> PyResult<f64> {
+        Ok(self.mech.potential(&self.q(q)?))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Mechanism({:?}, formulation={:?})",
+            self.info().name,
+            self.info().formulation.name()
+        )
+    }
+}
+
+/// The value the Rust example, the C example and this package print: the paper platform's
+/// actuator 1 force (N) at t = 1 s with the session's default settings.
+#[pyfunction]
+fn paper_leg1_force_at_1s(py: Python<'_>) -> PyResult<f64> {
+    py.detach(session::paper_leg1_force_at_1s).map_err(py_err)
+}
+
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(mechanisms, m)?)?;
+    m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(fk, m)?)?;
+    m.add_function(wrap_pyfunction!(paper_leg1_force_at_1s, m)?)?;
+    m.add_class::<Session>()?;
+    m.add_class::<Mechanism>()?;
+    Ok(())
+}
