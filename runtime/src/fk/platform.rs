@@ -78,19 +78,23 @@ impl<'m, M: Mechanism + ?Sized> Platform<'m, M> {
 
     /// The platform's pose at coordinates `q`.
     pub fn pose(&self, q: &[f64]) -> Result<Pose, Error> {
-        let body = self.body();
-        let r =
-            q.get(body.coord_offset..body.coord_offset + 3)
-                .ok_or(Error::DimensionMismatch {
-                    what: "q",
-                    expected: self.info.n_coords,
-                    got: q.len(),
-                })?;
-        Ok(Pose {
-            position: Vector3::new(r[0], r[1], r[2]),
-            rotation: rotation_matrix(body, q)?,
-        })
+        pose_of(self.body(), q)
     }
+}
+
+/// The pose of `body` at coordinates `q`; an error, not a panic, when `q` is too short.
+fn pose_of(body: &BodyInfo, q: &[f64]) -> Result<Pose, Error> {
+    let r = q
+        .get(body.coord_offset..body.coord_offset + 3)
+        .ok_or(Error::InvalidIndex {
+            what: "body coordinate",
+            index: body.coord_offset,
+            reason: "the platform's coordinates lie outside q",
+        })?;
+    Ok(Pose {
+        position: Vector3::new(r[0], r[1], r[2]),
+        rotation: rotation_matrix(body, q)?,
+    })
 }
 
 /// The condition number at which simulations stop a six-leg platform: there the legs
@@ -128,13 +132,18 @@ impl ModeWatch {
     /// [`Error::PlatformSingularity`] (at time `t`) once the pose at `q` is singular or on
     /// the other side of a singularity.
     pub fn check(&self, q: &[f64], t: f64) -> Result<(), Error> {
-        let r = &q[self.body.coord_offset..self.body.coord_offset + 3];
-        let pose = Pose {
-            position: Vector3::new(r[0], r[1], r[2]),
-            rotation: rotation_matrix(&self.body, q)?,
-        };
-        let det = self.legs.jacobian(&pose).determinant();
+        let pose = pose_of(&self.body, q)?;
+        // Column scaling keeps the determinant's sign, so the homogeneous Jacobian serves both
+        // checks. The SVD runs once per step of a simulation, so it is skipped while a cheap
+        // bound already keeps the condition under the limit: cond₂(J) ≤ 2 (‖J‖_F/√n)ⁿ / |det J|
+        // (Guggenheimer, Edelman and Johnson, 1995).
+        let j = self.legs.homogeneous_jacobian(&pose);
+        let det = j.determinant();
         let switched = det.signum() != self.det_sign;
+        let bound = 2.0 * (j.norm() / 6f64.sqrt()).powi(6) / det.abs();
+        if !switched && bound <= self.max_condition {
+            return Ok(());
+        }
         let condition = self.legs.condition(&pose);
         if switched || condition > self.max_condition {
             return Err(Error::PlatformSingularity {
