@@ -6,28 +6,13 @@
 //! same format as the C example (`examples/c/`) and the Python package, which compute it
 //! through `symbody::session`; all three must agree.
 
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
 use symbody_mechanisms::stewart_6_6::Exact;
+use symbody_runtime::alloc_count::CountingAllocator;
 use symbody_runtime::{driver_effort, joint_wrench, Error, HhtBuilder, Kinematics, Mechanism};
 
-/// Counts heap allocations, so the example can show its control loop makes none.
-struct Counting;
-
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
-
-unsafe impl GlobalAlloc for Counting {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
-        System.alloc(layout)
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        System.dealloc(ptr, layout)
-    }
-}
-
+// Counts heap allocations, so the example can show its control loop makes none.
 #[global_allocator]
-static GLOBAL: Counting = Counting;
+static GLOBAL: CountingAllocator = CountingAllocator;
 
 /// What the loop measured.
 struct Report {
@@ -56,40 +41,44 @@ fn control_loop(print: bool) -> Result<Report, Error> {
         .expect("the file names upper_sph1");
     let mut forces = [0.0; 6];
 
-    let before = ALLOCATIONS.load(Ordering::Relaxed);
     let mut cycles = 0;
-    // One accepted 1 ms step per cycle up to t = 1 s (the last one shortened to land on it:
-    // the same steps `advance_to(1.0)` takes, so the bindings' single call gives the same
-    // numbers).
-    while sim.step_toward(1.0)?.is_some() {
-        cycles += 1;
-        let (t, q, qd) = (sim.t(), sim.q(), sim.qd());
-        // The multipliers of this state: [M Φqᵀ; Φq 0][q̈; λ] = [Q; γ].
-        kinematics.acceleration(sim.mechanism(), t, q, qd, &mut qdd, &mut lambda)?;
-        for (f, &j) in forces.iter_mut().zip(&actuators) {
-            *f = driver_effort(info, &lambda, j)?;
-        }
-        if cycles % 250 == 0 && print {
-            sim.mechanism().phi_q(q, t, &mut phi_q);
-            let w = joint_wrench(info, q, &phi_q, &lambda, sphere)?;
-            // Printing allocates; the count below comes from a pass that does not print.
-            println!(
-                "t = {t:.3} s  actuators [N]: {:8.4} {:8.4} {:8.4} {:8.4} {:8.4} {:8.4}  \
+    let mut run = || -> Result<(), Error> {
+        // One accepted 1 ms step per cycle up to t = 1 s (the last one shortened to land on it:
+        // the same steps `advance_to(1.0)` takes, so the bindings' single call gives the same
+        // numbers).
+        while sim.step_toward(1.0)?.is_some() {
+            cycles += 1;
+            let (t, q, qd) = (sim.t(), sim.q(), sim.qd());
+            // The multipliers of this state: [M Φqᵀ; Φq 0][q̈; λ] = [Q; γ].
+            kinematics.acceleration(sim.mechanism(), t, q, qd, &mut qdd, &mut lambda)?;
+            for (f, &j) in forces.iter_mut().zip(&actuators) {
+                *f = driver_effort(info, &lambda, j)?;
+            }
+            if cycles % 250 == 0 && print {
+                sim.mechanism().phi_q(q, t, &mut phi_q);
+                let w = joint_wrench(info, q, &phi_q, &lambda, sphere)?;
+                // Printing allocates; the count below comes from a pass that does not print.
+                println!(
+                    "t = {t:.3} s  actuators [N]: {:8.4} {:8.4} {:8.4} {:8.4} {:8.4} {:8.4}  \
                  upper_sph1 on the platform: ({:.4}, {:.4}, {:.4}) N",
-                forces[0],
-                forces[1],
-                forces[2],
-                forces[3],
-                forces[4],
-                forces[5],
-                w.force[0],
-                w.force[1],
-                w.force[2]
-            );
+                    forces[0],
+                    forces[1],
+                    forces[2],
+                    forces[3],
+                    forces[4],
+                    forces[5],
+                    w.force[0],
+                    w.force[1],
+                    w.force[2]
+                );
+            }
         }
-    }
+        Ok(())
+    };
+    let mut result = Ok(());
+    let allocations_in_loop = CountingAllocator::count(|| result = run());
+    result?;
     let leg1_at_1s = forces[0];
-    let allocations_in_loop = ALLOCATIONS.load(Ordering::Relaxed) - before;
     Ok(Report {
         leg1_at_1s,
         allocations_in_loop,
