@@ -11,8 +11,8 @@ use symbody_mechanisms::{Entry, REGISTRY};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, EulerWarning, Formulation,
-    HhtBuilder, Integrator, JointKind, Mechanism, MechanismInfo, ResidualWatch, Rotation, Stats,
-    Wrench,
+    HhtBuilder, Integrator, JointKind, KinematicPath, Mechanism, MechanismInfo, PathStats,
+    ResidualWatch, Rotation, Stats, Wrench,
 };
 
 /// Why a run could not be made: an option out of range or not available for the mechanism
@@ -64,7 +64,10 @@ pub struct Recording {
     pub q: Vec<Vec<f64>>,
     /// Per output: all velocities, projected onto the velocity constraints.
     pub qd: Vec<Vec<f64>>,
-    /// Per output, per body (`info.bodies` order): centre of mass (m) and unit quaternion
+    /// Bodies (indices in `info.bodies`) written to `bodies.csv`: all unless a scene asks
+    /// for fewer.
+    pub bodies: Vec<usize>,
+    /// Per output, per body (`info.bodies` order, every body): centre of mass (m) and unit quaternion
     /// `[w, x, y, z]` with `w ≥ 0` ([`body_pose`]), whatever the body's coordinates.
     pub poses: Vec<Vec<([f64; 3], [f64; 4])>>,
     /// Indices (in `info.joints`) of the joints whose wrenches are recorded: every joint
@@ -85,8 +88,12 @@ pub struct Recording {
     /// non-conservative loads since t = 0, integrated by [`EnergyMeter`] from its samples
     /// after every integration step.
     pub energy: Vec<EnergySample>,
-    /// The integrator's counters over the run.
+    /// Whether `energy.csv` is written (the samples are kept for the summary either way).
+    pub energy_table: bool,
+    /// The integrator's counters over the run (zero on the kinematic path).
     pub stats: Stats,
+    /// The kinematic path's counters when the run was not integrated ([`run_kinematic`]).
+    pub kinematic: Option<PathStats>,
     /// Largest |Φ|∞ at the outputs.
     pub max_phi: f64,
     /// Largest |Φq q̇ + Φt|∞ at the outputs.
@@ -117,19 +124,24 @@ impl Recording {
 pub fn find(name: &str) -> Result<&'static Entry, Error> {
     symbody_mechanisms::find(name).ok_or_else(|| {
         let known: Vec<&str> = REGISTRY.iter().map(|e| e.name).collect();
-        // A typo is a few edits away; anything farther is not worth suggesting.
-        let close = known
-            .iter()
-            .map(|k| (edit_distance(k, name), *k))
-            .filter(|&(d, k)| d <= 2.max(k.len() / 3))
-            .min()
-            .map(|(_, k)| format!(" (did you mean `{k}`?)"))
+        let close = closest(name, known.iter().copied())
+            .map(|k| format!(" (did you mean `{k}`?)"))
             .unwrap_or_default();
         ScenarioError::Options(format!(
             "no mechanism `{name}`{close}; known: {}. A new one needs mechanisms/{name}.toml and `cargo xtask generate {name}`",
             known.join(", ")
         ))
     })
+}
+
+/// The candidate a typo of `name` most likely meant: the nearest by edit distance, if it is
+/// a few edits away (anything farther is not worth suggesting).
+pub fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<&'a str> {
+    candidates
+        .map(|k| (edit_distance(k, name), k))
+        .filter(|&(d, k)| d <= 2.max(k.len() / 3))
+        .min()
+        .map(|(_, k)| k)
 }
 
 /// Levenshtein distance (insertions, deletions, substitutions) between `a` and `b`.
@@ -185,45 +197,8 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
     let mut it = integrator(mech, opts)?;
     let mut meter: EnergyMeter = EnergyMeter::new(info)?;
     let mut watch = ResidualWatch::new(info);
-    let joints: Vec<usize> = (0..info.joints.len())
-        .filter(|&j| {
-            !matches!(
-                info.joints[j].kind,
-                JointKind::Driver | JointKind::Normalization
-            )
-        })
-        .collect();
-    let drivers: Vec<usize> = (0..info.joints.len())
-        .filter(|&j| info.joints[j].kind == JointKind::Driver)
-        .collect();
-    let mut rec = Recording {
-        info,
-        t: Vec::new(),
-        q: Vec::new(),
-        qd: Vec::new(),
-        poses: Vec::new(),
-        joints,
-        wrenches: Vec::new(),
-        drivers,
-        efforts: Vec::new(),
-        energy: Vec::new(),
-        stats: Stats::default(),
-        max_phi: 0.0,
-        max_velocity_residual: 0.0,
-        max_norm_error: 0.0,
-        euler_warning: None,
-        wall: Duration::ZERO,
-    };
-    // A six-leg platform must stay on its assembly mode: a step across a parallel
-    // singularity would continue on another one without any solver noticing.
-    let modes = match info.platform {
-        Some(_) => Some(ModeWatch::new(
-            &Platform::new(mech)?,
-            it.q(),
-            SIMULATION_MAX_CONDITION,
-        )?),
-        None => None,
-    };
+    let mut rec = Recording::new(info);
+    let modes = mode_watch(mech, it.q())?;
     let mut sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(t_end);
@@ -234,12 +209,103 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
             }
             sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
         }
-        record(&mut rec, &meter, &mut watch, &it, sample)?;
+        record(
+            &mut rec,
+            &meter,
+            &mut watch,
+            mech,
+            (it.t(), it.q(), it.qd()),
+            sample,
+        )?;
     }
     rec.stats = it.stats();
     rec.euler_warning = it.first_euler_warning();
     rec.wall = start.elapsed();
     Ok(rec)
+}
+
+/// As [`run`], by the kinematic path (docs/design.md, decision 22) instead of integration:
+/// at each output time the position from the drivers, the velocity of least kinetic energy,
+/// and the saddle-point accelerations and multipliers. Exact only when the drivers leave no
+/// free direction with momentum (`symbody::scene::choose_path` checks); `opts.step` and
+/// `opts.alpha` do not apply. The work of drivers and loads is integrated over the outputs.
+pub fn run_kinematic(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
+    let mech = mechanism(entry, opts.formulation)?;
+    let info = mech.info();
+    let t_end = opts.t_end.unwrap_or(entry.t_end);
+    let n_out = output_count(t_end, opts.output_step)?;
+    let start = Instant::now();
+    let mut path = KinematicPath::<_>::new(mech, 0.0)?;
+    let mut meter: EnergyMeter = EnergyMeter::new(info)?;
+    let mut watch = ResidualWatch::new(info);
+    let mut rec = Recording::new(info);
+    let modes = mode_watch(mech, path.q())?;
+    for k in 0..=n_out {
+        if k > 0 {
+            path.advance_to((k as f64 * opts.output_step).min(t_end))?;
+        }
+        if let Some(w) = &modes {
+            w.check(path.q(), path.t())?;
+        }
+        let sample = meter.record(&mech, path.t(), path.q(), path.qd())?;
+        record(
+            &mut rec,
+            &meter,
+            &mut watch,
+            mech,
+            (path.t(), path.q(), path.qd()),
+            sample,
+        )?;
+    }
+    rec.kinematic = Some(path.stats());
+    rec.wall = start.elapsed();
+    Ok(rec)
+}
+
+/// A six-leg platform must stay on its assembly mode: a step across a parallel singularity
+/// would continue on another one without any solver noticing.
+fn mode_watch(mech: &(dyn Mechanism + Sync), q: &[f64]) -> Result<Option<ModeWatch>, Error> {
+    Ok(match mech.info().platform {
+        Some(_) => Some(ModeWatch::new(
+            &Platform::new(mech)?,
+            q,
+            SIMULATION_MAX_CONDITION,
+        )?),
+        None => None,
+    })
+}
+
+impl Recording {
+    /// An empty recording of every body, joint (drivers and normalization rows aside) and
+    /// driver of `info`.
+    fn new(info: &'static MechanismInfo) -> Self {
+        let of_kind = |want: fn(JointKind) -> bool| -> Vec<usize> {
+            (0..info.joints.len())
+                .filter(|&j| want(info.joints[j].kind))
+                .collect()
+        };
+        Recording {
+            info,
+            t: Vec::new(),
+            q: Vec::new(),
+            qd: Vec::new(),
+            bodies: (0..info.bodies.len()).collect(),
+            poses: Vec::new(),
+            joints: of_kind(|k| !matches!(k, JointKind::Driver | JointKind::Normalization)),
+            wrenches: Vec::new(),
+            drivers: of_kind(|k| k == JointKind::Driver),
+            efforts: Vec::new(),
+            energy_table: true,
+            energy: Vec::new(),
+            stats: Stats::default(),
+            kinematic: None,
+            max_phi: 0.0,
+            max_velocity_residual: 0.0,
+            max_norm_error: 0.0,
+            euler_warning: None,
+            wall: Duration::ZERO,
+        }
+    }
 }
 
 /// The integrator of a generic run, at its consistent start: HHT with `opts.alpha` and
@@ -259,18 +325,18 @@ fn integrator(
         .build(mech)?)
 }
 
-/// Appends one output; the meter has just recorded this state.
+/// Appends the output `(t, q, q̇)`; the meter has just recorded this state.
 fn record<M: Mechanism>(
     rec: &mut Recording,
     meter: &EnergyMeter,
     watch: &mut ResidualWatch,
-    it: &Integrator<M>,
+    mech: M,
+    (t, q, qd): (f64, &[f64], &[f64]),
     sample: EnergySample,
 ) -> Result<(), Error> {
-    let (t, q, qd) = (it.t(), it.q(), it.qd());
     let info = rec.info;
     let (lambda, phi_q) = (meter.lambda(), meter.phi_q());
-    let r = watch.check(it.mechanism(), t, q, qd)?;
+    let r = watch.check(&mech, t, q, qd)?;
     rec.max_phi = rec.max_phi.max(r.position);
     rec.max_velocity_residual = rec.max_velocity_residual.max(r.velocity);
     for b in info
@@ -335,9 +401,9 @@ pub struct Table {
     pub rows: Vec<Vec<f64>>,
 }
 
-/// The four tables of a run: body poses, joint wrenches, driver efforts and energies, one
-/// column group per body, recorded joint and driver.
-pub fn tables(rec: &Recording) -> [Table; 4] {
+/// The tables of a run: body poses, joint wrenches, driver efforts and energies, one column
+/// group per recorded body, joint and driver; a table with nothing recorded is left out.
+pub fn tables(rec: &Recording) -> Vec<Table> {
     let info = rec.info;
     let header = |names: Vec<String>| std::iter::once("t".to_string()).chain(names).collect();
     let with_t = |k: usize, values: Vec<f64>| {
@@ -345,14 +411,15 @@ pub fn tables(rec: &Recording) -> [Table; 4] {
             .chain(values)
             .collect::<Vec<f64>>()
     };
-    [
+    let tables = [
         Table {
             stem: "bodies",
             columns: header(
-                info.bodies
+                rec.bodies
                     .iter()
-                    .flat_map(|b| {
-                        ["x", "y", "z", "qw", "qx", "qy", "qz"].map(|c| format!("{}.{c}", b.name))
+                    .flat_map(|&b| {
+                        ["x", "y", "z", "qw", "qx", "qy", "qz"]
+                            .map(|c| format!("{}.{c}", info.bodies[b].name))
                     })
                     .collect(),
             ),
@@ -360,9 +427,12 @@ pub fn tables(rec: &Recording) -> [Table; 4] {
                 .map(|k| {
                     with_t(
                         k,
-                        rec.poses[k]
+                        rec.bodies
                             .iter()
-                            .flat_map(|(r, e)| r.iter().chain(e).copied())
+                            .flat_map(|&b| {
+                                let (r, e) = &rec.poses[k][b];
+                                r.iter().chain(e).copied()
+                            })
                             .collect(),
                     )
                 })
@@ -413,7 +483,11 @@ pub fn tables(rec: &Recording) -> [Table; 4] {
                 })
                 .collect(),
         },
-    ]
+    ];
+    tables
+        .into_iter()
+        .filter(|t| t.columns.len() > 1 && (t.stem != "energy" || rec.energy_table))
+        .collect()
 }
 
 /// Writes `bodies.csv`, `joints.csv`, `drivers.csv` and `energy.csv` ([`tables`]) into `dir`.
@@ -429,7 +503,7 @@ pub fn write_csvs(rec: &Recording, dir: &Path) -> std::io::Result<Vec<PathBuf>> 
 }
 
 /// Draws `drivers.png` (one panel per driver, if any) and `position_<body>.png` (X, Y, Z
-/// panels of its centre of mass) for every body.
+/// panels of its centre of mass) for every recorded body.
 pub fn write_plots(rec: &Recording, dir: &Path) -> Result<Vec<PathBuf>, String> {
     let info = rec.info;
     let mut files = Vec::new();
@@ -456,7 +530,8 @@ pub fn write_plots(rec: &Recording, dir: &Path) -> Result<Vec<PathBuf>, String> 
         )?;
         files.push(path);
     }
-    for (b, body) in info.bodies.iter().enumerate() {
+    for &b in &rec.bodies {
+        let body = &info.bodies[b];
         // One panel per axis: a coordinate that barely moves keeps its own scale instead
         // of being flattened by the others' range.
         let panels: Vec<Panel> = ["X (m)", "Y (m)", "Z (m)"]

@@ -7,5 +7,6 @@ pub mod generic;
 pub mod output;
 pub mod plot;
 pub mod scenario;
+pub mod scene;
 pub mod session;
 pub mod viewer;

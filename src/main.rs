@@ -1,12 +1,13 @@
-//! `symbody list`, `symbody simulate [<mechanism>]` and `symbody fk <mechanism>`: every
-//! generated mechanism by name from the registry; without a name, the paper's Stewart platform
-//! scenario and its figures; forward kinematics of the six-leg platforms.
+//! `symbody list`, `symbody simulate [<mechanism>]`, `symbody run <scene>` and
+//! `symbody fk <mechanism>`: every generated mechanism by name from the registry; without a
+//! name, the paper's Stewart platform scenario and its figures; scene files solved by the
+//! cheapest exact path; forward kinematics of the six-leg platforms.
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use symbody::scenario::{self, largest_rotation, Options, Reactions};
-use symbody::{fk, generic, viewer};
+use symbody::{fk, generic, scene, viewer};
 use symbody_mechanisms::REGISTRY;
 use symbody_runtime::fk::Pose;
 use symbody_runtime::{body_pose, Formulation};
@@ -77,6 +78,23 @@ enum Command {
         /// (`integrator`).
         #[arg(long, value_enum)]
         reactions: Option<ReactionsArg>,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Skip the PNG figures.
+        #[arg(long)]
+        no_plots: bool,
+        /// Also write <out>/view.html: a self-contained 3D animation of the run.
+        #[arg(long)]
+        html: bool,
+    },
+    /// Run a scene file (scenes/<name>.toml): the mechanism, time span and outputs it names,
+    /// solved by the cheapest exact path — kinematic (no integration) when the drivers fix
+    /// everything the scene asks for, HHT-α integration otherwise — with the same summary and
+    /// files as `simulate`.
+    Run {
+        /// The scene file, e.g. scenes/paper.toml.
+        scene: PathBuf,
         /// Output folder.
         #[arg(long, default_value = "out")]
         out: PathBuf,
@@ -168,6 +186,12 @@ fn main() -> ExitCode {
                 simulate(&opts, &out, !no_plots, html)
             }
         },
+        Command::Run {
+            scene,
+            out,
+            no_plots,
+            html,
+        } => run_scene(&scene, &out, !no_plots, html),
         Command::Fk {
             mechanism,
             lengths,
@@ -248,8 +272,25 @@ fn simulate_named(
 ) -> Result<(), String> {
     let entry = generic::find(name).map_err(|e| e.to_string())?;
     let rec = generic::run(entry, opts).map_err(|e| format!("{name}: {e}"))?;
+    // Every output time is landed on, so no step is longer than the output spacing.
+    let method = format!(
+        "step {} s, alpha {}, velocities projected",
+        opts.step.min(opts.output_step),
+        opts.alpha
+    );
+    report_named(&rec, &method, out, plots, html)
+}
+
+/// The summary and files of a generic run (`simulate <name>` or a scene with tables);
+/// `method` says how it was solved.
+fn report_named(
+    rec: &generic::Recording,
+    method: &str,
+    out: &std::path::Path,
+    plots: bool,
+    html: bool,
+) -> Result<(), String> {
     let info = rec.info;
-    let s = rec.stats;
     let span = rec.t.last().copied().unwrap_or(0.0);
     say!("{} ({} formulation)", info.name, info.formulation.name());
     say!(
@@ -260,13 +301,8 @@ fn simulate_named(
         info.n_constraints,
         info.dof()
     );
-    // Every output time is landed on, so no step is longer than the output spacing.
-    say!(
-        "  time span        0 .. {span:.6} s, step {} s, alpha {}, velocities projected",
-        opts.step.min(opts.output_step),
-        opts.alpha
-    );
-    print_work(&s, span, rec.wall);
+    say!("  time span        0 .. {span:.6} s, {method}");
+    print_work(&rec.stats, rec.kinematic, span, rec.wall);
     let norms = if info
         .bodies
         .iter()
@@ -309,7 +345,7 @@ fn simulate_named(
             w.name, w.beta, w.time
         );
     }
-    let files = generic::write_outputs(&rec, out, plots)?;
+    let files = generic::write_outputs(rec, out, plots)?;
     let names: Vec<&str> = files
         .iter()
         .filter_map(|f| f.file_name()?.to_str())
@@ -334,8 +370,32 @@ fn simulate_named(
     Ok(())
 }
 
-/// The solver statistics and wall time lines of a run summary.
-fn print_work(s: &symbody_runtime::Stats, span: f64, wall: std::time::Duration) {
+/// The solver statistics and wall time lines of a run summary: the integrator's, or the
+/// kinematic path's when the run was not integrated.
+fn print_work(
+    s: &symbody_runtime::Stats,
+    kinematic: Option<symbody_runtime::PathStats>,
+    span: f64,
+    wall: std::time::Duration,
+) {
+    match kinematic {
+        Some(k) => say!(
+            "  solves           {} output times; {} simplified-Newton corrections, {} Newton iterations, {} factorizations",
+            k.outputs,
+            k.chord_iterations,
+            k.newton_iterations,
+            k.factorizations
+        ),
+        None => print_steps(s),
+    }
+    say!(
+        "  wall time        {:.1} ms ({} real time)",
+        wall.as_secs_f64() * 1e3,
+        speed(span / wall.as_secs_f64())
+    );
+}
+
+fn print_steps(s: &symbody_runtime::Stats) {
     say!(
         "  steps            {} accepted, {} rejected; {} Newton iterations ({:.2}/step), {} factorizations",
         s.steps,
@@ -343,11 +403,6 @@ fn print_work(s: &symbody_runtime::Stats, span: f64, wall: std::time::Duration) 
         s.newton_iterations,
         s.newton_iterations as f64 / s.steps.max(1) as f64,
         s.factorizations
-    );
-    say!(
-        "  wall time        {:.1} ms ({} real time)",
-        wall.as_secs_f64() * 1e3,
-        speed(span / wall.as_secs_f64())
     );
 }
 
@@ -373,21 +428,37 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool, html: bool) -> R
         }
         other => other.to_string(),
     })?;
-    let s = run.stats;
+    let method = format!("step {} s, alpha {}", opts.step, opts.alpha);
+    report_paper(&run, opts.formulation, &method, out, plots, html)
+}
+
+/// The summary and files of the paper scenario (`simulate` or a scene with the paper's
+/// files); `method` says how it was solved.
+fn report_paper(
+    run: &scenario::Run,
+    formulation: Formulation,
+    method: &str,
+    out: &std::path::Path,
+    plots: bool,
+    html: bool,
+) -> Result<(), String> {
     let (xlo, xhi) = run.platform_range(0);
-    let (axis, rot) = largest_rotation(&run);
+    let (axis, rot) = largest_rotation(run);
     let f0 = run.upper[0][0];
     say!(
         "Stewart 6-6, paper scenario ({} formulation)",
-        opts.formulation.name()
+        formulation.name()
     );
     say!(
-        "  time span        0 .. {:.6} s, step {} s, alpha {}",
-        run.t.last().unwrap_or(&0.0),
-        opts.step,
-        opts.alpha
+        "  time span        0 .. {:.6} s, {method}",
+        run.t.last().unwrap_or(&0.0)
     );
-    print_work(&s, run.t.last().copied().unwrap_or(0.0), run.wall);
+    print_work(
+        &run.stats,
+        run.kinematic,
+        run.t.last().copied().unwrap_or(0.0),
+        run.wall,
+    );
     say!(
         "  max |Phi|        {:.2e} (velocity residual {:.2e})",
         run.max_phi,
@@ -403,18 +474,18 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool, html: bool) -> R
     );
     if let Some((t, body, beta)) = run.euler_warning {
         say!("  warning: body `{body}` reached beta = {beta:.3} rad at t = {t:.3} s (Euler singularity at ±pi/2)");
-        if opts.formulation == Formulation::Paper {
+        if formulation == Formulation::Paper {
             say!("           the constant mass matrix keeps the run regular; the leg's spin is the paper model's flaw (README, Formulations)");
         }
     }
-    symbody::output::write_csvs(&run, out)
+    symbody::output::write_csvs(run, out)
         .map_err(|e| format!("cannot write CSVs to {}: {e}", out.display()))?;
     say!(
         "  wrote {}/platform.csv, joint_forces.csv, actuators.csv",
         out.display()
     );
     if plots {
-        let files = symbody::plot::paper_figures(&run, out)?;
+        let files = symbody::plot::paper_figures(run, out)?;
         say!(
             "  wrote {} figures: {}",
             files.len(),
@@ -426,7 +497,7 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool, html: bool) -> R
         );
     }
     if html {
-        let info = scenario::mechanism_info(opts.formulation);
+        let info = scenario::mechanism_info(formulation);
         let poses = run
             .q
             .iter()
@@ -448,12 +519,48 @@ fn simulate(opts: &Options, out: &std::path::Path, plots: bool, html: bool) -> R
         let path = out.join("view.html");
         let title = format!(
             "Stewart 6-6, paper scenario ({} formulation)",
-            opts.formulation.name()
+            formulation.name()
         );
         viewer::write(&path, &title, info, &run.t, &poses, &forces)?;
         say!("  wrote {}", path.display());
     }
     Ok(())
+}
+
+/// `symbody run <scene>`: load and check the scene, choose the path, run, report.
+fn run_scene(
+    path: &std::path::Path,
+    out: &std::path::Path,
+    plots: bool,
+    html: bool,
+) -> Result<(), String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read scene file {}: {e}", path.display()))?;
+    let scene = scene::load(&path.display().to_string(), &text).map_err(|e| e.to_string())?;
+    let entry = generic::find(scene.mechanism).map_err(|e| e.to_string())?;
+    let (choice, outcome) =
+        scene::run(&scene, entry).map_err(|e| format!("{}: {e}", path.display()))?;
+    let info = generic::mechanism(entry, Some(scene.formulation))
+        .map_err(|e| e.to_string())?
+        .info();
+    say!("scene {}", path.display());
+    say!("  path             {}", choice.describe(info));
+    let method = match choice {
+        scene::PathChoice::Kinematic { .. } => {
+            format!("outputs every {} s, no integration", scene.output_step)
+        }
+        scene::PathChoice::Integrate { .. } => format!(
+            "step {} s, alpha {}",
+            scene.step.min(scene.output_step),
+            scene.alpha
+        ),
+    };
+    match outcome {
+        scene::Outcome::Paper(run) => {
+            report_paper(&run, scene.formulation, &method, out, plots, html)
+        }
+        scene::Outcome::Tables(rec) => report_named(&rec, &method, out, plots, html),
+    }
 }
 
 /// Six comma-separated numbers, or an error naming the option.

@@ -5,8 +5,8 @@ use std::time::{Duration, Instant};
 use symbody_mechanisms::stewart_6_6::{Exact, Paper};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
-    actuator_force, joint_force, Error, Formulation, HhtBuilder, Integrator, Kinematics, Mechanism,
-    MechanismInfo, ResidualWatch, Stats,
+    actuator_force, joint_force, Error, Formulation, HhtBuilder, KinematicPath, Kinematics,
+    Mechanism, MechanismInfo, PathStats, ResidualWatch, Stats,
 };
 
 /// Options of one simulation; `Default` is the paper's scenario over one period.
@@ -117,6 +117,8 @@ pub struct Run {
     pub max_phi: f64,
     pub max_velocity_residual: f64,
     pub stats: Stats,
+    /// The kinematic path's counters when the run was not integrated ([`kinematic`]).
+    pub kinematic: Option<PathStats>,
     pub wall: Duration,
     /// First Euler-angle warning (time, body, β), if any body came near β = ±90°.
     pub euler_warning: Option<(f64, &'static str, f64)>,
@@ -179,7 +181,7 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
         .min_step((opts.step * 1e-4).min(1e-7))
         .build(mech)?;
     let mut run = Run::default();
-    let mut recorder = Recorder::new(info, layout, opts.reactions)?;
+    let mut recorder = Recorder::new(info, layout)?;
     // The platform's determinant sign is watched at the outputs: a pose that crossed a
     // parallel singularity between two outputs is on another assembly mode at the next.
     let modes = ModeWatch::new(
@@ -191,12 +193,80 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
         let t_out = (k as f64 * opts.output_step).min(opts.t_end);
         it.advance_to(t_out)?;
         modes.check(it.q(), it.t())?;
-        recorder.record(&mut it, &mut run)?;
+        let lambda = match opts.reactions {
+            Reactions::Integrator => Some(it.lambda()),
+            Reactions::Recovered => None,
+        };
+        let state = State {
+            t: it.t(),
+            q: it.q(),
+            qd: it.qd(),
+            lambda,
+            energy: it.energy(),
+        };
+        recorder.record(it.mechanism(), state, &mut run)?;
     }
     run.stats = it.stats();
     run.wall = start.elapsed();
     run.euler_warning = it.first_euler_warning().map(|w| (w.time, w.name, w.beta));
     Ok(run)
+}
+
+/// The paper's scenario by the kinematic path (docs/design.md, decision 22): no integration;
+/// at each output time the pose from the drivers, the velocity of least kinetic energy (the
+/// legs' idle spins carry no momentum, see `symbody::scene::choose_path`) and the
+/// accelerations and multipliers of the saddle-point system. `opts.step`, `alpha` and
+/// `reactions` do not apply: the multipliers are the saddle-point ones.
+pub fn kinematic(opts: &Options) -> Result<Run, ScenarioError> {
+    match opts.formulation {
+        Formulation::Exact => kinematic_mechanism(Exact, opts),
+        Formulation::Paper => kinematic_mechanism(Paper, opts),
+    }
+}
+
+/// [`kinematic`] for any mechanism with the Stewart platform's names.
+pub fn kinematic_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
+    let info = mech.info();
+    let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
+    let n_out = output_count(opts.t_end, opts.output_step)?;
+    let start = Instant::now();
+    let mut path = KinematicPath::<M>::new(mech, 0.0)?;
+    let mut run = Run::default();
+    let mut recorder = Recorder::new(info, layout)?;
+    let modes = ModeWatch::new(
+        &Platform::new(path.mechanism())?,
+        path.q(),
+        SIMULATION_MAX_CONDITION,
+    )?;
+    for k in 0..=n_out {
+        let t_out = (k as f64 * opts.output_step).min(opts.t_end);
+        if k > 0 {
+            path.advance_to(t_out)?;
+        }
+        modes.check(path.q(), path.t())?;
+        let state = State {
+            t: path.t(),
+            q: path.q(),
+            qd: path.qd(),
+            lambda: Some(path.lambda()),
+            energy: path.energy(),
+        };
+        recorder.record(path.mechanism(), state, &mut run)?;
+    }
+    run.kinematic = Some(path.stats());
+    run.wall = start.elapsed();
+    Ok(run)
+}
+
+/// One output state, with its multipliers when they are already known.
+struct State<'a> {
+    t: f64,
+    q: &'a [f64],
+    qd: &'a [f64],
+    /// `None`: recover them from the saddle-point system at (q, q̇, t).
+    lambda: Option<&'a [f64]>,
+    /// Kinetic plus potential energy (J).
+    energy: f64,
 }
 
 /// Number of output intervals of `t_end` at `output_step` (outputs at 0, Δ, …, t_end),
@@ -225,7 +295,6 @@ pub fn output_count(t_end: f64, output_step: f64) -> Result<usize, ScenarioError
 /// Work memory for recording outputs, allocated once per run.
 struct Recorder {
     layout: Layout,
-    reactions: Reactions,
     kinematics: Kinematics,
     watch: ResidualWatch,
     phi_t: Vec<f64>,
@@ -235,14 +304,9 @@ struct Recorder {
 }
 
 impl Recorder {
-    fn new(
-        info: &'static MechanismInfo,
-        layout: Layout,
-        reactions: Reactions,
-    ) -> Result<Self, Error> {
+    fn new(info: &'static MechanismInfo, layout: Layout) -> Result<Self, Error> {
         Ok(Recorder {
             layout,
-            reactions,
             kinematics: Kinematics::new(info)?,
             watch: ResidualWatch::new(info),
             phi_t: vec![0.0; info.n_constraints],
@@ -252,11 +316,10 @@ impl Recorder {
         })
     }
 
-    fn record<M: Mechanism>(&mut self, it: &mut Integrator<M>, run: &mut Run) -> Result<(), Error> {
-        let info = it.info();
+    fn record<M: Mechanism>(&mut self, mech: &M, s: State<'_>, run: &mut Run) -> Result<(), Error> {
+        let info = mech.info();
         let layout = self.layout;
-        let (t, q, qd) = (it.t(), it.q().to_vec(), it.qd().to_vec());
-        let mech = it.mechanism();
+        let (t, q, qd) = (s.t, s.q.to_vec(), s.qd.to_vec());
         let residuals = self.watch.check(mech, t, &q, &qd)?;
         run.max_phi = run.max_phi.max(residuals.position);
         run.max_velocity_residual = run.max_velocity_residual.max(residuals.velocity);
@@ -265,9 +328,9 @@ impl Recorder {
         // Φ_D = d(q) − c(t), so each driver's ċ = −Φt on its row.
         let c_dot: [f64; LEGS] =
             std::array::from_fn(|i| -self.phi_t[info.joints[layout.drivers[i]].row_start]);
-        match self.reactions {
-            Reactions::Integrator => self.lambda.copy_from_slice(it.lambda()),
-            Reactions::Recovered => {
+        match s.lambda {
+            Some(l) => self.lambda.copy_from_slice(l),
+            None => {
                 self.kinematics
                     .acceleration(mech, t, &q, &qd, &mut self.qdd, &mut self.lambda)?
             }
@@ -301,7 +364,7 @@ impl Recorder {
         run.lower.push(lower);
         run.actuators.push(act);
         run.actuator_power.push(power);
-        run.energy.push(it.energy());
+        run.energy.push(s.energy);
         run.t.push(t);
         run.q.push(q);
         run.qd.push(qd);

@@ -242,6 +242,54 @@ impl<K: KktSolver> Kinematics<K> {
         })
     }
 
+    /// Simplified Newton on Φ(q, t) = 0 with the factorization left by the last velocity or
+    /// acceleration analysis (a nearby state), at most `max_iterations` corrections. Returns
+    /// the iterations taken when it converged; `None` when it did not (q is then somewhere
+    /// near and a full [`Kinematics::position`] should follow). Only valid right after an
+    /// analysis of this mechanism: the caller guarantees that.
+    pub(crate) fn position_chord<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &mut [f64],
+        max_iterations: usize,
+    ) -> Result<Option<usize>, Error> {
+        let info = self.info;
+        let tol = self.settings.position_tolerance;
+        self.f.fill(0.0);
+        for it in 0..=max_iterations {
+            mech.phi(q, t, &mut self.phi);
+            let mut converged = true;
+            for &r in info.redundant_rows {
+                converged &= self.phi[r as usize].abs() <= tol;
+                self.phi[r as usize] = 0.0;
+            }
+            let residual = inf_norm(&self.phi);
+            if residual.is_nan() {
+                return Err(Error::NotFinite {
+                    time: t,
+                    what: "constraint residual Φ in position analysis",
+                });
+            }
+            if residual <= tol && converged {
+                return Ok(Some(it));
+            }
+            if it == max_iterations {
+                break;
+            }
+            for (g, &p) in self.g.iter_mut().zip(&self.phi) {
+                *g = -p;
+            }
+            self.kkt
+                .solve(&self.f, &self.g, &mut self.dq, &mut self.mu)
+                .map_err(|e| e.to_error(info, t))?;
+            for (qi, d) in q.iter_mut().zip(&self.dq) {
+                *qi += d;
+            }
+        }
+        Ok(None)
+    }
+
     /// The error for redundant rows left unsatisfied at `q` (error path: allocates).
     fn inconsistent<M: Mechanism>(&mut self, mech: &M, t: f64, q: &[f64], residual: f64) -> Error {
         let info = self.info;
@@ -352,6 +400,53 @@ impl<K: KktSolver> Kinematics<K> {
             return Err(Error::NotFinite {
                 time: t,
                 what: "acceleration analysis",
+            });
+        }
+        Ok(())
+    }
+
+    /// The velocity of least kinetic energy, then accelerations and multipliers, at one
+    /// position: both saddle-point systems share the matrix `[M Φqᵀ; Φq 0]` at `q`, so it is
+    /// factored once (what a kinematically driven run needs at every output time).
+    #[allow(clippy::too_many_arguments)]
+    pub fn velocity_and_acceleration<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &mut [f64],
+        qdd: &mut [f64],
+        lambda: &mut [f64],
+    ) -> Result<(), Error> {
+        self.check_mech(mech)?;
+        let (n, m) = (self.info.n_coords, self.info.n_constraints);
+        check_len("q", n, q.len())?;
+        check_len("qd", n, qd.len())?;
+        check_len("qdd", n, qdd.len())?;
+        check_len("lambda", m, lambda.len())?;
+        let info = self.info;
+        mech.phi_q(q, t, &mut self.phi_q);
+        mech.phi_t(q, t, &mut self.phi_t);
+        mech.mass(q, &mut self.mass);
+        self.kkt
+            .factor(&self.mass, 1.0, &self.phi_q)
+            .map_err(|e| e.to_error(info, t))?;
+        self.f.fill(0.0);
+        for (g, &p) in self.g.iter_mut().zip(&self.phi_t) {
+            *g = -p;
+        }
+        self.kkt
+            .solve(&self.f, &self.g, qd, &mut self.mu)
+            .map_err(|e| e.to_error(info, t))?;
+        mech.gamma(q, qd, t, &mut self.gamma);
+        mech.force(q, qd, t, &mut self.force);
+        self.kkt
+            .solve(&self.force, &self.gamma, qdd, lambda)
+            .map_err(|e| e.to_error(info, t))?;
+        if inf_norm(qd).is_nan() || inf_norm(qdd).is_nan() || inf_norm(lambda).is_nan() {
+            return Err(Error::NotFinite {
+                time: t,
+                what: "velocity and acceleration analysis",
             });
         }
         Ok(())

@@ -5,6 +5,8 @@
 //! - [`kkt`]: solvers for the saddle-point system `[c·M Φqᵀ; Φq 0]` ([`SchurKkt`], the
 //!   structured default, and [`DenseKkt`], the reference).
 //! - [`kinematics`]: position/velocity/acceleration analysis and the consistent start.
+//! - [`kinematic_path`]: a driven mechanism followed without integration, and the check
+//!   that this is exact ([`free_motion`]).
 //! - [`hht`]: the HHT-α integrator ([`HhtBuilder`] → [`Integrator`]).
 //! - [`reactions`]: joint wrenches and driver efforts from the multipliers.
 //! - [`pose`]: rotation matrices, poses, angular velocities and world points of Euler-angle
@@ -25,6 +27,7 @@ pub mod energy;
 pub mod error;
 pub mod fk;
 pub mod hht;
+pub mod kinematic_path;
 pub mod kinematics;
 pub mod kkt;
 pub mod mechanism;
@@ -37,6 +40,9 @@ pub mod watch;
 pub use energy::{EnergyMeter, EnergySample};
 pub use error::{ConstraintRow, Error};
 pub use hht::{HhtBuilder, Integrator, Stats, StepReport};
+pub use kinematic_path::{
+    free_motion, FreeMotion, KinematicPath, PathStats, MAX_ACCELERATION_MISMATCH, MAX_OUTPUT_CHANGE,
+};
 pub use kinematics::{InitialVelocity, KinematicSettings, Kinematics, PositionReport};
 pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, SchurKkt};
 pub use mechanism::{

@@ -1,0 +1,392 @@
+//! The kinematic path (docs/design.md, decision 22): a driven mechanism followed without time
+//! integration — at each output time one position solve, then the least-energy velocity and
+//! the saddle-point accelerations and multipliers from one factorization — and the check
+//! that tells whether this is exact for a mechanism whose drivers leave free directions.
+//!
+//! Free directions are exact to follow this way only when they carry no momentum: the
+//! velocity of least kinetic energy is then the true velocity at every time. That holds for a
+//! Stewart leg's spin about its own axis when the leg is axisymmetric (its spin is a cyclic
+//! coordinate whose momentum starts at zero), and [`free_motion`] measures it instead of
+//! assuming it.
+
+use nalgebra::DMatrix;
+
+use crate::error::{check_len, Error};
+use crate::kinematics::{mass_times, KinematicSettings, Kinematics};
+use crate::kkt::{KktSolver, SchurKkt};
+use crate::mechanism::{Mechanism, MechanismInfo};
+
+/// Counters of a kinematic path.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct PathStats {
+    /// Output times solved (the start included).
+    pub outputs: usize,
+    /// Full position Newton iterations (one factorization each) over all outputs.
+    pub newton_iterations: usize,
+    /// Simplified-Newton corrections with the previous output's factorization.
+    pub chord_iterations: usize,
+    /// Factorizations of the saddle-point matrix.
+    pub factorizations: usize,
+}
+
+/// A driven mechanism followed from output time to output time by kinematic analysis.
+#[derive(Debug, Clone)]
+pub struct KinematicPath<M: Mechanism, K: KktSolver = SchurKkt> {
+    mech: M,
+    kin: Kinematics<K>,
+    t: f64,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    qdd: Vec<f64>,
+    lambda: Vec<f64>,
+    /// The step to the current output and the accelerations before it, for the predictor.
+    previous: Option<(f64, Vec<f64>)>,
+    stats: PathStats,
+}
+
+impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
+    /// Starts at time `t0` from the generator's assembled pose `info.q0`, with the velocity
+    /// of least kinetic energy (the only one a kinematic path can follow; see the module),
+    /// and positions solved to [`PATH_POSITION_TOLERANCE`].
+    pub fn new(mech: M, t0: f64) -> Result<Self, Error> {
+        let settings = KinematicSettings {
+            position_tolerance: PATH_POSITION_TOLERANCE,
+            ..KinematicSettings::default()
+        };
+        Self::with_settings(mech, t0, settings)
+    }
+
+    /// As [`KinematicPath::new`], with explicit position-solve settings.
+    pub fn with_settings(mech: M, t0: f64, settings: KinematicSettings) -> Result<Self, Error> {
+        let q0 = mech.info().q0;
+        Self::from_position(mech, t0, q0, settings)
+    }
+
+    /// Starts at time `t0` from the position `q` (moved onto Φ = 0 first).
+    pub fn from_position(
+        mech: M,
+        t0: f64,
+        q: &[f64],
+        settings: KinematicSettings,
+    ) -> Result<Self, Error> {
+        if !t0.is_finite() {
+            return Err(Error::InvalidSetting {
+                name: "start time",
+                value: t0,
+                reason: "must be finite",
+            });
+        }
+        let info = mech.info();
+        let (n, m) = (info.n_coords, info.n_constraints);
+        check_len("q", n, q.len())?;
+        let mut path = KinematicPath {
+            kin: Kinematics::with_settings(info, settings)?,
+            mech,
+            t: t0,
+            q: q.to_vec(),
+            qd: vec![0.0; n],
+            qdd: vec![0.0; n],
+            lambda: vec![0.0; m],
+            previous: None,
+            stats: PathStats::default(),
+        };
+        path.solve_at(t0)?;
+        Ok(path)
+    }
+
+    /// Moves to time `t`: a second-order Taylor prediction from the current state, Newton
+    /// onto Φ(q, t) = 0 (corrections smallest in the mass norm, so free directions keep the
+    /// predicted motion), then velocity, accelerations and multipliers at `t`. On failure the
+    /// state is left at the last good time.
+    pub fn advance_to(&mut self, t: f64) -> Result<(), Error> {
+        if !t.is_finite() {
+            return Err(Error::InvalidSetting {
+                name: "output time",
+                value: t,
+                reason: "must be finite",
+            });
+        }
+        let h = t - self.t;
+        let saved = self.q.clone();
+        self.predict(h);
+        // The last factorization is at a state one output earlier: close enough for a few
+        // simplified-Newton corrections, which cost a residual and a solve each instead of a
+        // factorization. Full Newton takes over when they do not converge.
+        let chord = self
+            .kin
+            .position_chord(&self.mech, t, &mut self.q, CHORD_ITERATIONS);
+        let result = match chord {
+            Ok(Some(iterations)) => {
+                self.stats.chord_iterations += iterations;
+                self.analyse(t)
+            }
+            Ok(None) | Err(_) => {
+                self.q.copy_from_slice(&saved);
+                self.predict(h);
+                self.solve_at(t)
+            }
+        };
+        if result.is_err() {
+            self.q = saved;
+        }
+        result
+    }
+
+    /// Taylor prediction of q over `h`: third order once two accelerations are known (the
+    /// jerk differenced from them), which leaves an O(h⁴) residual for the corrector.
+    fn predict(&mut self, h: f64) {
+        let jerk = self.previous.as_ref().filter(|(dt, _)| *dt > 0.0);
+        for i in 0..self.q.len() {
+            let j = jerk.map_or(0.0, |(dt, a)| (self.qdd[i] - a[i]) / dt);
+            self.q[i] += h * (self.qd[i] + h * (0.5 * self.qdd[i] + h * j / 6.0));
+        }
+    }
+
+    fn solve_at(&mut self, t: f64) -> Result<(), Error> {
+        let report = self.kin.position(&self.mech, t, &mut self.q)?;
+        self.stats.newton_iterations += report.iterations;
+        self.stats.factorizations += report.iterations;
+        self.analyse(t)
+    }
+
+    /// Velocity, accelerations and multipliers at the converged position.
+    fn analyse(&mut self, t: f64) -> Result<(), Error> {
+        let dt = t - self.t;
+        match &mut self.previous {
+            Some((h, a)) => {
+                *h = dt;
+                a.copy_from_slice(&self.qdd);
+            }
+            None if self.stats.outputs > 0 => self.previous = Some((dt, self.qdd.clone())),
+            None => {}
+        }
+        self.kin.velocity_and_acceleration(
+            &self.mech,
+            t,
+            &self.q,
+            &mut self.qd,
+            &mut self.qdd,
+            &mut self.lambda,
+        )?;
+        self.t = t;
+        self.stats.outputs += 1;
+        self.stats.factorizations += 1;
+        Ok(())
+    }
+
+    pub fn mechanism(&self) -> &M {
+        &self.mech
+    }
+    pub fn info(&self) -> &'static MechanismInfo {
+        self.mech.info()
+    }
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+    pub fn q(&self) -> &[f64] {
+        &self.q
+    }
+    pub fn qd(&self) -> &[f64] {
+        &self.qd
+    }
+    pub fn qdd(&self) -> &[f64] {
+        &self.qdd
+    }
+    pub fn lambda(&self) -> &[f64] {
+        &self.lambda
+    }
+    /// Φq nonzeros at the current state.
+    pub fn phi_q(&self) -> &[f64] {
+        self.kin.phi_q()
+    }
+    pub fn stats(&self) -> PathStats {
+        self.stats
+    }
+    /// Kinetic plus potential energy at the current state (J).
+    pub fn energy(&self) -> f64 {
+        let info = self.mech.info();
+        let mut kinetic = 0.0;
+        for ((&r, &c), &m) in info
+            .mass_rows
+            .iter()
+            .zip(info.mass_cols)
+            .zip(self.kin.mass())
+        {
+            kinetic += self.qd[r as usize] * m * self.qd[c as usize];
+        }
+        0.5 * kinetic + self.mech.potential(&self.q)
+    }
+}
+
+/// What the drivers leave free at one state, and whether following the mechanism kinematically
+/// is exact there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FreeMotion {
+    /// Time of the analysed state (s).
+    pub time: f64,
+    /// Directions the constraints leave free: coordinates minus the rank of Φq.
+    pub dof: usize,
+    /// Bodies (indices into `info.bodies`) whose coordinates move along some free direction.
+    pub moved_bodies: Vec<usize>,
+    /// |a − dv*/dt|_M / |a|_M: how far the accelerations of the equations of motion are from
+    /// the rate of change of the least-energy velocity v*(t). Zero (to differencing error,
+    /// ≈ 1e-8) when the free directions carry no momentum; the kinematic path is then exact.
+    pub acceleration_mismatch: f64,
+    /// Largest change of the caller's outputs, relative to their size, when the state is moved
+    /// along each free direction and solved again: zero when the free coordinates do not
+    /// enter them (a cyclic spin).
+    pub output_change: f64,
+}
+
+/// Above this [`FreeMotion::acceleration_mismatch`] the free directions carry momentum: the
+/// differencing in [`free_motion`] is accurate to ≈ 1e-8 (fourth order in 1e-3 s, position
+/// solves to 1e-13).
+pub const MAX_ACCELERATION_MISMATCH: f64 = 1e-6;
+/// Above this [`FreeMotion::output_change`] a free coordinate enters a requested output.
+pub const MAX_OUTPUT_CHANGE: f64 = 1e-8;
+
+impl FreeMotion {
+    /// `true` when a kinematic path reproduces the equations of motion at this state: no free
+    /// direction, or free directions without momentum that change no requested output and
+    /// move none of `bodies`.
+    pub fn kinematic_is_exact(&self, bodies: &[usize]) -> bool {
+        self.dof == 0
+            || (self.acceleration_mismatch <= MAX_ACCELERATION_MISMATCH
+                && self.output_change <= MAX_OUTPUT_CHANGE
+                && !bodies.iter().any(|b| self.moved_bodies.contains(b)))
+    }
+}
+
+/// Position tolerance of [`KinematicPath::new`] (|Φ|∞, metres or radians): the pose is an
+/// output of the path, not an integration state, so it is solved close to roundoff; the
+/// chord corrections converging linearly make the last digits cheap.
+pub const PATH_POSITION_TOLERANCE: f64 = 1e-14;
+
+/// Simplified-Newton corrections tried before a full Newton solve: from a second-order
+/// prediction the residual is O(Δt³), and each correction with a Jacobian one output old
+/// gains about a factor Δt.
+const CHORD_ITERATIONS: usize = 4;
+
+/// Step of the differencing in [`free_motion`] (s): fourth-order central differences of the
+/// least-energy velocity, truncation ≈ h⁴ ≈ 1e-12 relative, roundoff ≈ 1e-13 / h ≈ 1e-10.
+const DIFFERENCE_STEP: f64 = 1e-3;
+/// Displacement along each unit free direction for [`FreeMotion::output_change`].
+const FREE_DISPLACEMENT: f64 = 0.1;
+
+/// The quantities a run is asked for, from a state: `(q, q̇, λ, Φq nonzeros)` → values.
+pub type Outputs<'a> = dyn FnMut(&[f64], &[f64], &[f64], &[f64]) -> Result<Vec<f64>, Error> + 'a;
+
+/// Analyses the free directions at the consistent position `q` (time `t`): their number,
+/// the bodies they move, whether they carry momentum (compares the saddle-point
+/// accelerations at `t + 2h` with the derivative of the least-energy velocity differenced
+/// over `t … t + 4h`), and whether `outputs(q, qd, λ, Φq)` changes when the state is moved
+/// along each of them. Allocates; call it once per run, not per step.
+pub fn free_motion<M: Mechanism>(
+    mech: &M,
+    t: f64,
+    q: &[f64],
+    outputs: &mut Outputs<'_>,
+) -> Result<FreeMotion, Error> {
+    let info = mech.info();
+    let n = info.n_coords;
+    check_len("q", n, q.len())?;
+    let tight = KinematicSettings {
+        position_tolerance: 1e-13,
+        ..KinematicSettings::default()
+    };
+    let free = null_space(mech, t, q);
+    let dof = free.ncols();
+    let mut moved_bodies = Vec::new();
+    for (i, b) in info.bodies.iter().enumerate() {
+        let rows = b.coord_offset..b.coord_offset + b.n_coords();
+        if free.rows(rows.start, rows.len()).amax() > 1e-8 {
+            moved_bodies.push(i);
+        }
+    }
+    let mut result = FreeMotion {
+        time: t,
+        dof,
+        moved_bodies,
+        acceleration_mismatch: 0.0,
+        output_change: 0.0,
+    };
+    if dof == 0 {
+        return Ok(result);
+    }
+
+    // Least-energy velocities at t, t + h, …, t + 4h along one kinematic path.
+    let mut path = KinematicPath::<&M>::from_position(mech, t, q, tight)?;
+    let mut v = Vec::with_capacity(5);
+    let mut mid = (Vec::new(), Vec::new());
+    for k in 0..5 {
+        path.advance_to(t + k as f64 * DIFFERENCE_STEP)?;
+        v.push(path.qd().to_vec());
+        if k == 2 {
+            mid = (path.q().to_vec(), path.qdd().to_vec());
+        }
+    }
+    let (q_mid, a) = mid;
+    let diff: Vec<f64> = (0..n)
+        .map(|i| {
+            let dvdt =
+                (v[0][i] - 8.0 * v[1][i] + 8.0 * v[3][i] - v[4][i]) / (12.0 * DIFFERENCE_STEP);
+            a[i] - dvdt
+        })
+        .collect();
+    let mut mass = vec![0.0; info.mass_nnz()];
+    mech.mass(&q_mid, &mut mass);
+    let m_norm = |x: &[f64]| {
+        let mut mx = vec![0.0; n];
+        mass_times(info, &mass, x, &mut mx);
+        x.iter()
+            .zip(&mx)
+            .map(|(a, b)| a * b)
+            .sum::<f64>()
+            .max(0.0)
+            .sqrt()
+    };
+    result.acceleration_mismatch = m_norm(&diff) / m_norm(&a).max(f64::MIN_POSITIVE);
+
+    // The caller's outputs at q, and after moving along each free direction.
+    let base = KinematicPath::<&M>::from_position(mech, t, q, tight)?;
+    let reference = outputs(base.q(), base.qd(), base.lambda(), base.phi_q())?;
+    let scale = reference.iter().fold(0.0f64, |s, x| s.max(x.abs()));
+    let mut change = 0.0f64;
+    for k in 0..dof {
+        let moved: Vec<f64> = (0..n)
+            .map(|i| base.q()[i] + FREE_DISPLACEMENT * free[(i, k)])
+            .collect();
+        let p = KinematicPath::<&M>::from_position(mech, t, &moved, tight)?;
+        let out = outputs(p.q(), p.qd(), p.lambda(), p.phi_q())?;
+        for (x, y) in out.iter().zip(&reference) {
+            change = change.max((x - y).abs());
+        }
+    }
+    result.output_change = change / scale.max(f64::MIN_POSITIVE);
+    Ok(result)
+}
+
+/// Orthonormal basis of the null space of Φq(q, t), one direction per column: the right
+/// singular vectors of Φq (padded to square with zero rows) whose singular values are at
+/// roundoff relative to the largest.
+fn null_space<M: Mechanism>(mech: &M, t: f64, q: &[f64]) -> DMatrix<f64> {
+    let info = mech.info();
+    let (n, m) = (info.n_coords, info.n_constraints);
+    let mut values = vec![0.0; info.phi_q_nnz()];
+    mech.phi_q(q, t, &mut values);
+    let rows = m.max(n);
+    let mut a = DMatrix::<f64>::zeros(rows, n);
+    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(&values) {
+        a[(r as usize, c as usize)] = v;
+    }
+    let svd = a.svd(false, true);
+    let Some(v_t) = svd.v_t else {
+        return DMatrix::zeros(n, 0);
+    };
+    let largest = svd.singular_values.max();
+    let tol = largest * 1e-10;
+    let free: Vec<usize> = (0..svd.singular_values.len())
+        .filter(|&i| !(svd.singular_values[i] > tol))
+        .collect();
+    DMatrix::from_fn(n, free.len(), |i, k| v_t[(free[k], i)])
+}

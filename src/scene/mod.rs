@@ -1,0 +1,99 @@
+//! Scene files (`scenes/<name>.toml`, docs/design.md decision 21): which mechanism, over what
+//! time, which outputs, and how to solve it — read and checked here ([`load`]), run by
+//! [`run`].
+//!
+//! ```toml
+//! mechanism = "stewart_6_6"     # a name from `symbody list`
+//! formulation = "exact"         # optional: the mechanism's default
+//!
+//! [time]
+//! end = 6.283185307179586       # s (default: the mechanism file's t_end)
+//! output_step = 0.01            # s (default 0.01)
+//!
+//! [outputs]
+//! poses = ["platform"]          # body names, or "all" (default) or "none"
+//! reactions = "all"             # joint names, or "all" (default) or "none"
+//! efforts = true                # driver efforts (default true)
+//! energy = true                 # energy table (default true)
+//! files = "tables"              # "tables" (default) or "paper" (the paper scenario's files)
+//!
+//! [solver]
+//! path = "auto"                 # "auto" (default), "kinematic" or "integrate"
+//! step = 1e-3                   # HHT step when integrating (s)
+//! alpha = 0.0                   # HHT α (default: as `symbody simulate`)
+//! ```
+
+mod parse;
+pub mod run;
+
+pub use parse::load;
+pub use run::{choose_path, run, Outcome, PathChoice};
+
+use symbody_runtime::Formulation;
+
+/// Which outputs a scene asks for: every one, none, or the named ones (indices into the
+/// mechanism's bodies or joints, checked by [`load`]).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Selection {
+    All,
+    None,
+    Only(Vec<usize>),
+}
+
+impl Selection {
+    /// The selected indices out of `0..n`, ascending.
+    pub fn indices(&self, n: usize) -> Vec<usize> {
+        match self {
+            Selection::All => (0..n).collect(),
+            Selection::None => Vec::new(),
+            Selection::Only(v) => v.clone(),
+        }
+    }
+}
+
+/// The files a scene writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Files {
+    /// `bodies.csv`, `joints.csv`, `drivers.csv`, `energy.csv` (as `symbody simulate <name>`),
+    /// restricted to the selected outputs.
+    Tables,
+    /// The paper scenario's `platform.csv`, `joint_forces.csv`, `actuators.csv` and figures
+    /// (as `symbody simulate`); needs the paper's body and joint names.
+    Paper,
+}
+
+/// How the scene is solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PathRequest {
+    /// Kinematic when that is exact for the requested outputs, integration otherwise.
+    Auto,
+    /// Kinematic, or an error saying why it would not be exact.
+    Kinematic,
+    /// HHT-α integration.
+    Integrate,
+}
+
+/// A checked scene.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    /// The file it was read from, for messages.
+    pub file: String,
+    /// Registry name of the mechanism.
+    pub mechanism: &'static str,
+    pub formulation: Formulation,
+    pub t_end: f64,
+    pub output_step: f64,
+    /// Bodies whose poses are wanted (indices into `info.bodies`).
+    pub poses: Selection,
+    /// Joints whose reactions are wanted (indices into `info.joints`; never drivers or
+    /// normalization rows).
+    pub reactions: Selection,
+    pub efforts: bool,
+    pub energy: bool,
+    pub files: Files,
+    pub path: PathRequest,
+    /// HHT step when integrating (s).
+    pub step: f64,
+    /// HHT α when integrating.
+    pub alpha: f64,
+}
