@@ -536,7 +536,11 @@ fn run_scene(
 ) -> Result<(), String> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read scene file {}: {e}", path.display()))?;
-    let scene = scene::load(&path.display().to_string(), &text).map_err(|e| e.to_string())?;
+    // The diagnostics carry their own `error:` prefix; `main` adds the first one.
+    let scene = scene::load(&path.display().to_string(), &text).map_err(|e| {
+        let shown = e.to_string();
+        shown.strip_prefix("error: ").unwrap_or(&shown).to_string()
+    })?;
     let entry = generic::find(scene.mechanism).map_err(|e| e.to_string())?;
     let (choice, outcome) =
         scene::run(&scene, entry).map_err(|e| format!("{}: {e}", path.display()))?;

@@ -2,6 +2,7 @@
 //! (docs/design.md, decision 22), then the run is made by the paper scenario's or the generic
 //! recorder and restricted to the requested outputs.
 
+use std::time::Instant;
 use symbody_mechanisms::Entry;
 use symbody_runtime::{
     driver_effort, free_motion, joint_wrench, FreeMotion, JointKind, Mechanism,
@@ -165,10 +166,13 @@ fn requested_joints(scene: &Scene, info: &symbody_runtime::MechanismInfo) -> Vec
 }
 
 /// Runs `scene`: chooses the path, runs it, and restricts the recording to the requested
-/// outputs.
+/// outputs. The recorded wall time includes the choice.
 pub fn run(scene: &Scene, entry: &Entry) -> Result<(PathChoice, Outcome), ScenarioError> {
     let mech = generic::mechanism(entry, Some(scene.formulation))?;
+    // The choice is part of the run's cost: its wall time is added to the run's.
+    let clock = Instant::now();
     let choice = choose_path(scene, mech)?;
+    let choice_wall = clock.elapsed();
     let kinematic = matches!(choice, PathChoice::Kinematic { .. });
     let outcome = match scene.files {
         Files::Paper => {
@@ -180,11 +184,13 @@ pub fn run(scene: &Scene, entry: &Entry) -> Result<(PathChoice, Outcome), Scenar
                 output_step: scene.output_step,
                 reactions: Reactions::Recovered,
             };
-            Outcome::Paper(if kinematic {
+            let mut run = if kinematic {
                 scenario::kinematic_mechanism(mech, &opts)?
             } else {
                 scenario::simulate_mechanism(mech, &opts)?
-            })
+            };
+            run.wall += choice_wall;
+            Outcome::Paper(run)
         }
         Files::Tables => {
             let opts = generic::Options {
@@ -200,6 +206,7 @@ pub fn run(scene: &Scene, entry: &Entry) -> Result<(PathChoice, Outcome), Scenar
                 generic::run(entry, &opts)?
             };
             restrict(&mut rec, scene);
+            rec.wall += choice_wall;
             Outcome::Tables(rec)
         }
     };
