@@ -1,0 +1,123 @@
+//! Why the paper's scene may skip integration (docs/design.md, decision 22): the Stewart
+//! legs' spins about their own axes are free directions, but axisymmetric legs give them no
+//! momentum, so the kinematic path (least-energy velocity at every output) is the motion the
+//! equations of motion produce. Checked against HHT integration of the same model, which must
+//! converge to the kinematic path as its step shrinks, and whose integrated legs must keep a
+//! zero spin rate. The paper formulation's diagonal mass matrix drives the spins; there the
+//! check must refuse the kinematic path, and the kinematic answer must indeed be wrong.
+
+use symbody::scenario::{self, Options, Run};
+use symbody_mechanisms::stewart_6_6::{Exact, Paper};
+use symbody_runtime::{
+    angular_velocity, free_motion, joint_force, rotation_matrix, Error, Formulation, Mechanism,
+    MAX_ACCELERATION_MISMATCH,
+};
+
+/// The paper's reported forces (upper joints on the platform, global frame) from a state.
+fn upper_forces<M: Mechanism>(
+    mech: &M,
+) -> impl FnMut(&[f64], &[f64], &[f64], &[f64]) -> Result<Vec<f64>, Error> + '_ {
+    let info = mech.info();
+    let platform = info.body_index("platform").unwrap();
+    move |_q, _qd, lambda, phi_q| {
+        let mut out = Vec::new();
+        for i in 1..=6 {
+            let j = info.joint_index(&format!("upper_sph{i}")).unwrap();
+            out.extend(joint_force(info, phi_q, lambda, j, platform)?);
+        }
+        Ok(out)
+    }
+}
+
+fn options(formulation: Formulation, step: f64) -> Options {
+    Options {
+        formulation,
+        t_end: 1.0,
+        step,
+        output_step: 0.04,
+        ..Options::default()
+    }
+}
+
+/// Largest difference of the upper-joint and actuator forces (N).
+fn force_difference(a: &Run, b: &Run) -> f64 {
+    let upper = a
+        .max_difference(b, |r, k| r.upper[k].as_flattened())
+        .unwrap()
+        .0;
+    let act = a.max_difference(b, |r, k| &r.actuators[k]).unwrap().0;
+    upper.max(act)
+}
+
+#[test]
+fn axisymmetric_legs_spin_idle_so_the_kinematic_path_is_the_integrated_motion() {
+    // The check: six free directions (the spins) whose momentum stays zero and whose motion
+    // changes no force. Measured: mismatch 2.0e-10, output change 1.6e-13.
+    let mut outputs = upper_forces(&Exact);
+    let free = free_motion(&Exact, 0.0, Exact.info().q0, &mut outputs).unwrap();
+    assert_eq!(free.dof, 6);
+    assert!(free.acceleration_mismatch < 1e-8, "{free:?}");
+    assert!(free.output_change < 1e-10, "{free:?}");
+    let platform = Exact.info().body_index("platform").unwrap();
+    assert!(!free.moved_bodies.contains(&platform));
+
+    // HHT converges to the kinematic path at second order. Measured: 4.0e-9 N at h = 2e-4 s,
+    // 9.8e-10 N at 1e-4 s (ratio 4.1); the platform pose agrees to 8.9e-14.
+    let kinematic = scenario::kinematic(&options(Formulation::Exact, 0.0)).unwrap();
+    let coarse = scenario::simulate(&options(Formulation::Exact, 2e-4)).unwrap();
+    let fine = scenario::simulate(&options(Formulation::Exact, 1e-4)).unwrap();
+    let (e2, e1) = (
+        force_difference(&coarse, &kinematic),
+        force_difference(&fine, &kinematic),
+    );
+    assert!(e1 < 1.5e-9, "h = 1e-4: {e1:e} N");
+    assert!((3.0..5.0).contains(&(e2 / e1)), "{e2:e} / {e1:e}");
+    let pose = fine
+        .max_difference(&kinematic, |r, k| &r.platform[k])
+        .unwrap()
+        .0;
+    assert!(pose < 1e-12, "{pose:e}");
+
+    // The integrated legs do not spin: ω · (leg axis) goes to zero with the step in the HHT
+    // runs (measured 2.9e-5 and 1.4e-5 rad/s: first order, HHT's velocity error in a
+    // direction nothing constrains), and is zero on the kinematic path (4e-13 rad/s), while
+    // the legs swing at up to 0.3 rad/s.
+    let spin = |run: &Run| {
+        let info = Exact.info();
+        let (mut spin, mut swing) = (0.0f64, 0.0f64);
+        for (q, qd) in run.q.iter().zip(&run.qd) {
+            for b in info.bodies.iter().filter(|b| b.name != "platform") {
+                let w = angular_velocity(b, q, qd).unwrap();
+                let axis = rotation_matrix(b, q).unwrap().column(1).into_owned();
+                spin = spin.max(w.dot(&axis).abs());
+                swing = swing.max(w.norm());
+            }
+        }
+        (spin, swing)
+    };
+    let (s0, swing) = spin(&kinematic);
+    let (s2, s1) = (spin(&coarse).0, spin(&fine).0);
+    assert!(s0 < 1e-11 && swing > 0.1, "spin {s0:e}, swing {swing}");
+    assert!(
+        s1 < 3e-5 && (1.7..2.3).contains(&(s2 / s1)),
+        "{s2:e} {s1:e}"
+    );
+}
+
+#[test]
+fn the_paper_formulation_drives_the_spins_so_it_must_be_integrated() {
+    // The diagonal Euler-rate mass matrix couples the spins to the swing: the check sees
+    // momentum (measured mismatch 1.8e-2) ...
+    let mut outputs = upper_forces(&Paper);
+    let free = free_motion(&Paper, 0.0, Paper.info().q0, &mut outputs).unwrap();
+    assert!(
+        free.acceleration_mismatch > 1e3 * MAX_ACCELERATION_MISMATCH,
+        "{free:?}"
+    );
+    assert!(!free.kinematic_is_exact(&[]));
+    // ... and rightly: followed kinematically anyway, its forces leave the integrated ones.
+    let kinematic = scenario::kinematic(&options(Formulation::Paper, 0.0)).unwrap();
+    let integrated = scenario::simulate(&options(Formulation::Paper, 1e-4)).unwrap();
+    let d = force_difference(&kinematic, &integrated);
+    assert!(d > 1e-4, "{d:e} N");
+}
