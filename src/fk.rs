@@ -43,6 +43,21 @@ pub struct Answer {
     pub wall: Duration,
 }
 
+/// Leg lengths run from joint centre to joint centre: zero or less would put a platform joint
+/// on or through its base joint, which no pose realizes.
+fn check_lengths(lengths: &[f64; 6]) -> Result<(), Error> {
+    match lengths.iter().find(|l| !l.is_finite() || **l <= 0.0) {
+        Some(&l) => Err(ScenarioError::Runtime(
+            symbody_runtime::Error::InvalidSetting {
+                name: "leg length",
+                value: l,
+                reason: "must be positive and finite (joint centre to joint centre)",
+            },
+        )),
+        None => Ok(()),
+    }
+}
+
 /// Continues the pose from the request's start along the straight line in leg-length space
 /// to its lengths, so the answer is on the start's assembly mode or an error says where a
 /// parallel singularity was in the way (path parameter `t` from 0 to 1).
@@ -52,6 +67,7 @@ pub fn solve<M: Mechanism + ?Sized>(p: &Platform<'_, M>, req: &Request) -> Resul
         None => p.pose(p.q0())?,
     };
     let lengths = req.lengths.unwrap_or_else(|| p.lengths_at(req.at));
+    check_lengths(&lengths)?;
     let legs = p.legs();
     let l0 = legs.lengths(&start);
     let clock = Instant::now();
@@ -72,6 +88,7 @@ pub fn all_modes<M: Mechanism + ?Sized>(
     lengths: &[f64; 6],
     current: Option<&Pose>,
 ) -> Result<(Modes, Option<usize>, Duration), Error> {
+    check_lengths(lengths)?;
     let clock = Instant::now();
     let modes = fk::assembly_modes(p.legs(), lengths)?;
     let wall = clock.elapsed();

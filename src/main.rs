@@ -204,6 +204,12 @@ fn main() -> ExitCode {
         } => {
             six("--lengths", lengths.as_deref())
                 .and_then(|l| {
+                    if let Some((i, x)) = l.iter().flatten().enumerate().find(|(_, x)| x.is_nan() || **x <= 0.0) {
+                        return Err(format!(
+                            "--lengths: leg {} is {x} m long; a leg's length runs from joint centre to joint centre and must be positive",
+                            i + 1
+                        ));
+                    }
                     let from = six("--from", from.as_deref())?;
                     Ok(fk::Request {
                         lengths: l,

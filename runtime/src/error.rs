@@ -46,9 +46,13 @@ pub enum Error {
         /// What was being solved, e.g. `"position analysis"` or `"HHT step"`.
         analysis: &'static str,
         time: f64,
-        /// Unscaled constraint residual |Φ|∞ at the last iterate.
+        /// Unscaled constraint residual |Φ|∞ at the iterate closest to Φ = 0 (the last one
+        /// when the analysis does not keep the best).
         residual: f64,
         iterations: usize,
+        /// The row where that residual is largest (what could not be satisfied), when the
+        /// analysis has constraint rows.
+        row: Option<ConstraintRow>,
     },
     /// HHT had to cut the step below the minimum without converging.
     StepSizeTooSmall {
@@ -130,11 +134,18 @@ impl fmt::Display for Error {
                 time,
                 residual,
                 iterations,
-            } => write!(
-                f,
-                "{analysis}: Newton iteration failed at t = {time:.6} s after {iterations} \
-                 iterations, constraint residual |Φ|∞ = {residual:e}"
-            ),
+                row,
+            } => {
+                write!(
+                    f,
+                    "{analysis}: Newton iteration failed at t = {time:.6} s after {iterations} \
+                     iterations, constraint residual |Φ|∞ = {residual:e}"
+                )?;
+                match row {
+                    Some(r) => write!(f, ", largest in {r}"),
+                    None => Ok(()),
+                }
+            }
             Error::StepSizeTooSmall {
                 time,
                 step,

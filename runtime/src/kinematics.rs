@@ -89,6 +89,13 @@ pub(crate) fn inf_norm(v: &[f64]) -> f64 {
     }
 }
 
+/// Index of the entry of largest magnitude.
+fn largest_row(v: &[f64]) -> usize {
+    (0..v.len())
+        .max_by(|&a, &b| v[a].abs().total_cmp(&v[b].abs()))
+        .unwrap_or(0)
+}
+
 /// `out = M v` from the mass nonzeros.
 pub(crate) fn mass_times(info: &MechanismInfo, mass: &[f64], v: &[f64], out: &mut [f64]) {
     out.fill(0.0);
@@ -181,7 +188,9 @@ impl<K: KktSolver> Kinematics<K> {
         let info = self.info;
         let tol = self.settings.position_tolerance;
         self.f.fill(0.0);
-        let mut residual = f64::NAN;
+        // The iterate closest to Φ = 0 and its worst row: what to report if Newton fails (a
+        // diverged last iterate would name an arbitrary row).
+        let mut best = (f64::INFINITY, 0usize);
         let mut polish = 0;
         for it in 0..=self.settings.max_iterations {
             mech.phi(q, t, &mut self.phi);
@@ -195,12 +204,15 @@ impl<K: KktSolver> Kinematics<K> {
                 redundant = redundant.max(v.abs());
                 self.phi[r as usize] = 0.0;
             }
-            residual = inf_norm(&self.phi);
+            let residual = inf_norm(&self.phi);
             if residual.is_nan() || nan {
                 return Err(Error::NotFinite {
                     time: t,
                     what: "constraint residual Φ in position analysis",
                 });
+            }
+            if residual < best.0 {
+                best = (residual, largest_row(&self.phi));
             }
             if residual <= tol {
                 if redundant <= tol {
@@ -237,8 +249,9 @@ impl<K: KktSolver> Kinematics<K> {
         Err(Error::NewtonFailed {
             analysis: "position analysis",
             time: t,
-            residual,
+            residual: best.0,
             iterations: self.settings.max_iterations,
+            row: Some(ConstraintRow::new(info, best.1)),
         })
     }
 

@@ -252,12 +252,14 @@ impl Failure {
                 time: f64::NAN,
                 residual,
                 iterations,
+                row: None,
             },
             Failure::Jumped { residual } => Error::NewtonFailed {
                 analysis: "forward kinematics",
                 time: f64::NAN,
                 residual,
                 iterations: 0,
+                row: None,
             },
         }
     }
