@@ -2,6 +2,8 @@
 //! dense-matrix utilities over the generated sparse outputs.
 #![allow(dead_code)]
 
+pub mod newton_euler;
+
 use nalgebra::{DMatrix, Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 use symbody_runtime::{BodyInfo, MechanismInfo, Rotation};
 
