@@ -2,6 +2,8 @@
 //! and at every output the body poses, every joint's reaction wrench, the driver efforts and
 //! the energy balance. Nothing here knows a particular mechanism.
 
+pub use symbody_codegen::diag::closest;
+
 use crate::output::write;
 use crate::plot::{draw, Panel};
 use crate::scenario::{output_count, ScenarioError};
@@ -132,34 +134,6 @@ pub fn find(name: &str) -> Result<&'static Entry, Error> {
             known.join(", ")
         ))
     })
-}
-
-/// The candidate a typo of `name` most likely meant: the nearest by edit distance, if it is
-/// a few edits away (anything farther is not worth suggesting).
-pub fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<&'a str> {
-    candidates
-        .map(|k| (edit_distance(k, name), k))
-        .filter(|&(d, k)| d <= 2.max(k.len() / 3))
-        .min()
-        .map(|(_, k)| k)
-}
-
-/// Levenshtein distance (insertions, deletions, substitutions) between `a` and `b`.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diag = row[0];
-        row[0] = i + 1;
-        for (j, &cb) in b.iter().enumerate() {
-            let next = (diag + usize::from(ca != cb))
-                .min(row[j] + 1)
-                .min(row[j + 1] + 1);
-            diag = row[j + 1];
-            row[j + 1] = next;
-        }
-    }
-    row[b.len()]
 }
 
 /// The mechanism of `entry` in formulation `f` (or its default), with an error naming the
@@ -560,14 +534,6 @@ mod tests {
 
     fn four_bar() -> &'static Entry {
         find("four_bar").expect("registered")
-    }
-
-    #[test]
-    fn edit_distance_counts_insertions_deletions_substitutions() {
-        assert_eq!(edit_distance("kitten", "sitting"), 3);
-        assert_eq!(edit_distance("four_bar", "fourbar"), 1);
-        assert_eq!(edit_distance("", "abc"), 3);
-        assert_eq!(edit_distance("bricard", "bricard"), 0);
     }
 
     #[test]

@@ -83,3 +83,69 @@ impl SourceMap<'_> {
         }
     }
 }
+
+/// The candidate a typo of `name` most likely meant: the nearest by edit distance, if it is a
+/// few edits away (anything farther is not worth suggesting).
+pub fn closest<'a>(name: &str, candidates: impl Iterator<Item = &'a str>) -> Option<&'a str> {
+    candidates
+        .map(|c| (edit_distance(name, c), c))
+        .filter(|(d, c)| *d <= 2.max(c.len() / 3))
+        .min()
+        .map(|(_, c)| c)
+}
+
+/// Levenshtein distance (insertions, deletions, substitutions) between `a` and `b`.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for i in 1..=a.len() {
+        let mut cur = vec![i; b.len() + 1];
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            cur[j] = (prev[j] + 1).min(cur[j - 1] + 1).min(prev[j - 1] + cost);
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+/// Help for an error of the TOML reader (`toml::de::Error::message`): the closest expected
+/// field for a misspelt one (serde lists them: "unknown field `x`, expected one of `a`, `b`").
+pub fn toml_error_help(message: &str) -> String {
+    if let Some(rest) = message.strip_prefix("unknown field `") {
+        let (got, expected) = rest.split_once('`').unwrap_or((rest, ""));
+        let names: Vec<&str> = expected.split('`').skip(1).step_by(2).collect();
+        return match closest(got, names.iter().copied()) {
+            Some(s) => format!("did you mean `{s}`?"),
+            None => "remove it, or use one of the expected fields listed".to_string(),
+        };
+    }
+    if message.contains("missing field") {
+        "add the missing field".to_string()
+    } else {
+        "fix the TOML syntax at this place".to_string()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn misspelt_fields_get_the_closest_expected_one() {
+        let m = "unknown field `stifness`, expected one of `name`, `stiffness`, `damping`";
+        assert_eq!(toml_error_help(m), "did you mean `stiffness`?");
+        let m = "unknown field `colour`, expected one of `name`, `mass`";
+        assert!(toml_error_help(m).starts_with("remove it"));
+        assert_eq!(
+            closest("sinn", ["sin", "cos", "sqrt"].into_iter()),
+            Some("sin")
+        );
+        assert_eq!(closest("xyz", ["sin", "cos"].into_iter()), None);
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+        assert_eq!(edit_distance("four_bar", "fourbar"), 1);
+        assert_eq!(edit_distance("", "abc"), 3);
+        assert_eq!(edit_distance("bricard", "bricard"), 0);
+    }
+}

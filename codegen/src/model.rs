@@ -312,13 +312,7 @@ pub fn load(file: &str, text: &str) -> Result<Model, Errors> {
     let raw: RawFile = toml::from_str(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
         let message = e.message().trim().to_string();
-        let help = if message.contains("missing field") {
-            "add the missing field"
-        } else if message.contains("unknown field") {
-            "check the spelling against the expected fields listed"
-        } else {
-            "fix the TOML syntax at this place"
-        };
+        let help = crate::diag::toml_error_help(&message);
         Errors(vec![map.diag(span, "the file", message, help)])
     })?;
     let mut v = Validator {

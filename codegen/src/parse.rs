@@ -28,6 +28,24 @@ impl ExprError {
 /// mechanism needs more.
 const MAX_POWI: i32 = 64;
 
+/// The callable names [`FUNC_HELP`] lists, for suggestions.
+const FUNC_NAMES: [&str; 14] = [
+    "sin",
+    "cos",
+    "tan",
+    "asin",
+    "acos",
+    "atan",
+    "atan2",
+    "exp",
+    "ln",
+    "sqrt",
+    "abs",
+    "powi",
+    "to_radians",
+    "to_degrees",
+];
+
 const FUNC_HELP: &str = "known functions: sin, cos, tan, asin, acos, atan, atan2, exp, ln, sqrt, abs, powi, to_radians, to_degrees; constant: pi";
 
 /// Parses `src` and builds it in `arena`; `resolve` maps a name to its node.
@@ -156,8 +174,13 @@ fn call(
             Ok(arena.mul(x, k))
         }
         _ => {
-            let f = Func::from_name(name)
-                .ok_or_else(|| ExprError::new(format!("unknown function `{name}`"), FUNC_HELP))?;
+            let f = Func::from_name(name).ok_or_else(|| {
+                let help = match crate::diag::closest(name, FUNC_NAMES.iter().copied()) {
+                    Some(s) => format!("did you mean `{s}`? {FUNC_HELP}"),
+                    None => FUNC_HELP.to_string(),
+                };
+                ExprError::new(format!("unknown function `{name}`"), help)
+            })?;
             arity(1)?;
             let x = build(arena, args[0], resolve)?;
             Ok(arena.call(f, x))

@@ -308,7 +308,28 @@ fn misspelt_field() {
         line_of(&text, "mas = 0.5"),
         "the file",
         "unknown field `mas`",
-        "check the spelling",
+        "did you mean `mass`?",
+    );
+}
+
+#[test]
+fn misspelt_force_type_and_function_suggest_the_closest() {
+    let (text, d) = single_error(r#"type = "spring""#, r#"type = "sprng""#);
+    check(
+        &d,
+        line_of(&text, "sprng"),
+        "force `coil`",
+        "unknown force type `sprng`",
+        "did you mean \"spring\"?",
+    );
+    let (text, d) = single_error("amp * sin(t)", "amp * sinn(t) + amp2");
+    // One cause, one error: the unknown function, not also the unknown name after it.
+    check(
+        &d,
+        line_of(&text, "sinn"),
+        "driver `act`",
+        "unknown function `sinn`",
+        "did you mean `sin`?",
     );
 }
 
@@ -1009,4 +1030,20 @@ fn random_mutations_never_panic() {
             Err(_) => panic!("case {case} panicked on:\n{text}"),
         }
     }
+}
+
+#[test]
+fn a_parameter_cycle_is_one_error_not_a_cascade() {
+    // `half` is used by joint `base`: the cycle must not also surface there as a NaN or an
+    // unknown name.
+    let (text, d) = single_error(
+        "half = 0.1\namp = 0.02",
+        "half = \"amp\"\namp = \"2 * half\"",
+    );
+    assert!(d.message.contains("depends on itself"), "{d}");
+    assert!(d.help.contains("break the cycle"), "{d}");
+    assert!(
+        d.line == line_of(&text, "half = \"amp\"") || d.line == line_of(&text, "amp = \"2"),
+        "{d}"
+    );
 }

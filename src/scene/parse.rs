@@ -51,35 +51,17 @@ pub fn load(file: &str, text: &str) -> Result<Scene, Errors> {
     let raw: RawScene = toml::from_str(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
         let message = e.message().trim().to_string();
-        Errors(vec![map.diag(
-            span,
-            "the scene",
-            &message,
-            toml_help(&message),
-        )])
+        let help = symbody_codegen::diag::toml_error_help(&message).replace(
+            "the TOML syntax at this place",
+            "the TOML at this place (docs/scenes.md lists every field)",
+        );
+        Errors(vec![map.diag(span, "the scene", &message, help)])
     })?;
     let mut errors = Vec::new();
     let scene = check(&map, raw, &mut errors);
     match scene {
         Some(s) if errors.is_empty() => Ok(s),
         _ => Err(Errors(errors)),
-    }
-}
-
-/// Help for a TOML or field error: the closest expected field for a misspelt one.
-fn toml_help(message: &str) -> String {
-    if let Some(rest) = message.strip_prefix("unknown field `") {
-        let (got, expected) = rest.split_once('`').unwrap_or((rest, ""));
-        let names: Vec<&str> = expected.split('`').skip(1).step_by(2).collect();
-        return match closest(got, names.iter().copied()) {
-            Some(s) => format!("did you mean `{s}`?"),
-            None => "remove it, or use one of the expected fields listed".to_string(),
-        };
-    }
-    if message.contains("missing field") {
-        "add the missing field".to_string()
-    } else {
-        "fix the TOML at this place (docs/scenes.md lists every field)".to_string()
     }
 }
 

@@ -55,7 +55,15 @@ impl Validator<'_> {
                         kind.span(),
                         &item,
                         format!("unknown force type `{other}`"),
-                        &format!("supported types: {FORCE_TYPES}"),
+                        &match super::values::closest(
+                            other,
+                            ["spring", "torsion", "force", "torque"].into_iter(),
+                        ) {
+                            Some(s) => {
+                                format!("did you mean \"{s}\"? supported types: {FORCE_TYPES}")
+                            }
+                            None => format!("supported types: {FORCE_TYPES}"),
+                        },
                     );
                     None
                 }
