@@ -1,13 +1,16 @@
 //! Work-precision report for the paper's scenario: wall time against error for a sweep of
-//! HHT step sizes and α, both formulations, each against a much finer reference run.
+//! HHT step sizes and α, both formulations, and the kinematic path (no integration), each
+//! against a reference: for the `exact` formulation the independent Newton–Euler inverse
+//! dynamics of tests/common/newton_euler.rs, for `paper` a much finer HHT run.
 //!
 //! `cargo run --release --bin work_precision [-- --runs N] [-- --quick]` writes
 //! `bench-results/work_precision.{csv,md,png}` and prints the Markdown table.
 //!
 //! Errors are maxima over common output times (every 0.04 s, which every step of the sweep
-//! divides, so every run lands exactly on them) of |run − reference|. The reference uses
-//! the same formulation and α with step [`REFERENCE_STEP`] and recovered reactions; its own
-//! error is estimated by comparing it with runs at half and twice its step. Each (step, α)
+//! divides, so every run lands exactly on them) of |run − reference|. The `paper` reference
+//! uses the same α with step [`REFERENCE_STEP`] and recovered reactions; its own error is
+//! estimated by comparing it with runs at half and twice its step (for `exact`, those runs
+//! are compared with the Newton–Euler reference too). Each (step, α)
 //! is run with both sources of forces: recovered (the saddle-point solve at each output
 //! state) and the integrator's own multipliers. The `paper` formulation runs over [0, 2.5] s
 //! only: its leg 6 spins into the Euler singularity at t ≈ 2.77 s (see tests/paper_scenario.rs).
@@ -16,8 +19,29 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use symbody::plot::{draw_log_log, LogSeries};
-use symbody::scenario::{simulate, Options, Reactions, Run};
+use symbody::scenario::{kinematic, simulate, Options, Reactions, Run};
 use symbody_runtime::Formulation;
+
+// The independent reference of the `exact` formulation, shared with the tests.
+#[allow(dead_code)]
+#[path = "../../tests/common/newton_euler.rs"]
+mod newton_euler;
+
+/// The Newton–Euler reference at the output times of the `exact` sweep, as a [`Run`].
+fn newton_euler_run() -> Run {
+    let n = (t_end(Formulation::Exact) / OUTPUT_STEP - 1e-9).ceil() as usize;
+    let mut run = Run::default();
+    for k in 0..=n {
+        let t = (k as f64 * OUTPUT_STEP).min(t_end(Formulation::Exact));
+        let f = newton_euler::paper_forces(t);
+        run.t.push(t);
+        run.platform.push(f.pose);
+        run.upper.push(f.upper);
+        run.lower.push(f.lower);
+        run.actuators.push(f.actuators);
+    }
+    run
+}
 
 /// Step sizes of the sweep (s); each divides [`OUTPUT_STEP`].
 const STEPS: [f64; 9] = [2e-2, 1e-2, 5e-3, 4e-3, 2.5e-3, 2e-3, 1e-3, 5e-4, 2e-4];
@@ -86,8 +110,17 @@ fn errors(r: &Run, reference: &Run) -> Result<Errors, String> {
 /// A reference's own check: errors of the runs at half and twice its step.
 type ReferenceCheck = (Formulation, f64, [Result<Errors, String>; 2]);
 
+/// How a row was solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Method {
+    Hht,
+    /// No integration (`step` is then the output spacing; `alpha` does not apply).
+    Kinematic,
+}
+
 /// One cell of the sweep.
 struct Row {
+    method: Method,
     formulation: Formulation,
     alpha: f64,
     reactions: Reactions,
@@ -139,20 +172,27 @@ fn main() {
 
     let mut rows = Vec::new();
     let mut reference_checks = Vec::new();
+    let independent = newton_euler_run();
     for formulation in [Formulation::Exact, Formulation::Paper] {
+        if formulation == Formulation::Exact {
+            rows.push(kinematic_row(&independent, runs));
+        }
         for &alpha in alphas {
-            let reference = simulate(&options(
-                formulation,
-                reference_step,
-                alpha,
-                Reactions::Recovered,
-            ))
-            .unwrap_or_else(|e| {
-                fail(&format!(
-                    "reference run ({}, α = {alpha}, h = {reference_step}) failed: {e}",
-                    formulation.name()
+            let reference = match formulation {
+                Formulation::Exact => independent.clone(),
+                Formulation::Paper => simulate(&options(
+                    formulation,
+                    reference_step,
+                    alpha,
+                    Reactions::Recovered,
                 ))
-            });
+                .unwrap_or_else(|e| {
+                    fail(&format!(
+                        "reference run ({}, α = {alpha}, h = {reference_step}) failed: {e}",
+                        formulation.name()
+                    ))
+                }),
+            };
             // The reference's own error, bounded by runs at half and twice its step.
             let check = |h: f64| {
                 simulate(&options(formulation, h, alpha, Reactions::Recovered))
@@ -187,6 +227,7 @@ fn main() {
                 }
                 walls.sort_by(f64::total_cmp);
                 let row = Row {
+                    method: Method::Hht,
                     formulation,
                     alpha,
                     reactions,
@@ -234,7 +275,12 @@ fn main() {
             ),
             points: rows
                 .iter()
-                .filter(|r| r.formulation == f && r.alpha == a && r.reactions == x)
+                .filter(|r| {
+                    r.method == Method::Hht
+                        && r.formulation == f
+                        && r.alpha == a
+                        && r.reactions == x
+                })
                 .filter_map(|r| {
                     r.outcome
                         .as_ref()
@@ -243,6 +289,23 @@ fn main() {
                 })
                 .collect(),
         })
+        .chain(std::iter::once(LogSeries {
+            secondary: false,
+            name: format!(
+                "exact (0..{:.2} s), kinematic path (no integration)",
+                t_end(Formulation::Exact)
+            ),
+            points: rows
+                .iter()
+                .filter(|r| r.method == Method::Kinematic)
+                .filter_map(|r| {
+                    r.outcome
+                        .as_ref()
+                        .ok()
+                        .map(|(_, e)| (r.median_wall(), e.force))
+                })
+                .collect(),
+        }))
         .collect();
     let png = dir.join("work_precision.png");
     draw_log_log(
@@ -257,14 +320,71 @@ fn main() {
     print!("{md}");
 }
 
+/// The kinematic path of the `exact` formulation at the sweep's output times.
+fn kinematic_row(reference: &Run, runs: usize) -> Row {
+    let opts = options(Formulation::Exact, OUTPUT_STEP, 0.0, Reactions::Recovered);
+    let mut walls = Vec::new();
+    let mut outcome = Err(String::from("not run"));
+    for _ in 0..runs {
+        match kinematic(&opts) {
+            Ok(r) => {
+                walls.push(r.wall.as_secs_f64());
+                outcome = errors(&r, reference).map(|e| (r, e));
+            }
+            Err(e) => {
+                outcome = Err(e.to_string());
+                break;
+            }
+        }
+    }
+    walls.sort_by(f64::total_cmp);
+    let row = Row {
+        method: Method::Kinematic,
+        formulation: Formulation::Exact,
+        alpha: 0.0,
+        reactions: Reactions::Recovered,
+        step: OUTPUT_STEP,
+        walls,
+        outcome,
+    };
+    match &row.outcome {
+        Ok((_, e)) => eprintln!(
+            "exact kinematic path: {:.1} ms; force err {:.2e} N",
+            row.median_wall() * 1e3,
+            e.force
+        ),
+        Err(m) => eprintln!("exact kinematic path: FAILED: {m}"),
+    }
+    row
+}
+
 fn fail(msg: &str) -> ! {
     eprintln!("error: {msg}");
     std::process::exit(2)
 }
 
+fn method_name(m: Method) -> &'static str {
+    match m {
+        Method::Hht => "hht",
+        Method::Kinematic => "kinematic",
+    }
+}
+
+/// Steps (or output times), Newton iterations (or factorizations) and factorizations.
+fn work(run: &Run) -> (usize, usize, usize) {
+    match run.kinematic {
+        Some(k) => (k.outputs, k.factorizations, k.factorizations),
+        None => (
+            run.stats.steps,
+            run.stats.newton_iterations,
+            run.stats.factorizations,
+        ),
+    }
+}
+
 fn csv(rows: &[Row], reference_step: f64) -> String {
     let mut s = String::from(
-        "formulation,alpha,reactions,step,t_end,reference_step,status,wall_ms_median,wall_ms_runs,steps,\
+        "method,formulation,alpha,reactions,step,t_end,reference_step,status,wall_ms_median,wall_ms_runs,steps,\
          newton_iterations,factorizations,rejected_steps,platform_position_err_m,\
          platform_angle_err_rad,leg1_force_err_N,actuator_err_N,real_time_factor,message\n",
     );
@@ -272,7 +392,8 @@ fn csv(rows: &[Row], reference_step: f64) -> String {
         let walls: Vec<String> = r.walls.iter().map(|w| format!("{:.3}", w * 1e3)).collect();
         let _ = write!(
             s,
-            "{},{},{},{},{:.6},{},",
+            "{},{},{},{},{},{:.6},{},",
+            method_name(r.method),
             r.formulation.name(),
             r.alpha,
             reactions_name(r.reactions),
@@ -287,9 +408,9 @@ fn csv(rows: &[Row], reference_step: f64) -> String {
                     "ok,{:.3},{},{},{},{},{},{:.3e},{:.3e},{:.3e},{:.3e},{:.1},",
                     r.median_wall() * 1e3,
                     walls.join(";"),
-                    run.stats.steps,
-                    run.stats.newton_iterations,
-                    run.stats.factorizations,
+                    work(run).0,
+                    work(run).1,
+                    work(run).2,
                     run.stats.rejected_steps,
                     e.position,
                     e.angle,
@@ -310,23 +431,33 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "Reference: same formulation and α, step {reference_step:e} s; outputs compared every \
-         {OUTPUT_STEP} s. Wall time: median of {runs} runs of the whole scenario (start, \
-         integration, recording). `exact` over [0, 2π], `paper` over [0, {PAPER_T_END}] s.\n"
+        "Reference: `exact`, the independent Newton–Euler inverse dynamics \
+         (tests/common/newton_euler.rs, analytic, zero leg spin); `paper`, the same α at step \
+         {reference_step:e} s. Outputs compared every {OUTPUT_STEP} s. Wall time: median of \
+         {runs} runs of the whole scenario (start, integration or kinematic solves, recording). \
+         `exact` over [0, 2π], `paper` over [0, {PAPER_T_END}] s. For the kinematic path, \
+         \"h\" is the output spacing, steps are output times and Newton counts factorizations.\n"
     );
     let _ = writeln!(
         s,
-        "| formulation | α | forces | h (s) | wall (ms) | × real time | steps | Newton | pose err (m / rad) | leg-1 force err (N) | actuator err (N) |"
+        "| method | formulation | α | forces | h (s) | wall (ms) | × real time | steps | Newton | pose err (m / rad) | leg-1 force err (N) | actuator err (N) |"
     );
-    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|");
+    let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|");
     for r in rows {
-        let head = format!(
-            "| {} | {} | {} | {:e} |",
-            r.formulation.name(),
-            r.alpha,
-            reactions_name(r.reactions),
-            r.step
-        );
+        let head = match r.method {
+            Method::Hht => format!(
+                "| HHT | {} | {} | {} | {:e} |",
+                r.formulation.name(),
+                r.alpha,
+                reactions_name(r.reactions),
+                r.step
+            ),
+            Method::Kinematic => format!(
+                "| kinematic | {} | – | saddle point | {:e} |",
+                r.formulation.name(),
+                r.step
+            ),
+        };
         match &r.outcome {
             Ok((run, e)) => {
                 let mark = if e.force <= FORCE_TARGET { " ✓" } else { "" };
@@ -335,8 +466,8 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
                     "{head} {:.1} | {:.0} | {} | {} | {:.1e} / {:.1e} | {:.1e}{mark} | {:.1e} |",
                     r.median_wall() * 1e3,
                     t_end(r.formulation) / r.median_wall(),
-                    run.stats.steps,
-                    run.stats.newton_iterations,
+                    work(run).0,
+                    work(run).1,
                     e.position,
                     e.angle,
                     e.force,
@@ -354,9 +485,10 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
     );
     let _ = writeln!(
         s,
-        "Reference check: runs at half ({:e} s) and twice ({:e} s) the reference step \
-         against the reference. Their differences bound the reference's own error; the \
-         references use recovered forces (the integrator's multipliers carry roundoff ∝ ε/(βh²)).\n",
+        "Reference check: runs at half ({:e} s) and twice ({:e} s) the `paper` reference step \
+         against the reference. For `paper` their differences bound the reference's own error \
+         (the references use recovered forces: the integrator's multipliers carry roundoff \
+         ∝ ε/(βh²)); for `exact` they show HHT converging to the Newton–Euler reference.\n",
         0.5 * reference_step,
         2.0 * reference_step
     );
@@ -395,7 +527,8 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
         let _ = writeln!(
             s,
             "\nFastest `exact` run over 2π with leg-1 force error ≤ {FORCE_TARGET:e} N: \
-             α = {}, {} forces, h = {:e} s, {:.1} ms ({:.0}× real time; target ≥ 100×, ≤ 63 ms).",
+             {}, α = {}, {} forces, h = {:e} s, {:.1} ms ({:.0}× real time; target ≥ 100×, ≤ 63 ms).",
+            method_name(b.method),
             b.alpha,
             reactions_name(b.reactions),
             b.step,
