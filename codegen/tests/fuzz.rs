@@ -4,7 +4,7 @@
 //! (`tests/fuzz_regressions/`) is replayed.
 
 use std::path::Path;
-use symbody_codegen::fuzz::{mutate, run_one, Outcome, Rng};
+use symbody_codegen::fuzz::{mutate, run_one, structured, Outcome, Rng};
 
 #[test]
 fn mutated_mechanism_files_never_panic() {
@@ -40,6 +40,21 @@ fn mutated_mechanism_files_never_panic() {
         outcomes[Outcome::Loaded as usize] + outcomes[Outcome::Generated as usize] > 100,
         "{outcomes:?}"
     );
+}
+
+#[test]
+fn random_structured_files_never_panic() {
+    let mut outcomes = [0usize; 4];
+    for i in 0..600u64 {
+        let mut rng = Rng(0x57a7 ^ i);
+        let text = structured(&mut rng);
+        let o = run_one(&text, true);
+        assert_ne!(o, Outcome::Panicked, "input {i} panicked:\n{text}");
+        outcomes[o as usize] += 1;
+    }
+    // Both fates again: degenerate files rejected, the others generated.
+    assert!(outcomes[Outcome::Rejected as usize] > 50, "{outcomes:?}");
+    assert!(outcomes[Outcome::Generated as usize] > 50, "{outcomes:?}");
 }
 
 #[test]

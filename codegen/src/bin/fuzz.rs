@@ -1,13 +1,14 @@
 //! `cargo run --release -p symbody-codegen --bin fuzz -- [--inputs N] [--seed S]
-//! [--generate-every K]`: mutates the shipped mechanism files N times (default 10⁶), runs every
-//! mutant through `load` and one loaded mutant in K (default 1000) through all of `generate`,
-//! and reports throughput and any panic. Inputs that panic are written to
+//! [--generate-every K]`: N inputs (default 10⁶), three in four mutants of the shipped mechanism
+//! files and one in four a random structured file; every input goes through `load`, and one
+//! loaded mutant in K (default 1000) and one loaded structured file in 20 through all of
+//! `generate`; reports throughput and any panic. Inputs that panic are written to
 //! `codegen/tests/fuzz_regressions/`, where `cargo test` replays them.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
-use symbody_codegen::fuzz::{mutate, run_one, Outcome, Rng};
+use symbody_codegen::fuzz::{mutate, run_one, structured, Outcome, Rng};
 
 fn arg(args: &[String], name: &str, default: u64) -> u64 {
     args.iter()
@@ -48,6 +49,8 @@ fn main() {
     std::panic::set_hook(Box::new(|_| {}));
     let counts: [AtomicUsize; 4] = Default::default();
     let loaded_seen = AtomicUsize::new(0);
+    let structured_seen = AtomicUsize::new(0);
+    let structured_loaded = AtomicUsize::new(0);
     let next = AtomicUsize::new(0);
     let start = Instant::now();
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
@@ -59,17 +62,31 @@ fn main() {
                     break;
                 }
                 let mut rng = Rng(seed.wrapping_mul(0x1000_0000_01b3) ^ i as u64);
-                let (name, text) = &files[rng.below(files.len())];
-                let mutant = mutate(text, &mut rng);
+                let is_structured = i % 4 == 3;
+                let (name, mutant) = if is_structured {
+                    ("structured", structured(&mut rng))
+                } else {
+                    let (name, text) = &files[rng.below(files.len())];
+                    (name.as_str(), mutate(text, &mut rng))
+                };
                 let mut outcome = run_one(&mutant, false);
-                if outcome == Outcome::Loaded
-                    && loaded_seen
+                // Structured files are small and reach generation's checks: generate more.
+                let full = if is_structured {
+                    structured_seen
+                        .fetch_add(1, Ordering::Relaxed)
+                        .is_multiple_of(20)
+                } else {
+                    loaded_seen
                         .fetch_add(1, Ordering::Relaxed)
                         .is_multiple_of(every)
-                {
+                };
+                if outcome == Outcome::Loaded && full {
                     outcome = run_one(&mutant, true);
                 }
                 counts[outcome as usize].fetch_add(1, Ordering::Relaxed);
+                if is_structured && outcome != Outcome::Rejected {
+                    structured_loaded.fetch_add(1, Ordering::Relaxed);
+                }
                 if outcome == Outcome::Panicked {
                     std::fs::create_dir_all(&out).ok();
                     let path = out.join(format!("{name}_{seed}_{i}.toml"));
@@ -98,6 +115,11 @@ fn main() {
         c(Outcome::Loaded) + c(Outcome::Generated),
         c(Outcome::Generated),
         c(Outcome::Panicked)
+    );
+    println!(
+        "  structured files {}: {} loaded",
+        inputs / 4,
+        structured_loaded.load(Ordering::Relaxed)
     );
     if c(Outcome::Panicked) > 0 {
         std::process::exit(1);
