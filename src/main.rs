@@ -48,6 +48,20 @@ enum ReactionsArg {
     Integrator,
 }
 
+/// Where a run writes, and what besides the CSVs.
+#[derive(clap::Args)]
+struct Files {
+    /// Output folder.
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// Skip the PNG figures.
+    #[arg(long)]
+    no_plots: bool,
+    /// Also write <out>/view.html: a self-contained 3D animation of the run.
+    #[arg(long)]
+    html: bool,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// List every generated mechanism: sizes, redundant rows, degrees of freedom.
@@ -78,15 +92,8 @@ enum Command {
         /// (`integrator`).
         #[arg(long, value_enum)]
         reactions: Option<ReactionsArg>,
-        /// Output folder.
-        #[arg(long, default_value = "out")]
-        out: PathBuf,
-        /// Skip the PNG figures.
-        #[arg(long)]
-        no_plots: bool,
-        /// Also write <out>/view.html: a self-contained 3D animation of the run.
-        #[arg(long)]
-        html: bool,
+        #[command(flatten)]
+        files: Files,
     },
     /// Run a scene file (scenes/<name>.toml): the mechanism, time span and outputs it names,
     /// solved by the cheapest exact path — kinematic (no integration) when the drivers fix
@@ -95,15 +102,8 @@ enum Command {
     Run {
         /// The scene file, e.g. scenes/paper.toml.
         scene: PathBuf,
-        /// Output folder.
-        #[arg(long, default_value = "out")]
-        out: PathBuf,
-        /// Skip the PNG figures.
-        #[arg(long)]
-        no_plots: bool,
-        /// Also write <out>/view.html: a self-contained 3D animation of the run.
-        #[arg(long)]
-        html: bool,
+        #[command(flatten)]
+        files: Files,
     },
     /// Forward kinematics of a platform held by six legs of driven length: the pose reached
     /// by continuation from a known pose, with its leg-length residual and the condition
@@ -154,9 +154,7 @@ fn main() -> ExitCode {
             alpha,
             output_step,
             reactions,
-            out,
-            no_plots,
-            html,
+            files,
         } => match mechanism {
             Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
             Some(name) => {
@@ -168,7 +166,7 @@ fn main() -> ExitCode {
                     alpha: alpha.unwrap_or(defaults.alpha),
                     output_step,
                 };
-                simulate_named(&name, &opts, &out, !no_plots, html)
+                simulate_named(&name, &opts, &files.out, !files.no_plots, files.html)
             }
             None => {
                 let defaults = Options::default();
@@ -183,15 +181,12 @@ fn main() -> ExitCode {
                         Some(ReactionsArg::Recovered) | None => Reactions::Recovered,
                     },
                 };
-                simulate(&opts, &out, !no_plots, html)
+                simulate(&opts, &files.out, !files.no_plots, files.html)
             }
         },
-        Command::Run {
-            scene,
-            out,
-            no_plots,
-            html,
-        } => run_scene(&scene, &out, !no_plots, html),
+        Command::Run { scene, files } => {
+            run_scene(&scene, &files.out, !files.no_plots, files.html)
+        }
         Command::Fk {
             mechanism,
             lengths,

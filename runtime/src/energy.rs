@@ -12,7 +12,7 @@
 //! two valid λ differ by `δλ` with `Φqᵀδλ = 0`, and `Φt = −Φq v` for a consistent `v`.
 
 use crate::error::{check_len, Error};
-use crate::kinematics::Kinematics;
+use crate::kinematics::{kinetic_energy, Kinematics};
 use crate::kkt::{KktSolver, SchurKkt};
 use crate::mechanism::{Mechanism, MechanismInfo};
 use crate::quadrature::RunningIntegral;
@@ -113,16 +113,7 @@ impl<K: KktSolver> EnergyMeter<K> {
             .map(|(l, p)| l * p)
             .sum();
         let power = constraint_power + mech.power_nc(q, qd, t);
-        let mut kinetic = 0.0;
-        for ((&r, &c), &m) in info
-            .mass_rows
-            .iter()
-            .zip(info.mass_cols)
-            .zip(self.kin.mass())
-        {
-            kinetic += qd[r as usize] * m * qd[c as usize];
-        }
-        let kinetic = 0.5 * kinetic;
+        let kinetic = kinetic_energy(info, self.kin.mass(), qd);
         let potential = mech.potential(q);
         if !(kinetic.is_finite() && potential.is_finite() && power.is_finite()) {
             return Err(Error::NotFinite {

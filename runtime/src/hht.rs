@@ -511,17 +511,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
 
     /// Kinetic energy ½ q̇ᵀ M(q) q̇ at the current state.
     pub fn kinetic_energy(&self) -> f64 {
-        let info = self.info;
-        let mut t = 0.0;
-        for ((&r, &c), &m) in info
-            .mass_rows
-            .iter()
-            .zip(info.mass_cols)
-            .zip(&self.mass_state)
-        {
-            t += self.qd[r as usize] * m * self.qd[c as usize];
-        }
-        0.5 * t
+        crate::kinematics::kinetic_energy(self.info, &self.mass_state, &self.qd)
     }
 
     /// Kinetic plus potential energy at the current state.

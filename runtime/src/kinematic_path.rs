@@ -12,7 +12,7 @@
 use nalgebra::DMatrix;
 
 use crate::error::{check_len, Error};
-use crate::kinematics::{mass_times, KinematicSettings, Kinematics};
+use crate::kinematics::{kinetic_energy, mass_times, KinematicSettings, Kinematics};
 use crate::kkt::{KktSolver, SchurKkt};
 use crate::mechanism::{Mechanism, MechanismInfo};
 
@@ -204,17 +204,7 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
     }
     /// Kinetic plus potential energy at the current state (J).
     pub fn energy(&self) -> f64 {
-        let info = self.mech.info();
-        let mut kinetic = 0.0;
-        for ((&r, &c), &m) in info
-            .mass_rows
-            .iter()
-            .zip(info.mass_cols)
-            .zip(self.kin.mass())
-        {
-            kinetic += self.qd[r as usize] * m * self.qd[c as usize];
-        }
-        0.5 * kinetic + self.mech.potential(&self.q)
+        kinetic_energy(self.mech.info(), self.kin.mass(), &self.qd) + self.mech.potential(&self.q)
     }
 }
 

@@ -96,6 +96,15 @@ fn largest_row(v: &[f64]) -> usize {
         .unwrap_or(0)
 }
 
+/// `½ q̇ᵀ M q̇` from the mass nonzeros.
+pub(crate) fn kinetic_energy(info: &MechanismInfo, mass: &[f64], qd: &[f64]) -> f64 {
+    let mut t = 0.0;
+    for ((&r, &c), &m) in info.mass_rows.iter().zip(info.mass_cols).zip(mass) {
+        t += qd[r as usize] * m * qd[c as usize];
+    }
+    0.5 * t
+}
+
 /// `out = M v` from the mass nonzeros.
 pub(crate) fn mass_times(info: &MechanismInfo, mass: &[f64], v: &[f64], out: &mut [f64]) {
     out.fill(0.0);
@@ -392,30 +401,11 @@ impl<K: KktSolver> Kinematics<K> {
         qdd: &mut [f64],
         lambda: &mut [f64],
     ) -> Result<(), Error> {
-        self.check_mech(mech)?;
-        let (n, m) = (self.info.n_coords, self.info.n_constraints);
-        check_len("q", n, q.len())?;
-        check_len("qd", n, qd.len())?;
-        check_len("qdd", n, qdd.len())?;
-        check_len("lambda", m, lambda.len())?;
-        let info = self.info;
+        self.check_state(mech, q, qd, qdd, lambda)?;
         mech.phi_q(q, t, &mut self.phi_q);
-        mech.gamma(q, qd, t, &mut self.gamma);
         mech.mass(q, &mut self.mass);
-        mech.force(q, qd, t, &mut self.force);
-        self.kkt
-            .factor(&self.mass, 1.0, &self.phi_q)
-            .map_err(|e| e.to_error(info, t))?;
-        self.kkt
-            .solve(&self.force, &self.gamma, qdd, lambda)
-            .map_err(|e| e.to_error(info, t))?;
-        if inf_norm(qdd).is_nan() || inf_norm(lambda).is_nan() {
-            return Err(Error::NotFinite {
-                time: t,
-                what: "acceleration analysis",
-            });
-        }
-        Ok(())
+        self.factor(t)?;
+        self.solve_acceleration(mech, t, q, qd, qdd, lambda)
     }
 
     /// The velocity of least kinetic energy, then accelerations and multipliers, at one
@@ -431,35 +421,72 @@ impl<K: KktSolver> Kinematics<K> {
         qdd: &mut [f64],
         lambda: &mut [f64],
     ) -> Result<(), Error> {
+        self.check_state(mech, q, qd, qdd, lambda)?;
+        mech.phi_q(q, t, &mut self.phi_q);
+        mech.phi_t(q, t, &mut self.phi_t);
+        mech.mass(q, &mut self.mass);
+        self.factor(t)?;
+        self.f.fill(0.0);
+        for (g, &p) in self.g.iter_mut().zip(&self.phi_t) {
+            *g = -p;
+        }
+        let info = self.info;
+        self.kkt
+            .solve(&self.f, &self.g, qd, &mut self.mu)
+            .map_err(|e| e.to_error(info, t))?;
+        if inf_norm(qd).is_nan() {
+            return Err(Error::NotFinite {
+                time: t,
+                what: "velocity analysis",
+            });
+        }
+        self.solve_acceleration(mech, t, q, qd, qdd, lambda)
+    }
+
+    fn check_state<M: Mechanism>(
+        &self,
+        mech: &M,
+        q: &[f64],
+        qd: &[f64],
+        qdd: &[f64],
+        lambda: &[f64],
+    ) -> Result<(), Error> {
         self.check_mech(mech)?;
         let (n, m) = (self.info.n_coords, self.info.n_constraints);
         check_len("q", n, q.len())?;
         check_len("qd", n, qd.len())?;
         check_len("qdd", n, qdd.len())?;
-        check_len("lambda", m, lambda.len())?;
+        check_len("lambda", m, lambda.len())
+    }
+
+    /// Factors `[M Φqᵀ; Φq 0]` from the stored M and Φq.
+    fn factor(&mut self, t: f64) -> Result<(), Error> {
         let info = self.info;
-        mech.phi_q(q, t, &mut self.phi_q);
-        mech.phi_t(q, t, &mut self.phi_t);
-        mech.mass(q, &mut self.mass);
         self.kkt
             .factor(&self.mass, 1.0, &self.phi_q)
-            .map_err(|e| e.to_error(info, t))?;
-        self.f.fill(0.0);
-        for (g, &p) in self.g.iter_mut().zip(&self.phi_t) {
-            *g = -p;
-        }
-        self.kkt
-            .solve(&self.f, &self.g, qd, &mut self.mu)
-            .map_err(|e| e.to_error(info, t))?;
+            .map_err(|e| e.to_error(info, t))
+    }
+
+    /// `[Q; γ]` at the state, solved with the current factorization.
+    fn solve_acceleration<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+        qdd: &mut [f64],
+        lambda: &mut [f64],
+    ) -> Result<(), Error> {
+        let info = self.info;
         mech.gamma(q, qd, t, &mut self.gamma);
         mech.force(q, qd, t, &mut self.force);
         self.kkt
             .solve(&self.force, &self.gamma, qdd, lambda)
             .map_err(|e| e.to_error(info, t))?;
-        if inf_norm(qd).is_nan() || inf_norm(qdd).is_nan() || inf_norm(lambda).is_nan() {
+        if inf_norm(qdd).is_nan() || inf_norm(lambda).is_nan() {
             return Err(Error::NotFinite {
                 time: t,
-                what: "velocity and acceleration analysis",
+                what: "acceleration analysis",
             });
         }
         Ok(())

@@ -210,22 +210,8 @@ fn main() {
                 .iter()
                 .flat_map(|r| steps.iter().map(move |s| (r, s)))
             {
-                let mut walls = Vec::new();
-                let mut outcome = Err(String::from("not run"));
-                for _ in 0..runs {
-                    match simulate(&options(formulation, step, alpha, reactions)) {
-                        Ok(r) => {
-                            walls.push(r.wall.as_secs_f64());
-                            outcome = errors(&r, &reference).map(|e| (r, e));
-                        }
-                        Err(e) => {
-                            // Deterministic: a failure repeats, so one is enough.
-                            outcome = Err(e.to_string());
-                            break;
-                        }
-                    }
-                }
-                walls.sort_by(f64::total_cmp);
+                let opts = options(formulation, step, alpha, reactions);
+                let (walls, outcome) = repeat(runs, &reference, || simulate(&opts));
                 let row = Row {
                     method: Method::Hht,
                     formulation,
@@ -320,24 +306,36 @@ fn main() {
     print!("{md}");
 }
 
-/// The kinematic path of the `exact` formulation at the sweep's output times.
-fn kinematic_row(reference: &Run, runs: usize) -> Row {
-    let opts = options(Formulation::Exact, OUTPUT_STEP, 0.0, Reactions::Recovered);
+/// `runs` runs of `run`: their sorted wall times and the last one's errors against
+/// `reference` (or the failure).
+fn repeat(
+    runs: usize,
+    reference: &Run,
+    run: impl Fn() -> Result<Run, symbody::scenario::ScenarioError>,
+) -> (Vec<f64>, Result<(Run, Errors), String>) {
     let mut walls = Vec::new();
     let mut outcome = Err(String::from("not run"));
     for _ in 0..runs {
-        match kinematic(&opts) {
+        match run() {
             Ok(r) => {
                 walls.push(r.wall.as_secs_f64());
                 outcome = errors(&r, reference).map(|e| (r, e));
             }
             Err(e) => {
+                // Deterministic: a failure repeats, so one is enough.
                 outcome = Err(e.to_string());
                 break;
             }
         }
     }
     walls.sort_by(f64::total_cmp);
+    (walls, outcome)
+}
+
+/// The kinematic path of the `exact` formulation at the sweep's output times.
+fn kinematic_row(reference: &Run, runs: usize) -> Row {
+    let opts = options(Formulation::Exact, OUTPUT_STEP, 0.0, Reactions::Recovered);
+    let (walls, outcome) = repeat(runs, reference, || kinematic(&opts));
     let row = Row {
         method: Method::Kinematic,
         formulation: Formulation::Exact,
