@@ -6,7 +6,7 @@
 
 use crate::diag::{Diagnostic, Errors};
 use crate::equations::System;
-use crate::expr::Var;
+use crate::expr::{Id, Var};
 use crate::legs::{self, Platform};
 use crate::model::Model;
 use nalgebra::{DMatrix, DVector};
@@ -182,12 +182,51 @@ fn non_finite(
     )]))
 }
 
+/// Emission writes every constant of the equations as a Rust literal, and a literal cannot be
+/// infinite or NaN: such a constant comes from numbers whose products overflow f64 (a spring
+/// of length 1e300 has ½kℓ² = ∞), and is reported here instead of failing in emission.
+fn non_finite_constants(sys: &System, file: &str) -> Result<(), Errors> {
+    let mut roots: Vec<Id> = [sys.phi.as_slice(), &sys.phi_t, &sys.gamma].concat();
+    roots.extend(sys.phi_q.iter().map(|e| e.2));
+    roots.extend([sys.potential, sys.power_nc]);
+    for d in &sys.dynamics {
+        roots.extend(d.mass.iter().map(|e| e.2));
+        roots.extend(&d.force);
+    }
+    let mut seen = vec![false; sys.arena.len()];
+    while let Some(id) = roots.pop() {
+        if std::mem::replace(&mut seen[id.index()], true) {
+            continue;
+        }
+        if let Some(c) = sys.arena.as_const(id) {
+            if !c.is_finite() {
+                return Err(Errors(vec![Diagnostic {
+                    file: file.to_string(),
+                    line: 1,
+                    column: 1,
+                    item: "the file".to_string(),
+                    message: format!(
+                        "a constant of the equations is {c}: the mechanism's numbers overflow f64 \
+                         when multiplied (for example ½·stiffness·length² of a spring)"
+                    ),
+                    help: "check the magnitudes of points, lengths, masses, stiffnesses and \
+                           parameters: their products must stay below 1.8e308"
+                        .to_string(),
+                }]));
+            }
+        }
+        roots.extend(sys.arena.node(id).children());
+    }
+    Ok(())
+}
+
 /// Assembles the initial pose at t = 0 and analyses Φq there.
 pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Errors> {
     let eval = Eval { sys };
     let q_file = model.q0();
     let mut q = q_file.clone();
     non_finite(model, sys, &eval, &q, file)?;
+    non_finite_constants(sys, file)?;
     let mut phi = eval.phi(&q);
     let mut warnings = Vec::new();
     if phi.amax() > CONSISTENT {

@@ -1047,3 +1047,12 @@ fn a_parameter_cycle_is_one_error_not_a_cascade() {
         "{d}"
     );
 }
+
+#[test]
+fn numbers_whose_products_overflow_are_an_error_not_a_panic() {
+    // Found by the structured fuzzer: a spring 1e300 long has ½kℓ² = ∞ in its potential, and
+    // emitting that constant as a Rust literal panicked.
+    let (_, d) = single_error("at2 = [0.0, 0.3, 0.0]", "at2 = [0.0, 1e300, 0.0]");
+    assert!(d.message.contains("overflow f64"), "{d}");
+    assert!(d.help.contains("1.8e308"), "{d}");
+}
