@@ -277,10 +277,7 @@ fn main() {
         })
         .chain(std::iter::once(LogSeries {
             secondary: false,
-            name: format!(
-                "exact (0..{:.2} s), kinematic path (no integration)",
-                t_end(Formulation::Exact)
-            ),
+            name: "exact, kinematic path (no integration)".to_string(),
             points: rows
                 .iter()
                 .filter(|r| r.method == Method::Kinematic)
@@ -292,6 +289,9 @@ fn main() {
                 })
                 .collect(),
         }))
+        .chain(mujoco_series(
+            &root.join("benches/peers/mujoco_stewart.csv"),
+        ))
         .collect();
     let png = dir.join("work_precision.png");
     draw_log_log(
@@ -354,6 +354,65 @@ fn kinematic_row(reference: &Run, runs: usize) -> Row {
         Err(m) => eprintln!("exact kinematic path: FAILED: {m}"),
     }
     row
+}
+
+/// MuJoCo's points from the peer harness's own run (`benches/peers/mujoco_stewart.py`, which
+/// times symbody beside it; not rerun here): one series per solver setting, wall time against
+/// the leg-1 force error. None when the file is absent.
+fn mujoco_series(csv: &std::path::Path) -> Vec<LogSeries> {
+    let Ok(text) = std::fs::read_to_string(csv) else {
+        return Vec::new();
+    };
+    let mut lines = text.lines();
+    let header = split_csv(lines.next().unwrap_or(""));
+    let col = |name: &str| header.iter().position(|h| h == name);
+    let (Some(engine), Some(config), Some(wall), Some(err)) = (
+        col("engine"),
+        col("config"),
+        col("wall_median_ms"),
+        col("err_leg1_N"),
+    ) else {
+        return Vec::new();
+    };
+    let mut series: Vec<LogSeries> = Vec::new();
+    for fields in lines.map(split_csv) {
+        let (Some(e), Some(c)) = (fields.get(engine), fields.get(config)) else {
+            continue;
+        };
+        let point = fields
+            .get(wall)
+            .zip(fields.get(err))
+            .and_then(|(w, x)| Some((w.parse::<f64>().ok()? * 1e-3, x.parse::<f64>().ok()?)));
+        let (true, Some(point)) = (e.starts_with("MuJoCo"), point) else {
+            continue;
+        };
+        // "A: Euler, τ=2h, ζ=1, d=0.9999 (…)" → "MuJoCo A: Euler, τ=2h, ζ=1": the legend is narrow.
+        let short: Vec<&str> = c.split(", ").take(3).collect();
+        let name = format!("MuJoCo {}", short.join(", "));
+        match series.iter_mut().find(|s| s.name == name) {
+            Some(s) => s.points.push(point),
+            None => series.push(LogSeries {
+                secondary: true,
+                name,
+                points: vec![point],
+            }),
+        }
+    }
+    series
+}
+
+/// The fields of one CSV line; double-quoted fields may hold commas.
+fn split_csv(line: &str) -> Vec<String> {
+    let (mut fields, mut field, mut quoted) = (Vec::new(), String::new(), false);
+    for ch in line.chars() {
+        match ch {
+            '"' => quoted = !quoted,
+            ',' if !quoted => fields.push(std::mem::take(&mut field)),
+            _ => field.push(ch),
+        }
+    }
+    fields.push(field);
+    fields
 }
 
 fn fail(msg: &str) -> ! {
