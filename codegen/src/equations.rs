@@ -275,20 +275,7 @@ pub fn build(model: &Model) -> System {
     }
 
     let n_coords = model.n_coords();
-    let phi_q = jacobian(&mut a, &phi, n_coords);
-    let one = a.constant(1.0);
-    let phi_t = a.derivative(&phi, &|v| (v == Var::T).then_some(one));
-    let gamma = {
-        let qd: Vec<Id> = (0..n_coords).map(|i| a.var(Var::Qd(i as u32))).collect();
-        let seed = |v: Var| match v {
-            Var::Q(i) => Some(qd[i as usize]),
-            Var::T => Some(one),
-            Var::Qd(_) => None,
-        };
-        let phi_dot = a.derivative(&phi, &seed);
-        let phi_ddot = a.derivative(&phi_dot, &seed);
-        phi_ddot.into_iter().map(|x| a.neg(x)).collect()
-    };
+    let (phi_q, phi_t, gamma) = derivatives(&mut a, &phi, n_coords);
     let loads = crate::loads::build(&mut a, model, &bodies);
     let dynamics = model
         .formulations
@@ -325,6 +312,23 @@ pub fn build(model: &Model) -> System {
         driver_signs,
         normalized_bodies,
     }
+}
+
+/// Φq, Φt and γ = −D²Φ[(q̇,1),(q̇,1)] of the rows `phi` in `n_coords` coordinates (decision 3).
+pub fn derivatives(a: &mut Arena, phi: &[Id], n_coords: usize) -> (Vec<Entry>, Vec<Id>, Vec<Id>) {
+    let phi_q = jacobian(a, phi, n_coords);
+    let one = a.constant(1.0);
+    let phi_t = a.derivative(phi, &|v| (v == Var::T).then_some(one));
+    let qd: Vec<Id> = (0..n_coords).map(|i| a.var(Var::Qd(i as u32))).collect();
+    let seed = |v: Var| match v {
+        Var::Q(i) => Some(qd[i as usize]),
+        Var::T => Some(one),
+        Var::Qd(_) => None,
+    };
+    let phi_dot = a.derivative(phi, &seed);
+    let phi_ddot = a.derivative(&phi_dot, &seed);
+    let gamma = phi_ddot.into_iter().map(|x| a.neg(x)).collect();
+    (phi_q, phi_t, gamma)
 }
 
 /// Structural nonzeros of ∂rows/∂q, row-major. Each coordinate is differentiated once over

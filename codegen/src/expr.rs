@@ -492,6 +492,32 @@ impl Arena {
     }
 
     /// The variables each root depends on structurally, sorted.
+    /// Every root rebuilt with each variable `v` replaced by `map(v)` (kept where `None`):
+    /// the substitution a reduction pass performs. Nodes are rebuilt through the simplifying
+    /// constructors, so substituted constants fold.
+    pub fn substitute(&mut self, roots: &[Id], map: &dyn Fn(Var) -> Option<Id>) -> Vec<Id> {
+        let mark = self.reachable(roots);
+        let mut new: Vec<Id> = (0..mark.len()).map(|i| Id(i as u32)).collect();
+        for i in 0..mark.len() {
+            if !mark[i] {
+                continue;
+            }
+            let r = |x: Id| new[x.index()];
+            new[i] = match self.nodes[i] {
+                Node::Const(_) => Id(i as u32),
+                Node::Var(v) => map(v).unwrap_or(Id(i as u32)),
+                Node::Add(a, b) => self.add(r(a), r(b)),
+                Node::Mul(a, b) => self.mul(r(a), r(b)),
+                Node::Neg(a) => self.neg(r(a)),
+                Node::Recip(a) => self.recip(r(a)),
+                Node::Powi(a, n) => self.powi(r(a), n),
+                Node::Atan2(y, x) => self.atan2(r(y), r(x)),
+                Node::Call(f, a) => self.call(f, r(a)),
+            };
+        }
+        roots.iter().map(|r| new[r.index()]).collect()
+    }
+
     pub fn variables(&self, root: Id) -> Vec<Var> {
         let mark = self.reachable(&[root]);
         let mut vars: Vec<Var> = mark

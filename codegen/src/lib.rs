@@ -6,6 +6,7 @@
 //! [`primitives`], loads from [`loads`], built and differentiated on the [`expr`] DAG) →
 //! [`assembly`] (initial pose, rank, redundant rows, and [`legs`]: a six-leg platform for
 //! forward kinematics) → [`emit`] (chunked straight-line functions) → [`rust`] (the module).
+//! [`reduce`] is a pass between equations and emission: substitution of rows qᵢ − qⱼ − c(t).
 
 // `!(x > tol)` is used on purpose: unlike `x <= tol` it also rejects NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
@@ -23,6 +24,7 @@ pub mod loads;
 pub mod model;
 pub mod parse;
 pub mod primitives;
+pub mod reduce;
 pub mod rust;
 
 pub use assembly::Report;
