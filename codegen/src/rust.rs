@@ -3,7 +3,7 @@
 
 use crate::assembly::Assembly;
 use crate::emit::{self, Function, Input, Output};
-use crate::equations::{Entry, System};
+use crate::equations::{Dynamics, Entry, System};
 use crate::expr::Id;
 use crate::model::{DriverTarget, Formulation, JointKind, Model, Rotation};
 use proc_macro2::{Ident, Span, TokenStream};
@@ -117,82 +117,171 @@ fn header(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
 }
 
 /// Generates the module source for `model`, read from `source` (a path shown in the header).
+const QT: &[Input] = &[Input::Q, Input::T];
+const QQDT: &[Input] = &[Input::Q, Input::Qd, Input::T];
+const Q: &[Input] = &[Input::Q];
+
+/// One emitted function of `sys`.
+fn function(
+    sys: &System,
+    name: &str,
+    doc: &str,
+    inputs: &[Input],
+    outputs: Vec<Output<'_>>,
+) -> TokenStream {
+    emit::function(
+        &sys.arena,
+        &Function {
+            name,
+            doc,
+            inputs,
+            outputs,
+            n_coords: sys.n_coords,
+        },
+    )
+}
+
+/// Φ, Φq, Φt, γ, their fused evaluation, the potential and the non-conservative power.
+fn kinematic_functions(sys: &System) -> Vec<TokenStream> {
+    let phi_q_vals = values(&sys.phi_q);
+    let (pq_rows, _) = pattern(&sys.phi_q);
+    let row_index: Vec<u32> = (0..sys.n_constraints as u32).collect();
+    let pot = [sys.potential];
+    let power = [sys.power_nc];
+    vec![
+        function(
+            sys,
+            "phi",
+            " Constraint residual Φ(q, t).",
+            QT,
+            vec![Output::new("out", &sys.phi)],
+        ),
+        function(
+            sys,
+            "phi_q",
+            " Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.",
+            QT,
+            vec![Output::new("out", &phi_q_vals)],
+        ),
+        function(
+            sys,
+            "phi_t",
+            " Partial time derivative Φt(q, t).",
+            QT,
+            vec![Output::new("out", &sys.phi_t)],
+        ),
+        function(
+            sys,
+            "gamma",
+            " Acceleration right-hand side γ(q, q̇, t) = −D²Φ[(q̇,1),(q̇,1)].",
+            QQDT,
+            vec![Output::new("out", &sys.gamma)],
+        ),
+        function(
+            sys,
+            "eval_kinematics",
+            " Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.",
+            QQDT,
+            vec![
+                Output::by_rows("phi", &sys.phi, &row_index),
+                Output::by_rows("phi_q", &phi_q_vals, &pq_rows),
+                Output::by_rows("phi_t", &sys.phi_t, &row_index),
+                Output::by_rows("gamma", &sys.gamma, &row_index),
+            ],
+        ),
+        function(
+            sys,
+            "potential_into",
+            " Potential energy of gravity and springs, written to `out[0]`.",
+            Q,
+            vec![Output::new("out", &pot)],
+        ),
+        function(
+            sys,
+            "power_nc_into",
+            " Power of the non-conservative loads, written to `out[0]`.",
+            QQDT,
+            vec![Output::new("out", &power)],
+        ),
+    ]
+}
+
+/// M, Q and their fused evaluation with Φ and Φq, for one formulation.
+fn dynamics_functions(sys: &System, dynamics: &Dynamics) -> Vec<TokenStream> {
+    let phi_q_vals = values(&sys.phi_q);
+    let (pq_rows, _) = pattern(&sys.phi_q);
+    let row_index: Vec<u32> = (0..sys.n_constraints as u32).collect();
+    let mass_vals = values(&dynamics.mass);
+    vec![
+        function(
+            sys,
+            "mass",
+            " Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.",
+            Q,
+            vec![Output::new("out", &mass_vals)],
+        ),
+        function(
+            sys,
+            "force",
+            " Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.",
+            QQDT,
+            vec![Output::new("out", &dynamics.force)],
+        ),
+        function(
+            sys,
+            "eval_newton",
+            " Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.",
+            QQDT,
+            vec![
+                Output::by_rows("phi", &sys.phi, &row_index),
+                Output::by_rows("phi_q", &phi_q_vals, &pq_rows),
+                Output::new("mass", &mass_vals),
+                Output::new("force", &dynamics.force),
+            ],
+        ),
+    ]
+}
+
+/// `impl Mechanism for #type_name`, delegating to the functions of module `#modname` and of
+/// its parent.
+fn mechanism_impl(type_name: &Ident, modname: &Ident, doc: &str) -> TokenStream {
+    quote! {
+        #[doc = #doc]
+        #[derive(Debug, Clone, Copy, Default)]
+        pub struct #type_name;
+        impl Mechanism for #type_name {
+            fn info(&self) -> &'static MechanismInfo { &#modname::INFO }
+            fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) { phi(q, t, out) }
+            fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_q(q, t, out) }
+            fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_t(q, t, out) }
+            fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { gamma(q, qd, t, out) }
+            fn mass(&self, q: &[f64], out: &mut [f64]) { #modname::mass(q, out) }
+            fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { #modname::force(q, qd, t, out) }
+            fn potential(&self, q: &[f64]) -> f64 { potential(q) }
+            fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 { power_nc(q, qd, t) }
+            fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+                #modname::eval_newton(q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+            }
+            fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
+                eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+            }
+        }
+    }
+}
+
+fn formulation_names(f: Formulation) -> (Ident, Ident, TokenStream) {
+    match f {
+        Formulation::Paper => (ident("paper"), ident("Paper"), quote!(Formulation::Paper)),
+        Formulation::Exact => (ident("exact"), ident("Exact"), quote!(Formulation::Exact)),
+    }
+}
+
 pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
     let n = sys.n_coords;
     let m = sys.n_constraints;
-    let phi_q_vals = values(&sys.phi_q);
     let (pq_rows, pq_cols) = pattern(&sys.phi_q);
     let nnz = pq_rows.len();
-    let row_index: Vec<u32> = (0..m as u32).collect();
-    let mut items: Vec<TokenStream> = Vec::new();
-
-    let f = |name: &'static str,
-             doc: &'static str,
-             inputs: &'static [Input],
-             outputs: Vec<Output<'_>>| {
-        emit::function(
-            &sys.arena,
-            &Function {
-                name,
-                doc,
-                inputs,
-                outputs,
-                n_coords: n,
-            },
-        )
-    };
-    const QT: &[Input] = &[Input::Q, Input::T];
-    const QQDT: &[Input] = &[Input::Q, Input::Qd, Input::T];
-    const Q: &[Input] = &[Input::Q];
-    items.push(f(
-        "phi",
-        " Constraint residual Φ(q, t).",
-        QT,
-        vec![Output::new("out", &sys.phi)],
-    ));
-    items.push(f(
-        "phi_q",
-        " Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.",
-        QT,
-        vec![Output::new("out", &phi_q_vals)],
-    ));
-    items.push(f(
-        "phi_t",
-        " Partial time derivative Φt(q, t).",
-        QT,
-        vec![Output::new("out", &sys.phi_t)],
-    ));
-    items.push(f(
-        "gamma",
-        " Acceleration right-hand side γ(q, q̇, t) = −D²Φ[(q̇,1),(q̇,1)].",
-        QQDT,
-        vec![Output::new("out", &sys.gamma)],
-    ));
-    items.push(f(
-        "eval_kinematics",
-        " Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.",
-        QQDT,
-        vec![
-            Output::by_rows("phi", &sys.phi, &row_index),
-            Output::by_rows("phi_q", &phi_q_vals, &pq_rows),
-            Output::by_rows("phi_t", &sys.phi_t, &row_index),
-            Output::by_rows("gamma", &sys.gamma, &row_index),
-        ],
-    ));
-    let pot = [sys.potential];
-    items.push(f(
-        "potential_into",
-        " Potential energy of gravity and springs, written to `out[0]`.",
-        Q,
-        vec![Output::new("out", &pot)],
-    ));
-    let power = [sys.power_nc];
-    items.push(f(
-        "power_nc_into",
-        " Power of the non-conservative loads, written to `out[0]`.",
-        QQDT,
-        vec![Output::new("out", &power)],
-    ));
+    let mut items: Vec<TokenStream> = kinematic_functions(sys);
 
     let gx = model.gravity;
     let body_infos: Vec<TokenStream> = model
@@ -355,44 +444,11 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
 
     let mut impls = Vec::new();
     for dynamics in &sys.dynamics {
-        let modname = ident(dynamics.formulation.name());
-        let type_name = ident(match dynamics.formulation {
-            Formulation::Paper => "Paper",
-            Formulation::Exact => "Exact",
-        });
-        let form = match dynamics.formulation {
-            Formulation::Paper => quote!(Formulation::Paper),
-            Formulation::Exact => quote!(Formulation::Exact),
-        };
-        let mass_vals = values(&dynamics.mass);
+        let (modname, type_name, form) = formulation_names(dynamics.formulation);
         let (m_rows, m_cols) = pattern(&dynamics.mass);
         let mnnz = m_rows.len();
         let constant = dynamics.mass_is_constant;
-        let fns = vec![
-            f(
-                "mass",
-                " Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.",
-                Q,
-                vec![Output::new("out", &mass_vals)],
-            ),
-            f(
-                "force",
-                " Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.",
-                QQDT,
-                vec![Output::new("out", &dynamics.force)],
-            ),
-            f(
-                "eval_newton",
-                " Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.",
-                QQDT,
-                vec![
-                    Output::by_rows("phi", &sys.phi, &row_index),
-                    Output::by_rows("phi_q", &phi_q_vals, &pq_rows),
-                    Output::new("mass", &mass_vals),
-                    Output::new("force", &dynamics.force),
-                ],
-            ),
-        ];
+        let fns = dynamics_functions(sys, dynamics);
         let doc = format!(
             " The `{}` formulation: mass matrix and forces{}.",
             dynamics.formulation.name(),
@@ -438,28 +494,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
                 #(#fns)*
             }
         });
-        impls.push(quote! {
-            #[doc = #type_doc]
-            #[derive(Debug, Clone, Copy, Default)]
-            pub struct #type_name;
-            impl Mechanism for #type_name {
-                fn info(&self) -> &'static MechanismInfo { &#modname::INFO }
-                fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) { phi(q, t, out) }
-                fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_q(q, t, out) }
-                fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_t(q, t, out) }
-                fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { gamma(q, qd, t, out) }
-                fn mass(&self, q: &[f64], out: &mut [f64]) { #modname::mass(q, out) }
-                fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { #modname::force(q, qd, t, out) }
-                fn potential(&self, q: &[f64]) -> f64 { potential(q) }
-                fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 { power_nc(q, qd, t) }
-                fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
-                    #modname::eval_newton(q, qd, t, out.phi, out.phi_q, out.mass, out.force)
-                }
-                fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
-                    eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
-                }
-            }
-        });
+        impls.push(mechanism_impl(&type_name, &modname, &type_doc));
     }
     let default_type = ident(match model.formulations[0] {
         Formulation::Paper => "Paper",

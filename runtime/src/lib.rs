@@ -9,6 +9,7 @@
 //!   that this is exact ([`free_motion`]).
 //! - [`hht`]: the HHT-α integrator ([`HhtBuilder`] → [`Integrator`]).
 //! - [`reactions`]: joint wrenches and driver efforts from the multipliers.
+//! - [`reduction`]: reduced generated mechanisms read back in their full model's terms.
 //! - [`pose`]: rotation matrices, poses, angular velocities and world points of Euler-angle
 //!   and quaternion bodies.
 //! - [`energy`]: kinetic and potential energy and the work of drivers and non-conservative
@@ -34,6 +35,7 @@ pub mod mechanism;
 pub mod pose;
 pub mod quadrature;
 pub mod reactions;
+pub mod reduction;
 pub mod testmodels;
 pub mod watch;
 
@@ -53,4 +55,5 @@ pub use pose::{
     angular_velocity, angular_velocity_jacobian, body_pose, point_world, rotation_matrix,
 };
 pub use reactions::{actuator_force, driver_effort, joint_force, joint_wrench, Wrench};
+pub use reduction::{Reduction, Substitution};
 pub use watch::{EulerLimits, EulerWarning, ResidualWatch, Residuals};
