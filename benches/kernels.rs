@@ -13,7 +13,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use reference::{PatternIndex, Stewart, M, N};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
-use symbody_mechanisms::stewart_6_6::{self as st, exact, Exact};
+use symbody_mechanisms::stewart_6_6::{self as st, exact, reduced, Exact};
 use symbody_runtime::{HhtBuilder, Integrator, Kinematics, Mechanism, Stats};
 
 const NNZ: usize = 390;
@@ -27,7 +27,12 @@ const H_FD2: f64 = 1e-4;
 
 /// The paper scenario's integrator, started consistently and advanced to `T_STATE`.
 fn integrator_at_state() -> Integrator<Exact> {
-    let mut it = HhtBuilder::new().build(Exact).expect("consistent start");
+    integrator_of(Exact)
+}
+
+/// `mech`'s integrator at the scenario's defaults, advanced to `T_STATE`.
+fn integrator_of<M: Mechanism>(mech: M) -> Integrator<M> {
+    let mut it = HhtBuilder::new().build(mech).expect("consistent start");
     it.advance_to(T_STATE).expect("HHT to t = 1");
     it
 }
@@ -255,26 +260,70 @@ fn kernels(c: &mut Criterion) {
     });
     g.finish();
 
-    bench_hht(c);
+    bench_hht(c, "hht", Exact);
+    bench_reduced(c);
     bench_fk(c, &s);
+}
+
+/// The reduced model (`stewart_6_6::reduced`, 60 coordinates, 54 rows) at the same state.
+fn bench_reduced(c: &mut Criterion) {
+    let it = integrator_of(reduced::Exact);
+    let (q, qd, t) = (it.q().to_vec(), it.qd().to_vec(), it.t());
+    let info = reduced::Exact.info();
+    let (mut phi, mut phi_t, mut gam) = (
+        vec![0.0; info.n_constraints],
+        vec![0.0; info.n_constraints],
+        vec![0.0; info.n_constraints],
+    );
+    let mut jac = vec![0.0; info.phi_q_nnz()];
+    let (mut mass, mut force) = (vec![0.0; info.mass_nnz()], vec![0.0; info.n_coords]);
+    let mut g = c.benchmark_group("reduced");
+    g.bench_function("eval_kinematics", |b| {
+        b.iter(|| {
+            reduced::eval_kinematics(
+                black_box(&q),
+                black_box(&qd),
+                black_box(t),
+                &mut phi,
+                &mut jac,
+                &mut phi_t,
+                &mut gam,
+            )
+        })
+    });
+    g.bench_function("eval_newton", |b| {
+        b.iter(|| {
+            reduced::exact::eval_newton(
+                black_box(&q),
+                black_box(&qd),
+                black_box(t),
+                &mut phi,
+                &mut jac,
+                &mut mass,
+                &mut force,
+            )
+        })
+    });
+    g.finish();
+    bench_hht(c, "hht_reduced", reduced::Exact);
 }
 
 /// Steps of the integrator are timed over one period of the motion from t = 1 s; past
 /// that, it is rebuilt (untimed) so every measured step lies in the validated scenario.
-fn bench_hht(c: &mut Criterion) {
+fn bench_hht<M: Mechanism + Copy>(c: &mut Criterion, group: &str, mech: M) {
     const T_WRAP: f64 = T_STATE + std::f64::consts::TAU;
-    let mut it = integrator_at_state();
+    let mut it = integrator_of(mech);
     let mut base = it.stats();
     // Work done in measured steps only, summed over rebuilt integrators.
     let (mut steps, mut newton, mut factorizations, mut rejected) = (0, 0, 0, 0);
-    let mut retire = |it: &Integrator<Exact>, base: &Stats| {
+    let mut retire = |it: &Integrator<M>, base: &Stats| {
         let s = it.stats();
         steps += s.steps - base.steps;
         newton += s.newton_iterations - base.newton_iterations;
         factorizations += s.factorizations - base.factorizations;
         rejected += s.rejected_steps - base.rejected_steps;
     };
-    let mut g = c.benchmark_group("hht");
+    let mut g = c.benchmark_group(group);
     g.measurement_time(Duration::from_secs(4));
     g.bench_function("step", |b| {
         b.iter_custom(|iters| {
@@ -283,7 +332,7 @@ fn bench_hht(c: &mut Criterion) {
             while left > 0 {
                 if it.t() >= T_WRAP {
                     retire(&it, &base);
-                    it = integrator_at_state();
+                    it = integrator_of(mech);
                     base = it.stats();
                 }
                 let room = ((T_WRAP - it.t()) / it.step_size()).ceil().max(1.0) as u64;
@@ -301,7 +350,7 @@ fn bench_hht(c: &mut Criterion) {
     g.finish();
     retire(&it, &base);
     eprintln!(
-        "hht/step: {steps} measured steps, {:.3} Newton iterations/step, {:.3} \
+        "{group}/step: {steps} measured steps, {:.3} Newton iterations/step, {:.3} \
          factorizations/step, {rejected} rejected",
         newton as f64 / steps as f64,
         factorizations as f64 / steps as f64

@@ -276,6 +276,166 @@ fn formulation_names(f: Formulation) -> (Ident, Ident, TokenStream) {
     }
 }
 
+/// `pub mod reduced`: the system after the substitution pass (`crate::reduce`) as its own
+/// `Mechanism` per formulation, with the `REDUCTION` that maps it back to the full model. Its
+/// `MechanismInfo` lists no bodies or joints: those are read on the full model after
+/// `REDUCTION.expand`.
+fn reduced_module(
+    model: &Model,
+    sys: &System,
+    asm: &Assembly,
+    red: &crate::reduce::Reduced,
+) -> TokenStream {
+    let r = &red.system;
+    let (n, m) = (r.n_coords, r.n_constraints);
+    let (pq_rows, pq_cols) = pattern(&r.phi_q);
+    let nnz = pq_rows.len();
+    let fns = kinematic_functions(r);
+    let coords: Vec<u32> = red.coords.iter().map(|&c| c as u32).collect();
+    let rows: Vec<u32> = red.rows.iter().map(|&c| c as u32).collect();
+    let q0: Vec<f64> = red.coords.iter().map(|&c| asm.q0[c]).collect();
+    let qd_full = model.qd0();
+    let qd0: Vec<f64> = red.coords.iter().map(|&c| qd_full[c]).collect();
+    let redundant: Vec<u32> = asm
+        .redundant_rows
+        .iter()
+        .filter_map(|&row| {
+            red.rows
+                .iter()
+                .position(|&k| k == row as usize)
+                .map(|k| k as u32)
+        })
+        .collect();
+    let n_red = redundant.len();
+    let coord_names = &r.coord_names;
+    let row_names = &r.row_names;
+    let subs = red.substitutions.iter().map(|s| {
+        let (row, coord, w, a) = (s.row as u32, s.coord as u32, s.weight, s.slope);
+        let target = match s.target {
+            Some(j) => {
+                let j = j as u32;
+                quote!(Some(#j))
+            }
+            None => quote!(None),
+        };
+        quote!(Substitution { row: #row, coord: #coord, target: #target, weight: #w, slope: #a })
+    });
+    let n_sub = red.substitutions.len();
+    let offsets: Vec<Id> = red.substitutions.iter().flat_map(|s| s.offset).collect();
+    let offsets_fn = function(
+        r,
+        "offsets_into",
+        " `c, ċ, c̈` of each substitution at time `t`, three per substitution.",
+        &[Input::T],
+        vec![Output::new("out", &offsets)],
+    );
+    let (n_full, m_full) = (sys.n_coords, sys.n_constraints);
+    let mech_name = format!("{}_reduced", model.name);
+    let gx = model.gravity;
+    let mut forms = Vec::new();
+    for dynamics in &r.dynamics {
+        let (modname, type_name, form) = formulation_names(dynamics.formulation);
+        let (m_rows, m_cols) = pattern(&dynamics.mass);
+        let mnnz = m_rows.len();
+        let constant = dynamics.mass_is_constant;
+        let dfns = dynamics_functions(r, dynamics);
+        let type_doc = format!(
+            " `{}` reduced by substitution, with the `{}` formulation.",
+            model.name,
+            dynamics.formulation.name()
+        );
+        forms.push(quote! {
+            /// The reduced system's mass matrix and forces in this formulation.
+            pub mod #modname {
+                use super::*;
+                /// Row of each mass-matrix nonzero (both triangles).
+                pub static MASS_ROWS: [u32; #mnnz] = [#(#m_rows),*];
+                /// Column of each mass-matrix nonzero.
+                pub static MASS_COLS: [u32; #mnnz] = [#(#m_cols),*];
+                /// Sizes, patterns and names of the reduced system.
+                pub static INFO: MechanismInfo = MechanismInfo {
+                    name: #mech_name,
+                    n_coords: N_COORDS,
+                    n_constraints: N_CONSTRAINTS,
+                    formulation: #form,
+                    gravity: [#(#gx),*],
+                    phi_q_rows: &PHI_Q_ROWS,
+                    phi_q_cols: &PHI_Q_COLS,
+                    mass_rows: &MASS_ROWS,
+                    mass_cols: &MASS_COLS,
+                    mass_is_constant: #constant,
+                    bodies: &[],
+                    joints: &[],
+                    coord_names: &COORD_NAMES,
+                    row_names: &ROW_NAMES,
+                    q0: &Q0,
+                    qd0: &QD0,
+                    redundant_rows: &REDUNDANT_ROWS,
+                    platform: None,
+                };
+                #(#dfns)*
+            }
+        });
+        forms.push(mechanism_impl(&type_name, &modname, &type_doc));
+    }
+    quote! {
+        /// The system after substituting rows `a·qᵢ + b·qⱼ + g(t) = 0` away (docs/design.md,
+        /// decision 24): fewer coordinates and rows, the same motion and multipliers once
+        /// mapped back with `REDUCTION`.
+        pub mod reduced {
+            use super::*;
+            /// Number of reduced coordinates.
+            pub const N_COORDS: usize = #n;
+            /// Number of reduced rows.
+            pub const N_CONSTRAINTS: usize = #m;
+            /// Row of each Φq nonzero.
+            pub static PHI_Q_ROWS: [u32; #nnz] = [#(#pq_rows),*];
+            /// Column of each Φq nonzero.
+            pub static PHI_Q_COLS: [u32; #nnz] = [#(#pq_cols),*];
+            /// Name of each reduced coordinate (its full model's name).
+            pub static COORD_NAMES: [&str; #n] = [#(#coord_names),*];
+            /// Name of each reduced row (its full model's name).
+            pub static ROW_NAMES: [&str; #m] = [#(#row_names),*];
+            /// Initial coordinates, from the full model's assembled ones.
+            pub static Q0: [f64; #n] = [#(#q0),*];
+            /// Initial velocities from the file.
+            pub static QD0: [f64; #n] = [#(#qd0),*];
+            /// Rows dependent on others at the initial pose.
+            pub static REDUNDANT_ROWS: [u32; #n_red] = [#(#redundant),*];
+            /// Full index of each reduced coordinate.
+            pub static COORDS: [u32; #n] = [#(#coords),*];
+            /// Full index of each reduced row.
+            pub static ROWS: [u32; #m] = [#(#rows),*];
+            /// The eliminated rows.
+            pub static SUBSTITUTIONS: [Substitution; #n_sub] = [#(#subs),*];
+            /// The way back to the full model.
+            pub static REDUCTION: Reduction = Reduction {
+                n_full: #n_full,
+                m_full: #m_full,
+                coords: &COORDS,
+                rows: &ROWS,
+                substitutions: &SUBSTITUTIONS,
+                offsets: offsets_into,
+            };
+            #offsets_fn
+            #(#fns)*
+            /// Potential energy of gravity and springs.
+            pub fn potential(q: &[f64]) -> f64 {
+                let mut out = [0.0];
+                potential_into(q, &mut out);
+                out[0]
+            }
+            /// Power of the non-conservative loads.
+            pub fn power_nc(q: &[f64], qd: &[f64], t: f64) -> f64 {
+                let mut out = [0.0];
+                power_nc_into(q, qd, t, &mut out);
+                out[0]
+            }
+            #(#forms)*
+        }
+    }
+}
+
 pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
     let n = sys.n_coords;
     let m = sys.n_constraints;
@@ -496,6 +656,11 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
         });
         impls.push(mechanism_impl(&type_name, &modname, &type_doc));
     }
+    let reduced = crate::reduce::substitute(sys);
+    if let Some(red) = &reduced {
+        items.push(reduced_module(model, sys, asm, red));
+    }
+    let reduction_import = reduced.as_ref().map(|_| quote!(Reduction, Substitution,));
     let default_type = ident(match model.formulations[0] {
         Formulation::Paper => "Paper",
         Formulation::Exact => "Exact",
@@ -503,7 +668,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
 
     let file = quote! {
         #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]
-        use symbody_runtime::{BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, PlatformInfo, Rotation};
+        use symbody_runtime::{BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, PlatformInfo, #reduction_import Rotation};
         #(#items)*
         #(#impls)*
         /// The formulation listed first in the mechanism file.

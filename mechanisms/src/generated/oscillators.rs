@@ -25,7 +25,7 @@
 )]
 use symbody_runtime::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
-    MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
+    MechanismInfo, NewtonOutputs, PlatformInfo, Reduction, Substitution, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -2465,6 +2465,2356 @@ pub mod exact {
         force[11] = x1245;
         force[12] = x1246;
         force[13] = x1247;
+    }
+}
+/// The system after substituting rows `a·qᵢ + b·qⱼ + g(t) = 0` away (docs/design.md,
+/// decision 24): fewer coordinates and rows, the same motion and multipliers once
+/// mapped back with `REDUCTION`.
+pub mod reduced {
+    use super::*;
+    /// Number of reduced coordinates.
+    pub const N_COORDS: usize = 9usize;
+    /// Number of reduced rows.
+    pub const N_CONSTRAINTS: usize = 7usize;
+    /// Row of each Φq nonzero.
+    pub static PHI_Q_ROWS: [u32; 28usize] = [
+        0u32, 0u32, 0u32, 0u32, 1u32, 1u32, 1u32, 1u32, 2u32, 2u32, 2u32, 2u32, 3u32,
+        3u32, 3u32, 3u32, 4u32, 4u32, 4u32, 4u32, 5u32, 5u32, 5u32, 5u32, 6u32, 6u32,
+        6u32, 6u32,
+    ];
+    /// Column of each Φq nonzero.
+    pub static PHI_Q_COLS: [u32; 28usize] = [
+        1u32, 2u32, 3u32, 4u32, 1u32, 2u32, 3u32, 4u32, 1u32, 2u32, 3u32, 4u32, 5u32,
+        6u32, 7u32, 8u32, 5u32, 6u32, 7u32, 8u32, 1u32, 2u32, 3u32, 4u32, 5u32, 6u32,
+        7u32, 8u32,
+    ];
+    /// Name of each reduced coordinate (its full model's name).
+    pub static COORD_NAMES: [&str; 9usize] = [
+        "slider.x",
+        "slider.e0",
+        "slider.e1",
+        "slider.e2",
+        "slider.e3",
+        "rotor.e0",
+        "rotor.e1",
+        "rotor.e2",
+        "rotor.e3",
+    ];
+    /// Name of each reduced row (its full model's name).
+    pub static ROW_NAMES: [&str; 7usize] = [
+        "rail.dot1(x1,z2)",
+        "rail.dot1(y1,z2)",
+        "rail.dot1(y1,x2)",
+        "spindle.dot1(x1,z2)",
+        "spindle.dot1(y1,z2)",
+        "slider.norm",
+        "rotor.norm",
+    ];
+    /// Initial coordinates, from the full model's assembled ones.
+    pub static Q0: [f64; 9usize] = [
+        0.1f64,
+        1f64,
+        0f64,
+        0f64,
+        0f64,
+        1f64,
+        0f64,
+        0f64,
+        0f64,
+    ];
+    /// Initial velocities from the file.
+    pub static QD0: [f64; 9usize] = [
+        0f64,
+        0f64,
+        0f64,
+        0f64,
+        0f64,
+        -0f64,
+        0f64,
+        0.5f64,
+        0f64,
+    ];
+    /// Rows dependent on others at the initial pose.
+    pub static REDUNDANT_ROWS: [u32; 0usize] = [];
+    /// Full index of each reduced coordinate.
+    pub static COORDS: [u32; 9usize] = [
+        0u32, 3u32, 4u32, 5u32, 6u32, 10u32, 11u32, 12u32, 13u32,
+    ];
+    /// Full index of each reduced row.
+    pub static ROWS: [u32; 7usize] = [0u32, 1u32, 4u32, 8u32, 9u32, 10u32, 11u32];
+    /// The eliminated rows.
+    pub static SUBSTITUTIONS: [Substitution; 5usize] = [
+        Substitution {
+            row: 2u32,
+            coord: 1u32,
+            target: None,
+            weight: -0f64,
+            slope: 1f64,
+        },
+        Substitution {
+            row: 3u32,
+            coord: 2u32,
+            target: None,
+            weight: -0f64,
+            slope: 1f64,
+        },
+        Substitution {
+            row: 5u32,
+            coord: 7u32,
+            target: None,
+            weight: 0f64,
+            slope: -1f64,
+        },
+        Substitution {
+            row: 6u32,
+            coord: 8u32,
+            target: None,
+            weight: 0f64,
+            slope: -1f64,
+        },
+        Substitution {
+            row: 7u32,
+            coord: 9u32,
+            target: None,
+            weight: 0f64,
+            slope: -1f64,
+        },
+    ];
+    /// The way back to the full model.
+    pub static REDUCTION: Reduction = Reduction {
+        n_full: 14usize,
+        m_full: 12usize,
+        coords: &COORDS,
+        rows: &ROWS,
+        substitutions: &SUBSTITUTIONS,
+        offsets: offsets_into,
+    };
+    /// `c, ċ, c̈` of each substitution at time `t`, three per substitution.
+    pub fn offsets_into(t: f64, out: &mut [f64]) {
+        let out: &mut [f64; 15] = out.try_into().expect("out must have 15 entries");
+        let _ = t;
+        offsets_into_part_0(out);
+    }
+    #[inline(never)]
+    fn offsets_into_part_0(out: &mut [f64; 15]) {
+        out[0] = 0.0;
+        out[1] = 0.0;
+        out[2] = 0.0;
+        out[3] = 0.0;
+        out[4] = 0.0;
+        out[5] = 0.0;
+        out[6] = 0.0;
+        out[7] = 0.0;
+        out[8] = 0.0;
+        out[9] = 1.0;
+        out[10] = 0.0;
+        out[11] = 0.0;
+        out[12] = 2.0;
+        out[13] = 0.0;
+        out[14] = 0.0;
+    }
+    /// Constraint residual Φ(q, t).
+    pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
+        let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+        let out: &mut [f64; 7] = out.try_into().expect("out must have 7 entries");
+        let _ = t;
+        phi_part_0(q, out);
+    }
+    #[inline(never)]
+    fn phi_part_0(q: &[f64; 9], out: &mut [f64; 7]) {
+        let x23 = q[3] * q[3];
+        let x24 = q[4] * q[4];
+        let x25 = q[5] * q[5];
+        let x26 = q[6] * q[6];
+        let x50 = q[5] * q[6];
+        let x51 = 2.0 * x50;
+        let x52 = q[3] * q[4];
+        let x54 = 2.0 * x52;
+        let x288 = q[1] * q[1];
+        let x289 = q[2] * q[2];
+        let x1248 = x288 + x289;
+        let x1249 = q[2] * q[3];
+        let x1250 = 2.0 * x1249;
+        let x1251 = q[1] * q[4];
+        let x1252 = 2.0 * x1251;
+        let x1253 = q[2] * q[4];
+        let x1254 = 2.0 * x1253;
+        let x1255 = q[1] * q[3];
+        let x1256 = 2.0 * x1255;
+        let x1257 = x1250 + x1252;
+        let x1258 = q[1] * q[2];
+        let x1259 = 2.0 * x1258;
+        let x1261 = x1254 - x1256;
+        let x1262 = x54 + x1259;
+        let x1263 = q[7] * q[7];
+        let x1264 = q[8] * q[8];
+        let x1265 = x25 + x26;
+        let x1266 = q[6] * q[7];
+        let x1267 = 2.0 * x1266;
+        let x1268 = q[5] * q[8];
+        let x1269 = 2.0 * x1268;
+        let x1271 = x1267 - x1269;
+        let x1272 = q[7] * q[8];
+        let x1273 = 2.0 * x1272;
+        let x1274 = x51 + x1273;
+        let x1275 = -x1274;
+        let x1276 = x23 + x1248;
+        let x1277 = x24 + x1276;
+        let x1278 = x1277 - 1.0;
+        let x1279 = x1263 + x1265;
+        let x1280 = x1264 + x1279;
+        let x1281 = x1280 - 1.0;
+        out[0] = x1257;
+        out[1] = x1261;
+        out[2] = x1262;
+        out[3] = x1271;
+        out[4] = x1275;
+        out[5] = x1278;
+        out[6] = x1281;
+    }
+    /// Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.
+    pub fn phi_q(q: &[f64], t: f64, out: &mut [f64]) {
+        let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+        let out: &mut [f64; 28] = out.try_into().expect("out must have 28 entries");
+        let _ = t;
+        phi_q_part_0(q, out);
+    }
+    #[inline(never)]
+    fn phi_q_part_0(q: &[f64; 9], out: &mut [f64; 28]) {
+        let x123 = q[3] * 2.0;
+        let x124 = q[4] * 2.0;
+        let x125 = q[5] * 2.0;
+        let x126 = q[6] * 2.0;
+        let x127 = -x125;
+        let x128 = -x123;
+        let x295 = q[1] * 2.0;
+        let x297 = q[2] * 2.0;
+        let x474 = -x126;
+        let x1282 = -x295;
+        let x1283 = 2.0 * q[7];
+        let x1284 = 2.0 * q[8];
+        let x1285 = -x1284;
+        let x1286 = -x1283;
+        out[0] = x124;
+        out[1] = x123;
+        out[2] = x297;
+        out[3] = x295;
+        out[4] = x128;
+        out[5] = x124;
+        out[6] = x1282;
+        out[7] = x297;
+        out[8] = x297;
+        out[9] = x295;
+        out[10] = x124;
+        out[11] = x123;
+        out[12] = x1285;
+        out[13] = x1283;
+        out[14] = x126;
+        out[15] = x127;
+        out[16] = x474;
+        out[17] = x127;
+        out[18] = x1285;
+        out[19] = x1286;
+        out[20] = x295;
+        out[21] = x297;
+        out[22] = x123;
+        out[23] = x124;
+        out[24] = x125;
+        out[25] = x126;
+        out[26] = x1283;
+        out[27] = x1284;
+    }
+    /// Partial time derivative Φt(q, t).
+    pub fn phi_t(q: &[f64], t: f64, out: &mut [f64]) {
+        let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+        let out: &mut [f64; 7] = out.try_into().expect("out must have 7 entries");
+        let _ = q;
+        let _ = t;
+        phi_t_part_0(out);
+    }
+    #[inline(never)]
+    fn phi_t_part_0(out: &mut [f64; 7]) {
+        out[0] = 0.0;
+        out[1] = 0.0;
+        out[2] = 0.0;
+        out[3] = 0.0;
+        out[4] = 0.0;
+        out[5] = 0.0;
+        out[6] = 0.0;
+    }
+    /// Acceleration right-hand side γ(q, q̇, t) = −D²Φ[(q̇,1),(q̇,1)].
+    pub fn gamma(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+        let qd: &[f64; 9] = qd.try_into().expect("qd must have n_coords entries");
+        let out: &mut [f64; 7] = out.try_into().expect("out must have 7 entries");
+        let _ = q;
+        let _ = t;
+        gamma_part_0(qd, out);
+    }
+    #[inline(never)]
+    fn gamma_part_0(qd: &[f64; 9], out: &mut [f64; 7]) {
+        let x216 = 2.0 * qd[3];
+        let x217 = 2.0 * qd[4];
+        let x218 = 2.0 * qd[5];
+        let x219 = 2.0 * qd[6];
+        let x224 = qd[3] * x216;
+        let x225 = qd[4] * x217;
+        let x226 = qd[5] * x218;
+        let x227 = qd[6] * x219;
+        let x242 = qd[5] * qd[6];
+        let x243 = x242 + x242;
+        let x244 = 2.0 * x243;
+        let x245 = qd[3] * qd[4];
+        let x246 = x245 + x245;
+        let x247 = 2.0 * x246;
+        let x461 = 2.0 * qd[1];
+        let x463 = 2.0 * qd[2];
+        let x844 = 2.0 * qd[7];
+        let x846 = 2.0 * qd[8];
+        let x1335 = qd[1] * x461;
+        let x1336 = qd[2] * x463;
+        let x1337 = x1335 + x1336;
+        let x1338 = qd[2] * qd[3];
+        let x1339 = x1338 + x1338;
+        let x1340 = 2.0 * x1339;
+        let x1341 = qd[1] * qd[4];
+        let x1342 = x1341 + x1341;
+        let x1343 = 2.0 * x1342;
+        let x1344 = qd[2] * qd[4];
+        let x1345 = x1344 + x1344;
+        let x1346 = 2.0 * x1345;
+        let x1347 = qd[1] * qd[3];
+        let x1348 = x1347 + x1347;
+        let x1349 = 2.0 * x1348;
+        let x1350 = x1340 + x1343;
+        let x1351 = qd[1] * qd[2];
+        let x1352 = x1351 + x1351;
+        let x1353 = 2.0 * x1352;
+        let x1355 = x1346 - x1349;
+        let x1356 = x247 + x1353;
+        let x1357 = qd[7] * x844;
+        let x1358 = qd[8] * x846;
+        let x1359 = x226 + x227;
+        let x1360 = qd[6] * qd[7];
+        let x1361 = x1360 + x1360;
+        let x1362 = 2.0 * x1361;
+        let x1363 = qd[5] * qd[8];
+        let x1364 = x1363 + x1363;
+        let x1365 = 2.0 * x1364;
+        let x1367 = x1362 - x1365;
+        let x1368 = qd[7] * qd[8];
+        let x1369 = x1368 + x1368;
+        let x1370 = 2.0 * x1369;
+        let x1371 = x244 + x1370;
+        let x1373 = x224 + x1337;
+        let x1374 = x225 + x1373;
+        let x1375 = x1357 + x1359;
+        let x1376 = x1358 + x1375;
+        let x1377 = -x1350;
+        let x1378 = -x1355;
+        let x1379 = -x1356;
+        let x1380 = -x1367;
+        let x1381 = -x1374;
+        let x1382 = -x1376;
+        out[0] = x1377;
+        out[1] = x1378;
+        out[2] = x1379;
+        out[3] = x1380;
+        out[4] = x1371;
+        out[5] = x1381;
+        out[6] = x1382;
+    }
+    /// Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.
+    pub fn eval_kinematics(
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        phi: &mut [f64],
+        phi_q: &mut [f64],
+        phi_t: &mut [f64],
+        gamma: &mut [f64],
+    ) {
+        let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+        let qd: &[f64; 9] = qd.try_into().expect("qd must have n_coords entries");
+        let phi: &mut [f64; 7] = phi.try_into().expect("phi must have 7 entries");
+        let phi_q: &mut [f64; 28] = phi_q
+            .try_into()
+            .expect("phi_q must have 28 entries");
+        let phi_t: &mut [f64; 7] = phi_t.try_into().expect("phi_t must have 7 entries");
+        let gamma: &mut [f64; 7] = gamma.try_into().expect("gamma must have 7 entries");
+        let _ = t;
+        eval_kinematics_part_0(q, qd, phi, phi_q, phi_t, gamma);
+    }
+    #[inline(never)]
+    fn eval_kinematics_part_0(
+        q: &[f64; 9],
+        qd: &[f64; 9],
+        phi: &mut [f64; 7],
+        phi_q: &mut [f64; 28],
+        phi_t: &mut [f64; 7],
+        gamma: &mut [f64; 7],
+    ) {
+        let x23 = q[3] * q[3];
+        let x24 = q[4] * q[4];
+        let x25 = q[5] * q[5];
+        let x26 = q[6] * q[6];
+        let x50 = q[5] * q[6];
+        let x51 = 2.0 * x50;
+        let x52 = q[3] * q[4];
+        let x54 = 2.0 * x52;
+        let x123 = q[3] * 2.0;
+        let x124 = q[4] * 2.0;
+        let x125 = q[5] * 2.0;
+        let x126 = q[6] * 2.0;
+        let x127 = -x125;
+        let x128 = -x123;
+        let x216 = 2.0 * qd[3];
+        let x217 = 2.0 * qd[4];
+        let x218 = 2.0 * qd[5];
+        let x219 = 2.0 * qd[6];
+        let x224 = qd[3] * x216;
+        let x225 = qd[4] * x217;
+        let x226 = qd[5] * x218;
+        let x227 = qd[6] * x219;
+        let x242 = qd[5] * qd[6];
+        let x243 = x242 + x242;
+        let x244 = 2.0 * x243;
+        let x245 = qd[3] * qd[4];
+        let x246 = x245 + x245;
+        let x247 = 2.0 * x246;
+        let x288 = q[1] * q[1];
+        let x289 = q[2] * q[2];
+        let x295 = q[1] * 2.0;
+        let x297 = q[2] * 2.0;
+        let x461 = 2.0 * qd[1];
+        let x463 = 2.0 * qd[2];
+        let x474 = -x126;
+        let x844 = 2.0 * qd[7];
+        let x846 = 2.0 * qd[8];
+        let x1248 = x288 + x289;
+        let x1249 = q[2] * q[3];
+        let x1250 = 2.0 * x1249;
+        let x1251 = q[1] * q[4];
+        let x1252 = 2.0 * x1251;
+        let x1253 = q[2] * q[4];
+        let x1254 = 2.0 * x1253;
+        let x1255 = q[1] * q[3];
+        let x1256 = 2.0 * x1255;
+        let x1257 = x1250 + x1252;
+        let x1258 = q[1] * q[2];
+        let x1259 = 2.0 * x1258;
+        let x1261 = x1254 - x1256;
+        let x1262 = x54 + x1259;
+        let x1263 = q[7] * q[7];
+        let x1264 = q[8] * q[8];
+        let x1265 = x25 + x26;
+        let x1266 = q[6] * q[7];
+        let x1267 = 2.0 * x1266;
+        let x1268 = q[5] * q[8];
+        let x1269 = 2.0 * x1268;
+        let x1271 = x1267 - x1269;
+        let x1272 = q[7] * q[8];
+        let x1273 = 2.0 * x1272;
+        let x1274 = x51 + x1273;
+        let x1275 = -x1274;
+        let x1276 = x23 + x1248;
+        let x1277 = x24 + x1276;
+        let x1278 = x1277 - 1.0;
+        let x1279 = x1263 + x1265;
+        let x1280 = x1264 + x1279;
+        let x1281 = x1280 - 1.0;
+        let x1282 = -x295;
+        let x1283 = 2.0 * q[7];
+        let x1284 = 2.0 * q[8];
+        let x1285 = -x1284;
+        let x1286 = -x1283;
+        let x1335 = qd[1] * x461;
+        let x1336 = qd[2] * x463;
+        let x1337 = x1335 + x1336;
+        let x1338 = qd[2] * qd[3];
+        let x1339 = x1338 + x1338;
+        let x1340 = 2.0 * x1339;
+        let x1341 = qd[1] * qd[4];
+        let x1342 = x1341 + x1341;
+        let x1343 = 2.0 * x1342;
+        let x1344 = qd[2] * qd[4];
+        let x1345 = x1344 + x1344;
+        let x1346 = 2.0 * x1345;
+        let x1347 = qd[1] * qd[3];
+        let x1348 = x1347 + x1347;
+        let x1349 = 2.0 * x1348;
+        let x1350 = x1340 + x1343;
+        let x1351 = qd[1] * qd[2];
+        let x1352 = x1351 + x1351;
+        let x1353 = 2.0 * x1352;
+        let x1355 = x1346 - x1349;
+        let x1356 = x247 + x1353;
+        let x1357 = qd[7] * x844;
+        let x1358 = qd[8] * x846;
+        let x1359 = x226 + x227;
+        let x1360 = qd[6] * qd[7];
+        let x1361 = x1360 + x1360;
+        let x1362 = 2.0 * x1361;
+        let x1363 = qd[5] * qd[8];
+        let x1364 = x1363 + x1363;
+        let x1365 = 2.0 * x1364;
+        let x1367 = x1362 - x1365;
+        let x1368 = qd[7] * qd[8];
+        let x1369 = x1368 + x1368;
+        let x1370 = 2.0 * x1369;
+        let x1371 = x244 + x1370;
+        let x1373 = x224 + x1337;
+        let x1374 = x225 + x1373;
+        let x1375 = x1357 + x1359;
+        let x1376 = x1358 + x1375;
+        let x1377 = -x1350;
+        let x1378 = -x1355;
+        let x1379 = -x1356;
+        let x1380 = -x1367;
+        let x1381 = -x1374;
+        let x1382 = -x1376;
+        phi[0] = x1257;
+        phi_q[0] = x124;
+        phi_q[1] = x123;
+        phi_q[2] = x297;
+        phi_q[3] = x295;
+        phi_t[0] = 0.0;
+        gamma[0] = x1377;
+        phi[1] = x1261;
+        phi_q[4] = x128;
+        phi_q[5] = x124;
+        phi_q[6] = x1282;
+        phi_q[7] = x297;
+        phi_t[1] = 0.0;
+        gamma[1] = x1378;
+        phi[2] = x1262;
+        phi_q[8] = x297;
+        phi_q[9] = x295;
+        phi_q[10] = x124;
+        phi_q[11] = x123;
+        phi_t[2] = 0.0;
+        gamma[2] = x1379;
+        phi[3] = x1271;
+        phi_q[12] = x1285;
+        phi_q[13] = x1283;
+        phi_q[14] = x126;
+        phi_q[15] = x127;
+        phi_t[3] = 0.0;
+        gamma[3] = x1380;
+        phi[4] = x1275;
+        phi_q[16] = x474;
+        phi_q[17] = x127;
+        phi_q[18] = x1285;
+        phi_q[19] = x1286;
+        phi_t[4] = 0.0;
+        gamma[4] = x1371;
+        phi[5] = x1278;
+        phi_q[20] = x295;
+        phi_q[21] = x297;
+        phi_q[22] = x123;
+        phi_q[23] = x124;
+        phi_t[5] = 0.0;
+        gamma[5] = x1381;
+        phi[6] = x1281;
+        phi_q[24] = x125;
+        phi_q[25] = x126;
+        phi_q[26] = x1283;
+        phi_q[27] = x1284;
+        phi_t[6] = 0.0;
+        gamma[6] = x1382;
+    }
+    /// Potential energy of gravity and springs, written to `out[0]`.
+    pub fn potential_into(q: &[f64], out: &mut [f64]) {
+        let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+        let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
+        potential_into_part_0(q, out);
+    }
+    #[inline(never)]
+    fn potential_into_part_0(q: &[f64; 9], out: &mut [f64; 1]) {
+        let x25 = q[5] * q[5];
+        let x26 = q[6] * q[6];
+        let x286 = 1.0 + q[0];
+        let x287 = x286 * x286;
+        let x1265 = x25 + x26;
+        let x1383 = 2.0 * x1265;
+        let x1384 = x1383 - 1.0;
+        let x1385 = q[6] * q[8];
+        let x1386 = 2.0 * x1385;
+        let x1387 = q[5] * q[7];
+        let x1388 = 2.0 * x1387;
+        let x1390 = x1386 - x1388;
+        let x1391 = x287.sqrt();
+        let x1392 = x1391 - 1.0;
+        let x1393 = x1392 * x1392;
+        let x1394 = 25.0 * x1393;
+        let x1395 = -x1390;
+        let x1396 = x1395.atan2(x1384);
+        let x1397 = x1396 * x1396;
+        let x1398 = 9.81 + x1394;
+        let x1399 = x1397 + x1398;
+        out[0] = x1399;
+    }
+    /// Power of the non-conservative loads, written to `out[0]`.
+    pub fn power_nc_into(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+        let qd: &[f64; 9] = qd.try_into().expect("qd must have n_coords entries");
+        let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
+        power_nc_into_part_0(q, qd, t, out);
+    }
+    #[inline(never)]
+    fn power_nc_into_part_0(q: &[f64; 9], qd: &[f64; 9], t: f64, out: &mut [f64; 1]) {
+        let x3 = 4.0 * t;
+        let x4 = x3.sin();
+        let x5 = 3.0 * x4;
+        let x9 = 3.0 * t;
+        let x10 = x9.cos();
+        let x11 = 0.5 * x10;
+        let x13 = t.sin();
+        let x14 = 0.2 * x13;
+        let x25 = q[5] * q[5];
+        let x26 = q[6] * q[6];
+        let x125 = q[5] * 2.0;
+        let x126 = q[6] * 2.0;
+        let x153 = x125 * qd[5];
+        let x154 = x126 * qd[6];
+        let x286 = 1.0 + q[0];
+        let x287 = x286 * x286;
+        let x293 = 2.0 * x286;
+        let x294 = qd[0] * x293;
+        let x1265 = x25 + x26;
+        let x1314 = x153 + x154;
+        let x1383 = 2.0 * x1265;
+        let x1384 = x1383 - 1.0;
+        let x1385 = q[6] * q[8];
+        let x1386 = 2.0 * x1385;
+        let x1387 = q[5] * q[7];
+        let x1388 = 2.0 * x1387;
+        let x1390 = x1386 - x1388;
+        let x1391 = x287.sqrt();
+        let x1400 = 2.0 * x1391;
+        let x1401 = 1.0 / x1400;
+        let x1402 = x294 * x1401;
+        let x1403 = 0.8 * x1402;
+        let x1405 = x5 - x1403;
+        let x1406 = x1402 * x1405;
+        let x1407 = 2.0 * x1314;
+        let x1408 = q[8] * qd[6];
+        let x1409 = q[6] * qd[8];
+        let x1410 = x1408 + x1409;
+        let x1411 = 2.0 * x1410;
+        let x1412 = q[7] * qd[5];
+        let x1413 = q[5] * qd[7];
+        let x1414 = x1412 + x1413;
+        let x1415 = 2.0 * x1414;
+        let x1417 = x1411 - x1415;
+        let x1418 = x1384 * x1384;
+        let x1419 = x1390 * x1390;
+        let x1420 = x1418 + x1419;
+        let x1421 = x1384 * x1417;
+        let x1423 = x1390 * x1407;
+        let x1424 = x1423 - x1421;
+        let x1425 = 1.0 / x1420;
+        let x1426 = x1424 * x1425;
+        let x1427 = 0.1 * x1426;
+        let x1429 = x11 - x1427;
+        let x1430 = x1426 * x1429;
+        let x1433 = x1408 - x1412;
+        let x1434 = x1413 + x1433;
+        let x1435 = x1434 - x1409;
+        let x1436 = 2.0 * x1435;
+        let x1437 = x14 * x1436;
+        let x1438 = qd[0] + x1406;
+        let x1439 = x1430 + x1438;
+        let x1440 = x1437 + x1439;
+        out[0] = x1440;
+    }
+    /// Potential energy of gravity and springs.
+    pub fn potential(q: &[f64]) -> f64 {
+        let mut out = [0.0];
+        potential_into(q, &mut out);
+        out[0]
+    }
+    /// Power of the non-conservative loads.
+    pub fn power_nc(q: &[f64], qd: &[f64], t: f64) -> f64 {
+        let mut out = [0.0];
+        power_nc_into(q, qd, t, &mut out);
+        out[0]
+    }
+    /// The reduced system's mass matrix and forces in this formulation.
+    pub mod exact {
+        use super::*;
+        /// Row of each mass-matrix nonzero (both triangles).
+        pub static MASS_ROWS: [u32; 33usize] = [
+            0u32, 1u32, 1u32, 1u32, 1u32, 2u32, 2u32, 2u32, 2u32, 3u32, 3u32, 3u32, 3u32,
+            4u32, 4u32, 4u32, 4u32, 5u32, 5u32, 5u32, 5u32, 6u32, 6u32, 6u32, 6u32, 7u32,
+            7u32, 7u32, 7u32, 8u32, 8u32, 8u32, 8u32,
+        ];
+        /// Column of each mass-matrix nonzero.
+        pub static MASS_COLS: [u32; 33usize] = [
+            0u32, 1u32, 2u32, 3u32, 4u32, 1u32, 2u32, 3u32, 4u32, 1u32, 2u32, 3u32, 4u32,
+            1u32, 2u32, 3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 5u32, 6u32, 7u32, 8u32, 5u32,
+            6u32, 7u32, 8u32, 5u32, 6u32, 7u32, 8u32,
+        ];
+        /// Sizes, patterns and names of the reduced system.
+        pub static INFO: MechanismInfo = MechanismInfo {
+            name: "oscillators_reduced",
+            n_coords: N_COORDS,
+            n_constraints: N_CONSTRAINTS,
+            formulation: Formulation::Exact,
+            gravity: [0f64, -9.81f64, 0f64],
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_is_constant: false,
+            bodies: &[],
+            joints: &[],
+            coord_names: &COORD_NAMES,
+            row_names: &ROW_NAMES,
+            q0: &Q0,
+            qd0: &QD0,
+            redundant_rows: &REDUNDANT_ROWS,
+            platform: None,
+        };
+        /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
+        pub fn mass(q: &[f64], out: &mut [f64]) {
+            let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+            let out: &mut [f64; 33] = out.try_into().expect("out must have 33 entries");
+            mass_part_0(q, out);
+        }
+        #[inline(never)]
+        fn mass_part_0(q: &[f64; 9], out: &mut [f64; 33]) {
+            let x23 = q[3] * q[3];
+            let x24 = q[4] * q[4];
+            let x25 = q[5] * q[5];
+            let x26 = q[6] * q[6];
+            let x50 = q[5] * q[6];
+            let x52 = q[3] * q[4];
+            let x123 = q[3] * 2.0;
+            let x124 = q[4] * 2.0;
+            let x125 = q[5] * 2.0;
+            let x126 = q[6] * 2.0;
+            let x288 = q[1] * q[1];
+            let x289 = q[2] * q[2];
+            let x295 = q[1] * 2.0;
+            let x297 = q[2] * 2.0;
+            let x527 = 2.0 * x124;
+            let x529 = 2.0 * x125;
+            let x531 = 2.0 * x126;
+            let x533 = x124 * x527;
+            let x535 = 0.01 * x533;
+            let x537 = x125 * x529;
+            let x541 = x126 * x531;
+            let x551 = x23 * 0.04;
+            let x553 = 2.0 * x123;
+            let x554 = x124 * x553;
+            let x555 = 0.01 * x554;
+            let x556 = x125 * x531;
+            let x560 = x126 * x529;
+            let x566 = x52 * 0.04;
+            let x596 = x123 * x527;
+            let x598 = 0.01 * x596;
+            let x606 = x123 * x553;
+            let x607 = 0.01 * x606;
+            let x611 = x24 * 0.04;
+            let x1249 = q[2] * q[3];
+            let x1251 = q[1] * q[4];
+            let x1253 = q[2] * q[4];
+            let x1255 = q[1] * q[3];
+            let x1258 = q[1] * q[2];
+            let x1263 = q[7] * q[7];
+            let x1264 = q[8] * q[8];
+            let x1266 = q[6] * q[7];
+            let x1268 = q[5] * q[8];
+            let x1272 = q[7] * q[8];
+            let x1283 = 2.0 * q[7];
+            let x1284 = 2.0 * q[8];
+            let x1385 = q[6] * q[8];
+            let x1387 = q[5] * q[7];
+            let x1441 = 2.0 * x297;
+            let x1442 = x297 * x1441;
+            let x1443 = 0.01 * x1442;
+            let x1444 = x607 + x1443;
+            let x1445 = x535 + x1444;
+            let x1446 = 0.5 * x1445;
+            let x1447 = x288 * 0.04;
+            let x1448 = x1446 + x1447;
+            let x1449 = 2.0 * x295;
+            let x1450 = x297 * x1449;
+            let x1451 = 0.01 * x1450;
+            let x1452 = x1451 - x598;
+            let x1453 = x555 + x1452;
+            let x1454 = 0.5 * x1453;
+            let x1456 = 0.04 * x1258;
+            let x1457 = x1456 - x1454;
+            let x1458 = x297 * x527;
+            let x1459 = 0.01 * x1458;
+            let x1460 = x123 * x1449;
+            let x1461 = 0.01 * x1460;
+            let x1462 = x124 * x1441;
+            let x1463 = 0.01 * x1462;
+            let x1465 = x1459 + x1461;
+            let x1466 = x1465 - x1463;
+            let x1467 = 0.5 * x1466;
+            let x1469 = 0.04 * x1255;
+            let x1470 = x1469 - x1467;
+            let x1471 = x297 * x553;
+            let x1472 = 0.01 * x1471;
+            let x1474 = x123 * x1441;
+            let x1475 = 0.01 * x1474;
+            let x1476 = x124 * x1449;
+            let x1477 = 0.01 * x1476;
+            let x1478 = x1475 - x1472;
+            let x1479 = x1477 + x1478;
+            let x1480 = 0.5 * x1479;
+            let x1482 = 0.04 * x1251;
+            let x1483 = x1482 - x1480;
+            let x1484 = x295 * x1441;
+            let x1485 = 0.01 * x1484;
+            let x1487 = x555 - x1485;
+            let x1488 = x1487 - x598;
+            let x1489 = 0.5 * x1488;
+            let x1490 = x1456 + x1489;
+            let x1491 = x295 * x1449;
+            let x1492 = 0.01 * x1491;
+            let x1493 = x535 + x1492;
+            let x1494 = x607 + x1493;
+            let x1495 = 0.5 * x1494;
+            let x1496 = x289 * 0.04;
+            let x1497 = x1495 + x1496;
+            let x1498 = x295 * x527;
+            let x1499 = 0.01 * x1498;
+            let x1502 = x1499 - x1477;
+            let x1503 = x1502 - x1475;
+            let x1504 = 0.5 * x1503;
+            let x1505 = 0.04 * x1249;
+            let x1506 = x1504 + x1505;
+            let x1507 = x295 * x553;
+            let x1508 = 0.01 * x1507;
+            let x1509 = x1463 + x1508;
+            let x1511 = x1461 - x1509;
+            let x1512 = 0.5 * x1511;
+            let x1513 = 0.04 * x1253;
+            let x1514 = x1512 + x1513;
+            let x1515 = x1459 - x1509;
+            let x1516 = 0.5 * x1515;
+            let x1517 = x1469 + x1516;
+            let x1519 = x1477 - x1499;
+            let x1520 = x1519 - x1472;
+            let x1521 = 0.5 * x1520;
+            let x1522 = x1505 + x1521;
+            let x1523 = x1443 + x1493;
+            let x1524 = 0.5 * x1523;
+            let x1525 = x551 + x1524;
+            let x1527 = x1485 - x555;
+            let x1528 = x1527 - x1451;
+            let x1529 = 0.5 * x1528;
+            let x1530 = x566 + x1529;
+            let x1531 = x1478 - x1499;
+            let x1532 = 0.5 * x1531;
+            let x1533 = x1482 + x1532;
+            let x1535 = x1508 - x1465;
+            let x1536 = 0.5 * x1535;
+            let x1537 = x1513 + x1536;
+            let x1538 = x1452 - x1485;
+            let x1539 = 0.5 * x1538;
+            let x1540 = x566 + x1539;
+            let x1541 = x1444 + x1492;
+            let x1542 = 0.5 * x1541;
+            let x1543 = x611 + x1542;
+            let x1544 = 2.0 * x1283;
+            let x1545 = 2.0 * x1284;
+            let x1546 = 0.1 * x541;
+            let x1547 = x1283 * x1544;
+            let x1548 = 0.2 * x1547;
+            let x1549 = x1284 * x1545;
+            let x1550 = 0.3 * x1549;
+            let x1551 = x1546 + x1548;
+            let x1552 = x1550 + x1551;
+            let x1553 = 0.5 * x1552;
+            let x1554 = x25 * 0.8000000000000002;
+            let x1555 = x1553 + x1554;
+            let x1556 = 0.1 * x560;
+            let x1557 = x1283 * x1545;
+            let x1558 = 0.2 * x1557;
+            let x1560 = x1284 * x1544;
+            let x1561 = 0.3 * x1560;
+            let x1562 = x1556 - x1558;
+            let x1563 = x1561 + x1562;
+            let x1564 = 0.5 * x1563;
+            let x1566 = x50 * 0.8000000000000002;
+            let x1567 = x1566 - x1564;
+            let x1568 = x126 * x1545;
+            let x1569 = 0.1 * x1568;
+            let x1570 = x529 * x1283;
+            let x1571 = 0.2 * x1570;
+            let x1572 = x531 * x1284;
+            let x1573 = 0.3 * x1572;
+            let x1575 = x1569 + x1571;
+            let x1576 = x1575 - x1573;
+            let x1577 = 0.5 * x1576;
+            let x1579 = 0.8000000000000002 * x1387;
+            let x1580 = x1579 - x1577;
+            let x1581 = x126 * x1544;
+            let x1582 = 0.1 * x1581;
+            let x1584 = x531 * x1283;
+            let x1585 = 0.2 * x1584;
+            let x1586 = x529 * x1284;
+            let x1587 = 0.3 * x1586;
+            let x1588 = x1585 - x1582;
+            let x1589 = x1587 + x1588;
+            let x1590 = 0.5 * x1589;
+            let x1592 = 0.8000000000000002 * x1268;
+            let x1593 = x1592 - x1590;
+            let x1594 = 0.1 * x556;
+            let x1596 = 0.2 * x1560;
+            let x1597 = 0.3 * x1557;
+            let x1599 = x1596 - x1594;
+            let x1600 = x1599 - x1597;
+            let x1601 = 0.5 * x1600;
+            let x1602 = x1566 + x1601;
+            let x1603 = 0.1 * x537;
+            let x1604 = 0.2 * x1549;
+            let x1605 = 0.3 * x1547;
+            let x1606 = x1603 + x1604;
+            let x1607 = x1605 + x1606;
+            let x1608 = 0.5 * x1607;
+            let x1609 = x26 * 0.8000000000000002;
+            let x1610 = x1608 + x1609;
+            let x1611 = x125 * x1545;
+            let x1612 = 0.1 * x1611;
+            let x1613 = 0.2 * x1586;
+            let x1615 = 0.3 * x1584;
+            let x1617 = x1612 - x1613;
+            let x1618 = x1617 - x1615;
+            let x1619 = 0.5 * x1618;
+            let x1620 = 0.8000000000000002 * x1266;
+            let x1621 = x1619 + x1620;
+            let x1622 = x125 * x1544;
+            let x1623 = 0.1 * x1622;
+            let x1624 = 0.2 * x1572;
+            let x1625 = 0.3 * x1570;
+            let x1626 = x1623 + x1624;
+            let x1628 = x1625 - x1626;
+            let x1629 = 0.5 * x1628;
+            let x1630 = 0.8000000000000002 * x1385;
+            let x1631 = x1629 + x1630;
+            let x1632 = 0.1 * x1572;
+            let x1633 = 0.2 * x1622;
+            let x1634 = 0.3 * x1568;
+            let x1635 = x1632 + x1633;
+            let x1637 = x1634 - x1635;
+            let x1638 = 0.5 * x1637;
+            let x1639 = x1579 + x1638;
+            let x1640 = 0.1 * x1586;
+            let x1641 = 0.2 * x1611;
+            let x1643 = 0.3 * x1581;
+            let x1645 = x1640 - x1641;
+            let x1646 = x1645 - x1643;
+            let x1647 = 0.5 * x1646;
+            let x1648 = x1620 + x1647;
+            let x1649 = 0.1 * x1549;
+            let x1650 = 0.2 * x537;
+            let x1651 = x541 * 0.3;
+            let x1652 = x1649 + x1650;
+            let x1653 = x1651 + x1652;
+            let x1654 = 0.5 * x1653;
+            let x1655 = 0.8000000000000002 * x1263;
+            let x1656 = x1654 + x1655;
+            let x1657 = 0.1 * x1560;
+            let x1659 = 0.2 * x556;
+            let x1660 = x560 * 0.3;
+            let x1662 = x1659 - x1657;
+            let x1663 = x1662 - x1660;
+            let x1664 = 0.5 * x1663;
+            let x1665 = 0.8000000000000002 * x1272;
+            let x1666 = x1664 + x1665;
+            let x1667 = 0.1 * x1584;
+            let x1668 = 0.2 * x1581;
+            let x1670 = 0.3 * x1611;
+            let x1672 = x1667 - x1668;
+            let x1673 = x1672 - x1670;
+            let x1674 = 0.5 * x1673;
+            let x1675 = x1592 + x1674;
+            let x1676 = 0.1 * x1570;
+            let x1677 = 0.2 * x1568;
+            let x1678 = 0.3 * x1622;
+            let x1679 = x1676 + x1677;
+            let x1681 = x1678 - x1679;
+            let x1682 = 0.5 * x1681;
+            let x1683 = x1630 + x1682;
+            let x1684 = 0.1 * x1557;
+            let x1686 = 0.2 * x560;
+            let x1687 = x556 * 0.3;
+            let x1689 = x1686 - x1684;
+            let x1690 = x1689 - x1687;
+            let x1691 = 0.5 * x1690;
+            let x1692 = x1665 + x1691;
+            let x1693 = 0.1 * x1547;
+            let x1694 = 0.2 * x541;
+            let x1695 = x537 * 0.3;
+            let x1696 = x1693 + x1694;
+            let x1697 = x1695 + x1696;
+            let x1698 = 0.5 * x1697;
+            let x1699 = 0.8000000000000002 * x1264;
+            let x1700 = x1698 + x1699;
+            out[0] = 2.0;
+            out[1] = x1448;
+            out[2] = x1457;
+            out[3] = x1470;
+            out[4] = x1483;
+            out[5] = x1490;
+            out[6] = x1497;
+            out[7] = x1506;
+            out[8] = x1514;
+            out[9] = x1517;
+            out[10] = x1522;
+            out[11] = x1525;
+            out[12] = x1530;
+            out[13] = x1533;
+            out[14] = x1537;
+            out[15] = x1540;
+            out[16] = x1543;
+            out[17] = x1555;
+            out[18] = x1567;
+            out[19] = x1580;
+            out[20] = x1593;
+            out[21] = x1602;
+            out[22] = x1610;
+            out[23] = x1621;
+            out[24] = x1631;
+            out[25] = x1639;
+            out[26] = x1648;
+            out[27] = x1656;
+            out[28] = x1666;
+            out[29] = x1675;
+            out[30] = x1683;
+            out[31] = x1692;
+            out[32] = x1700;
+        }
+        /// Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.
+        pub fn force(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+            let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+            let qd: &[f64; 9] = qd.try_into().expect("qd must have n_coords entries");
+            let out: &mut [f64; 9] = out.try_into().expect("out must have 9 entries");
+            force_part_0(q, qd, t, out);
+        }
+        #[inline(never)]
+        fn force_part_0(q: &[f64; 9], qd: &[f64; 9], t: f64, out: &mut [f64; 9]) {
+            let x3 = 4.0 * t;
+            let x4 = x3.sin();
+            let x5 = 3.0 * x4;
+            let x9 = 3.0 * t;
+            let x10 = x9.cos();
+            let x11 = 0.5 * x10;
+            let x13 = t.sin();
+            let x14 = 0.2 * x13;
+            let x25 = q[5] * q[5];
+            let x26 = q[6] * q[6];
+            let x123 = q[3] * 2.0;
+            let x124 = q[4] * 2.0;
+            let x125 = q[5] * 2.0;
+            let x126 = q[6] * 2.0;
+            let x153 = x125 * qd[5];
+            let x154 = x126 * qd[6];
+            let x173 = q[6] * qd[5];
+            let x174 = q[5] * qd[6];
+            let x177 = q[4] * qd[3];
+            let x178 = q[3] * qd[4];
+            let x216 = 2.0 * qd[3];
+            let x217 = 2.0 * qd[4];
+            let x218 = 2.0 * qd[5];
+            let x219 = 2.0 * qd[6];
+            let x286 = 1.0 + q[0];
+            let x287 = x286 * x286;
+            let x293 = 2.0 * x286;
+            let x294 = qd[0] * x293;
+            let x295 = q[1] * 2.0;
+            let x297 = q[2] * 2.0;
+            let x444 = qd[1] * qd[1];
+            let x448 = qd[2] * qd[2];
+            let x461 = 2.0 * qd[1];
+            let x463 = 2.0 * qd[2];
+            let x529 = 2.0 * x125;
+            let x531 = 2.0 * x126;
+            let x740 = qd[3] * qd[3];
+            let x741 = qd[4] * qd[4];
+            let x742 = qd[5] * qd[5];
+            let x743 = qd[6] * qd[6];
+            let x754 = q[3] * 0.04;
+            let x773 = q[4] * 0.04;
+            let x828 = qd[7] * qd[7];
+            let x831 = qd[8] * qd[8];
+            let x844 = 2.0 * qd[7];
+            let x846 = 2.0 * qd[8];
+            let x1265 = x25 + x26;
+            let x1283 = 2.0 * q[7];
+            let x1284 = 2.0 * q[8];
+            let x1288 = q[3] * qd[2];
+            let x1289 = q[2] * qd[3];
+            let x1292 = q[4] * qd[1];
+            let x1293 = q[1] * qd[4];
+            let x1296 = q[4] * qd[2];
+            let x1297 = q[2] * qd[4];
+            let x1300 = q[3] * qd[1];
+            let x1301 = q[1] * qd[3];
+            let x1305 = q[2] * qd[1];
+            let x1306 = q[1] * qd[2];
+            let x1314 = x153 + x154;
+            let x1315 = q[7] * qd[6];
+            let x1316 = q[6] * qd[7];
+            let x1319 = q[8] * qd[5];
+            let x1320 = q[5] * qd[8];
+            let x1325 = q[8] * qd[7];
+            let x1326 = q[7] * qd[8];
+            let x1338 = qd[2] * qd[3];
+            let x1341 = qd[1] * qd[4];
+            let x1344 = qd[2] * qd[4];
+            let x1347 = qd[1] * qd[3];
+            let x1360 = qd[6] * qd[7];
+            let x1363 = qd[5] * qd[8];
+            let x1383 = 2.0 * x1265;
+            let x1384 = x1383 - 1.0;
+            let x1385 = q[6] * q[8];
+            let x1386 = 2.0 * x1385;
+            let x1387 = q[5] * q[7];
+            let x1388 = 2.0 * x1387;
+            let x1390 = x1386 - x1388;
+            let x1391 = x287.sqrt();
+            let x1392 = x1391 - 1.0;
+            let x1395 = -x1390;
+            let x1396 = x1395.atan2(x1384);
+            let x1400 = 2.0 * x1391;
+            let x1401 = 1.0 / x1400;
+            let x1402 = x294 * x1401;
+            let x1403 = 0.8 * x1402;
+            let x1405 = x5 - x1403;
+            let x1407 = 2.0 * x1314;
+            let x1408 = q[8] * qd[6];
+            let x1409 = q[6] * qd[8];
+            let x1410 = x1408 + x1409;
+            let x1411 = 2.0 * x1410;
+            let x1412 = q[7] * qd[5];
+            let x1413 = q[5] * qd[7];
+            let x1414 = x1412 + x1413;
+            let x1415 = 2.0 * x1414;
+            let x1417 = x1411 - x1415;
+            let x1418 = x1384 * x1384;
+            let x1419 = x1390 * x1390;
+            let x1420 = x1418 + x1419;
+            let x1421 = x1384 * x1417;
+            let x1423 = x1390 * x1407;
+            let x1424 = x1423 - x1421;
+            let x1425 = 1.0 / x1420;
+            let x1426 = x1424 * x1425;
+            let x1427 = 0.1 * x1426;
+            let x1429 = x11 - x1427;
+            let x1701 = 50.0 * x1392;
+            let x1703 = x1405 - x1701;
+            let x1704 = x293 * x1401;
+            let x1705 = x1703 * x1704;
+            let x1706 = 2.0 * x1396;
+            let x1708 = x1429 - x1706;
+            let x1709 = x1283 * x1384;
+            let x1710 = x529 * x1390;
+            let x1711 = x1709 + x1710;
+            let x1712 = x1425 * x1711;
+            let x1713 = x1284 * x1384;
+            let x1715 = x531 * x1390;
+            let x1716 = x1715 - x1713;
+            let x1717 = x1425 * x1716;
+            let x1718 = x125 * x1384;
+            let x1719 = x1425 * x1718;
+            let x1720 = x126 * x1384;
+            let x1721 = x1425 * x1720;
+            let x1722 = x1708 * x1712;
+            let x1723 = x1708 * x1717;
+            let x1724 = x1708 * x1719;
+            let x1725 = x1708 * x1721;
+            let x1727 = x174 - x173;
+            let x1729 = x14 * x1283;
+            let x1731 = x14 * x1284;
+            let x1732 = x14 * x125;
+            let x1733 = x14 * x126;
+            let x1734 = 1.0 + x1705;
+            let x1735 = x1722 - x1729;
+            let x1736 = x1723 + x1731;
+            let x1737 = x1724 + x1732;
+            let x1738 = x1725 + x1733;
+            let x1742 = x1306 - x1305;
+            let x1743 = x177 + x1742;
+            let x1744 = x1743 - x178;
+            let x1745 = 2.0 * x1744;
+            let x1746 = x1296 + x1300;
+            let x1748 = x1301 - x1746;
+            let x1749 = x1297 + x1748;
+            let x1750 = 2.0 * x1749;
+            let x1753 = x1288 - x1292;
+            let x1754 = x1753 - x1289;
+            let x1755 = x1293 + x1754;
+            let x1756 = 2.0 * x1755;
+            let x1757 = 2.0 * x1745;
+            let x1758 = 2.0 * x1750;
+            let x1759 = 2.0 * x1756;
+            let x1760 = x1344 + x1347;
+            let x1762 = x1347 - x1760;
+            let x1763 = x1344 + x1762;
+            let x1764 = 2.0 * x1763;
+            let x1767 = x1338 - x1341;
+            let x1768 = x1767 - x1338;
+            let x1769 = x1341 + x1768;
+            let x1770 = 2.0 * x1769;
+            let x1771 = 2.0 * x1764;
+            let x1772 = 2.0 * x1770;
+            let x1773 = x463 * x1757;
+            let x1774 = 0.01 * x1773;
+            let x1775 = x216 * x1758;
+            let x1776 = x123 * x1771;
+            let x1777 = x1775 + x1776;
+            let x1778 = 0.01 * x1777;
+            let x1779 = x217 * x1759;
+            let x1780 = x124 * x1772;
+            let x1781 = x1779 + x1780;
+            let x1782 = 0.01 * x1781;
+            let x1783 = x1774 + x1778;
+            let x1784 = x1782 + x1783;
+            let x1785 = 0.5 * x1784;
+            let x1786 = x461 * x1757;
+            let x1787 = 0.01 * x1786;
+            let x1788 = x217 * x1758;
+            let x1789 = x124 * x1771;
+            let x1790 = x1788 + x1789;
+            let x1791 = 0.01 * x1790;
+            let x1793 = x216 * x1759;
+            let x1794 = x123 * x1772;
+            let x1795 = x1793 + x1794;
+            let x1796 = 0.01 * x1795;
+            let x1797 = x1787 - x1791;
+            let x1798 = x1796 + x1797;
+            let x1799 = 0.5 * x1798;
+            let x1800 = x217 * x1757;
+            let x1801 = 0.01 * x1800;
+            let x1802 = x461 * x1758;
+            let x1803 = x295 * x1771;
+            let x1804 = x1802 + x1803;
+            let x1805 = 0.01 * x1804;
+            let x1806 = x463 * x1759;
+            let x1807 = x297 * x1772;
+            let x1808 = x1806 + x1807;
+            let x1809 = 0.01 * x1808;
+            let x1811 = x1801 + x1805;
+            let x1812 = x1811 - x1809;
+            let x1813 = 0.5 * x1812;
+            let x1814 = x216 * x1757;
+            let x1815 = 0.01 * x1814;
+            let x1817 = x463 * x1758;
+            let x1818 = x297 * x1771;
+            let x1819 = x1817 + x1818;
+            let x1820 = 0.01 * x1819;
+            let x1821 = x461 * x1759;
+            let x1822 = x295 * x1772;
+            let x1823 = x1821 + x1822;
+            let x1824 = 0.01 * x1823;
+            let x1825 = x1820 - x1815;
+            let x1826 = x1824 + x1825;
+            let x1827 = 0.5 * x1826;
+            let x1828 = x444 + x448;
+            let x1829 = x740 + x1828;
+            let x1830 = x741 + x1829;
+            let x1831 = 0.01 * x1775;
+            let x1832 = 0.01 * x1779;
+            let x1833 = x1774 + x1831;
+            let x1834 = x1832 + x1833;
+            let x1835 = 0.5 * x1834;
+            let x1836 = x1785 + x1835;
+            let x1837 = q[1] * 0.04;
+            let x1838 = x1830 * x1837;
+            let x1840 = x1836 - x1838;
+            let x1842 = 0.01 * x1788;
+            let x1843 = 0.01 * x1793;
+            let x1845 = x1842 - x1787;
+            let x1846 = x1845 - x1843;
+            let x1847 = 0.5 * x1846;
+            let x1849 = x1847 - x1799;
+            let x1850 = q[2] * 0.04;
+            let x1851 = x1830 * x1850;
+            let x1853 = x1849 - x1851;
+            let x1854 = 0.01 * x1802;
+            let x1855 = 0.01 * x1806;
+            let x1856 = x1801 + x1854;
+            let x1858 = x1855 - x1856;
+            let x1859 = 0.5 * x1858;
+            let x1861 = x1859 - x1813;
+            let x1862 = x754 * x1830;
+            let x1864 = x1861 - x1862;
+            let x1865 = 0.01 * x1817;
+            let x1867 = 0.01 * x1821;
+            let x1869 = x1815 - x1865;
+            let x1870 = x1869 - x1867;
+            let x1871 = 0.5 * x1870;
+            let x1873 = x1871 - x1827;
+            let x1874 = x773 * x1830;
+            let x1876 = x1873 - x1874;
+            let x1878 = x1325 + x1727;
+            let x1879 = x1878 - x1326;
+            let x1880 = 2.0 * x1879;
+            let x1881 = x1408 + x1412;
+            let x1883 = x1413 - x1881;
+            let x1884 = x1409 + x1883;
+            let x1885 = 2.0 * x1884;
+            let x1887 = x1315 - x1319;
+            let x1888 = x1887 - x1316;
+            let x1889 = x1320 + x1888;
+            let x1890 = 2.0 * x1889;
+            let x1891 = 2.0 * x1880;
+            let x1892 = 2.0 * x1885;
+            let x1893 = 2.0 * x1890;
+            let x1894 = qd[6] * qd[8];
+            let x1895 = qd[5] * qd[7];
+            let x1897 = x1894 + x1895;
+            let x1899 = x1895 - x1897;
+            let x1900 = x1894 + x1899;
+            let x1901 = 2.0 * x1900;
+            let x1903 = x1360 - x1363;
+            let x1904 = x1903 - x1360;
+            let x1905 = x1363 + x1904;
+            let x1906 = 2.0 * x1905;
+            let x1907 = 2.0 * x1901;
+            let x1908 = 2.0 * x1906;
+            let x1909 = x219 * x1891;
+            let x1910 = 0.1 * x1909;
+            let x1911 = x844 * x1892;
+            let x1912 = x1283 * x1907;
+            let x1913 = x1911 + x1912;
+            let x1914 = 0.2 * x1913;
+            let x1915 = x846 * x1893;
+            let x1916 = x1284 * x1908;
+            let x1917 = x1915 + x1916;
+            let x1918 = 0.3 * x1917;
+            let x1919 = x1910 + x1914;
+            let x1920 = x1918 + x1919;
+            let x1921 = 0.5 * x1920;
+            let x1922 = x218 * x1891;
+            let x1923 = 0.1 * x1922;
+            let x1924 = x846 * x1892;
+            let x1925 = x1284 * x1907;
+            let x1926 = x1924 + x1925;
+            let x1927 = 0.2 * x1926;
+            let x1929 = x844 * x1893;
+            let x1930 = x1283 * x1908;
+            let x1931 = x1929 + x1930;
+            let x1932 = 0.3 * x1931;
+            let x1933 = x1923 - x1927;
+            let x1934 = x1932 + x1933;
+            let x1935 = 0.5 * x1934;
+            let x1936 = x846 * x1891;
+            let x1937 = 0.1 * x1936;
+            let x1938 = x218 * x1892;
+            let x1939 = x125 * x1907;
+            let x1940 = x1938 + x1939;
+            let x1941 = 0.2 * x1940;
+            let x1942 = x219 * x1893;
+            let x1943 = x126 * x1908;
+            let x1944 = x1942 + x1943;
+            let x1945 = 0.3 * x1944;
+            let x1947 = x1937 + x1941;
+            let x1948 = x1947 - x1945;
+            let x1949 = 0.5 * x1948;
+            let x1950 = x844 * x1891;
+            let x1951 = 0.1 * x1950;
+            let x1953 = x219 * x1892;
+            let x1954 = x126 * x1907;
+            let x1955 = x1953 + x1954;
+            let x1956 = 0.2 * x1955;
+            let x1957 = x218 * x1893;
+            let x1958 = x125 * x1908;
+            let x1959 = x1957 + x1958;
+            let x1960 = 0.3 * x1959;
+            let x1961 = x1956 - x1951;
+            let x1962 = x1960 + x1961;
+            let x1963 = 0.5 * x1962;
+            let x1964 = x742 + x743;
+            let x1965 = x828 + x1964;
+            let x1966 = x831 + x1965;
+            let x1967 = 0.2 * x1911;
+            let x1968 = 0.3 * x1915;
+            let x1969 = x1910 + x1967;
+            let x1970 = x1968 + x1969;
+            let x1971 = 0.5 * x1970;
+            let x1972 = x1921 + x1971;
+            let x1973 = q[5] * 0.8000000000000002;
+            let x1974 = x1966 * x1973;
+            let x1976 = x1972 - x1974;
+            let x1978 = 0.2 * x1924;
+            let x1979 = 0.3 * x1929;
+            let x1981 = x1978 - x1923;
+            let x1982 = x1981 - x1979;
+            let x1983 = 0.5 * x1982;
+            let x1985 = x1983 - x1935;
+            let x1986 = q[6] * 0.8000000000000002;
+            let x1987 = x1966 * x1986;
+            let x1989 = x1985 - x1987;
+            let x1990 = 0.2 * x1938;
+            let x1991 = 0.3 * x1942;
+            let x1992 = x1937 + x1990;
+            let x1994 = x1991 - x1992;
+            let x1995 = 0.5 * x1994;
+            let x1997 = x1995 - x1949;
+            let x1998 = q[7] * 0.8000000000000002;
+            let x1999 = x1966 * x1998;
+            let x2001 = x1997 - x1999;
+            let x2002 = 0.2 * x1953;
+            let x2004 = 0.3 * x1957;
+            let x2006 = x1951 - x2002;
+            let x2007 = x2006 - x2004;
+            let x2008 = 0.5 * x2007;
+            let x2010 = x2008 - x1963;
+            let x2011 = q[8] * 0.8000000000000002;
+            let x2012 = x1966 * x2011;
+            let x2014 = x2010 - x2012;
+            let x2015 = x1735 + x1976;
+            let x2016 = x1736 + x1989;
+            let x2017 = x1737 + x2001;
+            let x2018 = x2014 - x1738;
+            out[0] = x1734;
+            out[1] = x1840;
+            out[2] = x1853;
+            out[3] = x1864;
+            out[4] = x1876;
+            out[5] = x2015;
+            out[6] = x2016;
+            out[7] = x2017;
+            out[8] = x2018;
+        }
+        /// Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.
+        pub fn eval_newton(
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            phi: &mut [f64],
+            phi_q: &mut [f64],
+            mass: &mut [f64],
+            force: &mut [f64],
+        ) {
+            let q: &[f64; 9] = q.try_into().expect("q must have n_coords entries");
+            let qd: &[f64; 9] = qd.try_into().expect("qd must have n_coords entries");
+            let phi: &mut [f64; 7] = phi.try_into().expect("phi must have 7 entries");
+            let phi_q: &mut [f64; 28] = phi_q
+                .try_into()
+                .expect("phi_q must have 28 entries");
+            let mass: &mut [f64; 33] = mass
+                .try_into()
+                .expect("mass must have 33 entries");
+            let force: &mut [f64; 9] = force
+                .try_into()
+                .expect("force must have 9 entries");
+            let mut s = [0.0f64; 94];
+            eval_newton_shared_0(q, qd, t, &mut s);
+            eval_newton_part_0(q, qd, t, &s, phi, phi_q, mass, force);
+            eval_newton_part_1(q, qd, &s, force);
+        }
+        #[inline(never)]
+        fn eval_newton_shared_0(q: &[f64; 9], qd: &[f64; 9], t: f64, s: &mut [f64; 94]) {
+            let x9 = 3.0 * t;
+            s[0] = x9;
+            let x10 = x9.cos();
+            s[1] = x10;
+            let x11 = 0.5 * x10;
+            s[2] = x11;
+            let x13 = t.sin();
+            s[3] = x13;
+            let x14 = 0.2 * x13;
+            s[4] = x14;
+            let x25 = q[5] * q[5];
+            s[5] = x25;
+            let x26 = q[6] * q[6];
+            s[6] = x26;
+            let x125 = q[5] * 2.0;
+            s[7] = x125;
+            let x126 = q[6] * 2.0;
+            s[8] = x126;
+            let x153 = x125 * qd[5];
+            s[9] = x153;
+            let x154 = x126 * qd[6];
+            s[10] = x154;
+            let x173 = q[6] * qd[5];
+            s[11] = x173;
+            let x174 = q[5] * qd[6];
+            s[12] = x174;
+            let x219 = 2.0 * qd[6];
+            s[13] = x219;
+            let x531 = 2.0 * x126;
+            s[14] = x531;
+            let x742 = qd[5] * qd[5];
+            s[15] = x742;
+            let x743 = qd[6] * qd[6];
+            s[16] = x743;
+            let x828 = qd[7] * qd[7];
+            s[17] = x828;
+            let x831 = qd[8] * qd[8];
+            s[18] = x831;
+            let x844 = 2.0 * qd[7];
+            s[19] = x844;
+            let x846 = 2.0 * qd[8];
+            s[20] = x846;
+            let x1265 = x25 + x26;
+            s[21] = x1265;
+            let x1283 = 2.0 * q[7];
+            s[22] = x1283;
+            let x1284 = 2.0 * q[8];
+            s[23] = x1284;
+            let x1314 = x153 + x154;
+            s[24] = x1314;
+            let x1315 = q[7] * qd[6];
+            s[25] = x1315;
+            let x1316 = q[6] * qd[7];
+            s[26] = x1316;
+            let x1319 = q[8] * qd[5];
+            s[27] = x1319;
+            let x1320 = q[5] * qd[8];
+            s[28] = x1320;
+            let x1325 = q[8] * qd[7];
+            s[29] = x1325;
+            let x1326 = q[7] * qd[8];
+            s[30] = x1326;
+            let x1360 = qd[6] * qd[7];
+            s[31] = x1360;
+            let x1363 = qd[5] * qd[8];
+            s[32] = x1363;
+            let x1383 = 2.0 * x1265;
+            s[33] = x1383;
+            let x1384 = x1383 - 1.0;
+            s[34] = x1384;
+            let x1385 = q[6] * q[8];
+            s[35] = x1385;
+            let x1386 = 2.0 * x1385;
+            s[36] = x1386;
+            let x1387 = q[5] * q[7];
+            s[37] = x1387;
+            let x1388 = 2.0 * x1387;
+            s[38] = x1388;
+            let x1390 = x1386 - x1388;
+            s[39] = x1390;
+            let x1395 = -x1390;
+            s[40] = x1395;
+            let x1396 = x1395.atan2(x1384);
+            s[41] = x1396;
+            let x1407 = 2.0 * x1314;
+            s[42] = x1407;
+            let x1408 = q[8] * qd[6];
+            s[43] = x1408;
+            let x1409 = q[6] * qd[8];
+            s[44] = x1409;
+            let x1410 = x1408 + x1409;
+            s[45] = x1410;
+            let x1411 = 2.0 * x1410;
+            s[46] = x1411;
+            let x1412 = q[7] * qd[5];
+            s[47] = x1412;
+            let x1413 = q[5] * qd[7];
+            s[48] = x1413;
+            let x1414 = x1412 + x1413;
+            s[49] = x1414;
+            let x1415 = 2.0 * x1414;
+            s[50] = x1415;
+            let x1417 = x1411 - x1415;
+            s[51] = x1417;
+            let x1418 = x1384 * x1384;
+            s[52] = x1418;
+            let x1419 = x1390 * x1390;
+            s[53] = x1419;
+            let x1420 = x1418 + x1419;
+            s[54] = x1420;
+            let x1421 = x1384 * x1417;
+            s[55] = x1421;
+            let x1423 = x1390 * x1407;
+            s[56] = x1423;
+            let x1424 = x1423 - x1421;
+            s[57] = x1424;
+            let x1425 = 1.0 / x1420;
+            s[58] = x1425;
+            let x1426 = x1424 * x1425;
+            s[59] = x1426;
+            let x1427 = 0.1 * x1426;
+            s[60] = x1427;
+            let x1429 = x11 - x1427;
+            s[61] = x1429;
+            let x1706 = 2.0 * x1396;
+            s[62] = x1706;
+            let x1708 = x1429 - x1706;
+            s[63] = x1708;
+            let x1727 = x174 - x173;
+            s[64] = x1727;
+            let x1878 = x1325 + x1727;
+            s[65] = x1878;
+            let x1879 = x1878 - x1326;
+            s[66] = x1879;
+            let x1880 = 2.0 * x1879;
+            s[67] = x1880;
+            let x1881 = x1408 + x1412;
+            s[68] = x1881;
+            let x1883 = x1413 - x1881;
+            s[69] = x1883;
+            let x1884 = x1409 + x1883;
+            s[70] = x1884;
+            let x1885 = 2.0 * x1884;
+            s[71] = x1885;
+            let x1887 = x1315 - x1319;
+            s[72] = x1887;
+            let x1888 = x1887 - x1316;
+            s[73] = x1888;
+            let x1889 = x1320 + x1888;
+            s[74] = x1889;
+            let x1890 = 2.0 * x1889;
+            s[75] = x1890;
+            let x1891 = 2.0 * x1880;
+            s[76] = x1891;
+            let x1892 = 2.0 * x1885;
+            s[77] = x1892;
+            let x1893 = 2.0 * x1890;
+            s[78] = x1893;
+            let x1894 = qd[6] * qd[8];
+            s[79] = x1894;
+            let x1895 = qd[5] * qd[7];
+            s[80] = x1895;
+            let x1897 = x1894 + x1895;
+            s[81] = x1897;
+            let x1899 = x1895 - x1897;
+            s[82] = x1899;
+            let x1900 = x1894 + x1899;
+            s[83] = x1900;
+            let x1901 = 2.0 * x1900;
+            s[84] = x1901;
+            let x1903 = x1360 - x1363;
+            s[85] = x1903;
+            let x1904 = x1903 - x1360;
+            s[86] = x1904;
+            let x1905 = x1363 + x1904;
+            s[87] = x1905;
+            let x1906 = 2.0 * x1905;
+            s[88] = x1906;
+            let x1907 = 2.0 * x1901;
+            s[89] = x1907;
+            let x1908 = 2.0 * x1906;
+            s[90] = x1908;
+            let x1964 = x742 + x743;
+            s[91] = x1964;
+            let x1965 = x828 + x1964;
+            s[92] = x1965;
+            let x1966 = x831 + x1965;
+            s[93] = x1966;
+        }
+        #[inline(never)]
+        fn eval_newton_part_0(
+            q: &[f64; 9],
+            qd: &[f64; 9],
+            t: f64,
+            s: &[f64; 94],
+            phi: &mut [f64; 7],
+            phi_q: &mut [f64; 28],
+            mass: &mut [f64; 33],
+            force: &mut [f64; 9],
+        ) {
+            let x3 = 4.0 * t;
+            let x4 = x3.sin();
+            let x5 = 3.0 * x4;
+            let x23 = q[3] * q[3];
+            let x24 = q[4] * q[4];
+            let x50 = q[5] * q[6];
+            let x51 = 2.0 * x50;
+            let x52 = q[3] * q[4];
+            let x54 = 2.0 * x52;
+            let x123 = q[3] * 2.0;
+            let x124 = q[4] * 2.0;
+            let x127 = -s[7];
+            let x128 = -x123;
+            let x177 = q[4] * qd[3];
+            let x178 = q[3] * qd[4];
+            let x216 = 2.0 * qd[3];
+            let x217 = 2.0 * qd[4];
+            let x286 = 1.0 + q[0];
+            let x287 = x286 * x286;
+            let x288 = q[1] * q[1];
+            let x289 = q[2] * q[2];
+            let x293 = 2.0 * x286;
+            let x294 = qd[0] * x293;
+            let x295 = q[1] * 2.0;
+            let x297 = q[2] * 2.0;
+            let x444 = qd[1] * qd[1];
+            let x448 = qd[2] * qd[2];
+            let x461 = 2.0 * qd[1];
+            let x463 = 2.0 * qd[2];
+            let x474 = -s[8];
+            let x527 = 2.0 * x124;
+            let x529 = 2.0 * s[7];
+            let x533 = x124 * x527;
+            let x535 = 0.01 * x533;
+            let x537 = s[7] * x529;
+            let x541 = s[8] * s[14];
+            let x551 = x23 * 0.04;
+            let x553 = 2.0 * x123;
+            let x554 = x124 * x553;
+            let x555 = 0.01 * x554;
+            let x556 = s[7] * s[14];
+            let x560 = s[8] * x529;
+            let x566 = x52 * 0.04;
+            let x596 = x123 * x527;
+            let x598 = 0.01 * x596;
+            let x606 = x123 * x553;
+            let x607 = 0.01 * x606;
+            let x611 = x24 * 0.04;
+            let x740 = qd[3] * qd[3];
+            let x741 = qd[4] * qd[4];
+            let x754 = q[3] * 0.04;
+            let x773 = q[4] * 0.04;
+            let x1248 = x288 + x289;
+            let x1249 = q[2] * q[3];
+            let x1250 = 2.0 * x1249;
+            let x1251 = q[1] * q[4];
+            let x1252 = 2.0 * x1251;
+            let x1253 = q[2] * q[4];
+            let x1254 = 2.0 * x1253;
+            let x1255 = q[1] * q[3];
+            let x1256 = 2.0 * x1255;
+            let x1257 = x1250 + x1252;
+            let x1258 = q[1] * q[2];
+            let x1259 = 2.0 * x1258;
+            let x1261 = x1254 - x1256;
+            let x1262 = x54 + x1259;
+            let x1263 = q[7] * q[7];
+            let x1264 = q[8] * q[8];
+            let x1266 = q[6] * q[7];
+            let x1267 = 2.0 * x1266;
+            let x1268 = q[5] * q[8];
+            let x1269 = 2.0 * x1268;
+            let x1271 = x1267 - x1269;
+            let x1272 = q[7] * q[8];
+            let x1273 = 2.0 * x1272;
+            let x1274 = x51 + x1273;
+            let x1275 = -x1274;
+            let x1276 = x23 + x1248;
+            let x1277 = x24 + x1276;
+            let x1278 = x1277 - 1.0;
+            let x1279 = x1263 + s[21];
+            let x1280 = x1264 + x1279;
+            let x1281 = x1280 - 1.0;
+            let x1282 = -x295;
+            let x1285 = -s[23];
+            let x1286 = -s[22];
+            let x1288 = q[3] * qd[2];
+            let x1289 = q[2] * qd[3];
+            let x1292 = q[4] * qd[1];
+            let x1293 = q[1] * qd[4];
+            let x1296 = q[4] * qd[2];
+            let x1297 = q[2] * qd[4];
+            let x1300 = q[3] * qd[1];
+            let x1301 = q[1] * qd[3];
+            let x1305 = q[2] * qd[1];
+            let x1306 = q[1] * qd[2];
+            let x1338 = qd[2] * qd[3];
+            let x1341 = qd[1] * qd[4];
+            let x1344 = qd[2] * qd[4];
+            let x1347 = qd[1] * qd[3];
+            let x1391 = x287.sqrt();
+            let x1392 = x1391 - 1.0;
+            let x1400 = 2.0 * x1391;
+            let x1401 = 1.0 / x1400;
+            let x1402 = x294 * x1401;
+            let x1403 = 0.8 * x1402;
+            let x1405 = x5 - x1403;
+            let x1441 = 2.0 * x297;
+            let x1442 = x297 * x1441;
+            let x1443 = 0.01 * x1442;
+            let x1444 = x607 + x1443;
+            let x1445 = x535 + x1444;
+            let x1446 = 0.5 * x1445;
+            let x1447 = x288 * 0.04;
+            let x1448 = x1446 + x1447;
+            let x1449 = 2.0 * x295;
+            let x1450 = x297 * x1449;
+            let x1451 = 0.01 * x1450;
+            let x1452 = x1451 - x598;
+            let x1453 = x555 + x1452;
+            let x1454 = 0.5 * x1453;
+            let x1456 = 0.04 * x1258;
+            let x1457 = x1456 - x1454;
+            let x1458 = x297 * x527;
+            let x1459 = 0.01 * x1458;
+            let x1460 = x123 * x1449;
+            let x1461 = 0.01 * x1460;
+            let x1462 = x124 * x1441;
+            let x1463 = 0.01 * x1462;
+            let x1465 = x1459 + x1461;
+            let x1466 = x1465 - x1463;
+            let x1467 = 0.5 * x1466;
+            let x1469 = 0.04 * x1255;
+            let x1470 = x1469 - x1467;
+            let x1471 = x297 * x553;
+            let x1472 = 0.01 * x1471;
+            let x1474 = x123 * x1441;
+            let x1475 = 0.01 * x1474;
+            let x1476 = x124 * x1449;
+            let x1477 = 0.01 * x1476;
+            let x1478 = x1475 - x1472;
+            let x1479 = x1477 + x1478;
+            let x1480 = 0.5 * x1479;
+            let x1482 = 0.04 * x1251;
+            let x1483 = x1482 - x1480;
+            let x1484 = x295 * x1441;
+            let x1485 = 0.01 * x1484;
+            let x1487 = x555 - x1485;
+            let x1488 = x1487 - x598;
+            let x1489 = 0.5 * x1488;
+            let x1490 = x1456 + x1489;
+            let x1491 = x295 * x1449;
+            let x1492 = 0.01 * x1491;
+            let x1493 = x535 + x1492;
+            let x1494 = x607 + x1493;
+            let x1495 = 0.5 * x1494;
+            let x1496 = x289 * 0.04;
+            let x1497 = x1495 + x1496;
+            let x1498 = x295 * x527;
+            let x1499 = 0.01 * x1498;
+            let x1502 = x1499 - x1477;
+            let x1503 = x1502 - x1475;
+            let x1504 = 0.5 * x1503;
+            let x1505 = 0.04 * x1249;
+            let x1506 = x1504 + x1505;
+            let x1507 = x295 * x553;
+            let x1508 = 0.01 * x1507;
+            let x1509 = x1463 + x1508;
+            let x1511 = x1461 - x1509;
+            let x1512 = 0.5 * x1511;
+            let x1513 = 0.04 * x1253;
+            let x1514 = x1512 + x1513;
+            let x1515 = x1459 - x1509;
+            let x1516 = 0.5 * x1515;
+            let x1517 = x1469 + x1516;
+            let x1519 = x1477 - x1499;
+            let x1520 = x1519 - x1472;
+            let x1521 = 0.5 * x1520;
+            let x1522 = x1505 + x1521;
+            let x1523 = x1443 + x1493;
+            let x1524 = 0.5 * x1523;
+            let x1525 = x551 + x1524;
+            let x1527 = x1485 - x555;
+            let x1528 = x1527 - x1451;
+            let x1529 = 0.5 * x1528;
+            let x1530 = x566 + x1529;
+            let x1531 = x1478 - x1499;
+            let x1532 = 0.5 * x1531;
+            let x1533 = x1482 + x1532;
+            let x1535 = x1508 - x1465;
+            let x1536 = 0.5 * x1535;
+            let x1537 = x1513 + x1536;
+            let x1538 = x1452 - x1485;
+            let x1539 = 0.5 * x1538;
+            let x1540 = x566 + x1539;
+            let x1541 = x1444 + x1492;
+            let x1542 = 0.5 * x1541;
+            let x1543 = x611 + x1542;
+            let x1544 = 2.0 * s[22];
+            let x1545 = 2.0 * s[23];
+            let x1546 = 0.1 * x541;
+            let x1547 = s[22] * x1544;
+            let x1548 = 0.2 * x1547;
+            let x1549 = s[23] * x1545;
+            let x1550 = 0.3 * x1549;
+            let x1551 = x1546 + x1548;
+            let x1552 = x1550 + x1551;
+            let x1553 = 0.5 * x1552;
+            let x1554 = s[5] * 0.8000000000000002;
+            let x1555 = x1553 + x1554;
+            let x1556 = 0.1 * x560;
+            let x1557 = s[22] * x1545;
+            let x1558 = 0.2 * x1557;
+            let x1560 = s[23] * x1544;
+            let x1561 = 0.3 * x1560;
+            let x1562 = x1556 - x1558;
+            let x1563 = x1561 + x1562;
+            let x1564 = 0.5 * x1563;
+            let x1566 = x50 * 0.8000000000000002;
+            let x1567 = x1566 - x1564;
+            let x1568 = s[8] * x1545;
+            let x1569 = 0.1 * x1568;
+            let x1570 = x529 * s[22];
+            let x1571 = 0.2 * x1570;
+            let x1572 = s[14] * s[23];
+            let x1573 = 0.3 * x1572;
+            let x1575 = x1569 + x1571;
+            let x1576 = x1575 - x1573;
+            let x1577 = 0.5 * x1576;
+            let x1579 = 0.8000000000000002 * s[37];
+            let x1580 = x1579 - x1577;
+            let x1581 = s[8] * x1544;
+            let x1582 = 0.1 * x1581;
+            let x1584 = s[14] * s[22];
+            let x1585 = 0.2 * x1584;
+            let x1586 = x529 * s[23];
+            let x1587 = 0.3 * x1586;
+            let x1588 = x1585 - x1582;
+            let x1589 = x1587 + x1588;
+            let x1590 = 0.5 * x1589;
+            let x1592 = 0.8000000000000002 * x1268;
+            let x1593 = x1592 - x1590;
+            let x1594 = 0.1 * x556;
+            let x1596 = 0.2 * x1560;
+            let x1597 = 0.3 * x1557;
+            let x1599 = x1596 - x1594;
+            let x1600 = x1599 - x1597;
+            let x1601 = 0.5 * x1600;
+            let x1602 = x1566 + x1601;
+            let x1603 = 0.1 * x537;
+            let x1604 = 0.2 * x1549;
+            let x1605 = 0.3 * x1547;
+            let x1606 = x1603 + x1604;
+            let x1607 = x1605 + x1606;
+            let x1608 = 0.5 * x1607;
+            let x1609 = s[6] * 0.8000000000000002;
+            let x1610 = x1608 + x1609;
+            let x1611 = s[7] * x1545;
+            let x1612 = 0.1 * x1611;
+            let x1613 = 0.2 * x1586;
+            let x1615 = 0.3 * x1584;
+            let x1617 = x1612 - x1613;
+            let x1618 = x1617 - x1615;
+            let x1619 = 0.5 * x1618;
+            let x1620 = 0.8000000000000002 * x1266;
+            let x1621 = x1619 + x1620;
+            let x1622 = s[7] * x1544;
+            let x1623 = 0.1 * x1622;
+            let x1624 = 0.2 * x1572;
+            let x1625 = 0.3 * x1570;
+            let x1626 = x1623 + x1624;
+            let x1628 = x1625 - x1626;
+            let x1629 = 0.5 * x1628;
+            let x1630 = 0.8000000000000002 * s[35];
+            let x1631 = x1629 + x1630;
+            let x1632 = 0.1 * x1572;
+            let x1633 = 0.2 * x1622;
+            let x1634 = 0.3 * x1568;
+            let x1635 = x1632 + x1633;
+            let x1637 = x1634 - x1635;
+            let x1638 = 0.5 * x1637;
+            let x1639 = x1579 + x1638;
+            let x1640 = 0.1 * x1586;
+            let x1641 = 0.2 * x1611;
+            let x1643 = 0.3 * x1581;
+            let x1645 = x1640 - x1641;
+            let x1646 = x1645 - x1643;
+            let x1647 = 0.5 * x1646;
+            let x1648 = x1620 + x1647;
+            let x1649 = 0.1 * x1549;
+            let x1650 = 0.2 * x537;
+            let x1651 = x541 * 0.3;
+            let x1652 = x1649 + x1650;
+            let x1653 = x1651 + x1652;
+            let x1654 = 0.5 * x1653;
+            let x1655 = 0.8000000000000002 * x1263;
+            let x1656 = x1654 + x1655;
+            let x1657 = 0.1 * x1560;
+            let x1659 = 0.2 * x556;
+            let x1660 = x560 * 0.3;
+            let x1662 = x1659 - x1657;
+            let x1663 = x1662 - x1660;
+            let x1664 = 0.5 * x1663;
+            let x1665 = 0.8000000000000002 * x1272;
+            let x1666 = x1664 + x1665;
+            let x1667 = 0.1 * x1584;
+            let x1668 = 0.2 * x1581;
+            let x1670 = 0.3 * x1611;
+            let x1672 = x1667 - x1668;
+            let x1673 = x1672 - x1670;
+            let x1674 = 0.5 * x1673;
+            let x1675 = x1592 + x1674;
+            let x1676 = 0.1 * x1570;
+            let x1677 = 0.2 * x1568;
+            let x1678 = 0.3 * x1622;
+            let x1679 = x1676 + x1677;
+            let x1681 = x1678 - x1679;
+            let x1682 = 0.5 * x1681;
+            let x1683 = x1630 + x1682;
+            let x1684 = 0.1 * x1557;
+            let x1686 = 0.2 * x560;
+            let x1687 = x556 * 0.3;
+            let x1689 = x1686 - x1684;
+            let x1690 = x1689 - x1687;
+            let x1691 = 0.5 * x1690;
+            let x1692 = x1665 + x1691;
+            let x1693 = 0.1 * x1547;
+            let x1694 = 0.2 * x541;
+            let x1695 = x537 * 0.3;
+            let x1696 = x1693 + x1694;
+            let x1697 = x1695 + x1696;
+            let x1698 = 0.5 * x1697;
+            let x1699 = 0.8000000000000002 * x1264;
+            let x1700 = x1698 + x1699;
+            let x1701 = 50.0 * x1392;
+            let x1703 = x1405 - x1701;
+            let x1704 = x293 * x1401;
+            let x1705 = x1703 * x1704;
+            let x1709 = s[22] * s[34];
+            let x1710 = x529 * s[39];
+            let x1711 = x1709 + x1710;
+            let x1712 = s[58] * x1711;
+            let x1722 = s[63] * x1712;
+            let x1729 = s[4] * s[22];
+            let x1734 = 1.0 + x1705;
+            let x1735 = x1722 - x1729;
+            let x1742 = x1306 - x1305;
+            let x1743 = x177 + x1742;
+            let x1744 = x1743 - x178;
+            let x1745 = 2.0 * x1744;
+            let x1746 = x1296 + x1300;
+            let x1748 = x1301 - x1746;
+            let x1749 = x1297 + x1748;
+            let x1750 = 2.0 * x1749;
+            let x1753 = x1288 - x1292;
+            let x1754 = x1753 - x1289;
+            let x1755 = x1293 + x1754;
+            let x1756 = 2.0 * x1755;
+            let x1757 = 2.0 * x1745;
+            let x1758 = 2.0 * x1750;
+            let x1759 = 2.0 * x1756;
+            let x1760 = x1344 + x1347;
+            let x1762 = x1347 - x1760;
+            let x1763 = x1344 + x1762;
+            let x1764 = 2.0 * x1763;
+            let x1767 = x1338 - x1341;
+            let x1768 = x1767 - x1338;
+            let x1769 = x1341 + x1768;
+            let x1770 = 2.0 * x1769;
+            let x1771 = 2.0 * x1764;
+            let x1772 = 2.0 * x1770;
+            let x1773 = x463 * x1757;
+            let x1774 = 0.01 * x1773;
+            let x1775 = x216 * x1758;
+            let x1776 = x123 * x1771;
+            let x1777 = x1775 + x1776;
+            let x1778 = 0.01 * x1777;
+            let x1779 = x217 * x1759;
+            let x1780 = x124 * x1772;
+            let x1781 = x1779 + x1780;
+            let x1782 = 0.01 * x1781;
+            let x1783 = x1774 + x1778;
+            let x1784 = x1782 + x1783;
+            let x1785 = 0.5 * x1784;
+            let x1786 = x461 * x1757;
+            let x1787 = 0.01 * x1786;
+            let x1788 = x217 * x1758;
+            let x1789 = x124 * x1771;
+            let x1790 = x1788 + x1789;
+            let x1791 = 0.01 * x1790;
+            let x1793 = x216 * x1759;
+            let x1794 = x123 * x1772;
+            let x1795 = x1793 + x1794;
+            let x1796 = 0.01 * x1795;
+            let x1797 = x1787 - x1791;
+            let x1798 = x1796 + x1797;
+            let x1799 = 0.5 * x1798;
+            let x1800 = x217 * x1757;
+            let x1801 = 0.01 * x1800;
+            let x1802 = x461 * x1758;
+            let x1803 = x295 * x1771;
+            let x1804 = x1802 + x1803;
+            let x1805 = 0.01 * x1804;
+            let x1806 = x463 * x1759;
+            let x1807 = x297 * x1772;
+            let x1808 = x1806 + x1807;
+            let x1809 = 0.01 * x1808;
+            let x1811 = x1801 + x1805;
+            let x1812 = x1811 - x1809;
+            let x1813 = 0.5 * x1812;
+            let x1814 = x216 * x1757;
+            let x1815 = 0.01 * x1814;
+            let x1817 = x463 * x1758;
+            let x1818 = x297 * x1771;
+            let x1819 = x1817 + x1818;
+            let x1820 = 0.01 * x1819;
+            let x1821 = x461 * x1759;
+            let x1822 = x295 * x1772;
+            let x1823 = x1821 + x1822;
+            let x1824 = 0.01 * x1823;
+            let x1825 = x1820 - x1815;
+            let x1826 = x1824 + x1825;
+            let x1827 = 0.5 * x1826;
+            let x1828 = x444 + x448;
+            let x1829 = x740 + x1828;
+            let x1830 = x741 + x1829;
+            let x1831 = 0.01 * x1775;
+            let x1832 = 0.01 * x1779;
+            let x1833 = x1774 + x1831;
+            let x1834 = x1832 + x1833;
+            let x1835 = 0.5 * x1834;
+            let x1836 = x1785 + x1835;
+            let x1837 = q[1] * 0.04;
+            let x1838 = x1830 * x1837;
+            let x1840 = x1836 - x1838;
+            let x1842 = 0.01 * x1788;
+            let x1843 = 0.01 * x1793;
+            let x1845 = x1842 - x1787;
+            let x1846 = x1845 - x1843;
+            let x1847 = 0.5 * x1846;
+            let x1849 = x1847 - x1799;
+            let x1850 = q[2] * 0.04;
+            let x1851 = x1830 * x1850;
+            let x1853 = x1849 - x1851;
+            let x1854 = 0.01 * x1802;
+            let x1855 = 0.01 * x1806;
+            let x1856 = x1801 + x1854;
+            let x1858 = x1855 - x1856;
+            let x1859 = 0.5 * x1858;
+            let x1861 = x1859 - x1813;
+            let x1862 = x754 * x1830;
+            let x1864 = x1861 - x1862;
+            let x1865 = 0.01 * x1817;
+            let x1867 = 0.01 * x1821;
+            let x1869 = x1815 - x1865;
+            let x1870 = x1869 - x1867;
+            let x1871 = 0.5 * x1870;
+            let x1873 = x1871 - x1827;
+            let x1874 = x773 * x1830;
+            let x1876 = x1873 - x1874;
+            let x1909 = s[13] * s[76];
+            let x1910 = 0.1 * x1909;
+            let x1911 = s[19] * s[77];
+            let x1912 = s[22] * s[89];
+            let x1913 = x1911 + x1912;
+            let x1914 = 0.2 * x1913;
+            let x1915 = s[20] * s[78];
+            let x1916 = s[23] * s[90];
+            let x1917 = x1915 + x1916;
+            let x1918 = 0.3 * x1917;
+            let x1919 = x1910 + x1914;
+            let x1920 = x1918 + x1919;
+            let x1921 = 0.5 * x1920;
+            let x1967 = 0.2 * x1911;
+            let x1968 = 0.3 * x1915;
+            let x1969 = x1910 + x1967;
+            let x1970 = x1968 + x1969;
+            let x1971 = 0.5 * x1970;
+            let x1972 = x1921 + x1971;
+            let x1973 = q[5] * 0.8000000000000002;
+            let x1974 = s[93] * x1973;
+            let x1976 = x1972 - x1974;
+            let x2015 = x1735 + x1976;
+            phi[0] = x1257;
+            phi_q[0] = x124;
+            phi_q[1] = x123;
+            phi_q[2] = x297;
+            phi_q[3] = x295;
+            phi[1] = x1261;
+            phi_q[4] = x128;
+            phi_q[5] = x124;
+            phi_q[6] = x1282;
+            phi_q[7] = x297;
+            phi[2] = x1262;
+            phi_q[8] = x297;
+            phi_q[9] = x295;
+            phi_q[10] = x124;
+            phi_q[11] = x123;
+            phi[3] = x1271;
+            phi_q[12] = x1285;
+            phi_q[13] = s[22];
+            phi_q[14] = s[8];
+            phi_q[15] = x127;
+            phi[4] = x1275;
+            phi_q[16] = x474;
+            phi_q[17] = x127;
+            phi_q[18] = x1285;
+            phi_q[19] = x1286;
+            phi[5] = x1278;
+            phi_q[20] = x295;
+            phi_q[21] = x297;
+            phi_q[22] = x123;
+            phi_q[23] = x124;
+            phi[6] = x1281;
+            phi_q[24] = s[7];
+            phi_q[25] = s[8];
+            phi_q[26] = s[22];
+            phi_q[27] = s[23];
+            mass[0] = 2.0;
+            mass[1] = x1448;
+            mass[2] = x1457;
+            mass[3] = x1470;
+            mass[4] = x1483;
+            mass[5] = x1490;
+            mass[6] = x1497;
+            mass[7] = x1506;
+            mass[8] = x1514;
+            mass[9] = x1517;
+            mass[10] = x1522;
+            mass[11] = x1525;
+            mass[12] = x1530;
+            mass[13] = x1533;
+            mass[14] = x1537;
+            mass[15] = x1540;
+            mass[16] = x1543;
+            mass[17] = x1555;
+            mass[18] = x1567;
+            mass[19] = x1580;
+            mass[20] = x1593;
+            mass[21] = x1602;
+            mass[22] = x1610;
+            mass[23] = x1621;
+            mass[24] = x1631;
+            mass[25] = x1639;
+            mass[26] = x1648;
+            mass[27] = x1656;
+            mass[28] = x1666;
+            mass[29] = x1675;
+            mass[30] = x1683;
+            mass[31] = x1692;
+            mass[32] = x1700;
+            force[0] = x1734;
+            force[1] = x1840;
+            force[2] = x1853;
+            force[3] = x1864;
+            force[4] = x1876;
+            force[5] = x2015;
+        }
+        #[inline(never)]
+        fn eval_newton_part_1(
+            q: &[f64; 9],
+            qd: &[f64; 9],
+            s: &[f64; 94],
+            force: &mut [f64; 9],
+        ) {
+            let x218 = 2.0 * qd[5];
+            let x1713 = s[23] * s[34];
+            let x1715 = s[14] * s[39];
+            let x1716 = x1715 - x1713;
+            let x1717 = s[58] * x1716;
+            let x1718 = s[7] * s[34];
+            let x1719 = s[58] * x1718;
+            let x1720 = s[8] * s[34];
+            let x1721 = s[58] * x1720;
+            let x1723 = s[63] * x1717;
+            let x1724 = s[63] * x1719;
+            let x1725 = s[63] * x1721;
+            let x1731 = s[4] * s[23];
+            let x1732 = s[4] * s[7];
+            let x1733 = s[4] * s[8];
+            let x1736 = x1723 + x1731;
+            let x1737 = x1724 + x1732;
+            let x1738 = x1725 + x1733;
+            let x1922 = x218 * s[76];
+            let x1923 = 0.1 * x1922;
+            let x1924 = s[20] * s[77];
+            let x1925 = s[23] * s[89];
+            let x1926 = x1924 + x1925;
+            let x1927 = 0.2 * x1926;
+            let x1929 = s[19] * s[78];
+            let x1930 = s[22] * s[90];
+            let x1931 = x1929 + x1930;
+            let x1932 = 0.3 * x1931;
+            let x1933 = x1923 - x1927;
+            let x1934 = x1932 + x1933;
+            let x1935 = 0.5 * x1934;
+            let x1936 = s[20] * s[76];
+            let x1937 = 0.1 * x1936;
+            let x1938 = x218 * s[77];
+            let x1939 = s[7] * s[89];
+            let x1940 = x1938 + x1939;
+            let x1941 = 0.2 * x1940;
+            let x1942 = s[13] * s[78];
+            let x1943 = s[8] * s[90];
+            let x1944 = x1942 + x1943;
+            let x1945 = 0.3 * x1944;
+            let x1947 = x1937 + x1941;
+            let x1948 = x1947 - x1945;
+            let x1949 = 0.5 * x1948;
+            let x1950 = s[19] * s[76];
+            let x1951 = 0.1 * x1950;
+            let x1953 = s[13] * s[77];
+            let x1954 = s[8] * s[89];
+            let x1955 = x1953 + x1954;
+            let x1956 = 0.2 * x1955;
+            let x1957 = x218 * s[78];
+            let x1958 = s[7] * s[90];
+            let x1959 = x1957 + x1958;
+            let x1960 = 0.3 * x1959;
+            let x1961 = x1956 - x1951;
+            let x1962 = x1960 + x1961;
+            let x1963 = 0.5 * x1962;
+            let x1978 = 0.2 * x1924;
+            let x1979 = 0.3 * x1929;
+            let x1981 = x1978 - x1923;
+            let x1982 = x1981 - x1979;
+            let x1983 = 0.5 * x1982;
+            let x1985 = x1983 - x1935;
+            let x1986 = q[6] * 0.8000000000000002;
+            let x1987 = s[93] * x1986;
+            let x1989 = x1985 - x1987;
+            let x1990 = 0.2 * x1938;
+            let x1991 = 0.3 * x1942;
+            let x1992 = x1937 + x1990;
+            let x1994 = x1991 - x1992;
+            let x1995 = 0.5 * x1994;
+            let x1997 = x1995 - x1949;
+            let x1998 = q[7] * 0.8000000000000002;
+            let x1999 = s[93] * x1998;
+            let x2001 = x1997 - x1999;
+            let x2002 = 0.2 * x1953;
+            let x2004 = 0.3 * x1957;
+            let x2006 = x1951 - x2002;
+            let x2007 = x2006 - x2004;
+            let x2008 = 0.5 * x2007;
+            let x2010 = x2008 - x1963;
+            let x2011 = q[8] * 0.8000000000000002;
+            let x2012 = s[93] * x2011;
+            let x2014 = x2010 - x2012;
+            let x2016 = x1736 + x1989;
+            let x2017 = x1737 + x2001;
+            let x2018 = x2014 - x1738;
+            force[6] = x2016;
+            force[7] = x2017;
+            force[8] = x2018;
+        }
+    }
+    /// `oscillators` reduced by substitution, with the `exact` formulation.
+    #[derive(Debug, Clone, Copy, Default)]
+    pub struct Exact;
+    impl Mechanism for Exact {
+        fn info(&self) -> &'static MechanismInfo {
+            &exact::INFO
+        }
+        fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
+            phi(q, t, out)
+        }
+        fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
+            phi_q(q, t, out)
+        }
+        fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
+            phi_t(q, t, out)
+        }
+        fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+            gamma(q, qd, t, out)
+        }
+        fn mass(&self, q: &[f64], out: &mut [f64]) {
+            exact::mass(q, out)
+        }
+        fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+            exact::force(q, qd, t, out)
+        }
+        fn potential(&self, q: &[f64]) -> f64 {
+            potential(q)
+        }
+        fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
+            power_nc(q, qd, t)
+        }
+        fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+            exact::eval_newton(q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+        }
+        fn eval_kinematics(
+            &self,
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            out: KinematicOutputs<'_>,
+        ) {
+            eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+        }
     }
 }
 /// `oscillators` with the `exact` formulation.
