@@ -19,7 +19,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use symbody::plot::{draw_log_log, LogSeries};
-use symbody::scenario::{kinematic, simulate, Options, Reactions, Run};
+use symbody::scenario::{kinematic, simulate, simulate_reduced, Options, Reactions, Run};
 use symbody_runtime::Formulation;
 
 // The independent reference of the `exact` formulation, shared with the tests.
@@ -114,6 +114,8 @@ type ReferenceCheck = (Formulation, f64, [Result<Errors, String>; 2]);
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Method {
     Hht,
+    /// HHT on the reduced model (`stewart_6_6::reduced`), recorded on the full one.
+    Reduced,
     /// No integration (`step` is then the output spacing; `alpha` does not apply).
     Kinematic,
 }
@@ -212,6 +214,22 @@ fn main() {
             {
                 let opts = options(formulation, step, alpha, reactions);
                 let (walls, outcome) = repeat(runs, &reference, || simulate(&opts));
+                // The reduced model beside the default settings (exact, recovered forces).
+                if formulation == Formulation::Exact
+                    && alpha == Options::default().alpha
+                    && reactions == Reactions::Recovered
+                {
+                    let (walls, outcome) = repeat(runs, &reference, || simulate_reduced(&opts));
+                    rows.push(Row {
+                        method: Method::Reduced,
+                        formulation,
+                        alpha,
+                        reactions,
+                        step,
+                        walls,
+                        outcome,
+                    });
+                }
                 let row = Row {
                     method: Method::Hht,
                     formulation,
@@ -275,6 +293,23 @@ fn main() {
                 })
                 .collect(),
         })
+        .chain(std::iter::once(LogSeries {
+            secondary: false,
+            name: format!(
+                "exact, α = {}, recovered, reduced model (60 / 54)",
+                Options::default().alpha
+            ),
+            points: rows
+                .iter()
+                .filter(|r| r.method == Method::Reduced)
+                .filter_map(|r| {
+                    r.outcome
+                        .as_ref()
+                        .ok()
+                        .map(|(_, e)| (r.median_wall(), e.force))
+                })
+                .collect(),
+        }))
         .chain(std::iter::once(LogSeries {
             secondary: false,
             name: "exact, kinematic path (no integration)".to_string(),
@@ -423,6 +458,7 @@ fn fail(msg: &str) -> ! {
 fn method_name(m: Method) -> &'static str {
     match m {
         Method::Hht => "hht",
+        Method::Reduced => "hht_reduced",
         Method::Kinematic => "kinematic",
     }
 }
@@ -493,7 +529,9 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
          {reference_step:e} s. Outputs compared every {OUTPUT_STEP} s. Wall time: median of \
          {runs} runs of the whole scenario (start, integration or kinematic solves, recording). \
          `exact` over [0, 2π], `paper` over [0, {PAPER_T_END}] s. For the kinematic path, \
-         \"h\" is the output spacing, steps are output times and Newton counts factorizations.\n"
+         \"h\" is the output spacing, steps are output times and Newton counts factorizations. \
+         `HHT, reduced`: the same integration on the 60-coordinate, 54-row reduced model \
+         (stewart_6_6::reduced), recorded on the full one.\n"
     );
     let _ = writeln!(
         s,
@@ -502,8 +540,13 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
     let _ = writeln!(s, "|---|---|---|---|---|---|---|---|---|---|---|---|");
     for r in rows {
         let head = match r.method {
-            Method::Hht => format!(
-                "| HHT | {} | {} | {} | {:e} |",
+            Method::Hht | Method::Reduced => format!(
+                "| {} | {} | {} | {} | {:e} |",
+                if r.method == Method::Hht {
+                    "HHT"
+                } else {
+                    "HHT, reduced"
+                },
                 r.formulation.name(),
                 r.alpha,
                 reactions_name(r.reactions),
@@ -583,8 +626,9 @@ fn markdown(rows: &[Row], checks: &[ReferenceCheck], reference_step: f64, runs: 
     if let Some(b) = best {
         let how = match b.method {
             Method::Kinematic => format!("kinematic path, outputs every {:e} s", b.step),
-            Method::Hht => format!(
-                "HHT, α = {}, {} forces, h = {:e} s",
+            Method::Hht | Method::Reduced => format!(
+                "{}, α = {}, {} forces, h = {:e} s",
+                method_name(b.method),
                 b.alpha,
                 reactions_name(b.reactions),
                 b.step
