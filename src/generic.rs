@@ -198,7 +198,7 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
     Ok(rec)
 }
 
-/// As [`run`], by the kinematic path (docs/design.md, decision 22) instead of integration:
+/// As [`run`], by the kinematic path (docs/design.md, decision 23) instead of integration:
 /// at each output time the position from the drivers, the velocity of least kinetic energy,
 /// and the saddle-point accelerations and multipliers. Exact only when the drivers leave no
 /// free direction with momentum (`symbody::scene::choose_path` checks); `opts.step` and

@@ -212,7 +212,7 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
     Ok(run)
 }
 
-/// The paper's scenario by the kinematic path (docs/design.md, decision 22): no integration;
+/// The paper's scenario by the kinematic path (docs/design.md, decision 23): no integration;
 /// at each output time the pose from the drivers, the velocity of least kinetic energy (the
 /// legs' idle spins carry no momentum, see `symbody::scene::choose_path`) and the
 /// accelerations and multipliers of the saddle-point system. `opts.step`, `alpha` and

@@ -1,4 +1,4 @@
-//! Reduction pass between "equations" and "emission" (docs/design.md, decision 23): rows of
+//! Reduction pass between "equations" and "emission" (docs/design.md, decision 24): rows of
 //! the form `a·qᵢ + b·qⱼ + g(t) = 0` and `a·qᵢ + g(t) = 0` (constant `a ≠ 0`, `b`) are
 //! eliminated by substituting `qᵢ = −(b·qⱼ + g(t))/a` into every other equation, so the
 //! reduced system has one coordinate and one row fewer for each. Their multipliers are

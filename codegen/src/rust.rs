@@ -276,6 +276,58 @@ fn formulation_names(f: Formulation) -> (Ident, Ident, TokenStream) {
     }
 }
 
+/// `pub mod exact` / `pub mod paper`: one formulation's mass pattern, `INFO` and functions.
+/// `bodies`, `joints` and `platform` are the tokens of those `MechanismInfo` fields.
+#[allow(clippy::too_many_arguments)]
+fn formulation_module(
+    sys: &System,
+    dynamics: &Dynamics,
+    doc: &str,
+    mech_name: &str,
+    gravity: [f64; 3],
+    bodies: TokenStream,
+    joints: TokenStream,
+    platform: TokenStream,
+) -> TokenStream {
+    let (modname, _, form) = formulation_names(dynamics.formulation);
+    let (m_rows, m_cols) = pattern(&dynamics.mass);
+    let mnnz = m_rows.len();
+    let constant = dynamics.mass_is_constant;
+    let fns = dynamics_functions(sys, dynamics);
+    quote! {
+        #[doc = #doc]
+        pub mod #modname {
+            use super::*;
+            /// Row of each mass-matrix nonzero (both triangles).
+            pub static MASS_ROWS: [u32; #mnnz] = [#(#m_rows),*];
+            /// Column of each mass-matrix nonzero.
+            pub static MASS_COLS: [u32; #mnnz] = [#(#m_cols),*];
+            /// Sizes, patterns and names for this formulation.
+            pub static INFO: MechanismInfo = MechanismInfo {
+                name: #mech_name,
+                n_coords: N_COORDS,
+                n_constraints: N_CONSTRAINTS,
+                formulation: #form,
+                gravity: [#(#gravity),*],
+                phi_q_rows: &PHI_Q_ROWS,
+                phi_q_cols: &PHI_Q_COLS,
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                mass_is_constant: #constant,
+                bodies: #bodies,
+                joints: #joints,
+                coord_names: &COORD_NAMES,
+                row_names: &ROW_NAMES,
+                q0: &Q0,
+                qd0: &QD0,
+                redundant_rows: &REDUNDANT_ROWS,
+                platform: #platform,
+            };
+            #(#fns)*
+        }
+    }
+}
+
 /// `pub mod reduced`: the system after the substitution pass (`crate::reduce`) as its own
 /// `Mechanism` per formulation, with the `REDUCTION` that maps it back to the full model. Its
 /// `MechanismInfo` lists no bodies or joints: those are read on the full model after
@@ -334,48 +386,22 @@ fn reduced_module(
     let gx = model.gravity;
     let mut forms = Vec::new();
     for dynamics in &r.dynamics {
-        let (modname, type_name, form) = formulation_names(dynamics.formulation);
-        let (m_rows, m_cols) = pattern(&dynamics.mass);
-        let mnnz = m_rows.len();
-        let constant = dynamics.mass_is_constant;
-        let dfns = dynamics_functions(r, dynamics);
+        let (modname, type_name, _) = formulation_names(dynamics.formulation);
         let type_doc = format!(
             " `{}` reduced by substitution, with the `{}` formulation.",
             model.name,
             dynamics.formulation.name()
         );
-        forms.push(quote! {
-            /// The reduced system's mass matrix and forces in this formulation.
-            pub mod #modname {
-                use super::*;
-                /// Row of each mass-matrix nonzero (both triangles).
-                pub static MASS_ROWS: [u32; #mnnz] = [#(#m_rows),*];
-                /// Column of each mass-matrix nonzero.
-                pub static MASS_COLS: [u32; #mnnz] = [#(#m_cols),*];
-                /// Sizes, patterns and names of the reduced system.
-                pub static INFO: MechanismInfo = MechanismInfo {
-                    name: #mech_name,
-                    n_coords: N_COORDS,
-                    n_constraints: N_CONSTRAINTS,
-                    formulation: #form,
-                    gravity: [#(#gx),*],
-                    phi_q_rows: &PHI_Q_ROWS,
-                    phi_q_cols: &PHI_Q_COLS,
-                    mass_rows: &MASS_ROWS,
-                    mass_cols: &MASS_COLS,
-                    mass_is_constant: #constant,
-                    bodies: &[],
-                    joints: &[],
-                    coord_names: &COORD_NAMES,
-                    row_names: &ROW_NAMES,
-                    q0: &Q0,
-                    qd0: &QD0,
-                    redundant_rows: &REDUNDANT_ROWS,
-                    platform: None,
-                };
-                #(#dfns)*
-            }
-        });
+        forms.push(formulation_module(
+            r,
+            dynamics,
+            " The reduced system's mass matrix and forces in this formulation.",
+            &mech_name,
+            gx,
+            quote!(&[]),
+            quote!(&[]),
+            quote!(None),
+        ));
         forms.push(mechanism_impl(&type_name, &modname, &type_doc));
     }
     quote! {
@@ -604,11 +630,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
 
     let mut impls = Vec::new();
     for dynamics in &sys.dynamics {
-        let (modname, type_name, form) = formulation_names(dynamics.formulation);
-        let (m_rows, m_cols) = pattern(&dynamics.mass);
-        let mnnz = m_rows.len();
-        let constant = dynamics.mass_is_constant;
-        let fns = dynamics_functions(sys, dynamics);
+        let (modname, type_name, _) = formulation_names(dynamics.formulation);
         let doc = format!(
             " The `{}` formulation: mass matrix and forces{}.",
             dynamics.formulation.name(),
@@ -622,38 +644,16 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
             model.name,
             dynamics.formulation.name()
         );
-        items.push(quote! {
-            #[doc = #doc]
-            pub mod #modname {
-                use super::*;
-                /// Row of each mass-matrix nonzero (both triangles).
-                pub static MASS_ROWS: [u32; #mnnz] = [#(#m_rows),*];
-                /// Column of each mass-matrix nonzero.
-                pub static MASS_COLS: [u32; #mnnz] = [#(#m_cols),*];
-                /// Sizes, patterns and names for this formulation.
-                pub static INFO: MechanismInfo = MechanismInfo {
-                    name: #mech_name,
-                    n_coords: N_COORDS,
-                    n_constraints: N_CONSTRAINTS,
-                    formulation: #form,
-                    gravity: [#(#gx),*],
-                    phi_q_rows: &PHI_Q_ROWS,
-                    phi_q_cols: &PHI_Q_COLS,
-                    mass_rows: &MASS_ROWS,
-                    mass_cols: &MASS_COLS,
-                    mass_is_constant: #constant,
-                    bodies: &BODIES,
-                    joints: &JOINTS,
-                    coord_names: &COORD_NAMES,
-                    row_names: &ROW_NAMES,
-                    q0: &Q0,
-                    qd0: &QD0,
-                    redundant_rows: &REDUNDANT_ROWS,
-                    platform: PLATFORM,
-                };
-                #(#fns)*
-            }
-        });
+        items.push(formulation_module(
+            sys,
+            dynamics,
+            &doc,
+            mech_name,
+            gx,
+            quote!(&BODIES),
+            quote!(&JOINTS),
+            quote!(PLATFORM),
+        ));
         impls.push(mechanism_impl(&type_name, &modname, &type_doc));
     }
     let reduced = crate::reduce::substitute(sys);

@@ -1,4 +1,4 @@
-//! The kinematic path (docs/design.md, decision 22): a driven mechanism followed without time
+//! The kinematic path (docs/design.md, decision 23): a driven mechanism followed without time
 //! integration — at each output time one position solve, then the least-energy velocity and
 //! the saddle-point accelerations and multipliers from one factorization — and the check
 //! that tells whether this is exact for a mechanism whose drivers leave free directions.

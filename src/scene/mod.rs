@@ -1,4 +1,4 @@
-//! Scene files (`scenes/<name>.toml`, docs/design.md decision 21): which mechanism, over what
+//! Scene files (`scenes/<name>.toml`, docs/design.md decision 23): which mechanism, over what
 //! time, which outputs, and how to solve it — read and checked here ([`load`]), run by
 //! [`run`].
 //!

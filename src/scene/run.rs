@@ -1,5 +1,5 @@
 //! Running a scene: the cheapest exact path is chosen from what the scene asks for
-//! (docs/design.md, decision 22), then the run is made by the paper scenario's or the generic
+//! (docs/design.md, decision 23), then the run is made by the paper scenario's or the generic
 //! recorder and restricted to the requested outputs.
 
 use std::time::Instant;

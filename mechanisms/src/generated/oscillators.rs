@@ -3155,7 +3155,7 @@ pub mod reduced {
             1u32, 2u32, 3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 5u32, 6u32, 7u32, 8u32, 5u32,
             6u32, 7u32, 8u32, 5u32, 6u32, 7u32, 8u32,
         ];
-        /// Sizes, patterns and names of the reduced system.
+        /// Sizes, patterns and names for this formulation.
         pub static INFO: MechanismInfo = MechanismInfo {
             name: "oscillators_reduced",
             n_coords: N_COORDS,

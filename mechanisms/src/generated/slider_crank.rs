@@ -6690,7 +6690,7 @@ pub mod reduced {
             12u32, 13u32, 14u32, 15u32, 16u32, 17u32, 18u32, 15u32, 16u32, 17u32, 18u32,
             15u32, 16u32, 17u32, 18u32, 15u32, 16u32, 17u32, 18u32,
         ];
-        /// Sizes, patterns and names of the reduced system.
+        /// Sizes, patterns and names for this formulation.
         pub static INFO: MechanismInfo = MechanismInfo {
             name: "slider_crank_reduced",
             n_coords: N_COORDS,

@@ -25778,7 +25778,7 @@ pub mod reduced {
             40u32, 41u32, 42u32, 43u32, 44u32, 45u32, 46u32, 47u32, 48u32, 49u32, 50u32,
             51u32, 52u32, 53u32, 54u32, 55u32, 56u32, 57u32, 58u32, 59u32,
         ];
-        /// Sizes, patterns and names of the reduced system.
+        /// Sizes, patterns and names for this formulation.
         pub static INFO: MechanismInfo = MechanismInfo {
             name: "stewart_6_6_reduced",
             n_coords: N_COORDS,
@@ -30236,7 +30236,7 @@ pub mod reduced {
             45u32, 46u32, 47u32, 48u32, 49u32, 50u32, 51u32, 52u32, 53u32, 54u32, 55u32,
             56u32, 57u32, 58u32, 59u32,
         ];
-        /// Sizes, patterns and names of the reduced system.
+        /// Sizes, patterns and names for this formulation.
         pub static INFO: MechanismInfo = MechanismInfo {
             name: "stewart_6_6_reduced",
             n_coords: N_COORDS,
