@@ -51,3 +51,16 @@ fn hundred_hht_steps_of_the_stewart_platform_allocate_nothing() {
     assert_eq!(exact.stats().steps, 124, "{:?}", exact.stats());
     assert_eq!(exact.stats().rejected_steps, 0, "{:?}", exact.stats());
 }
+
+#[test]
+fn the_kinematic_path_allocates_nothing_per_output() {
+    let mut path = symbody_runtime::KinematicPath::<_>::new(Exact, 0.0).unwrap();
+    // The first output sets up the predictor's history; every later one must be free.
+    path.advance_to(0.01).unwrap();
+    let n = allocations(|| {
+        for k in 2..=100 {
+            path.advance_to(k as f64 * 0.01).unwrap();
+        }
+    });
+    assert_eq!(n, 0, "{n} allocations in 99 outputs");
+}

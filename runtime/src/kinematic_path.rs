@@ -39,8 +39,12 @@ pub struct KinematicPath<M: Mechanism, K: KktSolver = SchurKkt> {
     qd: Vec<f64>,
     qdd: Vec<f64>,
     lambda: Vec<f64>,
-    /// The step to the current output and the accelerations before it, for the predictor.
-    previous: Option<(f64, Vec<f64>)>,
+    /// The step to the current output (0 before there is one) and the accelerations before
+    /// it, for the predictor's jerk.
+    previous_step: f64,
+    previous_qdd: Vec<f64>,
+    /// The last good position while a new one is sought.
+    saved: Vec<f64>,
     stats: PathStats,
 }
 
@@ -87,17 +91,19 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
             qd: vec![0.0; n],
             qdd: vec![0.0; n],
             lambda: vec![0.0; m],
-            previous: None,
+            previous_step: 0.0,
+            previous_qdd: vec![0.0; n],
+            saved: vec![0.0; n],
             stats: PathStats::default(),
         };
         path.solve_at(t0)?;
         Ok(path)
     }
 
-    /// Moves to time `t`: a second-order Taylor prediction from the current state, Newton
-    /// onto Φ(q, t) = 0 (corrections smallest in the mass norm, so free directions keep the
-    /// predicted motion), then velocity, accelerations and multipliers at `t`. On failure the
-    /// state is left at the last good time.
+    /// Moves to time `t`: a Taylor prediction from the current state ([`Self::predict`]),
+    /// Newton onto Φ(q, t) = 0 (corrections smallest in the mass norm, so free directions keep
+    /// the predicted motion), then velocity, accelerations and multipliers at `t`. On failure
+    /// the state is left at the last good time. Allocates nothing.
     pub fn advance_to(&mut self, t: f64) -> Result<(), Error> {
         if !t.is_finite() {
             return Err(Error::InvalidSetting {
@@ -107,7 +113,7 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
             });
         }
         let h = t - self.t;
-        let saved = self.q.clone();
+        self.saved.copy_from_slice(&self.q);
         self.predict(h);
         // The last factorization is at a state one output earlier: close enough for a few
         // simplified-Newton corrections, which cost a residual and a solve each instead of a
@@ -121,13 +127,13 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
                 self.analyse(t)
             }
             Ok(None) | Err(_) => {
-                self.q.copy_from_slice(&saved);
+                self.q.copy_from_slice(&self.saved);
                 self.predict(h);
                 self.solve_at(t)
             }
         };
         if result.is_err() {
-            self.q = saved;
+            self.q.copy_from_slice(&self.saved);
         }
         result
     }
@@ -135,9 +141,13 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
     /// Taylor prediction of q over `h`: third order once two accelerations are known (the
     /// jerk differenced from them), which leaves an O(h⁴) residual for the corrector.
     fn predict(&mut self, h: f64) {
-        let jerk = self.previous.as_ref().filter(|(dt, _)| *dt > 0.0);
+        let dt = self.previous_step;
         for i in 0..self.q.len() {
-            let j = jerk.map_or(0.0, |(dt, a)| (self.qdd[i] - a[i]) / dt);
+            let j = if dt > 0.0 {
+                (self.qdd[i] - self.previous_qdd[i]) / dt
+            } else {
+                0.0
+            };
             self.q[i] += h * (self.qd[i] + h * (0.5 * self.qdd[i] + h * j / 6.0));
         }
     }
@@ -151,14 +161,9 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
 
     /// Velocity, accelerations and multipliers at the converged position.
     fn analyse(&mut self, t: f64) -> Result<(), Error> {
-        let dt = t - self.t;
-        match &mut self.previous {
-            Some((h, a)) => {
-                *h = dt;
-                a.copy_from_slice(&self.qdd);
-            }
-            None if self.stats.outputs > 0 => self.previous = Some((dt, self.qdd.clone())),
-            None => {}
+        if self.stats.outputs > 0 {
+            self.previous_step = t - self.t;
+            self.previous_qdd.copy_from_slice(&self.qdd);
         }
         self.kin.velocity_and_acceleration(
             &self.mech,
