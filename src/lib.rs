@@ -4,6 +4,7 @@
 
 pub mod fk;
 pub mod generic;
+pub mod iftomm;
 pub mod output;
 pub mod plot;
 pub mod scenario;

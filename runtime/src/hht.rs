@@ -50,6 +50,8 @@ pub struct HhtBuilder {
     phi_tol: f64,
     reuse_factorization: bool,
     project_velocities: bool,
+    /// Pivot tolerance below which dependent rows are dropped (0: report rank loss).
+    drop_dependent: f64,
     t0: f64,
     q0: Option<Vec<f64>>,
     qd0: Option<Vec<f64>>,
@@ -70,6 +72,7 @@ impl Default for HhtBuilder {
             phi_tol: 1e-10,
             reuse_factorization: false,
             project_velocities: false,
+            drop_dependent: 0.0,
             t0: 0.0,
             q0: None,
             qd0: None,
@@ -123,7 +126,10 @@ impl HhtBuilder {
         self
     }
 
-    /// Absolute tolerance on multiplier increments (default 1e-6, N or N·m).
+    /// Absolute tolerance on the increments of the generalized constraint forces Φqᵀλ
+    /// (default 1e-6, N or N·m). Judged through Φqᵀ because at a singular configuration λ is
+    /// not unique and only Φqᵀλ is: an N-four-bar crossing its flat position (IFToMM A02)
+    /// would otherwise never converge.
     pub fn abs_tol_lambda(mut self, tol: f64) -> Self {
         self.abs_tol_lambda = tol;
         self
@@ -140,6 +146,17 @@ impl HhtBuilder {
     /// factor once per step). The matrix does not depend on `h`, only on `q`.
     pub fn reuse_factorization(mut self, reuse: bool) -> Self {
         self.reuse_factorization = reuse;
+        self
+    }
+
+    /// Lets the step pass singular positions (a linkage crossing a flat or dead-centre
+    /// configuration, where its rows are dependent for an instant, as in the IFToMM A02
+    /// N-four-bar): rows whose Schur pivot falls below `tolerance` (relative, e.g. 1e-6) are
+    /// dropped for that factorization instead of failing the step. A step is still accepted
+    /// only when every row, dropped or not, satisfies the constraint tolerance, so an
+    /// unreachable pose still fails. Off by default (0): rank loss is reported.
+    pub fn drop_dependent_rows(mut self, tolerance: f64) -> Self {
+        self.drop_dependent = tolerance;
         self
     }
 
@@ -292,7 +309,17 @@ impl HhtBuilder {
         let first_warning = self.euler.check(info, self.t0, &q)?;
         let mut it = Integrator {
             info,
-            kkt: K::new(&KktPattern::from_info(info))?,
+            kkt: {
+                let mut kkt = K::new(&KktPattern::from_info(info))?;
+                if self.drop_dependent > 0.0 && !kkt.drop_dependent_rows(self.drop_dependent) {
+                    return Err(Error::InvalidSetting {
+                        name: "drop_dependent_rows",
+                        value: self.drop_dependent,
+                        reason: "the KKT solver cannot drop dependent rows; use SchurKkt",
+                    });
+                }
+                kkt
+            },
             beta: (1.0 - self.alpha).powi(2) / 4.0,
             gamma: 0.5 - self.alpha,
             h_nominal: self.step,
@@ -322,6 +349,7 @@ impl HhtBuilder {
             res2: vec![0.0; m],
             da: vec![0.0; n],
             dl: vec![0.0; m],
+            reaction1: vec![0.0; n],
             stats: Stats::default(),
             first_warning,
             settings: self,
@@ -417,6 +445,8 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     res2: Vec<f64>,
     da: Vec<f64>,
     dl: Vec<f64>,
+    /// Φqᵀλ of the current iterate, for the convergence test.
+    reaction1: Vec<f64>,
     stats: Stats,
     first_warning: Option<EulerWarning>,
 }
@@ -832,7 +862,21 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             for (d, a) in self.da.iter().zip(&self.qdd1) {
                 err = err.max(d.abs() / (s.abs_tol_acc.max(floor_a) + s.rel_tol * a.abs()));
             }
-            for (d, l) in self.dl.iter().zip(&self.lambda1) {
+            // The multipliers are judged by the forces they apply, Φqᵀλ (see
+            // `abs_tol_lambda`); the right-hand side is consumed, so res1 takes Φqᵀ·Δλ.
+            self.res1.fill(0.0);
+            self.reaction1.fill(0.0);
+            for ((&row, &col), &v) in self
+                .info
+                .phi_q_rows
+                .iter()
+                .zip(self.info.phi_q_cols)
+                .zip(&self.phi_q)
+            {
+                self.res1[col as usize] += v * self.dl[row as usize];
+                self.reaction1[col as usize] += v * self.lambda1[row as usize];
+            }
+            for (d, l) in self.res1.iter().zip(&self.reaction1) {
                 err = err.max(d.abs() / (s.abs_tol_lambda.max(floor_l) + s.rel_tol * l.abs()));
             }
             if !err.is_finite() {

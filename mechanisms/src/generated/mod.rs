@@ -2,15 +2,25 @@
 //! `cargo xtask generate --all`.
 
 #[rustfmt::skip]
+pub mod andrews_squeezer;
+#[rustfmt::skip]
 pub mod bricard;
 #[rustfmt::skip]
 pub mod dietmaier_6_6;
+#[rustfmt::skip]
+pub mod flyball_governor;
 #[rustfmt::skip]
 pub mod four_bar;
 #[rustfmt::skip]
 pub mod hexapod_twist;
 #[rustfmt::skip]
+pub mod n_four_bar_2;
+#[rustfmt::skip]
+pub mod n_four_bar_40;
+#[rustfmt::skip]
 pub mod oscillators;
+#[rustfmt::skip]
+pub mod simple_pendulum;
 #[rustfmt::skip]
 pub mod slider_crank;
 #[rustfmt::skip]
@@ -27,6 +37,13 @@ use symbody_runtime::{Formulation, Mechanism};
 #[rustfmt::skip]
 pub static REGISTRY: &[crate::Entry] = &[
     crate::Entry {
+        name: "andrews_squeezer",
+        t_end: andrews_squeezer::T_END,
+        formulations: &[
+            (Formulation::Exact, &andrews_squeezer::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
         name: "bricard",
         t_end: bricard::T_END,
         formulations: &[
@@ -38,6 +55,13 @@ pub static REGISTRY: &[crate::Entry] = &[
         t_end: dietmaier_6_6::T_END,
         formulations: &[
             (Formulation::Exact, &dietmaier_6_6::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "flyball_governor",
+        t_end: flyball_governor::T_END,
+        formulations: &[
+            (Formulation::Exact, &flyball_governor::Exact as &(dyn Mechanism + Sync)),
         ],
     },
     crate::Entry {
@@ -55,10 +79,31 @@ pub static REGISTRY: &[crate::Entry] = &[
         ],
     },
     crate::Entry {
+        name: "n_four_bar_2",
+        t_end: n_four_bar_2::T_END,
+        formulations: &[
+            (Formulation::Exact, &n_four_bar_2::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "n_four_bar_40",
+        t_end: n_four_bar_40::T_END,
+        formulations: &[
+            (Formulation::Exact, &n_four_bar_40::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
         name: "oscillators",
         t_end: oscillators::T_END,
         formulations: &[
             (Formulation::Exact, &oscillators::Exact as &(dyn Mechanism + Sync)),
+        ],
+    },
+    crate::Entry {
+        name: "simple_pendulum",
+        t_end: simple_pendulum::T_END,
+        formulations: &[
+            (Formulation::Exact, &simple_pendulum::Exact as &(dyn Mechanism + Sync)),
         ],
     },
     crate::Entry {

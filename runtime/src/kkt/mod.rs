@@ -194,6 +194,16 @@ pub trait KktSolver: Sized {
     /// Solves with the last factorization: `x` gets `n` entries, `y` gets `m`.
     fn solve(&mut self, f: &[f64], g: &[f64], x: &mut [f64], y: &mut [f64])
         -> Result<(), KktError>;
+
+    /// From now on, rows whose pivot falls below `tolerance` (relative to the row's diagonal
+    /// of `Φq M⁻¹ Φqᵀ`) are dropped for that factorization, as declared redundant rows are,
+    /// instead of failing with [`KktError::RankDeficient`]. For mechanisms that pass through
+    /// singular positions, where rows are dependent only for an instant; the caller must
+    /// still check that the dropped rows hold. Returns `false` if the solver cannot.
+    fn drop_dependent_rows(&mut self, tolerance: f64) -> bool {
+        let _ = tolerance;
+        false
+    }
 }
 
 pub(crate) fn check_kkt_len(expected: usize, got: usize) -> Result<(), KktError> {

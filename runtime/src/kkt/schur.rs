@@ -63,6 +63,9 @@ pub struct SchurKkt {
     rvec: Vec<f64>,
     factored: bool,
     pivot_tol: f64,
+    /// Rows with a pivot below `pivot_tol` are dropped instead of reported
+    /// ([`KktSolver::drop_dependent_rows`]).
+    drop_dependent: bool,
 }
 
 impl SchurKkt {
@@ -211,6 +214,12 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
 }
 
 impl KktSolver for SchurKkt {
+    fn drop_dependent_rows(&mut self, tolerance: f64) -> bool {
+        self.pivot_tol = tolerance;
+        self.drop_dependent = true;
+        true
+    }
+
     fn new(pattern: &KktPattern) -> Result<Self, Error> {
         pattern.validate()?;
         let (n, m) = (pattern.n, pattern.m);
@@ -415,6 +424,7 @@ impl KktSolver for SchurKkt {
             rvec: vec![0.0; m],
             factored: false,
             pivot_tol: DEFAULT_PIVOT_TOLERANCE,
+            drop_dependent: false,
         })
     }
 
@@ -492,6 +502,16 @@ impl KktSolver for SchurKkt {
                     // solves the row as absent and gives it y = 0.
                     self.diag[j] = 1.0;
                     self.dinv[j] = 0.0;
+                    continue;
+                }
+                if self.drop_dependent {
+                    // As a redundant row, once its column of L is cleared.
+                    self.diag[j] = 1.0;
+                    self.dinv[j] = 0.0;
+                    for p in c0..c1 {
+                        self.work[sym.row_idx[p]] = 0.0;
+                        self.lval[p] = 0.0;
+                    }
                     continue;
                 }
                 worst = worst.min(if scale > 0.0 { dj / scale } else { 0.0 });

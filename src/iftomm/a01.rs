@@ -1,0 +1,154 @@
+//! A01, the planar simple pendulum, measured against its closed-form solution (Jacobi
+//! elliptic functions).
+
+use super::{integrate, point, Outcome, Problem, Published, Settings, Spec};
+use super::Error;
+
+const MECHANISM: &str = "simple_pendulum";
+const G: f64 = 9.81;
+const L: f64 = 1.0;
+/// Published number of output steps the error is measured at (over the published 2000 s).
+const OUTPUTS: usize = 4000;
+/// One output every half second, as published, whatever the run's length.
+const OUTPUT_STEP: f64 = 2000.0 / OUTPUTS as f64;
+
+pub static PROBLEM: Problem = Problem {
+    spec: Spec {
+        id: "A01",
+        title: "simple pendulum (planar)",
+        mechanism: MECHANISM,
+        t_end: 2000.0,
+        short_t_end: 20.0,
+        measure: "largest |Δx|, |Δy| of the mass P1 over 4000 outputs (m)",
+        tolerance: 1e-3,
+        reference: "closed form: sin(θ/2) = k·sn(K − ωt, k), k = sin(π/4), ω = √(g/L)",
+        source: "http://lim.ii.udc.es/mbsbenchmark/dist/A01/A01_specification.xml",
+        published: &[Published {
+            code: "OpenSim 3.2 (10 s of the 2000 s)",
+            cpu_seconds: 0.637,
+            machine: "Intel Core i5-4570 3.2 GHz",
+            source: "rehabenggroup.github.io/MBSbenchmarksInOpenSim, A01",
+        }],
+    },
+    run,
+};
+
+/// HHT step: the period error of the trapezoidal rule, (ωh)²/12 per period, must stay far
+/// below 1e-3 m over the 845 swings of 2000 s.
+const SETTINGS: Settings = Settings {
+    step: 2.5e-4,
+    // α < 0 damps the swing: over 845 periods even α = −0.01 costs more than the tolerance.
+    alpha: 0.0,
+};
+
+fn run(t_end: f64) -> Result<Outcome, Error> {
+    let outputs = (t_end / OUTPUT_STEP).round().max(1.0) as usize;
+    let mut error = 0.0_f64;
+    let mut failure = None;
+    let (cpu, stats) = integrate(MECHANISM, SETTINGS, t_end, outputs, |t, q, _| {
+        match point(MECHANISM, "p1", [0.0; 3], q) {
+            Ok(p) => {
+                let r = reference(t);
+                error = error.max((p[0] - r[0]).abs()).max((p[1] - r[1]).abs());
+            }
+            Err(e) => failure = Some(e),
+        }
+    })?;
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    Ok(Outcome {
+        t_end,
+        error,
+        cpu,
+        stats,
+        step: SETTINGS.step,
+        alpha: SETTINGS.alpha,
+    })
+}
+
+/// Position of P1 at `t` for the release from the horizontal at rest.
+///
+/// With θ from the downward vertical, energy conservation gives sin(θ/2) = k·sn(K − ωt, k)
+/// for k = sin(θ₀/2); then sin θ = 2k·sn·dn and cos θ = 1 − 2k²sn².
+pub fn reference(t: f64) -> [f64; 2] {
+    let k = std::f64::consts::FRAC_PI_4.sin();
+    let omega = (G / L).sqrt();
+    let kk = complete_k(k);
+    // sn and dn have period 4K: reducing first keeps the AGM's argument small.
+    let u = (kk - omega * t).rem_euclid(4.0 * kk);
+    let (sn, _, dn) = jacobi(u, k);
+    [L * 2.0 * k * sn * dn, -L * (1.0 - 2.0 * k * k * sn * sn)]
+}
+
+/// Complete elliptic integral of the first kind, K(k) = π / (2·AGM(1, √(1 − k²))).
+fn complete_k(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
+    while (a - b).abs() > 1e-16 * a {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    std::f64::consts::PI / (a + b)
+}
+
+/// Jacobi sn, cn, dn of (u, k) by the descending Landen (AGM) transformation.
+fn jacobi(u: f64, k: f64) -> (f64, f64, f64) {
+    const STAGES: usize = 16;
+    let mut a = [0.0; STAGES + 1];
+    let mut c = [0.0; STAGES + 1];
+    a[0] = 1.0;
+    let mut b = (1.0 - k * k).sqrt();
+    c[0] = k;
+    let mut n = 0;
+    while n < STAGES && c[n].abs() > 1e-16 {
+        a[n + 1] = 0.5 * (a[n] + b);
+        c[n + 1] = 0.5 * (a[n] - b);
+        b = (a[n] * b).sqrt();
+        n += 1;
+    }
+    let mut phi = f64::from(1u32 << n) * a[n] * u;
+    let mut previous = phi;
+    for j in (1..=n).rev() {
+        previous = phi;
+        phi = 0.5 * (phi + (c[j] / a[j] * phi.sin()).asin());
+    }
+    let (sn, cn) = phi.sin_cos();
+    let dn = if n == 0 { 1.0 } else { cn / (previous - phi).cos() };
+    (sn, cn, dn)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The closed form against a classical RK4 integration of θ̈ = −(g/L)·sin θ, an
+    /// independent route to the same motion.
+    /// K(sin 45°) as tabulated (Abramowitz & Stegun, table 17.1): 1.854074677301372.
+    #[test]
+    fn complete_integral_matches_table() {
+        let k = complete_k(std::f64::consts::FRAC_PI_4.sin());
+        assert!((k - 1.854_074_677_301_372).abs() < 1e-14, "K = {k}");
+    }
+
+    #[test]
+    fn closed_form_matches_rk4() {
+        let f = |th: f64| -(G / L) * th.sin();
+        let (mut th, mut w) = (std::f64::consts::FRAC_PI_2, 0.0);
+        let h = 1e-4;
+        let mut worst = 0.0_f64;
+        for i in 1..=100_000 {
+            let (k1t, k1w) = (w, f(th));
+            let (k2t, k2w) = (w + 0.5 * h * k1w, f(th + 0.5 * h * k1t));
+            let (k3t, k3w) = (w + 0.5 * h * k2w, f(th + 0.5 * h * k2t));
+            let (k4t, k4w) = (w + h * k3w, f(th + h * k3t));
+            th += h / 6.0 * (k1t + 2.0 * k2t + 2.0 * k3t + k4t);
+            w += h / 6.0 * (k1w + 2.0 * k2w + 2.0 * k3w + k4w);
+            if i % 1000 == 0 {
+                let r = reference(i as f64 * h);
+                worst = worst
+                    .max((r[0] - L * th.sin()).abs())
+                    .max((r[1] + L * th.cos()).abs());
+            }
+        }
+        assert!(worst < 1e-11, "closed form vs RK4 over 10 s: {worst:e} m");
+    }
+}

@@ -1,0 +1,198 @@
+//! The IFToMM multibody benchmark problems A01–A05 (the University of A Coruña library, the
+//! IFToMM Technical Committee's benchmark set): each problem's published definition, its
+//! published error measure against an independent reference, and a timed run.
+//!
+//! Each problem is one file (`a01.rs` … `a05.rs`) holding a [`Problem`]: the published
+//! specification ([`Spec`], with its source), and a `run` that integrates the generated
+//! mechanism to a given end time and measures the published error. `cargo run --release
+//! --bin mbs_benchmarks` runs every problem to its published end time; `tests/iftomm.rs`
+//! runs each one shortened.
+
+use std::time::{Duration, Instant};
+
+use symbody_runtime::{HhtBuilder, Mechanism, Stats};
+
+pub use crate::scenario::ScenarioError as Error;
+
+pub mod a01;
+pub mod a02;
+pub mod a03;
+pub mod a04;
+pub mod a05;
+
+/// A CPU time another code published for the same problem.
+#[derive(Debug, Clone, Copy)]
+pub struct Published {
+    /// The code and its method, as published.
+    pub code: &'static str,
+    /// CPU time for the whole published run (s).
+    pub cpu_seconds: f64,
+    /// The machine it was measured on, as published.
+    pub machine: &'static str,
+    /// Where it was published.
+    pub source: &'static str,
+}
+
+/// A problem's published definition.
+#[derive(Debug, Clone, Copy)]
+pub struct Spec {
+    /// `"A01"` … `"A05"`.
+    pub id: &'static str,
+    pub title: &'static str,
+    /// The generated mechanism's registry name (`mechanisms/<name>.toml`).
+    pub mechanism: &'static str,
+    /// Published simulation length (s).
+    pub t_end: f64,
+    /// Shortened length the CI test runs (s).
+    pub short_t_end: f64,
+    /// The published error measure, in words.
+    pub measure: &'static str,
+    /// The published tolerance on that measure (the "high precision" one where two are given).
+    pub tolerance: f64,
+    /// What the error is measured against, and why that reference is independent of symbody.
+    pub reference: &'static str,
+    /// Where the definition was published.
+    pub source: &'static str,
+    /// CPU times other codes published for the full run.
+    pub published: &'static [Published],
+}
+
+/// One measured run.
+#[derive(Debug, Clone)]
+pub struct Outcome {
+    /// End time reached (s).
+    pub t_end: f64,
+    /// The published error measure.
+    pub error: f64,
+    /// Wall time of the integration alone (reference and measuring excluded).
+    pub cpu: Duration,
+    /// Integrator statistics.
+    pub stats: Stats,
+    /// Integration step (s) and HHT α used.
+    pub step: f64,
+    pub alpha: f64,
+}
+
+impl Outcome {
+    /// Whether the error meets the tolerance.
+    pub fn passed(&self, spec: &Spec) -> bool {
+        self.error <= spec.tolerance
+    }
+}
+
+/// A benchmark problem: its definition and how to run it.
+pub struct Problem {
+    pub spec: Spec,
+    /// Runs the problem from its published initial state to `t_end` (s).
+    pub run: fn(t_end: f64) -> Result<Outcome, Error>,
+}
+
+/// Every problem, in order.
+pub fn problems() -> [&'static Problem; 6] {
+    [
+        &a01::PROBLEM,
+        &a02::PROBLEM_2,
+        &a02::PROBLEM_40,
+        &a03::PROBLEM,
+        &a04::PROBLEM,
+        &a05::PROBLEM,
+    ]
+}
+
+/// Integration settings of one run.
+#[derive(Debug, Clone, Copy)]
+pub struct Settings {
+    pub step: f64,
+    pub alpha: f64,
+}
+
+/// Integrates the registered mechanism `name` with HHT from its file's initial state to
+/// `t_end`, calling `sample(t, q, qd)` at `outputs + 1` equally spaced times (including 0
+/// and `t_end`). Velocities are projected onto the constraints after every step (as
+/// `symbody simulate <name>` does), which keeps α = 0 stable. Returns the wall time of the
+/// integration (sampling excluded) and the statistics.
+pub fn integrate(
+    name: &str,
+    settings: Settings,
+    t_end: f64,
+    outputs: usize,
+    sample: impl FnMut(f64, &[f64], &[f64]),
+) -> Result<(Duration, Stats), Error> {
+    let builder = HhtBuilder::new()
+        .step(settings.step)
+        .alpha(settings.alpha)
+        .project_velocities(true);
+    integrate_with(name, builder, t_end, outputs, sample)
+}
+
+/// As [`integrate`], with every integrator setting given.
+pub fn integrate_with(
+    name: &str,
+    builder: HhtBuilder,
+    t_end: f64,
+    outputs: usize,
+    mut sample: impl FnMut(f64, &[f64], &[f64]),
+) -> Result<(Duration, Stats), Error> {
+    let entry = crate::generic::find(name)?;
+    let mech: &'static (dyn Mechanism + Sync) = entry.default_mechanism();
+    let start = Instant::now();
+    let mut it = builder.build(mech)?;
+    let mut cpu = start.elapsed();
+    sample(it.t(), it.q(), it.qd());
+    for k in 1..=outputs {
+        let t_out = t_end * k as f64 / outputs as f64;
+        let start = Instant::now();
+        it.advance_to(t_out)?;
+        cpu += start.elapsed();
+        sample(it.t(), it.q(), it.qd());
+    }
+    Ok((cpu, it.stats()))
+}
+
+/// World position of `local` (body coordinates) on body `body` of mechanism `name` at `q`.
+pub fn point(name: &str, body: &str, local: [f64; 3], q: &[f64]) -> Result<[f64; 3], Error> {
+    let entry = crate::generic::find(name)?;
+    let info = entry.default_mechanism().info();
+    let b = info
+        .body_index(body)
+        .ok_or_else(|| Error::Options(format!("`{name}` has no body `{body}`")))?;
+    let p = symbody_runtime::pose::point_world(Some(&info.bodies[b]), q, &local)?;
+    Ok([p.x, p.y, p.z])
+}
+
+/// World velocity of `local` on body `body` of mechanism `name` at `(q, qd)`: ṙ + ω × A·s.
+pub fn point_velocity(
+    name: &str,
+    body: &str,
+    local: [f64; 3],
+    q: &[f64],
+    qd: &[f64],
+) -> Result<[f64; 3], Error> {
+    let entry = crate::generic::find(name)?;
+    let info = entry.default_mechanism().info();
+    let b = info
+        .body_index(body)
+        .ok_or_else(|| Error::Options(format!("`{name}` has no body `{body}`")))?;
+    let body = &info.bodies[b];
+    let omega = symbody_runtime::pose::angular_velocity(body, q, qd)?;
+    let a = symbody_runtime::pose::rotation_matrix(body, q)?;
+    let o = body.coord_offset;
+    let v = nalgebra::Vector3::new(qd[o], qd[o + 1], qd[o + 2])
+        + omega.cross(&(a * nalgebra::Vector3::from(local)));
+    Ok([v.x, v.y, v.z])
+}
+
+/// Kinetic plus potential energy of mechanism `name` at `(q, qd)` (J).
+pub fn energy(name: &str, q: &[f64], qd: &[f64]) -> Result<f64, Error> {
+    let mech = crate::generic::find(name)?.default_mechanism();
+    let info = mech.info();
+    let mut mass = vec![0.0; info.mass_nnz()];
+    mech.mass(q, &mut mass);
+    // The pattern lists both triangles, so the plain sum is qdᵀ·M·qd.
+    let twice_kinetic: f64 = mass
+        .iter()
+        .zip(info.mass_rows.iter().zip(info.mass_cols))
+        .map(|(m, (&r, &c))| m * qd[r as usize] * qd[c as usize])
+        .sum();
+    Ok(0.5 * twice_kinetic + mech.potential(q))
+}
