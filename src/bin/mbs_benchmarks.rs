@@ -47,13 +47,26 @@ fn main() {
                     spec.tolerance,
                     published(spec)
                 );
-                let _ = writeln!(csv, "{},{},{t_end},,,{},false,,,,,", spec.id, spec.mechanism, spec.tolerance);
+                let _ = writeln!(
+                    csv,
+                    "{},{},{t_end},,,{},false,,,,,",
+                    spec.id, spec.mechanism, spec.tolerance
+                );
             }
         }
         let _ = writeln!(
             notes,
-            "- **{}** {}: {}; reference: {}. Source: {}",
-            spec.id, spec.title, spec.measure, spec.reference, spec.source
+            "- **{}** {}: {}; reference: {}. Source: {}.{}",
+            spec.id,
+            spec.title,
+            spec.measure,
+            spec.reference,
+            spec.source,
+            if spec.caveat.is_empty() {
+                String::new()
+            } else {
+                format!(" Not as published: {}.", spec.caveat)
+            }
         );
     }
     md.push('\n');

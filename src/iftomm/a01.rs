@@ -1,8 +1,8 @@
 //! A01, the planar simple pendulum, measured against its closed-form solution (Jacobi
 //! elliptic functions).
 
-use super::{integrate, point, Outcome, Problem, Published, Settings, Spec};
 use super::Error;
+use super::{integrate, point, Outcome, Problem, Published, Settings, Spec};
 
 const MECHANISM: &str = "simple_pendulum";
 const G: f64 = 9.81;
@@ -21,6 +21,7 @@ pub static PROBLEM: Problem = Problem {
         short_t_end: 20.0,
         measure: "largest |Δx|, |Δy| of the mass P1 over 4000 outputs (m)",
         tolerance: 1e-3,
+        caveat: "the formula behind the published \"4000 output steps and a threshold of 1e-3\" was not found; the largest absolute difference is used",
         reference: "closed form: sin(θ/2) = k·sn(K − ωt, k), k = sin(π/4), ω = √(g/L)",
         source: "http://lim.ii.udc.es/mbsbenchmark/dist/A01/A01_specification.xml",
         published: &[Published {
@@ -36,7 +37,7 @@ pub static PROBLEM: Problem = Problem {
 /// HHT step: the period error of the trapezoidal rule, (ωh)²/12 per period, must stay far
 /// below 1e-3 m over the 845 swings of 2000 s.
 const SETTINGS: Settings = Settings {
-    step: 2.5e-4,
+    step: 1.25e-4,
     // α < 0 damps the swing: over 845 periods even α = −0.01 costs more than the tolerance.
     alpha: 0.0,
 };
@@ -77,21 +78,23 @@ pub fn reference(t: f64) -> [f64; 2] {
     let kk = complete_k(k);
     // sn and dn have period 4K: reducing first keeps the AGM's argument small.
     let u = (kk - omega * t).rem_euclid(4.0 * kk);
-    let (sn, _, dn) = jacobi(u, k);
+    let (sn, dn) = jacobi(u, k);
     [L * 2.0 * k * sn * dn, -L * (1.0 - 2.0 * k * k * sn * sn)]
 }
 
 /// Complete elliptic integral of the first kind, K(k) = π / (2·AGM(1, √(1 − k²))).
 fn complete_k(k: f64) -> f64 {
     let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
-    while (a - b).abs() > 1e-16 * a {
+    // Quadratic convergence: six rounds reach roundoff for any k < 1 used here; a test on
+    // |a − b| could cycle in the last bit forever.
+    for _ in 0..8 {
         (a, b) = (0.5 * (a + b), (a * b).sqrt());
     }
     std::f64::consts::PI / (a + b)
 }
 
-/// Jacobi sn, cn, dn of (u, k) by the descending Landen (AGM) transformation.
-fn jacobi(u: f64, k: f64) -> (f64, f64, f64) {
+/// Jacobi sn and dn of (u, k) by the descending Landen (AGM) transformation.
+fn jacobi(u: f64, k: f64) -> (f64, f64) {
     const STAGES: usize = 16;
     let mut a = [0.0; STAGES + 1];
     let mut c = [0.0; STAGES + 1];
@@ -106,14 +109,12 @@ fn jacobi(u: f64, k: f64) -> (f64, f64, f64) {
         n += 1;
     }
     let mut phi = f64::from(1u32 << n) * a[n] * u;
-    let mut previous = phi;
     for j in (1..=n).rev() {
-        previous = phi;
         phi = 0.5 * (phi + (c[j] / a[j] * phi.sin()).asin());
     }
-    let (sn, cn) = phi.sin_cos();
-    let dn = if n == 0 { 1.0 } else { cn / (previous - phi).cos() };
-    (sn, cn, dn)
+    let sn = phi.sin();
+    // dn = √(1 − k²sn²) > 0; the Landen ratio cn/cos(φ₁ − φ₀) is 0/0 at u = K.
+    (sn, (1.0 - k * k * sn * sn).sqrt())
 }
 
 #[cfg(test)]
@@ -132,6 +133,11 @@ mod tests {
     #[test]
     fn closed_form_matches_rk4() {
         let f = |th: f64| -(G / L) * th.sin();
+        let start = reference(0.0);
+        assert!(
+            (start[0] - L).abs() < 1e-15 && start[1].abs() < 1e-15,
+            "{start:?}"
+        );
         let (mut th, mut w) = (std::f64::consts::FRAC_PI_2, 0.0);
         let h = 1e-4;
         let mut worst = 0.0_f64;

@@ -7,9 +7,9 @@
 //! with classical RK4, independent of the generated constraint equations. The published
 //! difficulty is that the mechanism crosses positions where it could leave that branch.
 
+use super::Error;
 use super::{integrate_with, point, point_velocity, Outcome, Problem, Published, Settings, Spec};
 use symbody_runtime::HhtBuilder;
-use super::Error;
 
 const G: f64 = 9.81;
 const L: f64 = 1.0;
@@ -31,6 +31,7 @@ pub static PROBLEM_2: Problem = Problem {
         short_t_end: 4.0,
         measure: MEASURE,
         tolerance: 1e-3,
+        caveat: "the library publishes N = 40; same length and measure here. The formula behind \"400 output steps and a threshold of 1e-3\" was not found; the largest absolute difference is used",
         reference: "one-coordinate equation of motion of the parallelogram branch, RK4",
         source: SOURCE,
         published: &[Published {
@@ -54,6 +55,7 @@ pub static PROBLEM_40: Problem = Problem {
         short_t_end: 0.7,
         measure: MEASURE,
         tolerance: 1e-3,
+        caveat: "the formula behind \"400 output steps and a threshold of 1e-3\" was not found; the largest absolute difference is used",
         reference: "one-coordinate equation of motion of the parallelogram branch, RK4",
         source: SOURCE,
         published: &[],
@@ -62,8 +64,9 @@ pub static PROBLEM_40: Problem = Problem {
 };
 
 /// Pivot tolerance below which dependent rows are dropped while the links pass the flat
-/// position: at 1e-8 a dropped row can stall just above the constraint tolerance, at 1e-6
-/// already at the first crossing; 1e-9 crosses every flat position of N = 2 in 20 s.
+/// position. Measured at h = 1 ms for N = 2: at 1e-6 the dropped rows' residual creeps above
+/// the constraint tolerance at the first crossing (0.71 s), at 1e-8 a step fails at 18.2 s,
+/// at 1e-9 every flat position of the 20 s is crossed. No value tried crosses for N = 40.
 const DROP_TOLERANCE: f64 = 1e-9;
 
 /// α = 0: numerical damping (α < 0) shortens the swings and costs more than the tolerance
@@ -122,7 +125,7 @@ fn run(n: usize, t_end: f64) -> Result<Outcome, Error> {
 /// B0's `[x, y, ẋ, ẏ]` at each of `times` (ascending, from 0) on the parallelogram branch,
 /// from φ(0) = π/2 (cranks vertical) and φ̇(0) = −1/L (B0 at +1 m/s along x).
 pub fn reference(n: usize, times: &[f64]) -> Vec<[f64; 4]> {
-    // RK4's error at this step is below 1e-10 over 20 s (checked by halving in the tests).
+    // RK4's error at this step is below 1e-8 over 20 s (checked by halving in the tests).
     reference_with_step(n, times, 1e-4)
 }
 
@@ -161,7 +164,11 @@ mod tests {
         let times: Vec<f64> = (0..=400).map(|k| k as f64 * OUTPUT_STEP).collect();
         let r = reference(40, &times);
         let start = [0.0, L, 1.0, 0.0];
-        assert!(r[0].iter().zip(start).all(|(a, b)| (a - b).abs() < 1e-15), "{:?}", r[0]);
+        assert!(
+            r[0].iter().zip(start).all(|(a, b)| (a - b).abs() < 1e-15),
+            "{:?}",
+            r[0]
+        );
         let nf = 40.0;
         let inertia = (nf + 1.0) * M * L * L / 3.0 + nf * M * L * L;
         let weight = (nf + 1.0) * M * G * L / 2.0 + nf * M * G * L;
@@ -174,8 +181,8 @@ mod tests {
         assert!(drift < 1e-9 * e0.abs().max(1.0), "energy drift {drift:e} J");
     }
 
-    /// Halving RK4's step changes the reference by less than 1e-10: it is converged far
-    /// below the published tolerance of 1e-3.
+    /// Halving RK4's step changes the reference by less than 1e-8 (measured 4.4e-9): it is
+    /// converged far below the published tolerance of 1e-3.
     #[test]
     fn reference_is_converged() {
         let times: Vec<f64> = (0..=400).map(|k| k as f64 * OUTPUT_STEP).collect();
@@ -186,6 +193,6 @@ mod tests {
             .zip(&fine)
             .flat_map(|(a, b)| a.iter().zip(b).map(|(x, y)| (x - y).abs()))
             .fold(0.0, f64::max);
-        assert!(diff < 1e-10, "{diff:e}");
+        assert!(diff < 1e-8, "{diff:e}");
     }
 }

@@ -4,8 +4,8 @@
 //! an error measure that needs no reference solution. The published reference trajectory
 //! of P3 (the joint at (1, −1, 0) at t = 0) is not reproduced here.
 
-use super::{energy, integrate, Outcome, Problem, Published, Settings, Spec};
 use super::Error;
+use super::{energy, integrate, Outcome, Problem, Published, Settings, Spec};
 
 const MECHANISM: &str = "bricard";
 /// Outputs at which the energy is compared (every 10 ms).
@@ -20,6 +20,7 @@ pub static PROBLEM: Problem = Problem {
         short_t_end: 2.0,
         measure: "largest |T + V − E₀| over outputs every 10 ms (J)",
         tolerance: 1e-3,
+        caveat: "the UDC page's length, tolerance and reference trajectory (point P3) were not found: 10 s is the ports' length, the measure (energy drift) and tolerance are ours",
         reference: "conservation of energy (no dissipation, no drive)",
         source: "http://lim.ii.udc.es/mbsbenchmark/dist/A04/A04_specification.xml",
         published: &[Published {
@@ -44,12 +45,16 @@ fn run(t_end: f64) -> Result<Outcome, Error> {
     let mut e0 = None;
     let mut error = 0.0_f64;
     let mut failure = None;
-    let (cpu, stats) = integrate(MECHANISM, SETTINGS, t_end, outputs, |_, q, qd| {
-        match energy(MECHANISM, q, qd) {
+    let (cpu, stats) = integrate(
+        MECHANISM,
+        SETTINGS,
+        t_end,
+        outputs,
+        |_, q, qd| match energy(MECHANISM, q, qd) {
             Ok(e) => error = error.max((e - *e0.get_or_insert(e)).abs()),
             Err(e) => failure = Some(e),
-        }
-    })?;
+        },
+    )?;
     if let Some(e) = failure {
         return Err(e);
     }

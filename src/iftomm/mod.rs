@@ -47,8 +47,10 @@ pub struct Spec {
     pub short_t_end: f64,
     /// The published error measure, in words.
     pub measure: &'static str,
-    /// The published tolerance on that measure (the "high precision" one where two are given).
+    /// The tolerance on that measure: the published "high precision" one where it was found.
     pub tolerance: f64,
+    /// What of the definition is not the published one (empty when all of it is), and why.
+    pub caveat: &'static str,
     /// What the error is measured against, and why that reference is independent of symbody.
     pub reference: &'static str,
     /// Where the definition was published.
