@@ -364,63 +364,76 @@ fn forces_are_gravity_plus_lagranges_velocity_terms_of_the_hand_written_kinetic_
             let (q, qd, t) = random_state_for(&mut rng, info);
             let mut force = vec![0.0; n];
             mech.force(&q, &qd, t, &mut force);
-            let h = 1e-3;
-            let shifted = |i: usize, s: f64| {
-                let mut p = q.clone();
-                p[i] += s;
-                p
-            };
-            let momentum = |q: &[f64]| -> DMatrix<f64> {
-                let delta = 0.5;
-                DMatrix::from_fn(n, 1, |i, _| {
-                    let (mut up, mut down) = (qd.clone(), qd.clone());
-                    up[i] += delta;
-                    down[i] -= delta;
-                    (kinetic_energy(info, q, &up) - kinetic_energy(info, q, &down)) / (2.0 * delta)
-                })
-            };
-            let pdot = d1(
-                |s| {
-                    let p: Vec<f64> = q.iter().zip(&qd).map(|(a, b)| a + s * b).collect();
-                    momentum(&p)
-                },
-                h,
-            );
-            let mut rest = force.clone();
-            for b in info.bodies {
-                let o = b.coord_offset;
-                for k in 0..3 {
-                    rest[o + k] -= b.mass * info.gravity[k];
-                }
-                if info.formulation == Formulation::Paper {
-                    continue;
-                }
-                for i in o..o + b.n_coords() {
-                    let dt_dq = d1(|s| kinetic_energy(info, &shifted(i, s), &qd), h);
-                    rest[i] -= dt_dq - pdot[i];
-                }
-                if b.rotation == Rotation::Quaternion {
-                    let ed2: f64 = qd[o + 3..o + 7].iter().map(|x| x * x).sum();
-                    for i in o + 3..o + 7 {
-                        rest[i] += regularization(b) * q[i] * ed2;
+            // Fourth-order truncation dominates at h = 1e-3 for millimetre-sized links (Andrews'
+            // squeezer: 3.4e-4 at 1e-3, 3.5e-8 at 1e-4), rounding at h = 1e-4 for stiff springs
+            // (the flyball governor: 3.6e-7 at 1e-4): each state takes the better step.
+            // Relative to the loads' size (forces, or their power): differences of a stiff
+            // spring's 1e5 N terms round off far above an absolute 1e-7.
+            let load = force.iter().fold(0.0f64, |a, f| a.max(f.abs()));
+            let discrepancy = |h: f64| -> f64 {
+                let shifted = |i: usize, s: f64| {
+                    let mut p = q.clone();
+                    p[i] += s;
+                    p
+                };
+                let momentum = |q: &[f64]| -> DMatrix<f64> {
+                    let delta = 0.5;
+                    DMatrix::from_fn(n, 1, |i, _| {
+                        let (mut up, mut down) = (qd.clone(), qd.clone());
+                        up[i] += delta;
+                        down[i] -= delta;
+                        (kinetic_energy(info, q, &up) - kinetic_energy(info, q, &down))
+                            / (2.0 * delta)
+                    })
+                };
+                let pdot = d1(
+                    |s| {
+                        let p: Vec<f64> = q.iter().zip(&qd).map(|(a, b)| a + s * b).collect();
+                        momentum(&p)
+                    },
+                    h,
+                );
+                let mut rest = force.clone();
+                for b in info.bodies {
+                    let o = b.coord_offset;
+                    for k in 0..3 {
+                        rest[o + k] -= b.mass * info.gravity[k];
+                    }
+                    if info.formulation == Formulation::Paper {
+                        continue;
+                    }
+                    for i in o..o + b.n_coords() {
+                        let dt_dq = d1(|s| kinetic_energy(info, &shifted(i, s), &qd), h);
+                        rest[i] -= dt_dq - pdot[i];
+                    }
+                    if b.rotation == Rotation::Quaternion {
+                        let ed2: f64 = qd[o + 3..o + 7].iter().map(|x| x * x).sum();
+                        for i in o + 3..o + 7 {
+                            rest[i] += regularization(b) * q[i] * ed2;
+                        }
                     }
                 }
-            }
-            let dv = mech.potential(&q) - mech.potential(info.q0);
-            let dvg = gravity_potential(info, &q) - gravity_potential(info, info.q0);
-            let pnc = mech.power_nc(&q, &qd, t);
-            if (dv - dvg).abs() <= 1e-12 * (1.0 + dvg.abs()) && pnc == 0.0 {
-                worst = worst.max(rest.iter().fold(0.0f64, |a, r| a.max(r.abs())));
-            } else {
-                let v_rest = |s: f64| {
-                    let p: Vec<f64> = q.iter().zip(&qd).map(|(a, b)| a + s * b).collect();
-                    mech.potential(&p) - gravity_potential(info, &p)
-                };
-                let power: f64 = rest.iter().zip(&qd).map(|(r, v)| r * v).sum();
-                worst = worst.max((power + d1(v_rest, h) - pnc).abs());
-            }
+                let dv = mech.potential(&q) - mech.potential(info.q0);
+                let dvg = gravity_potential(info, &q) - gravity_potential(info, info.q0);
+                let pnc = mech.power_nc(&q, &qd, t);
+                if (dv - dvg).abs() <= 1e-12 * (1.0 + dvg.abs()) && pnc == 0.0 {
+                    rest.iter().fold(0.0f64, |a, r| a.max(r.abs())) / (1.0 + load)
+                } else {
+                    let v_rest = |s: f64| {
+                        let p: Vec<f64> = q.iter().zip(&qd).map(|(a, b)| a + s * b).collect();
+                        mech.potential(&p) - gravity_potential(info, &p)
+                    };
+                    let power: f64 = rest.iter().zip(&qd).map(|(r, v)| r * v).sum();
+                    let load_power: f64 = force.iter().zip(&qd).map(|(f, v)| (f * v).abs()).sum();
+                    (power + d1(v_rest, h) - pnc).abs() / (1.0 + load_power)
+                }
+            };
+            worst = worst.max(discrepancy(1e-3).min(discrepancy(1e-4)));
         }
-        eprintln!("{name}: max |Q − (m g + ∂T/∂q − ṗ − k e ėᵀė)| over {STATES} states: {worst:e}");
-        assert!(worst <= 1e-7, "{name}: max |Q − reference| = {worst:e}");
+        eprintln!("{name}: max |Q − (m g + ∂T/∂q − ṗ − k e ėᵀė)| / (1 + |Q|) over {STATES} states: {worst:e}");
+        assert!(
+            worst <= 1e-7,
+            "{name}: max |Q − reference| / (1 + |Q|) = {worst:e}"
+        );
     }
 }
