@@ -8,7 +8,9 @@
 //! difficulty is that the mechanism crosses positions where it could leave that branch.
 
 use super::Error;
-use super::{integrate_with, point, point_velocity, Outcome, Problem, Published, Settings, Spec};
+use super::{
+    integrate_with, point, point_velocity, rk4_step, Outcome, Problem, Published, Settings, Spec,
+};
 use symbody_runtime::HhtBuilder;
 
 const G: f64 = 9.81;
@@ -88,23 +90,17 @@ fn run(n: usize, t_end: f64) -> Result<Outcome, Error> {
     let name = format!("n_four_bar_{n}");
     let outputs = (t_end / OUTPUT_STEP).round().max(1.0) as usize;
     let mut samples = Vec::with_capacity(outputs + 1);
-    let mut failure = None;
     let builder = HhtBuilder::new()
         .step(SETTINGS.step)
         .alpha(SETTINGS.alpha)
         .project_velocities(true)
         .drop_dependent_rows(DROP_TOLERANCE);
     let (cpu, stats) = integrate_with(&name, builder, t_end, outputs, |t, q, qd| {
-        let p = point(&name, "crank0", B0, q);
-        let v = point_velocity(&name, "crank0", B0, q, qd);
-        match (p, v) {
-            (Ok(p), Ok(v)) => samples.push((t, [p[0], p[1], v[0], v[1]])),
-            (Err(e), _) | (_, Err(e)) => failure = Some(e),
-        }
+        let p = point(&name, "crank0", B0, q)?;
+        let v = point_velocity(&name, "crank0", B0, q, qd)?;
+        samples.push((t, [p[0], p[1], v[0], v[1]]));
+        Ok(())
     })?;
-    if let Some(e) = failure {
-        return Err(e);
-    }
     let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
     let reference = reference(n, &times);
     let error = samples
@@ -139,12 +135,7 @@ fn reference_with_step(n: usize, times: &[f64], h_max: f64) -> Vec<[f64; 4]> {
     for &t_out in times {
         while t < t_out {
             let h = h_max.min(t_out - t);
-            let (k1p, k1w) = (w, f(phi));
-            let (k2p, k2w) = (w + 0.5 * h * k1w, f(phi + 0.5 * h * k1p));
-            let (k3p, k3w) = (w + 0.5 * h * k2w, f(phi + 0.5 * h * k2p));
-            let (k4p, k4w) = (w + h * k3w, f(phi + h * k3p));
-            phi += h / 6.0 * (k1p + 2.0 * k2p + 2.0 * k3p + k4p);
-            w += h / 6.0 * (k1w + 2.0 * k2w + 2.0 * k3w + k4w);
+            rk4_step(&mut phi, &mut w, h, f);
             t += h;
         }
         let (s, c) = phi.sin_cos();

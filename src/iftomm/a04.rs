@@ -44,20 +44,11 @@ fn run(t_end: f64) -> Result<Outcome, Error> {
     let outputs = (t_end / OUTPUT_STEP).round().max(1.0) as usize;
     let mut e0 = None;
     let mut error = 0.0_f64;
-    let mut failure = None;
-    let (cpu, stats) = integrate(
-        MECHANISM,
-        SETTINGS,
-        t_end,
-        outputs,
-        |_, q, qd| match energy(MECHANISM, q, qd) {
-            Ok(e) => error = error.max((e - *e0.get_or_insert(e)).abs()),
-            Err(e) => failure = Some(e),
-        },
-    )?;
-    if let Some(e) = failure {
-        return Err(e);
-    }
+    let (cpu, stats) = integrate(MECHANISM, SETTINGS, t_end, outputs, |_, q, qd| {
+        let e = energy(MECHANISM, q, qd)?;
+        error = error.max((e - *e0.get_or_insert(e)).abs());
+        Ok(())
+    })?;
     Ok(Outcome {
         t_end,
         error,

@@ -110,7 +110,7 @@ pub struct Settings {
 
 /// Integrates the registered mechanism `name` with HHT from its file's initial state to
 /// `t_end`, calling `sample(t, q, qd)` at `outputs + 1` equally spaced times (including 0
-/// and `t_end`). Velocities are projected onto the constraints after every step (as
+/// and `t_end`); the first error `sample` returns ends the run. Velocities are projected onto the constraints after every step (as
 /// `symbody simulate <name>` does), which keeps α = 0 stable. Returns the wall time of the
 /// integration (sampling excluded) and the statistics.
 pub fn integrate(
@@ -118,7 +118,7 @@ pub fn integrate(
     settings: Settings,
     t_end: f64,
     outputs: usize,
-    sample: impl FnMut(f64, &[f64], &[f64]),
+    sample: impl FnMut(f64, &[f64], &[f64]) -> Result<(), Error>,
 ) -> Result<(Duration, Stats), Error> {
     let builder = HhtBuilder::new()
         .step(settings.step)
@@ -133,20 +133,20 @@ pub fn integrate_with(
     builder: HhtBuilder,
     t_end: f64,
     outputs: usize,
-    mut sample: impl FnMut(f64, &[f64], &[f64]),
+    mut sample: impl FnMut(f64, &[f64], &[f64]) -> Result<(), Error>,
 ) -> Result<(Duration, Stats), Error> {
     let entry = crate::generic::find(name)?;
     let mech: &'static (dyn Mechanism + Sync) = entry.default_mechanism();
     let start = Instant::now();
     let mut it = builder.build(mech)?;
     let mut cpu = start.elapsed();
-    sample(it.t(), it.q(), it.qd());
+    sample(it.t(), it.q(), it.qd())?;
     for k in 1..=outputs {
         let t_out = t_end * k as f64 / outputs as f64;
         let start = Instant::now();
         it.advance_to(t_out)?;
         cpu += start.elapsed();
-        sample(it.t(), it.q(), it.qd());
+        sample(it.t(), it.q(), it.qd())?;
     }
     Ok((cpu, it.stats()))
 }
@@ -197,4 +197,15 @@ pub fn energy(name: &str, q: &[f64], qd: &[f64]) -> Result<f64, Error> {
         .map(|(m, (&r, &c))| m * qd[r as usize] * qd[c as usize])
         .sum();
     Ok(0.5 * twice_kinetic + mech.potential(q))
+}
+
+/// One classical RK4 step of θ̈ = f(θ), the one-coordinate references' integrator.
+pub fn rk4_step(theta: &mut f64, omega: &mut f64, h: f64, f: impl Fn(f64) -> f64) {
+    let (th, w) = (*theta, *omega);
+    let (k1t, k1w) = (w, f(th));
+    let (k2t, k2w) = (w + 0.5 * h * k1w, f(th + 0.5 * h * k1t));
+    let (k3t, k3w) = (w + 0.5 * h * k2w, f(th + 0.5 * h * k2t));
+    let (k4t, k4w) = (w + h * k3w, f(th + h * k3t));
+    *theta += h / 6.0 * (k1t + 2.0 * k2t + 2.0 * k3t + k4t);
+    *omega += h / 6.0 * (k1w + 2.0 * k2w + 2.0 * k3w + k4w);
 }
