@@ -151,7 +151,7 @@ impl HhtBuilder {
 
     /// Lets the step pass singular positions (a linkage crossing a flat or dead-centre
     /// configuration, where its rows are dependent for an instant, as in the IFToMM A02
-    /// N-four-bar): rows whose Schur pivot falls below `tolerance` (relative, e.g. 1e-6) are
+    /// N-four-bar): rows whose Schur pivot falls below `tolerance` (relative, e.g. 1e-9) are
     /// dropped for that factorization instead of failing the step. A step is still accepted
     /// only when every row, dropped or not, satisfies the constraint tolerance, so an
     /// unreachable pose still fails. Off by default (0): rank loss is reported.

@@ -22,7 +22,7 @@ fn main() {
         "problem,mechanism,t_end_s,measure,error,tolerance,passed,cpu_s,steps,newton_iterations,step_s,alpha\n",
     );
     let mut md = String::from(
-        "| problem | t_end | error (published measure) | tolerance | result | CPU (symbody) | steps | published CPU (other codes) |\n|---|---|---|---|---|---|---|---|\n",
+        "| problem | t_end | error (measure in the notes) | tolerance | result | CPU (symbody) | steps | published CPU (other codes) |\n|---|---|---|---|---|---|---|---|\n",
     );
     let mut notes = String::new();
     let mut failed = false;
