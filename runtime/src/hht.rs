@@ -31,7 +31,9 @@
 //! minimum step the integrator returns an error and keeps the last accepted state.
 
 use crate::error::{check_len, ConstraintRow, Error};
-use crate::kinematics::{inf_norm, mass_times, InitialVelocity, KinematicSettings, Kinematics};
+use crate::kinematics::{
+    inf_norm, mass_times, phi_q_transpose_times, InitialVelocity, KinematicSettings, Kinematics,
+};
 use crate::kkt::{KktError, KktPattern, KktSolver, SchurKkt};
 use crate::mechanism::{Mechanism, MechanismInfo, NewtonOutputs};
 use crate::reactions;
@@ -445,7 +447,7 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     res2: Vec<f64>,
     da: Vec<f64>,
     dl: Vec<f64>,
-    /// Φqᵀλ of the current iterate, for the convergence test.
+    /// Φqᵀλ of the current iterate: in the residual and in the convergence test.
     reaction1: Vec<f64>,
     stats: Stats,
     first_warning: Option<EulerWarning>,
@@ -592,17 +594,9 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
 
     /// `r_prev = Φqᵀλ − Q` from the evaluation buffers and `self.lambda`.
     fn store_generalized_reaction(&mut self) {
+        phi_q_transpose_times(self.info, &self.phi_q, &self.lambda, &mut self.r_prev);
         for (r, &f) in self.r_prev.iter_mut().zip(&self.force) {
-            *r = -f;
-        }
-        for ((&row, &col), &v) in self
-            .info
-            .phi_q_rows
-            .iter()
-            .zip(self.info.phi_q_cols)
-            .zip(&self.phi_q)
-        {
-            self.r_prev[col as usize] += v * self.lambda[row as usize];
+            *r -= f;
         }
     }
 
@@ -824,19 +818,13 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 break;
             }
             // res1 = M q̈/(1+α) + Φqᵀλ − Q − α/(1+α) r_prev, negated for the solve.
+            // Φqᵀλ is kept: the convergence test below judges the multipliers by it.
             mass_times(self.info, &self.mass, &self.qdd1, &mut self.res1);
+            phi_q_transpose_times(self.info, &self.phi_q, &self.lambda1, &mut self.reaction1);
             let ac = alpha * c;
             for i in 0..self.res1.len() {
-                self.res1[i] = -(c * self.res1[i] - self.force[i] - ac * self.r_prev[i]);
-            }
-            for ((&row, &col), &v) in self
-                .info
-                .phi_q_rows
-                .iter()
-                .zip(self.info.phi_q_cols)
-                .zip(&self.phi_q)
-            {
-                self.res1[col as usize] -= v * self.lambda1[row as usize];
+                self.res1[i] =
+                    -(c * self.res1[i] + self.reaction1[i] - self.force[i] - ac * self.r_prev[i]);
             }
             for (r, &p) in self.res2.iter_mut().zip(&self.phi) {
                 *r = -p * inv_bh2;
@@ -864,18 +852,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             }
             // The multipliers are judged by the forces they apply, Φqᵀλ (see
             // `abs_tol_lambda`); the right-hand side is consumed, so res1 takes Φqᵀ·Δλ.
-            self.res1.fill(0.0);
-            self.reaction1.fill(0.0);
-            for ((&row, &col), &v) in self
-                .info
-                .phi_q_rows
-                .iter()
-                .zip(self.info.phi_q_cols)
-                .zip(&self.phi_q)
-            {
-                self.res1[col as usize] += v * self.dl[row as usize];
-                self.reaction1[col as usize] += v * self.lambda1[row as usize];
-            }
+            phi_q_transpose_times(self.info, &self.phi_q, &self.dl, &mut self.res1);
             for (d, l) in self.res1.iter().zip(&self.reaction1) {
                 err = err.max(d.abs() / (s.abs_tol_lambda.max(floor_l) + s.rel_tol * l.abs()));
             }

@@ -97,12 +97,25 @@ fn largest_row(v: &[f64]) -> usize {
 }
 
 /// `½ q̇ᵀ M q̇` from the mass nonzeros.
-pub(crate) fn kinetic_energy(info: &MechanismInfo, mass: &[f64], qd: &[f64]) -> f64 {
+pub fn kinetic_energy(info: &MechanismInfo, mass: &[f64], qd: &[f64]) -> f64 {
     let mut t = 0.0;
     for ((&r, &c), &m) in info.mass_rows.iter().zip(info.mass_cols).zip(mass) {
         t += qd[r as usize] * m * qd[c as usize];
     }
     0.5 * t
+}
+
+/// `out = Φqᵀ y` from the Jacobian nonzeros.
+pub(crate) fn phi_q_transpose_times(
+    info: &MechanismInfo,
+    phi_q: &[f64],
+    y: &[f64],
+    out: &mut [f64],
+) {
+    out.fill(0.0);
+    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
+        out[c as usize] += v * y[r as usize];
+    }
 }
 
 /// `out = M v` from the mass nonzeros.

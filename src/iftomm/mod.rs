@@ -10,7 +10,9 @@
 
 use std::time::{Duration, Instant};
 
-use symbody_runtime::{HhtBuilder, Mechanism, Stats};
+use nalgebra::Vector3;
+use symbody_runtime::kinematics::kinetic_energy;
+use symbody_runtime::{pose, BodyInfo, HhtBuilder, Mechanism, Stats};
 
 pub use crate::scenario::ScenarioError as Error;
 
@@ -110,9 +112,10 @@ pub struct Settings {
 
 /// Integrates the registered mechanism `name` with HHT from its file's initial state to
 /// `t_end`, calling `sample(t, q, qd)` at `outputs + 1` equally spaced times (including 0
-/// and `t_end`); the first error `sample` returns ends the run. Velocities are projected onto the constraints after every step (as
-/// `symbody simulate <name>` does), which keeps α = 0 stable. Returns the wall time of the
-/// integration (sampling excluded) and the statistics.
+/// and `t_end`); the first error `sample` returns ends the run. Velocities are projected
+/// onto the constraints after every step (as `symbody simulate <name>` does), which keeps
+/// α = 0 stable. Returns the wall time of the integration (sampling excluded) and the
+/// statistics.
 pub fn integrate(
     name: &str,
     settings: Settings,
@@ -151,14 +154,23 @@ pub fn integrate_with(
     Ok((cpu, it.stats()))
 }
 
-/// World position of `local` (body coordinates) on body `body` of mechanism `name` at `q`.
-pub fn point(name: &str, body: &str, local: [f64; 3], q: &[f64]) -> Result<[f64; 3], Error> {
-    let entry = crate::generic::find(name)?;
-    let info = entry.default_mechanism().info();
+/// The default formulation of mechanism `name` and the description of its body `body`.
+fn body(
+    name: &str,
+    body: &str,
+) -> Result<(&'static (dyn Mechanism + Sync), &'static BodyInfo), Error> {
+    let mech = crate::generic::find(name)?.default_mechanism();
+    let info = mech.info();
     let b = info
         .body_index(body)
         .ok_or_else(|| Error::Options(format!("`{name}` has no body `{body}`")))?;
-    let p = symbody_runtime::pose::point_world(Some(&info.bodies[b]), q, &local)?;
+    Ok((mech, &info.bodies[b]))
+}
+
+/// World position of `local` (body coordinates) on body `body` of mechanism `name` at `q`.
+pub fn point(name: &str, body: &str, local: [f64; 3], q: &[f64]) -> Result<[f64; 3], Error> {
+    let (_, body) = self::body(name, body)?;
+    let p = pose::point_world(Some(body), q, &local)?;
     Ok([p.x, p.y, p.z])
 }
 
@@ -170,17 +182,11 @@ pub fn point_velocity(
     q: &[f64],
     qd: &[f64],
 ) -> Result<[f64; 3], Error> {
-    let entry = crate::generic::find(name)?;
-    let info = entry.default_mechanism().info();
-    let b = info
-        .body_index(body)
-        .ok_or_else(|| Error::Options(format!("`{name}` has no body `{body}`")))?;
-    let body = &info.bodies[b];
-    let omega = symbody_runtime::pose::angular_velocity(body, q, qd)?;
-    let a = symbody_runtime::pose::rotation_matrix(body, q)?;
+    let (_, body) = self::body(name, body)?;
+    let omega = pose::angular_velocity(body, q, qd)?;
+    let a = pose::rotation_matrix(body, q)?;
     let o = body.coord_offset;
-    let v = nalgebra::Vector3::new(qd[o], qd[o + 1], qd[o + 2])
-        + omega.cross(&(a * nalgebra::Vector3::from(local)));
+    let v = Vector3::new(qd[o], qd[o + 1], qd[o + 2]) + omega.cross(&(a * Vector3::from(local)));
     Ok([v.x, v.y, v.z])
 }
 
@@ -190,13 +196,7 @@ pub fn energy(name: &str, q: &[f64], qd: &[f64]) -> Result<f64, Error> {
     let info = mech.info();
     let mut mass = vec![0.0; info.mass_nnz()];
     mech.mass(q, &mut mass);
-    // The pattern lists both triangles, so the plain sum is qdᵀ·M·qd.
-    let twice_kinetic: f64 = mass
-        .iter()
-        .zip(info.mass_rows.iter().zip(info.mass_cols))
-        .map(|(m, (&r, &c))| m * qd[r as usize] * qd[c as usize])
-        .sum();
-    Ok(0.5 * twice_kinetic + mech.potential(q))
+    Ok(kinetic_energy(info, &mass, qd) + mech.potential(q))
 }
 
 /// One classical RK4 step of θ̈ = f(θ), the one-coordinate references' integrator.

@@ -505,31 +505,25 @@ impl KktSolver for SchurKkt {
                     continue;
                 }
                 if self.drop_dependent {
-                    // As a redundant row, once its column of L is cleared. (Clamping the
+                    // As a redundant row, once its column of L is cleared below. (Clamping the
                     // pivot instead keeps the row corrected, but Newton then converges too
                     // slowly along the nearly dependent direction to finish a step.)
                     self.diag[j] = 1.0;
-                    self.dinv[j] = 0.0;
-                    for p in c0..c1 {
-                        self.work[sym.row_idx[p]] = 0.0;
-                        self.lval[p] = 0.0;
-                    }
-                    continue;
                 } else {
                     worst = worst.min(if scale > 0.0 { dj / scale } else { 0.0 });
                     if nbad < bad.len() {
                         bad[nbad] = sym.perm[j];
                     }
                     nbad += 1;
-                    // Drop the row so the remaining pivots can name further dependent rows.
+                    // Dropped too, so the remaining pivots can name further dependent rows.
                     self.diag[j] = 0.0;
-                    self.dinv[j] = 0.0;
-                    for p in c0..c1 {
-                        self.work[sym.row_idx[p]] = 0.0;
-                        self.lval[p] = 0.0;
-                    }
-                    continue;
                 }
+                self.dinv[j] = 0.0;
+                for p in c0..c1 {
+                    self.work[sym.row_idx[p]] = 0.0;
+                    self.lval[p] = 0.0;
+                }
+                continue;
             }
             self.diag[j] = dj;
             let inv = 1.0 / dj;
