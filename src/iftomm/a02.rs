@@ -68,7 +68,8 @@ pub static PROBLEM_40: Problem = Problem {
 /// Pivot tolerance below which dependent rows are dropped while the links pass the flat
 /// position. Measured at h = 1 ms for N = 2: at 1e-6 the dropped rows' residual creeps above
 /// the constraint tolerance at the first crossing (0.71 s), at 1e-8 a step fails at 18.2 s,
-/// at 1e-9 every flat position of the 20 s is crossed. No value tried crosses for N = 40.
+/// at 1e-9 the most (all of the 20 s in one build, up to 6.5 s after a roundoff-level change
+/// in the residual's summation order). No value tried crosses for N = 40.
 const DROP_TOLERANCE: f64 = 1e-9;
 
 /// α = 0: numerical damping (α < 0) shortens the swings and costs more than the tolerance
