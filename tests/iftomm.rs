@@ -11,8 +11,14 @@ fn check(id: &str) {
         .unwrap_or_else(|| panic!("no problem {id}"));
     let o = (p.run)(p.spec.short_t_end).unwrap_or_else(|e| panic!("{id}: {e}"));
     eprintln!(
-        "{id}: error {:.3e} (tolerance {:.0e}) to t = {} s, {} steps, {} Newton iterations",
-        o.error, p.spec.tolerance, o.t_end, o.stats.steps, o.stats.newton_iterations
+        "{id}: error {:.3e} (tolerance {:.0e}) to t = {} s, {} steps, {} Newton iterations \
+         ({} accepted at the roundoff floor)",
+        o.error,
+        p.spec.tolerance,
+        o.t_end,
+        o.stats.steps,
+        o.stats.newton_iterations,
+        o.stats.noise_limited
     );
     assert_eq!(o.t_end, p.spec.short_t_end);
     assert!(

@@ -352,6 +352,7 @@ impl HhtBuilder {
             da: vec![0.0; n],
             dl: vec![0.0; m],
             reaction1: vec![0.0; n],
+            noise: NoiseProbe::new(n, m),
             stats: Stats::default(),
             first_warning,
             settings: self,
@@ -382,6 +383,10 @@ pub struct Stats {
     pub evaluations: usize,
     /// Accepted states at which some body was past the Euler warning threshold.
     pub euler_warnings: usize,
+    /// Newton iterations that stalled above the tolerance but at the noise floor that
+    /// roundoff sets through the factorization, and were accepted as converged (near
+    /// singular positions; see `NoiseProbe`).
+    pub noise_limited: usize,
 }
 
 /// What one accepted step did.
@@ -449,6 +454,7 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     dl: Vec<f64>,
     /// Φqᵀλ of the current iterate: in the residual and in the convergence test.
     reaction1: Vec<f64>,
+    noise: NoiseProbe,
     stats: Stats,
     first_warning: Option<EulerWarning>,
 }
@@ -823,8 +829,15 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             phi_q_transpose_times(self.info, &self.phi_q, &self.lambda1, &mut self.reaction1);
             let ac = alpha * c;
             for i in 0..self.res1.len() {
-                self.res1[i] =
-                    -(c * self.res1[i] + self.reaction1[i] - self.force[i] - ac * self.r_prev[i]);
+                let terms = [
+                    c * self.res1[i],
+                    self.reaction1[i],
+                    -self.force[i],
+                    -ac * self.r_prev[i],
+                ];
+                self.noise.f[i] =
+                    NOISE_FACTOR * f64::EPSILON * terms.map(f64::abs).iter().sum::<f64>();
+                self.res1[i] = -terms.iter().sum::<f64>();
             }
             for (r, &p) in self.res2.iter_mut().zip(&self.phi) {
                 *r = -p * inv_bh2;
@@ -846,20 +859,35 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             // floor is ~1e-7, below the default tolerances; it matters only for tiny steps).
             let floor_a = NOISE_FACTOR * f64::EPSILON * q_scale * inv_bh2;
             let floor_l = floor_a * inf_norm(&self.mass);
-            let mut err = 0.0f64;
-            for (d, a) in self.da.iter().zip(&self.qdd1) {
-                err = err.max(d.abs() / (s.abs_tol_acc.max(floor_a) + s.rel_tol * a.abs()));
-            }
             // The multipliers are judged by the forces they apply, Φqᵀλ (see
             // `abs_tol_lambda`); the right-hand side is consumed, so res1 takes Φqᵀ·Δλ.
             phi_q_transpose_times(self.info, &self.phi_q, &self.dl, &mut self.res1);
-            for (d, l) in self.res1.iter().zip(&self.reaction1) {
-                err = err.max(d.abs() / (s.abs_tol_lambda.max(floor_l) + s.rel_tol * l.abs()));
-            }
+            let mut err = self.weighted_increment(floor_a, floor_l);
             if !err.is_finite() {
                 return Err(Failure::NotFinite);
             }
-            if iter >= 1 && err > SLOW_RATE * last_err {
+            let mut stalled = iter >= 1 && err > SLOW_RATE * last_err;
+            if stalled && err > 1.0 {
+                // Stalled above the tolerance: if what is left is what roundoff alone makes
+                // of an increment through this factorization, Newton is done.
+                self.noise
+                    .measure(
+                        &mut self.kkt,
+                        self.info,
+                        &self.phi_q,
+                        &self.mass,
+                        q_scale * inv_bh2,
+                    )
+                    .map_err(Failure::Kkt)?;
+                let (noise_a, noise_l) = self.noise.floor;
+                let at_noise = self.weighted_increment(floor_a.max(noise_a), floor_l.max(noise_l));
+                if at_noise <= 1.0 {
+                    err = at_noise;
+                    stalled = false;
+                    self.stats.noise_limited += 1;
+                }
+            }
+            if stalled {
                 if err > 4.0 * last_err && iter >= 2 {
                     return Err(Failure::NotConverged {
                         residual,
@@ -880,6 +908,91 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             residual,
             row: worst_row(&self.phi),
         })
+    }
+}
+
+impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
+    /// The largest increment of `q̈` (`self.da`) and of Φqᵀλ (`self.res1`), each relative to
+    /// its tolerance, with the absolute tolerances raised to the given noise floors.
+    fn weighted_increment(&self, floor_a: f64, floor_l: f64) -> f64 {
+        let s = &self.settings;
+        let acc = self
+            .da
+            .iter()
+            .zip(&self.qdd1)
+            .map(|(d, a)| d.abs() / (s.abs_tol_acc.max(floor_a) + s.rel_tol * a.abs()));
+        let force = self
+            .res1
+            .iter()
+            .zip(&self.reaction1)
+            .map(|(d, l)| d.abs() / (s.abs_tol_lambda.max(floor_l) + s.rel_tol * l.abs()));
+        acc.chain(force).fold(0.0, f64::max)
+    }
+}
+
+/// What roundoff alone makes of a Newton increment through the current factorization:
+/// the convergence test never asks Newton to go below it.
+///
+/// Roundoff δ in Φ reaches the right-hand side as δ/(βh²), about ε·|q|/(βh²); the residual's
+/// own roundoff is accumulated in `f` while it is formed. Solving with both, under fixed
+/// pseudo-random signs, measures what the factorization makes of them: about themselves for
+/// a regular mechanism, but 1/σ times more where Φq is nearly singular (a linkage crossing a
+/// flat position), where a fixed floor would leave Newton chasing noise until the step fails.
+#[derive(Debug)]
+struct NoiseProbe {
+    /// Roundoff of each residual entry (set while the residual is formed), then the signed
+    /// right-hand side.
+    f: Vec<f64>,
+    g: Vec<f64>,
+    x: Vec<f64>,
+    y: Vec<f64>,
+    /// Floors of the acceleration and Φqᵀλ increments.
+    floor: (f64, f64),
+}
+
+impl NoiseProbe {
+    fn new(n: usize, m: usize) -> Self {
+        NoiseProbe {
+            f: vec![0.0; n],
+            g: vec![0.0; m],
+            x: vec![0.0; n],
+            y: vec![0.0; m],
+            floor: (0.0, 0.0),
+        }
+    }
+
+    /// `scale`: |q|/(βh²), the right-hand side of a unit error in Φ.
+    fn measure<K: KktSolver>(
+        &mut self,
+        kkt: &mut K,
+        info: &MechanismInfo,
+        phi_q: &[f64],
+        mass: &[f64],
+        scale: f64,
+    ) -> Result<(), KktError> {
+        let g0 = NOISE_FACTOR * f64::EPSILON * scale;
+        let m = self.g.len();
+        for (i, g) in self.g.iter_mut().enumerate() {
+            *g = pseudo_sign(i) * g0;
+        }
+        for (i, f) in self.f.iter_mut().enumerate() {
+            *f *= pseudo_sign(m + i);
+        }
+        kkt.solve(&self.f, &self.g, &mut self.x, &mut self.y)?;
+        let floor_a = g0.max(inf_norm(&self.x));
+        phi_q_transpose_times(info, phi_q, &self.y, &mut self.x);
+        let floor_l = (g0 * inf_norm(mass)).max(inf_norm(&self.x));
+        self.floor = (floor_a, floor_l);
+        Ok(())
+    }
+}
+
+/// ±1 by a multiplicative hash of `i`: signs without structure, the same on every run.
+fn pseudo_sign(i: usize) -> f64 {
+    if (i as u64 + 1).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 63 == 0 {
+        1.0
+    } else {
+        -1.0
     }
 }
 
