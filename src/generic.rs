@@ -11,6 +11,7 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 use symbody_mechanisms::{Entry, REGISTRY};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
+use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, EulerWarning, Formulation,
     HhtBuilder, Integrator, JointKind, KinematicPath, Mechanism, MechanismInfo, PathStats,
@@ -35,6 +36,11 @@ pub struct Options {
     pub alpha: f64,
     /// Spacing of the recorded outputs (s).
     pub output_step: f64,
+    /// Let the integrator pass positions where constraint rows are dependent for an
+    /// instant (a linkage lying flat, IFToMM A02): a step that lands on one drops the rows
+    /// whose pivot vanished instead of failing (`HhtBuilder::drop_dependent_rows`); every
+    /// row must still hold. Off by default, so that rank loss is reported.
+    pub cross_singular: bool,
 }
 
 impl Default for Options {
@@ -50,6 +56,7 @@ impl Default for Options {
             // projection (the velocity residual of eᵀe = 1 grows unchecked).
             alpha: 0.0,
             output_step: 0.01,
+            cross_singular: false,
         }
     }
 }
@@ -290,13 +297,18 @@ fn integrator(
     opts: &Options,
 ) -> Result<Integrator<&'static (dyn Mechanism + Sync)>, Error> {
     let info = mech.info();
-    Ok(HhtBuilder::new()
+    let builder = HhtBuilder::new()
         .alpha(opts.alpha)
         .step(opts.step)
         .min_step((opts.step * 1e-4).min(1e-7))
         .qd0(info.qd0)
-        .project_velocities(true)
-        .build(mech)?)
+        .project_velocities(true);
+    let builder = if opts.cross_singular {
+        builder.drop_dependent_rows(DEFAULT_PIVOT_TOLERANCE)
+    } else {
+        builder
+    };
+    Ok(builder.build(mech)?)
 }
 
 /// Appends the output `(t, q, q̇)`; the meter has just recorded this state.

@@ -87,6 +87,12 @@ enum Command {
         /// Spacing of the rows in the CSVs (s).
         #[arg(long, default_value_t = Options::default().output_step, allow_hyphen_values = true)]
         output_step: f64,
+        /// Let the integrator pass positions where constraint rows are dependent for an
+        /// instant (a linkage lying flat, as the IFToMM A02 N-four-bar): a step landing on one
+        /// drops the rows whose pivot vanished, and every row must still hold (named
+        /// mechanisms; default: stop with the dependent rows named).
+        #[arg(long)]
+        cross_singular_positions: bool,
         /// Paper scenario only: source of the joint and actuator forces, the saddle-point
         /// solve at each output state (`recovered`) or the integrator's own multipliers
         /// (`integrator`).
@@ -153,9 +159,11 @@ fn main() -> ExitCode {
             step,
             alpha,
             output_step,
+            cross_singular_positions,
             reactions,
             files,
         } => match mechanism {
+            None if cross_singular_positions => Err("--cross-singular-positions applies to named mechanisms; the paper scenario has no singular position to cross".to_string()),
             Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
             Some(name) => {
                 let defaults = generic::Options::default();
@@ -165,6 +173,7 @@ fn main() -> ExitCode {
                     step,
                     alpha: alpha.unwrap_or(defaults.alpha),
                     output_step,
+                    cross_singular: cross_singular_positions,
                 };
                 simulate_named(&name, &opts, &files.out, !files.no_plots, files.html)
             }

@@ -161,4 +161,6 @@ fn bad_requests_name_what_exists() {
     assert!(err.contains("exact") && err.contains("paper"), "{err}");
     let (ok, _, err) = symbody(&["simulate", "four_bar", "--reactions", "integrator"]);
     assert!(!ok && err.contains("paper scenario only"), "{err}");
+    let (ok, _, err) = symbody(&["simulate", "--cross-singular-positions"]);
+    assert!(!ok && err.contains("applies to named mechanisms"), "{err}");
 }

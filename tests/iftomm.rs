@@ -9,7 +9,7 @@ fn check(id: &str) {
         .into_iter()
         .find(|p| p.spec.id == id)
         .unwrap_or_else(|| panic!("no problem {id}"));
-    let o = (p.run)(p.spec.short_t_end).unwrap_or_else(|e| panic!("{id}: {e}"));
+    let o = (p.run)(p.spec.short_t_end, p.settings).unwrap_or_else(|e| panic!("{id}: {e}"));
     eprintln!(
         "{id}: error {:.3e} (tolerance {:.0e}) to t = {} s, {} steps, {} Newton iterations \
          ({} accepted at the roundoff floor)",

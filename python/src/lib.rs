@@ -105,7 +105,8 @@ fn mechanisms() -> Vec<&'static str> {
 /// One run of `symbody simulate <name>`: `[(stem, columns, data)]` for `bodies`, `joints`,
 /// `drivers` and `energy`, `data` an outputs × columns array.
 #[pyfunction]
-#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation))]
+#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions))]
+#[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
     name: &str,
@@ -114,6 +115,7 @@ fn simulate<'py>(
     alpha: f64,
     output_step: f64,
     formulation: Option<&str>,
+    cross_singular_positions: bool,
 ) -> PyResult<Vec<(&'static str, Vec<String>, Matrix<'py>)>> {
     let entry = generic::find(name).map_err(py_err)?;
     let opts = generic::Options {
@@ -122,6 +124,7 @@ fn simulate<'py>(
         step,
         alpha,
         output_step,
+        cross_singular: cross_singular_positions,
     };
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;
     Ok(generic::tables(&rec)

@@ -199,3 +199,9 @@ def test_solver_failures_are_runtime_errors():
     # pose fails on the way.
     with pytest.raises(RuntimeError):
         symbody.fk("stewart_6_6", lengths=[5.0, 0.1, 5.0, 0.1, 5.0, 0.1])
+
+
+def test_simulate_crosses_singular_positions_when_asked():
+    # The N-four-bar lies flat at t = 0.714 s (IFToMM A02); the option reaches the run.
+    run = symbody.simulate("n_four_bar_2", t_end=1.0, cross_singular_positions=True)
+    np.testing.assert_allclose(run["energy"]["t"][-1], 1.0, atol=1e-15)

@@ -3,21 +3,38 @@
 //! pass/fail, our CPU time and the CPU times other codes published.
 //!
 //! `cargo run --release --bin mbs_benchmarks [-- --short] [-- --only A01]` writes
-//! `bench-results/mbs_benchmarks.{csv,md}` and prints the Markdown. `--short` runs the
-//! shortened lengths the CI test uses. Not run in CI.
+//! `bench-results/mbs_benchmarks.{csv,md}` and prints the Markdown; it exits with 1 when a
+//! problem misses. `--short` runs the shortened lengths the CI test uses
+//! (`mbs_benchmarks_short.*`). `--steps 1e-3,5e-4` runs each problem at each of those steps
+//! (its own α) instead of its own step: error against CPU time, `mbs_benchmarks_sweep.*`,
+//! where a miss is a result, not a failure. Not run in CI.
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use symbody::iftomm::{problems, Outcome, Spec};
+use symbody::iftomm::{problems, Outcome, Settings, Spec};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    let value = |flag: &str| {
+        args.iter()
+            .position(|a| a == flag)
+            .map(|i| args.get(i + 1).cloned().unwrap_or_default())
+    };
     let short = args.iter().any(|a| a == "--short");
-    let only = args
-        .iter()
-        .position(|a| a == "--only")
-        .map(|i| args.get(i + 1).cloned().unwrap_or_default());
+    let only = value("--only");
+    let steps: Option<Vec<f64>> = match value("--steps").map(|list| {
+        list.split(',')
+            .map(|v| v.trim().parse::<f64>().ok().filter(|h| *h > 0.0))
+            .collect::<Option<Vec<f64>>>()
+    }) {
+        None => None,
+        Some(Some(steps)) if !steps.is_empty() => Some(steps),
+        Some(_) => {
+            eprintln!("error: --steps takes positive step sizes separated by commas, e.g. --steps 1e-3,5e-4");
+            std::process::exit(2);
+        }
+    };
     let mut csv = String::from(
         "problem,mechanism,t_end_s,measure,error,tolerance,passed,cpu_s,steps,newton_iterations,step_s,alpha\n",
     );
@@ -32,26 +49,40 @@ fn main() {
             continue;
         }
         let t_end = if short { spec.short_t_end } else { spec.t_end };
-        eprintln!("{}: {} to t = {t_end} s …", spec.id, spec.title);
-        match (p.run)(t_end) {
-            Ok(o) => {
-                failed |= !o.passed(spec);
-                row(&mut csv, &mut md, spec, &o);
-            }
-            Err(e) => {
-                failed = true;
-                let _ = writeln!(
-                    md,
-                    "| {} | {t_end} s | not run | {:.0e} | **failed**: {e} | | | {} |",
-                    spec.id,
-                    spec.tolerance,
-                    published(spec)
-                );
-                let _ = writeln!(
-                    csv,
-                    "{},{},{t_end},,,{},false,,,,,",
-                    spec.id, spec.mechanism, spec.tolerance
-                );
+        let runs: Vec<Settings> = match &steps {
+            Some(steps) => steps
+                .iter()
+                .map(|&step| Settings { step, ..p.settings })
+                .collect(),
+            None => vec![p.settings],
+        };
+        for settings in runs {
+            eprintln!(
+                "{}: {} to t = {t_end} s, h = {:e} …",
+                spec.id, spec.title, settings.step
+            );
+            match (p.run)(t_end, settings) {
+                Ok(o) => {
+                    failed |= !o.passed(spec);
+                    row(&mut csv, &mut md, spec, &o);
+                }
+                Err(e) => {
+                    failed = true;
+                    let _ = writeln!(
+                        md,
+                        "| {} | {t_end} s | not run | {:.0e} | **failed**: {e} | | (h = {:e}, α = {}) | {} |",
+                        spec.id,
+                        spec.tolerance,
+                        settings.step,
+                        settings.alpha,
+                        published(spec)
+                    );
+                    let _ = writeln!(
+                        csv,
+                        "{},{},{t_end},,,{},false,,,,{:e},{}",
+                        spec.id, spec.mechanism, spec.tolerance, settings.step, settings.alpha
+                    );
+                }
             }
         }
         let _ = writeln!(
@@ -72,7 +103,11 @@ fn main() {
     md.push('\n');
     md.push_str(&notes);
     let dir = PathBuf::from("bench-results");
-    let suffix = if short { "_short" } else { "" };
+    let suffix = format!(
+        "{}{}",
+        if short { "_short" } else { "" },
+        if steps.is_some() { "_sweep" } else { "" }
+    );
     let written = std::fs::create_dir_all(&dir)
         .and_then(|_| std::fs::write(dir.join(format!("mbs_benchmarks{suffix}.csv")), &csv))
         .and_then(|_| std::fs::write(dir.join(format!("mbs_benchmarks{suffix}.md")), &md));
@@ -81,7 +116,7 @@ fn main() {
         std::process::exit(2);
     }
     print!("{md}");
-    if failed {
+    if failed && steps.is_none() {
         std::process::exit(1);
     }
 }

@@ -31,6 +31,7 @@ pub static PROBLEM: Problem = Problem {
             source: "rehabenggroup.github.io/MBSbenchmarksInOpenSim, A01",
         }],
     },
+    settings: SETTINGS,
     run,
 };
 
@@ -42,10 +43,10 @@ const SETTINGS: Settings = Settings {
     alpha: 0.0,
 };
 
-fn run(t_end: f64) -> Result<Outcome, Error> {
+fn run(t_end: f64, settings: Settings) -> Result<Outcome, Error> {
     let outputs = (t_end / OUTPUT_STEP).round().max(1.0) as usize;
     let mut error = 0.0_f64;
-    let (cpu, stats) = integrate(MECHANISM, SETTINGS, t_end, outputs, |t, q, _| {
+    let (cpu, stats) = integrate(MECHANISM, settings, t_end, outputs, |t, q, _| {
         let p = point(MECHANISM, "p1", [0.0; 3], q)?;
         let r = reference(t);
         error = error.max((p[0] - r[0]).abs()).max((p[1] - r[1]).abs());
@@ -56,8 +57,8 @@ fn run(t_end: f64) -> Result<Outcome, Error> {
         error,
         cpu,
         stats,
-        step: SETTINGS.step,
-        alpha: SETTINGS.alpha,
+        step: settings.step,
+        alpha: settings.alpha,
     })
 }
 

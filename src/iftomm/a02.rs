@@ -45,6 +45,7 @@ pub static PROBLEM_2: Problem = Problem {
             source: "rehabenggroup.github.io/MBSbenchmarksInOpenSim, A02",
         }],
     },
+    settings: SETTINGS,
     run: run_2,
 };
 
@@ -63,6 +64,7 @@ pub static PROBLEM_40: Problem = Problem {
         source: SOURCE,
         published: &[],
     },
+    settings: SETTINGS,
     run: run_40,
 };
 
@@ -75,21 +77,21 @@ const SETTINGS: Settings = Settings {
     alpha: 0.0,
 };
 
-fn run_2(t_end: f64) -> Result<Outcome, Error> {
-    run(2, t_end)
+fn run_2(t_end: f64, settings: Settings) -> Result<Outcome, Error> {
+    run(2, t_end, settings)
 }
 
-fn run_40(t_end: f64) -> Result<Outcome, Error> {
-    run(40, t_end)
+fn run_40(t_end: f64, settings: Settings) -> Result<Outcome, Error> {
+    run(40, t_end, settings)
 }
 
-fn run(n: usize, t_end: f64) -> Result<Outcome, Error> {
+fn run(n: usize, t_end: f64, settings: Settings) -> Result<Outcome, Error> {
     let name = format!("n_four_bar_{n}");
     let outputs = (t_end / OUTPUT_STEP).round().max(1.0) as usize;
     let mut samples = Vec::with_capacity(outputs + 1);
     let builder = HhtBuilder::new()
-        .step(SETTINGS.step)
-        .alpha(SETTINGS.alpha)
+        .step(settings.step)
+        .alpha(settings.alpha)
         .project_velocities(true)
         // At a flat position the rows of each loop are dependent for an instant; a step that
         // lands there drops the rows whose pivot is below the rank-loss threshold (they must
@@ -113,8 +115,8 @@ fn run(n: usize, t_end: f64) -> Result<Outcome, Error> {
         error,
         cpu,
         stats,
-        step: SETTINGS.step,
-        alpha: SETTINGS.alpha,
+        step: settings.step,
+        alpha: settings.alpha,
     })
 }
 

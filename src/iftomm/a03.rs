@@ -81,6 +81,7 @@ pub static PROBLEM: Problem = Problem {
                      http://rehabenggroup.github.io/MBSbenchmarksInOpenSim/benchmarks/A03_AndrewsMechanism.html",
         }],
     },
+    settings: SETTINGS,
     run,
 };
 
@@ -142,7 +143,7 @@ pub struct Details {
 }
 
 /// Runs A03 to `t_end` (at least 0.03 s, on the 1e-4 s output grid) and measures it.
-pub fn measure(t_end: f64) -> Result<(Outcome, Details), Error> {
+pub fn measure(t_end: f64, settings: Settings) -> Result<(Outcome, Details), Error> {
     let outputs = (t_end / SAMPLE).round();
     if !(t_end >= T_REF - 1e-12 && (outputs * SAMPLE - t_end).abs() <= 1e-12) {
         return Err(Error::Options(format!(
@@ -163,7 +164,7 @@ pub fn measure(t_end: f64) -> Result<(Outcome, Details), Error> {
         balance = balance.max((e - e0 - MOTOR_TORQUE * (angles[0] - beta0)).abs());
         Ok(())
     };
-    let (cpu, stats) = integrate(MECHANISM, SETTINGS, t_end, outputs as usize, &mut sample)?;
+    let (cpu, stats) = integrate(MECHANISM, settings, t_end, outputs as usize, &mut sample)?;
     let angles = at_ref.ok_or_else(|| Error::Options("no output at t = 0.03 s".into()))?;
     let mut angle_errors = [0.0; 7];
     for ((err, a), r) in angle_errors.iter_mut().zip(angles).zip(REFERENCE) {
@@ -176,8 +177,8 @@ pub fn measure(t_end: f64) -> Result<(Outcome, Details), Error> {
             .fold(0.0_f64, |m, e: &f64| m.max(e.abs())),
         cpu,
         stats,
-        step: SETTINGS.step,
-        alpha: SETTINGS.alpha,
+        step: settings.step,
+        alpha: settings.alpha,
     };
     let details = Details {
         angle_errors,
@@ -187,6 +188,6 @@ pub fn measure(t_end: f64) -> Result<(Outcome, Details), Error> {
     Ok((outcome, details))
 }
 
-fn run(t_end: f64) -> Result<Outcome, Error> {
-    measure(t_end).map(|(outcome, _)| outcome)
+fn run(t_end: f64, settings: Settings) -> Result<Outcome, Error> {
+    measure(t_end, settings).map(|(outcome, _)| outcome)
 }

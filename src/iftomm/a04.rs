@@ -30,6 +30,7 @@ pub static PROBLEM: Problem = Problem {
             source: "rehabenggroup.github.io/MBSbenchmarksInOpenSim, A04",
         }],
     },
+    settings: SETTINGS,
     run,
 };
 
@@ -40,11 +41,11 @@ const SETTINGS: Settings = Settings {
     alpha: 0.0,
 };
 
-fn run(t_end: f64) -> Result<Outcome, Error> {
+fn run(t_end: f64, settings: Settings) -> Result<Outcome, Error> {
     let outputs = (t_end / OUTPUT_STEP).round().max(1.0) as usize;
     let mut e0 = None;
     let mut error = 0.0_f64;
-    let (cpu, stats) = integrate(MECHANISM, SETTINGS, t_end, outputs, |_, q, qd| {
+    let (cpu, stats) = integrate(MECHANISM, settings, t_end, outputs, |_, q, qd| {
         let e = energy(MECHANISM, q, qd)?;
         error = error.max((e - *e0.get_or_insert(e)).abs());
         Ok(())
@@ -54,7 +55,7 @@ fn run(t_end: f64) -> Result<Outcome, Error> {
         error,
         cpu,
         stats,
-        step: SETTINGS.step,
-        alpha: SETTINGS.alpha,
+        step: settings.step,
+        alpha: settings.alpha,
     })
 }

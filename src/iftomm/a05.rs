@@ -33,8 +33,10 @@ const OUTPUTS_PER_SECOND: f64 = 100.0;
 /// iterations (1.4 against 2.9 a step over 10 s). α = −0.2 damps that mode further and
 /// saves a third of the iterations of α = −0.05, for an error of 3.6e-6 against 1.0e-6 m
 /// over 10 s; α = 0 (no damping) stops between t = 3.4 and 4.6 s at every step tried.
-const STEP: f64 = 1.0e-4;
-const ALPHA: f64 = -0.2;
+const SETTINGS: Settings = Settings {
+    step: 1.0e-4,
+    alpha: -0.2,
+};
 
 /// RK4 step of the reference. The slider's damped mode has |λ| ≈ 2C(∂d/∂s)²/m_s ≈ 7e3 1/s,
 /// so RK4 (stable for h|λ| < 2.78) needs h < 4e-4 s; 1e-5 s is far inside and halving it
@@ -69,15 +71,12 @@ pub static PROBLEM: Problem = Problem {
             source: "rehabenggroup.github.io/MBSbenchmarksInOpenSim, A05_FlyballGovernor.html",
         }],
     },
+    settings: SETTINGS,
     run,
 };
 
-fn run(t_end: f64) -> Result<Outcome, Error> {
+fn run(t_end: f64, settings: Settings) -> Result<Outcome, Error> {
     let outputs = (t_end * OUTPUTS_PER_SECOND).round().max(1.0) as usize;
-    let settings = Settings {
-        step: STEP,
-        alpha: ALPHA,
-    };
     let mut s = Vec::with_capacity(outputs + 1);
     let (cpu, stats) = integrate(MECHANISM, settings, t_end, outputs, |_, q, _| {
         s.push(point(MECHANISM, "slider", [0.0; 3], q)?[2]);
@@ -94,8 +93,8 @@ fn run(t_end: f64) -> Result<Outcome, Error> {
         error,
         cpu,
         stats,
-        step: STEP,
-        alpha: ALPHA,
+        step: settings.step,
+        alpha: settings.alpha,
     })
 }
 

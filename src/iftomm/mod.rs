@@ -87,8 +87,11 @@ impl Outcome {
 /// A benchmark problem: its definition and how to run it.
 pub struct Problem {
     pub spec: Spec,
-    /// Runs the problem from its published initial state to `t_end` (s).
-    pub run: fn(t_end: f64) -> Result<Outcome, Error>,
+    /// The integration settings the problem is benchmarked with (why: in its file).
+    pub settings: Settings,
+    /// Runs the problem from its published initial state to `t_end` (s) with `settings`
+    /// (the problem's own, or others for a work-precision sweep).
+    pub run: fn(t_end: f64, settings: Settings) -> Result<Outcome, Error>,
 }
 
 /// Every problem, in order.

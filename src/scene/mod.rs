@@ -21,6 +21,7 @@
 //! path = "auto"                 # "auto" (default), "kinematic" or "integrate"
 //! step = 1e-3                   # HHT step when integrating (s)
 //! alpha = 0.0                   # HHT α (default: as `symbody simulate`)
+//! cross_singular_positions = false  # pass positions where rows are dependent for an instant
 //! ```
 
 mod parse;
@@ -96,4 +97,6 @@ pub struct Scene {
     pub step: f64,
     /// HHT α when integrating.
     pub alpha: f64,
+    /// Let the integrator pass singular positions ([`crate::generic::Options::cross_singular`]).
+    pub cross_singular: bool,
 }

@@ -43,6 +43,7 @@ struct RawSolver {
     path: Option<Spanned<String>>,
     step: Option<Spanned<f64>>,
     alpha: Option<Spanned<f64>>,
+    cross_singular_positions: Option<Spanned<bool>>,
 }
 
 /// Reads and checks the scene in `text`; `file` names it in messages.
@@ -190,6 +191,7 @@ fn check(map: &SourceMap<'_>, raw: RawScene, errors: &mut Vec<Diagnostic>) -> Op
         path: None,
         step: None,
         alpha: None,
+        cross_singular_positions: None,
     });
     let path = match &solver.path {
         None => PathRequest::Auto,
@@ -228,6 +230,18 @@ fn check(map: &SourceMap<'_>, raw: RawScene, errors: &mut Vec<Diagnostic>) -> Op
             v
         }
     };
+    let cross_singular = match (&solver.cross_singular_positions, files) {
+        (Some(c), Files::Paper) if *c.get_ref() => {
+            errors.push(map.diag(
+                c.span(),
+                "[solver] `cross_singular_positions`",
+                "the paper's files run the paper scenario, which has no singular position to cross",
+                "remove it, or use files = \"tables\"",
+            ));
+            false
+        }
+        (c, _) => c.as_ref().is_some_and(|c| *c.get_ref()),
+    };
     Some(Scene {
         file: map.file.to_string(),
         mechanism: entry.name,
@@ -242,6 +256,7 @@ fn check(map: &SourceMap<'_>, raw: RawScene, errors: &mut Vec<Diagnostic>) -> Op
         path,
         step,
         alpha,
+        cross_singular,
     })
 }
 

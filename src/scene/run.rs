@@ -199,6 +199,7 @@ pub fn run(scene: &Scene, entry: &Entry) -> Result<(PathChoice, Outcome), Scenar
                 step: scene.step,
                 alpha: scene.alpha,
                 output_step: scene.output_step,
+                cross_singular: scene.cross_singular,
             };
             let mut rec = if kinematic {
                 generic::run_kinematic(entry, &opts)?

@@ -74,18 +74,23 @@ def simulate(
     alpha: float = 0.0,
     output_step: float = 0.01,
     formulation: Optional[str] = None,
+    cross_singular_positions: bool = False,
 ) -> Dict[str, Table]:
     """Simulates the registered mechanism ``name`` as ``symbody simulate <name>`` does.
 
     ``t_end`` defaults to the mechanism file's; ``step`` is the HHT step (s), ``alpha`` HHT's
     α in [-1/3, 0] (velocities are projected onto the constraints after each step),
     ``output_step`` the spacing of the rows (s), ``formulation`` ``"paper"`` or ``"exact"``
-    (default: the mechanism's first).
+    (default: the mechanism's first). ``cross_singular_positions`` lets the integrator pass
+    positions where constraint rows are dependent for an instant (a linkage lying flat, as
+    the IFToMM A02 N-four-bar); by default it stops there and names the rows.
 
     Returns ``{"bodies", "joints", "drivers", "energy"}`` → :class:`Table`, each with the
     columns and values of the CSV of that name.
     """
-    tables = _native.simulate(name, t_end, step, alpha, output_step, formulation)
+    tables = _native.simulate(
+        name, t_end, step, alpha, output_step, formulation, cross_singular_positions
+    )
     return {stem: Table(stem, list(columns), data) for stem, columns, data in tables}
 
 
