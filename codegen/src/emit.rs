@@ -487,8 +487,14 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
         let msg = format!("{} must have {} entries", out.name, out.values.len());
         let len = int(out.values.len());
         params.push(quote!(#o: &mut [f64]));
+        // An empty output (no load Jacobian) is still checked, then has nothing to write.
+        let binding = if out.values.is_empty() {
+            quote!(_)
+        } else {
+            quote!(#o)
+        };
         conversions.push(quote! {
-            let #o: &mut [f64; #len] = #o.try_into().expect(#msg);
+            let #binding: &mut [f64; #len] = #o.try_into().expect(#msg);
         });
     }
     // Inputs no chunk reads are still part of the contract; mark them used.

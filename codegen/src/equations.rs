@@ -18,7 +18,41 @@ pub struct Dynamics {
     /// Structural nonzeros, both triangles, row-major.
     pub mass: Vec<Entry>,
     pub force: Vec<Id>,
+    /// Structural nonzeros of ∂Q/∂q and ∂Q/∂q̇ of the applied loads (springs, dampers,
+    /// actuators, applied forces), row-major: the stiffness and damping an implicit
+    /// integrator's Newton matrix takes. Gravity is constant and the inertial velocity terms
+    /// are not stiff, so they are left out (and the code stays small for mechanisms without
+    /// such loads).
+    pub force_q: Vec<Entry>,
+    pub force_qd: Vec<Entry>,
     pub mass_is_constant: bool,
+}
+
+impl Dynamics {
+    /// M and Q of one formulation, with the applied `loads` (part of Q) differentiated once
+    /// per coordinate and per velocity over the loads that mention it; `None`: no Jacobian.
+    pub fn new(
+        a: &mut Arena,
+        formulation: Formulation,
+        mass: Vec<Entry>,
+        force: Vec<Id>,
+        loads: Option<&[Id]>,
+        mass_is_constant: bool,
+    ) -> Self {
+        let n = force.len();
+        let (force_q, force_qd) = match loads {
+            Some(l) => (jacobian_in(a, l, n, Var::Q), jacobian_in(a, l, n, Var::Qd)),
+            None => (Vec::new(), Vec::new()),
+        };
+        Dynamics {
+            formulation,
+            mass,
+            force,
+            force_q,
+            force_qd,
+            mass_is_constant,
+        }
+    }
 }
 
 /// The equations of a mechanism, all on one arena.
@@ -334,12 +368,19 @@ pub fn derivatives(a: &mut Arena, phi: &[Id], n_coords: usize) -> (Vec<Entry>, V
 /// Structural nonzeros of ∂rows/∂q, row-major. Each coordinate is differentiated once over
 /// all rows that mention it, so shared subexpressions are differentiated once.
 pub fn jacobian(a: &mut Arena, rows: &[Id], n_coords: usize) -> Vec<Entry> {
-    let mut users: Vec<Vec<usize>> = vec![Vec::new(); n_coords];
+    jacobian_in(a, rows, n_coords, Var::Q)
+}
+
+/// As [`jacobian`], with respect to the variables `var(0..n)` (`Var::Q` or `Var::Qd`).
+pub fn jacobian_in(a: &mut Arena, rows: &[Id], n: usize, var: fn(u32) -> Var) -> Vec<Entry> {
+    let mut users: Vec<Vec<usize>> = vec![Vec::new(); n];
     for (r, &row) in rows.iter().enumerate() {
         for v in a.variables(row) {
-            if let Var::Q(j) = v {
-                users[j as usize].push(r);
-            }
+            let j = match v {
+                Var::Q(j) | Var::Qd(j) if var(j) == v => j as usize,
+                _ => continue,
+            };
+            users[j].push(r);
         }
     }
     let one = a.constant(1.0);
@@ -349,7 +390,7 @@ pub fn jacobian(a: &mut Arena, rows: &[Id], n_coords: usize) -> Vec<Entry> {
             continue;
         }
         let roots: Vec<Id> = rs.iter().map(|&r| rows[r]).collect();
-        let target = Var::Q(j as u32);
+        let target = var(j as u32);
         let d = a.derivative(&roots, &|v| (v == target).then_some(one));
         for (&r, &id) in rs.iter().zip(&d) {
             if !a.is_zero(id) {
@@ -385,12 +426,7 @@ fn paper_dynamics(a: &mut Arena, model: &Model, loads: &[Id]) -> Dynamics {
             force.push(a.add(g, loads[i]));
         }
     }
-    Dynamics {
-        formulation: Formulation::Paper,
-        mass,
-        force,
-        mass_is_constant: true,
-    }
+    Dynamics::new(a, Formulation::Paper, mass, force, Some(loads), true)
 }
 
 /// Body-frame angular velocity from Euler-angle rates:
@@ -510,10 +546,12 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]
     }
     mass.sort_by_key(|&(r, c, _)| (r, c));
     let mass_is_constant = mass.iter().all(|&(_, _, id)| a.as_const(id).is_some());
-    Dynamics {
-        formulation: Formulation::Exact,
+    Dynamics::new(
+        a,
+        Formulation::Exact,
         mass,
         force,
+        Some(loads),
         mass_is_constant,
-    }
+    )
 }

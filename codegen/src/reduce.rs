@@ -235,12 +235,9 @@ fn reduce_dynamics(
         .into_iter()
         .map(|((r, c), terms)| (r, c, a.sum(terms)))
         .collect();
-    Dynamics {
-        formulation: d.formulation,
-        mass,
-        force: reduced_force.into_iter().map(|t| a.sum(t)).collect(),
-        mass_is_constant: d.mass_is_constant,
-    }
+    let force = reduced_force.into_iter().map(|t| a.sum(t)).collect();
+    // No force Jacobian: the reduced models serve comparisons, not stiff integration.
+    Dynamics::new(a, d.formulation, mass, force, None, d.mass_is_constant)
 }
 
 impl Reduced {

@@ -212,7 +212,15 @@ fn dynamics_functions(sys: &System, dynamics: &Dynamics) -> Vec<TokenStream> {
     let (pq_rows, _) = pattern(&sys.phi_q);
     let row_index: Vec<u32> = (0..sys.n_constraints as u32).collect();
     let mass_vals = values(&dynamics.mass);
+    let (force_q, force_qd) = (values(&dynamics.force_q), values(&dynamics.force_qd));
     vec![
+        function(
+            sys,
+            "force_jacobian",
+            " Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.",
+            QQDT,
+            vec![Output::new("dq", &force_q), Output::new("dqd", &force_qd)],
+        ),
         function(
             sys,
             "mass",
@@ -257,6 +265,9 @@ fn mechanism_impl(type_name: &Ident, modname: &Ident, doc: &str) -> TokenStream 
             fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { gamma(q, qd, t, out) }
             fn mass(&self, q: &[f64], out: &mut [f64]) { #modname::mass(q, out) }
             fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { #modname::force(q, qd, t, out) }
+            fn force_jacobian(&self, q: &[f64], qd: &[f64], t: f64, dq: &mut [f64], dqd: &mut [f64]) {
+                #modname::force_jacobian(q, qd, t, dq, dqd)
+            }
             fn potential(&self, q: &[f64]) -> f64 { potential(q) }
             fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 { power_nc(q, qd, t) }
             fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
@@ -292,6 +303,9 @@ fn formulation_module(
     let (modname, _, form) = formulation_names(dynamics.formulation);
     let (m_rows, m_cols) = pattern(&dynamics.mass);
     let mnnz = m_rows.len();
+    let (fq_rows, fq_cols) = pattern(&dynamics.force_q);
+    let (fqd_rows, fqd_cols) = pattern(&dynamics.force_qd);
+    let (fq_nnz, fqd_nnz) = (fq_rows.len(), fqd_rows.len());
     let constant = dynamics.mass_is_constant;
     let fns = dynamics_functions(sys, dynamics);
     quote! {
@@ -302,6 +316,12 @@ fn formulation_module(
             pub static MASS_ROWS: [u32; #mnnz] = [#(#m_rows),*];
             /// Column of each mass-matrix nonzero.
             pub static MASS_COLS: [u32; #mnnz] = [#(#m_cols),*];
+            /// Row and column of each ∂Q/∂q nonzero.
+            pub static FORCE_Q_ROWS: [u32; #fq_nnz] = [#(#fq_rows),*];
+            pub static FORCE_Q_COLS: [u32; #fq_nnz] = [#(#fq_cols),*];
+            /// Row and column of each ∂Q/∂q̇ nonzero.
+            pub static FORCE_QD_ROWS: [u32; #fqd_nnz] = [#(#fqd_rows),*];
+            pub static FORCE_QD_COLS: [u32; #fqd_nnz] = [#(#fqd_cols),*];
             /// Sizes, patterns and names for this formulation.
             pub static INFO: MechanismInfo = MechanismInfo {
                 name: #mech_name,
@@ -314,6 +334,10 @@ fn formulation_module(
                 mass_rows: &MASS_ROWS,
                 mass_cols: &MASS_COLS,
                 mass_is_constant: #constant,
+                force_q_rows: &FORCE_Q_ROWS,
+                force_q_cols: &FORCE_Q_COLS,
+                force_qd_rows: &FORCE_QD_ROWS,
+                force_qd_cols: &FORCE_QD_COLS,
                 bodies: #bodies,
                 joints: #joints,
                 coord_names: &COORD_NAMES,

@@ -13,13 +13,17 @@
 //! are solved by Newton on the increments of `q̈` and `λ` with the iteration matrix
 //! `[M/(1+α) Φqᵀ; Φq 0]`. Scaling the constraint rows by `1/(βh²)` makes that matrix
 //! independent of `h`, so its conditioning does not degrade with small steps, and one
-//! factorization serves any step size.
+//! factorization serves any step size. Where the generator emitted the applied loads'
+//! Jacobians (springs, dampers), their symmetric parts join the top-left block as
+//! `−βh²·∂Q/∂q − γh·∂Q/∂q̇` ([`HhtBuilder::load_stiffness`]), so a stiff load does not
+//! limit the step.
 //!
 //! Newton policy (modified Newton): the matrix is factored at the first iteration of each
 //! step (or kept across steps when [`HhtBuilder::reuse_factorization`] is on) and refactored
-//! whenever an iteration reduces the weighted increment by less than half. The stiffness
-//! terms `∂(Φqᵀλ − Q)/∂q` are left out of the matrix: they are `O(βh²)` relative to `M`, so
-//! they only slow the (still fast) convergence, never change the converged answer, which is
+//! whenever an iteration reduces the weighted increment by less than half. The other
+//! stiffness terms (`∂(Φqᵀλ)/∂q`, the inertial terms' dependence on the state) are left out
+//! of the matrix: they are `O(βh²)` relative to `M`, so they only slow the (still fast)
+//! convergence, never change the converged answer, which is
 //! always that of the full residual.
 //!
 //! A step is accepted only when the last weighted increment is at most 1 **and** the
@@ -35,6 +39,7 @@ use crate::kinematics::{
     inf_norm, mass_times, phi_q_transpose_times, InitialVelocity, KinematicSettings, Kinematics,
 };
 use crate::kkt::{KktError, KktPattern, KktSolver, SchurKkt};
+use crate::load_stiffness::LoadStiffness;
 use crate::mechanism::{Mechanism, MechanismInfo, NewtonOutputs};
 use crate::reactions;
 use crate::watch::{EulerLimits, EulerWarning};
@@ -54,6 +59,7 @@ pub struct HhtBuilder {
     project_velocities: bool,
     /// Pivot tolerance below which dependent rows are dropped (0: report rank loss).
     drop_dependent: f64,
+    load_stiffness: bool,
     t0: f64,
     q0: Option<Vec<f64>>,
     qd0: Option<Vec<f64>>,
@@ -75,6 +81,7 @@ impl Default for HhtBuilder {
             reuse_factorization: false,
             project_velocities: false,
             drop_dependent: 0.0,
+            load_stiffness: true,
             t0: 0.0,
             q0: None,
             qd0: None,
@@ -145,7 +152,8 @@ impl HhtBuilder {
     }
 
     /// Keep one factorization across steps while convergence stays fast (default off:
-    /// factor once per step). The matrix does not depend on `h`, only on `q`.
+    /// factor once per step). The matrix depends on `q` and, through the loads' stiffness
+    /// and damping, on `h`; a kept one is refreshed as soon as convergence slows.
     pub fn reuse_factorization(mut self, reuse: bool) -> Self {
         self.reuse_factorization = reuse;
         self
@@ -159,6 +167,15 @@ impl HhtBuilder {
     /// unreachable pose still fails. Off by default (0): rank loss is reported.
     pub fn drop_dependent_rows(mut self, tolerance: f64) -> Self {
         self.drop_dependent = tolerance;
+        self
+    }
+
+    /// Put the applied loads' stiffness and damping, `−βh²·∂Q/∂q − γh·∂Q/∂q̇` (symmetric
+    /// parts, as the generator emits them: springs, dampers, actuators), into the Newton
+    /// matrix (default on; mechanisms without such loads are unaffected). Off, Newton sees
+    /// only `M` and a stiff spring or damper limits the step instead of the motion.
+    pub fn load_stiffness(mut self, on: bool) -> Self {
+        self.load_stiffness = on;
         self
     }
 
@@ -309,10 +326,19 @@ impl HhtBuilder {
             &mut lambda,
         )?;
         let first_warning = self.euler.check(info, self.t0, &q)?;
+        let stiffness = if self.load_stiffness {
+            LoadStiffness::new(info)
+        } else {
+            None
+        };
         let mut it = Integrator {
             info,
             kkt: {
-                let mut kkt = K::new(&KktPattern::from_info(info))?;
+                let pattern = match &stiffness {
+                    Some(s) => s.pattern(info),
+                    None => KktPattern::from_info(info),
+                };
+                let mut kkt = K::new(&pattern)?;
                 if self.drop_dependent > 0.0 && !kkt.drop_dependent_rows(self.drop_dependent) {
                     return Err(Error::InvalidSetting {
                         name: "drop_dependent_rows",
@@ -353,6 +379,7 @@ impl HhtBuilder {
             dl: vec![0.0; m],
             reaction1: vec![0.0; n],
             noise: NoiseProbe::new(n, m),
+            stiffness,
             stats: Stats::default(),
             first_warning,
             settings: self,
@@ -455,6 +482,8 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     /// Φqᵀλ of the current iterate: in the residual and in the convergence test.
     reaction1: Vec<f64>,
     noise: NoiseProbe,
+    /// The loads' stiffness and damping in the Newton matrix (`None`: M alone).
+    stiffness: Option<LoadStiffness>,
     stats: Stats,
     first_warning: Option<EulerWarning>,
 }
@@ -843,7 +872,24 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 *r = -p * inv_bh2;
             }
             if self.need_factor || fresh_every_iteration {
-                self.kkt.factor(&self.mass, c, &self.phi_q).map_err(|e| {
+                let factored = match &mut self.stiffness {
+                    None => self.kkt.factor(&self.mass, c, &self.phi_q),
+                    Some(st) => {
+                        self.mech
+                            .force_jacobian(&self.q1, &self.qd1, t1, &mut st.dq, &mut st.dqd);
+                        let a = st.assemble(&self.mass, c, beta * h * h, gamma * h);
+                        match self.kkt.factor(a, 1.0, &self.phi_q) {
+                            // A load whose symmetric part is destabilizing (a compressed
+                            // spring's geometric term) outweighed M: Newton with M alone.
+                            Err(KktError::MassNotPositiveDefinite { .. }) => {
+                                let a = st.assemble(&self.mass, c, 0.0, 0.0);
+                                self.kkt.factor(a, 1.0, &self.phi_q)
+                            }
+                            other => other,
+                        }
+                    }
+                };
+                factored.map_err(|e| {
                     self.need_factor = true;
                     Failure::Kkt(e)
                 })?;

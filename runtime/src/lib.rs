@@ -7,7 +7,8 @@
 //! - [`kinematics`]: position/velocity/acceleration analysis and the consistent start.
 //! - [`kinematic_path`]: a driven mechanism followed without integration, and the check
 //!   that this is exact ([`free_motion`]).
-//! - [`hht`]: the HHT-α integrator ([`HhtBuilder`] → [`Integrator`]).
+//! - [`hht`]: the HHT-α integrator ([`HhtBuilder`] → [`Integrator`]), whose Newton matrix
+//!   takes the applied loads' stiffness and damping (`load_stiffness`).
 //! - [`reactions`]: joint wrenches and driver efforts from the multipliers.
 //! - [`reduction`]: reduced generated mechanisms read back in their full model's terms.
 //! - [`pose`]: rotation matrices, poses, angular velocities and world points of Euler-angle
@@ -31,6 +32,7 @@ pub mod hht;
 pub mod kinematic_path;
 pub mod kinematics;
 pub mod kkt;
+mod load_stiffness;
 pub mod mechanism;
 pub mod pose;
 pub mod quadrature;

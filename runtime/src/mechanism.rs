@@ -148,6 +148,15 @@ pub struct MechanismInfo {
     pub mass_cols: &'static [u32],
     /// `true` when the mass matrix does not depend on `q` (it may then be evaluated once).
     pub mass_is_constant: bool,
+    /// Row and column of each structural nonzero of ∂Q/∂q of the applied loads (springs,
+    /// dampers, actuators; not gravity or the inertial terms), in output order (row-major).
+    /// Empty when there are none, or the implementation does not provide
+    /// [`Mechanism::force_jacobian`].
+    pub force_q_rows: &'static [u32],
+    pub force_q_cols: &'static [u32],
+    /// Row and column of each structural nonzero of ∂Q/∂q̇, in output order (row-major).
+    pub force_qd_rows: &'static [u32],
+    pub force_qd_cols: &'static [u32],
     pub bodies: &'static [BodyInfo],
     pub joints: &'static [JointInfo],
     /// Human-readable name of each coordinate, e.g. `platform.beta`.
@@ -266,6 +275,12 @@ pub trait Mechanism {
     fn mass(&self, q: &[f64], out: &mut [f64]);
     /// Generalized applied and velocity-dependent forces Q(q, q̇, t).
     fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]);
+    /// Nonzeros of the applied loads' ∂Q/∂q (`dq`, pattern `force_q_*`) and ∂Q/∂q̇ (`dqd`,
+    /// pattern `force_qd_*`): their stiffness and damping, for an implicit integrator's
+    /// Newton matrix. The default writes nothing and goes with empty patterns.
+    fn force_jacobian(&self, q: &[f64], qd: &[f64], t: f64, dq: &mut [f64], dqd: &mut [f64]) {
+        let _ = (q, qd, t, dq, dqd);
+    }
     /// Potential energy of the conservative applied forces (gravity, springs).
     fn potential(&self, q: &[f64]) -> f64;
     /// Power of the non-conservative applied forces (dampers, actuator forces, applied
@@ -299,6 +314,9 @@ impl<T: Mechanism + ?Sized> Mechanism for &T {
     }
     fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
         (**self).force(q, qd, t, out)
+    }
+    fn force_jacobian(&self, q: &[f64], qd: &[f64], t: f64, dq: &mut [f64], dqd: &mut [f64]) {
+        (**self).force_jacobian(q, qd, t, dq, dqd)
     }
     fn potential(&self, q: &[f64]) -> f64 {
         (**self).potential(q)

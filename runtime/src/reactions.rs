@@ -408,6 +408,10 @@ mod tests {
                 mass_rows: &[],
                 mass_cols: &[],
                 mass_is_constant: true,
+                force_q_rows: &[],
+                force_q_cols: &[],
+                force_qd_rows: &[],
+                force_qd_cols: &[],
                 bodies: &[BodyInfo {
                     name: "b",
                     coord_offset: 0,

@@ -148,6 +148,10 @@ static PENDULUM_PAPER: MechanismInfo = MechanismInfo {
     mass_rows: &[0, 1, 2, 3, 4, 5],
     mass_cols: &[0, 1, 2, 3, 4, 5],
     mass_is_constant: true,
+    force_q_rows: &[],
+    force_q_cols: &[],
+    force_qd_rows: &[],
+    force_qd_cols: &[],
     bodies: &PENDULUM_BODIES,
     joints: &PENDULUM_JOINTS,
     coord_names: &COORD_NAMES,
@@ -164,6 +168,10 @@ static PENDULUM_EXACT: MechanismInfo = MechanismInfo {
     mass_rows: &[0, 1, 2, 3, 3, 3, 4, 4, 4, 5, 5, 5],
     mass_cols: &[0, 1, 2, 3, 4, 5, 3, 4, 5, 3, 4, 5],
     mass_is_constant: false,
+    force_q_rows: &[],
+    force_q_cols: &[],
+    force_qd_rows: &[],
+    force_qd_cols: &[],
     ..PENDULUM_PAPER
 };
 
@@ -333,6 +341,10 @@ static CIRCLE: MechanismInfo = MechanismInfo {
     mass_rows: &[0, 1, 2, 3, 4, 5],
     mass_cols: &[0, 1, 2, 3, 4, 5],
     mass_is_constant: true,
+    force_q_rows: &[],
+    force_q_cols: &[],
+    force_qd_rows: &[],
+    force_qd_cols: &[],
     bodies: &[BodyInfo {
         name: "slider",
         coord_offset: 0,
@@ -660,6 +672,10 @@ static QUAT_PENDULUM: MechanismInfo = MechanismInfo {
     mass_rows: &QUAT_MASS_ROWS,
     mass_cols: &QUAT_MASS_COLS,
     mass_is_constant: false,
+    force_q_rows: &[],
+    force_q_cols: &[],
+    force_qd_rows: &[],
+    force_qd_cols: &[],
     bodies: &[BodyInfo {
         name: "bob",
         coord_offset: 0,

@@ -268,6 +268,10 @@ mod tests {
         formulation: crate::mechanism::Formulation::Exact,
         gravity: [0.0; 3],
         mass_is_constant: false,
+        force_q_rows: &[],
+        force_q_cols: &[],
+        force_qd_rows: &[],
+        force_qd_cols: &[],
     };
 
     #[test]

@@ -2237,6 +2237,12 @@ pub mod exact {
         13u32, 14u32, 15u32, 16u32, 17u32, 18u32, 19u32, 20u32, 17u32, 18u32, 19u32,
         20u32, 17u32, 18u32, 19u32, 20u32, 17u32, 18u32, 19u32, 20u32,
     ];
+    /// Row and column of each ∂Q/∂q nonzero.
+    pub static FORCE_Q_ROWS: [u32; 0usize] = [];
+    pub static FORCE_Q_COLS: [u32; 0usize] = [];
+    /// Row and column of each ∂Q/∂q̇ nonzero.
+    pub static FORCE_QD_ROWS: [u32; 0usize] = [];
+    pub static FORCE_QD_COLS: [u32; 0usize] = [];
     /// Sizes, patterns and names for this formulation.
     pub static INFO: MechanismInfo = MechanismInfo {
         name: "slider_crank",
@@ -2249,6 +2255,10 @@ pub mod exact {
         mass_rows: &MASS_ROWS,
         mass_cols: &MASS_COLS,
         mass_is_constant: false,
+        force_q_rows: &FORCE_Q_ROWS,
+        force_q_cols: &FORCE_Q_COLS,
+        force_qd_rows: &FORCE_QD_ROWS,
+        force_qd_cols: &FORCE_QD_COLS,
         bodies: &BODIES,
         joints: &JOINTS,
         coord_names: &COORD_NAMES,
@@ -2258,6 +2268,22 @@ pub mod exact {
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
     };
+    /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
+    pub fn force_jacobian(
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        let q: &[f64; 21] = q.try_into().expect("q must have n_coords entries");
+        let qd: &[f64; 21] = qd.try_into().expect("qd must have n_coords entries");
+        let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
+        let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+        let _ = q;
+        let _ = qd;
+        let _ = t;
+    }
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
     pub fn mass(q: &[f64], out: &mut [f64]) {
         let q: &[f64; 21] = q.try_into().expect("q must have n_coords entries");
@@ -6690,6 +6716,12 @@ pub mod reduced {
             12u32, 13u32, 14u32, 15u32, 16u32, 17u32, 18u32, 15u32, 16u32, 17u32, 18u32,
             15u32, 16u32, 17u32, 18u32, 15u32, 16u32, 17u32, 18u32,
         ];
+        /// Row and column of each ∂Q/∂q nonzero.
+        pub static FORCE_Q_ROWS: [u32; 0usize] = [];
+        pub static FORCE_Q_COLS: [u32; 0usize] = [];
+        /// Row and column of each ∂Q/∂q̇ nonzero.
+        pub static FORCE_QD_ROWS: [u32; 0usize] = [];
+        pub static FORCE_QD_COLS: [u32; 0usize] = [];
         /// Sizes, patterns and names for this formulation.
         pub static INFO: MechanismInfo = MechanismInfo {
             name: "slider_crank_reduced",
@@ -6702,6 +6734,10 @@ pub mod reduced {
             mass_rows: &MASS_ROWS,
             mass_cols: &MASS_COLS,
             mass_is_constant: false,
+            force_q_rows: &FORCE_Q_ROWS,
+            force_q_cols: &FORCE_Q_COLS,
+            force_qd_rows: &FORCE_QD_ROWS,
+            force_qd_cols: &FORCE_QD_COLS,
             bodies: &[],
             joints: &[],
             coord_names: &COORD_NAMES,
@@ -6711,6 +6747,22 @@ pub mod reduced {
             redundant_rows: &REDUNDANT_ROWS,
             platform: None,
         };
+        /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
+        pub fn force_jacobian(
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            dq: &mut [f64],
+            dqd: &mut [f64],
+        ) {
+            let q: &[f64; 19] = q.try_into().expect("q must have n_coords entries");
+            let qd: &[f64; 19] = qd.try_into().expect("qd must have n_coords entries");
+            let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
+            let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+            let _ = q;
+            let _ = qd;
+            let _ = t;
+        }
         /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
         pub fn mass(q: &[f64], out: &mut [f64]) {
             let q: &[f64; 19] = q.try_into().expect("q must have n_coords entries");
@@ -9053,6 +9105,16 @@ pub mod reduced {
         fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
             exact::force(q, qd, t, out)
         }
+        fn force_jacobian(
+            &self,
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            dq: &mut [f64],
+            dqd: &mut [f64],
+        ) {
+            exact::force_jacobian(q, qd, t, dq, dqd)
+        }
         fn potential(&self, q: &[f64]) -> f64 {
             potential(q)
         }
@@ -9097,6 +9159,16 @@ impl Mechanism for Exact {
     }
     fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
         exact::force(q, qd, t, out)
+    }
+    fn force_jacobian(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        exact::force_jacobian(q, qd, t, dq, dqd)
     }
     fn potential(&self, q: &[f64]) -> f64 {
         potential(q)

@@ -9872,6 +9872,12 @@ pub mod exact {
         69u32, 71u32, 70u32, 71u32, 69u32, 70u32, 71u32, 72u32, 73u32, 74u32, 75u32,
         77u32, 76u32, 77u32, 75u32, 76u32, 77u32,
     ];
+    /// Row and column of each ∂Q/∂q nonzero.
+    pub static FORCE_Q_ROWS: [u32; 0usize] = [];
+    pub static FORCE_Q_COLS: [u32; 0usize] = [];
+    /// Row and column of each ∂Q/∂q̇ nonzero.
+    pub static FORCE_QD_ROWS: [u32; 0usize] = [];
+    pub static FORCE_QD_COLS: [u32; 0usize] = [];
     /// Sizes, patterns and names for this formulation.
     pub static INFO: MechanismInfo = MechanismInfo {
         name: "stewart_6_6",
@@ -9884,6 +9890,10 @@ pub mod exact {
         mass_rows: &MASS_ROWS,
         mass_cols: &MASS_COLS,
         mass_is_constant: false,
+        force_q_rows: &FORCE_Q_ROWS,
+        force_q_cols: &FORCE_Q_COLS,
+        force_qd_rows: &FORCE_QD_ROWS,
+        force_qd_cols: &FORCE_QD_COLS,
         bodies: &BODIES,
         joints: &JOINTS,
         coord_names: &COORD_NAMES,
@@ -9893,6 +9903,22 @@ pub mod exact {
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
     };
+    /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
+    pub fn force_jacobian(
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        let q: &[f64; 78] = q.try_into().expect("q must have n_coords entries");
+        let qd: &[f64; 78] = qd.try_into().expect("qd must have n_coords entries");
+        let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
+        let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+        let _ = q;
+        let _ = qd;
+        let _ = t;
+    }
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
     pub fn mass(q: &[f64], out: &mut [f64]) {
         let q: &[f64; 78] = q.try_into().expect("q must have n_coords entries");
@@ -15554,6 +15580,12 @@ pub mod paper {
         57u32, 58u32, 59u32, 60u32, 61u32, 62u32, 63u32, 64u32, 65u32, 66u32, 67u32,
         68u32, 69u32, 70u32, 71u32, 72u32, 73u32, 74u32, 75u32, 76u32, 77u32,
     ];
+    /// Row and column of each ∂Q/∂q nonzero.
+    pub static FORCE_Q_ROWS: [u32; 0usize] = [];
+    pub static FORCE_Q_COLS: [u32; 0usize] = [];
+    /// Row and column of each ∂Q/∂q̇ nonzero.
+    pub static FORCE_QD_ROWS: [u32; 0usize] = [];
+    pub static FORCE_QD_COLS: [u32; 0usize] = [];
     /// Sizes, patterns and names for this formulation.
     pub static INFO: MechanismInfo = MechanismInfo {
         name: "stewart_6_6",
@@ -15566,6 +15598,10 @@ pub mod paper {
         mass_rows: &MASS_ROWS,
         mass_cols: &MASS_COLS,
         mass_is_constant: true,
+        force_q_rows: &FORCE_Q_ROWS,
+        force_q_cols: &FORCE_Q_COLS,
+        force_qd_rows: &FORCE_QD_ROWS,
+        force_qd_cols: &FORCE_QD_COLS,
         bodies: &BODIES,
         joints: &JOINTS,
         coord_names: &COORD_NAMES,
@@ -15575,6 +15611,22 @@ pub mod paper {
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
     };
+    /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
+    pub fn force_jacobian(
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        let q: &[f64; 78] = q.try_into().expect("q must have n_coords entries");
+        let qd: &[f64; 78] = qd.try_into().expect("qd must have n_coords entries");
+        let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
+        let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+        let _ = q;
+        let _ = qd;
+        let _ = t;
+    }
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
     pub fn mass(q: &[f64], out: &mut [f64]) {
         let q: &[f64; 78] = q.try_into().expect("q must have n_coords entries");
@@ -25778,6 +25830,12 @@ pub mod reduced {
             40u32, 41u32, 42u32, 43u32, 44u32, 45u32, 46u32, 47u32, 48u32, 49u32, 50u32,
             51u32, 52u32, 53u32, 54u32, 55u32, 56u32, 57u32, 58u32, 59u32,
         ];
+        /// Row and column of each ∂Q/∂q nonzero.
+        pub static FORCE_Q_ROWS: [u32; 0usize] = [];
+        pub static FORCE_Q_COLS: [u32; 0usize] = [];
+        /// Row and column of each ∂Q/∂q̇ nonzero.
+        pub static FORCE_QD_ROWS: [u32; 0usize] = [];
+        pub static FORCE_QD_COLS: [u32; 0usize] = [];
         /// Sizes, patterns and names for this formulation.
         pub static INFO: MechanismInfo = MechanismInfo {
             name: "stewart_6_6_reduced",
@@ -25790,6 +25848,10 @@ pub mod reduced {
             mass_rows: &MASS_ROWS,
             mass_cols: &MASS_COLS,
             mass_is_constant: false,
+            force_q_rows: &FORCE_Q_ROWS,
+            force_q_cols: &FORCE_Q_COLS,
+            force_qd_rows: &FORCE_QD_ROWS,
+            force_qd_cols: &FORCE_QD_COLS,
             bodies: &[],
             joints: &[],
             coord_names: &COORD_NAMES,
@@ -25799,6 +25861,22 @@ pub mod reduced {
             redundant_rows: &REDUNDANT_ROWS,
             platform: None,
         };
+        /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
+        pub fn force_jacobian(
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            dq: &mut [f64],
+            dqd: &mut [f64],
+        ) {
+            let q: &[f64; 60] = q.try_into().expect("q must have n_coords entries");
+            let qd: &[f64; 60] = qd.try_into().expect("qd must have n_coords entries");
+            let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
+            let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+            let _ = q;
+            let _ = qd;
+            let _ = t;
+        }
         /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
         pub fn mass(q: &[f64], out: &mut [f64]) {
             let q: &[f64; 60] = q.try_into().expect("q must have n_coords entries");
@@ -30196,6 +30274,16 @@ pub mod reduced {
         fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
             exact::force(q, qd, t, out)
         }
+        fn force_jacobian(
+            &self,
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            dq: &mut [f64],
+            dqd: &mut [f64],
+        ) {
+            exact::force_jacobian(q, qd, t, dq, dqd)
+        }
         fn potential(&self, q: &[f64]) -> f64 {
             potential(q)
         }
@@ -30236,6 +30324,12 @@ pub mod reduced {
             45u32, 46u32, 47u32, 48u32, 49u32, 50u32, 51u32, 52u32, 53u32, 54u32, 55u32,
             56u32, 57u32, 58u32, 59u32,
         ];
+        /// Row and column of each ∂Q/∂q nonzero.
+        pub static FORCE_Q_ROWS: [u32; 0usize] = [];
+        pub static FORCE_Q_COLS: [u32; 0usize] = [];
+        /// Row and column of each ∂Q/∂q̇ nonzero.
+        pub static FORCE_QD_ROWS: [u32; 0usize] = [];
+        pub static FORCE_QD_COLS: [u32; 0usize] = [];
         /// Sizes, patterns and names for this formulation.
         pub static INFO: MechanismInfo = MechanismInfo {
             name: "stewart_6_6_reduced",
@@ -30248,6 +30342,10 @@ pub mod reduced {
             mass_rows: &MASS_ROWS,
             mass_cols: &MASS_COLS,
             mass_is_constant: true,
+            force_q_rows: &FORCE_Q_ROWS,
+            force_q_cols: &FORCE_Q_COLS,
+            force_qd_rows: &FORCE_QD_ROWS,
+            force_qd_cols: &FORCE_QD_COLS,
             bodies: &[],
             joints: &[],
             coord_names: &COORD_NAMES,
@@ -30257,6 +30355,22 @@ pub mod reduced {
             redundant_rows: &REDUNDANT_ROWS,
             platform: None,
         };
+        /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
+        pub fn force_jacobian(
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            dq: &mut [f64],
+            dqd: &mut [f64],
+        ) {
+            let q: &[f64; 60] = q.try_into().expect("q must have n_coords entries");
+            let qd: &[f64; 60] = qd.try_into().expect("qd must have n_coords entries");
+            let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
+            let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+            let _ = q;
+            let _ = qd;
+            let _ = t;
+        }
         /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
         pub fn mass(q: &[f64], out: &mut [f64]) {
             let q: &[f64; 60] = q.try_into().expect("q must have n_coords entries");
@@ -32155,6 +32269,16 @@ pub mod reduced {
         fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
             paper::force(q, qd, t, out)
         }
+        fn force_jacobian(
+            &self,
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            dq: &mut [f64],
+            dqd: &mut [f64],
+        ) {
+            paper::force_jacobian(q, qd, t, dq, dqd)
+        }
         fn potential(&self, q: &[f64]) -> f64 {
             potential(q)
         }
@@ -32200,6 +32324,16 @@ impl Mechanism for Exact {
     fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
         exact::force(q, qd, t, out)
     }
+    fn force_jacobian(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        exact::force_jacobian(q, qd, t, dq, dqd)
+    }
     fn potential(&self, q: &[f64]) -> f64 {
         potential(q)
     }
@@ -32237,6 +32371,16 @@ impl Mechanism for Paper {
     }
     fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
         paper::force(q, qd, t, out)
+    }
+    fn force_jacobian(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        paper::force_jacobian(q, qd, t, dq, dqd)
     }
     fn potential(&self, q: &[f64]) -> f64 {
         potential(q)

@@ -23701,6 +23701,12 @@ pub mod exact {
         87u32, 88u32, 89u32, 90u32, 87u32, 88u32, 89u32, 90u32, 87u32, 88u32, 89u32,
         90u32,
     ];
+    /// Row and column of each ∂Q/∂q nonzero.
+    pub static FORCE_Q_ROWS: [u32; 0usize] = [];
+    pub static FORCE_Q_COLS: [u32; 0usize] = [];
+    /// Row and column of each ∂Q/∂q̇ nonzero.
+    pub static FORCE_QD_ROWS: [u32; 0usize] = [];
+    pub static FORCE_QD_COLS: [u32; 0usize] = [];
     /// Sizes, patterns and names for this formulation.
     pub static INFO: MechanismInfo = MechanismInfo {
         name: "ups_stewart",
@@ -23713,6 +23719,10 @@ pub mod exact {
         mass_rows: &MASS_ROWS,
         mass_cols: &MASS_COLS,
         mass_is_constant: false,
+        force_q_rows: &FORCE_Q_ROWS,
+        force_q_cols: &FORCE_Q_COLS,
+        force_qd_rows: &FORCE_QD_ROWS,
+        force_qd_cols: &FORCE_QD_COLS,
         bodies: &BODIES,
         joints: &JOINTS,
         coord_names: &COORD_NAMES,
@@ -23722,6 +23732,22 @@ pub mod exact {
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
     };
+    /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
+    pub fn force_jacobian(
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        let q: &[f64; 91] = q.try_into().expect("q must have n_coords entries");
+        let qd: &[f64; 91] = qd.try_into().expect("qd must have n_coords entries");
+        let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
+        let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+        let _ = q;
+        let _ = qd;
+        let _ = t;
+    }
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
     pub fn mass(q: &[f64], out: &mut [f64]) {
         let q: &[f64; 91] = q.try_into().expect("q must have n_coords entries");
@@ -37768,6 +37794,16 @@ impl Mechanism for Exact {
     }
     fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
         exact::force(q, qd, t, out)
+    }
+    fn force_jacobian(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        exact::force_jacobian(q, qd, t, dq, dqd)
     }
     fn potential(&self, q: &[f64]) -> f64 {
         potential(q)
