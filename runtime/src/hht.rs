@@ -858,15 +858,8 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             phi_q_transpose_times(self.info, &self.phi_q, &self.lambda1, &mut self.reaction1);
             let ac = alpha * c;
             for i in 0..self.res1.len() {
-                let terms = [
-                    c * self.res1[i],
-                    self.reaction1[i],
-                    -self.force[i],
-                    -ac * self.r_prev[i],
-                ];
-                self.noise.f[i] =
-                    NOISE_FACTOR * f64::EPSILON * terms.map(f64::abs).iter().sum::<f64>();
-                self.res1[i] = -terms.iter().sum::<f64>();
+                self.res1[i] =
+                    -(c * self.res1[i] + self.reaction1[i] - self.force[i] - ac * self.r_prev[i]);
             }
             for (r, &p) in self.res2.iter_mut().zip(&self.phi) {
                 *r = -p * inv_bh2;
@@ -916,12 +909,21 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             if stalled && err > 1.0 {
                 // Stalled above the tolerance: if what is left is what roundoff alone makes
                 // of an increment through this factorization, Newton is done.
+                let residual = ResidualParts {
+                    mass: &self.mass,
+                    c,
+                    qdd: &self.qdd1,
+                    reaction: &self.reaction1,
+                    force: &self.force,
+                    previous: &self.r_prev,
+                    previous_weight: ac,
+                };
                 self.noise
                     .measure(
                         &mut self.kkt,
                         self.info,
                         &self.phi_q,
-                        &self.mass,
+                        &residual,
                         q_scale * inv_bh2,
                     )
                     .map_err(Failure::Kkt)?;
@@ -980,14 +982,13 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
 /// the convergence test never asks Newton to go below it.
 ///
 /// Roundoff δ in Φ reaches the right-hand side as δ/(βh²), about ε·|q|/(βh²); the residual's
-/// own roundoff is accumulated in `f` while it is formed. Solving with both, under fixed
+/// own roundoff is ε times the magnitudes it is summed from. Solving with both, under fixed
 /// pseudo-random signs, measures what the factorization makes of them: about themselves for
 /// a regular mechanism, but 1/σ times more where Φq is nearly singular (a linkage crossing a
 /// flat position), where a fixed floor would leave Newton chasing noise until the step fails.
 #[derive(Debug)]
 struct NoiseProbe {
-    /// Roundoff of each residual entry (set while the residual is formed), then the signed
-    /// right-hand side.
+    /// The signed right-hand side: roundoff of the residual's entries, and of Φ's.
     f: Vec<f64>,
     g: Vec<f64>,
     x: Vec<f64>,
@@ -1013,7 +1014,7 @@ impl NoiseProbe {
         kkt: &mut K,
         info: &MechanismInfo,
         phi_q: &[f64],
-        mass: &[f64],
+        r: &ResidualParts<'_>,
         scale: f64,
     ) -> Result<(), KktError> {
         let g0 = NOISE_FACTOR * f64::EPSILON * scale;
@@ -1021,9 +1022,15 @@ impl NoiseProbe {
         for (i, g) in self.g.iter_mut().enumerate() {
             *g = pseudo_sign(i) * g0;
         }
+        mass_times(info, r.mass, r.qdd, &mut self.f);
         for (i, f) in self.f.iter_mut().enumerate() {
-            *f *= pseudo_sign(m + i);
+            let size = (r.c * *f).abs()
+                + r.reaction[i].abs()
+                + r.force[i].abs()
+                + (r.previous_weight * r.previous[i]).abs();
+            *f = pseudo_sign(m + i) * NOISE_FACTOR * f64::EPSILON * size;
         }
+        let mass = r.mass;
         kkt.solve(&self.f, &self.g, &mut self.x, &mut self.y)?;
         let floor_a = g0.max(inf_norm(&self.x));
         phi_q_transpose_times(info, phi_q, &self.y, &mut self.x);
@@ -1031,6 +1038,17 @@ impl NoiseProbe {
         self.floor = (floor_a, floor_l);
         Ok(())
     }
+}
+
+/// What HHT's force residual `c·M q̈ + Φqᵀλ − Q − αc·r_prev` is summed from, at one iterate.
+struct ResidualParts<'a> {
+    mass: &'a [f64],
+    c: f64,
+    qdd: &'a [f64],
+    reaction: &'a [f64],
+    force: &'a [f64],
+    previous: &'a [f64],
+    previous_weight: f64,
 }
 
 /// ±1 by a multiplicative hash of `i`: signs without structure, the same on every run.
