@@ -339,11 +339,19 @@ fn report_named(
         );
     }
     if !info.redundant_rows.is_empty() {
-        let names: Vec<&str> = info
-            .redundant_rows
+        // A long list (the 40-bar chain has 120) would bury the summary: the first few, then
+        // how many more (`symbody list` counts them; the generated module lists them all).
+        const SHOWN: usize = 9;
+        let rows = &info.redundant_rows;
+        let mut names: Vec<&str> = rows
             .iter()
+            .take(SHOWN)
             .map(|&r| info.row_names[r as usize])
             .collect();
+        let more = format!("and {} more", rows.len().saturating_sub(SHOWN));
+        if rows.len() > SHOWN {
+            names.push(&more);
+        }
         say!(
             "  redundant rows   {} (λ = 0: the reactions of their joints are one valid choice, not unique)",
             names.join(", ")
