@@ -172,6 +172,25 @@ size_t symbody_mechanism_phi_q_nnz(const struct SymbodyMechanism *m);
 size_t symbody_mechanism_mass_nnz(const struct SymbodyMechanism *m);
 
 /**
+ * Number of structural nonzeros of the applied loads' ∂Q/∂q (springs, dampers,
+ * actuators, applied forces; not gravity or the inertial terms): 0 for a mechanism without
+ * such loads, or if `m` is NULL.
+ *
+ * # Safety
+ * `m` is NULL or a live handle.
+ */
+size_t symbody_mechanism_force_q_nnz(const struct SymbodyMechanism *m);
+
+/**
+ * Number of structural nonzeros of the applied loads' ∂Q/∂q̇; 0 for a mechanism without
+ * such loads, or if `m` is NULL.
+ *
+ * # Safety
+ * `m` is NULL or a live handle.
+ */
+size_t symbody_mechanism_force_qd_nnz(const struct SymbodyMechanism *m);
+
+/**
  * The handle's formulation: `SYMBODY_FORMULATION_PAPER` or `SYMBODY_FORMULATION_EXACT`
  * (never `_DEFAULT`: that resolves to one of them); -1 if `m` is NULL.
  *
@@ -225,6 +244,34 @@ int symbody_mechanism_mass_pattern(const struct SymbodyMechanism *m,
                                    uint32_t *rows,
                                    uint32_t *cols,
                                    size_t len);
+
+/**
+ * Copies the sparsity pattern of the loads' ∂Q/∂q (row-major), in the order
+ * `symbody_mechanism_force_jacobian` writes `dq`. `rows` and `cols` each hold
+ * `len >= symbody_mechanism_force_q_nnz(m)` entries.
+ *
+ * # Safety
+ * `m` is NULL or a live handle; `rows` and `cols` are NULL or point to `len` writable
+ * `uint32_t` each.
+ */
+int symbody_mechanism_force_q_pattern(const struct SymbodyMechanism *m,
+                                      uint32_t *rows,
+                                      uint32_t *cols,
+                                      size_t len);
+
+/**
+ * Copies the sparsity pattern of the loads' ∂Q/∂q̇ (row-major), in the order
+ * `symbody_mechanism_force_jacobian` writes `dqd`. `rows` and `cols` each hold
+ * `len >= symbody_mechanism_force_qd_nnz(m)` entries.
+ *
+ * # Safety
+ * `m` is NULL or a live handle; `rows` and `cols` are NULL or point to `len` writable
+ * `uint32_t` each.
+ */
+int symbody_mechanism_force_qd_pattern(const struct SymbodyMechanism *m,
+                                       uint32_t *rows,
+                                       uint32_t *cols,
+                                       size_t len);
 
 /**
  * Copies the initial coordinates (the mechanism file's pose, assembled) into `out`, which
@@ -316,6 +363,29 @@ int symbody_mechanism_force(const struct SymbodyMechanism *m,
                             double t,
                             double *out,
                             size_t out_len);
+
+/**
+ * Evaluates the applied loads' Jacobians at `(q, q̇, t)`: ∂Q/∂q into `dq`
+ * (`symbody_mechanism_force_q_nnz` entries, `symbody_mechanism_force_q_pattern` order) and
+ * ∂Q/∂q̇ into `dqd` (`symbody_mechanism_force_qd_nnz` entries): the stiffness and damping of
+ * the springs, dampers and actuators, for an implicit integrator's Newton matrix. With no
+ * such loads both counts are 0 and the output pointers may be NULL.
+ *
+ * # Safety
+ * `m` is NULL or a live handle; `q` and `qd` are NULL or point to `q_len` and `qd_len`
+ * readable doubles; `dq` and `dqd` are NULL or point to `dq_len` and `dqd_len` writable
+ * doubles, neither overlapping the inputs or each other.
+ */
+int symbody_mechanism_force_jacobian(const struct SymbodyMechanism *m,
+                                     const double *q,
+                                     size_t q_len,
+                                     const double *qd,
+                                     size_t qd_len,
+                                     double t,
+                                     double *dq,
+                                     size_t dq_len,
+                                     double *dqd,
+                                     size_t dqd_len);
 
 /**
  * Builds a session of the registered mechanism `name` in `formulation` (a

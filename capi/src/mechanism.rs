@@ -195,6 +195,29 @@ pub unsafe extern "C" fn symbody_mechanism_mass_nnz(m: *const SymbodyMechanism) 
     unsafe { size(m, 0, |m| m.info().mass_nnz()) }
 }
 
+/// Number of structural nonzeros of the applied loads' ∂Q/∂q (springs, dampers,
+/// actuators, applied forces; not gravity or the inertial terms): 0 for a mechanism without
+/// such loads, or if `m` is NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_force_q_nnz(m: *const SymbodyMechanism) -> usize {
+    // SAFETY: the caller's contract.
+    unsafe { size(m, 0, |m| m.info().force_q_rows.len()) }
+}
+
+/// Number of structural nonzeros of the applied loads' ∂Q/∂q̇; 0 for a mechanism without
+/// such loads, or if `m` is NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_force_qd_nnz(m: *const SymbodyMechanism) -> usize {
+    // SAFETY: the caller's contract.
+    unsafe { size(m, 0, |m| m.info().force_qd_rows.len()) }
+}
+
 /// The handle's formulation: `SYMBODY_FORMULATION_PAPER` or `SYMBODY_FORMULATION_EXACT`
 /// (never `_DEFAULT`: that resolves to one of them); -1 if `m` is NULL.
 ///
@@ -307,6 +330,42 @@ pub unsafe extern "C" fn symbody_mechanism_mass_pattern(
 ) -> c_int {
     // SAFETY: the caller's contract.
     unsafe { pattern(m, rows, cols, len, |i| (i.mass_rows, i.mass_cols)) }
+}
+
+/// Copies the sparsity pattern of the loads' ∂Q/∂q (row-major), in the order
+/// `symbody_mechanism_force_jacobian` writes `dq`. `rows` and `cols` each hold
+/// `len >= symbody_mechanism_force_q_nnz(m)` entries.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `rows` and `cols` are NULL or point to `len` writable
+/// `uint32_t` each.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_force_q_pattern(
+    m: *const SymbodyMechanism,
+    rows: *mut u32,
+    cols: *mut u32,
+    len: usize,
+) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe { pattern(m, rows, cols, len, |i| (i.force_q_rows, i.force_q_cols)) }
+}
+
+/// Copies the sparsity pattern of the loads' ∂Q/∂q̇ (row-major), in the order
+/// `symbody_mechanism_force_jacobian` writes `dqd`. `rows` and `cols` each hold
+/// `len >= symbody_mechanism_force_qd_nnz(m)` entries.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `rows` and `cols` are NULL or point to `len` writable
+/// `uint32_t` each.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_force_qd_pattern(
+    m: *const SymbodyMechanism,
+    rows: *mut u32,
+    cols: *mut u32,
+    len: usize,
+) -> c_int {
+    // SAFETY: the caller's contract.
+    unsafe { pattern(m, rows, cols, len, |i| (i.force_qd_rows, i.force_qd_cols)) }
 }
 
 /// Copies the initial coordinates (the mechanism file's pose, assembled) into `out`, which
@@ -530,4 +589,50 @@ pub unsafe extern "C" fn symbody_mechanism_force(
             |e| e.mech.force(e.q, e.qd, t, e.out),
         )
     }
+}
+
+/// Evaluates the applied loads' Jacobians at `(q, q̇, t)`: ∂Q/∂q into `dq`
+/// (`symbody_mechanism_force_q_nnz` entries, `symbody_mechanism_force_q_pattern` order) and
+/// ∂Q/∂q̇ into `dqd` (`symbody_mechanism_force_qd_nnz` entries): the stiffness and damping of
+/// the springs, dampers and actuators, for an implicit integrator's Newton matrix. With no
+/// such loads both counts are 0 and the output pointers may be NULL.
+///
+/// # Safety
+/// `m` is NULL or a live handle; `q` and `qd` are NULL or point to `q_len` and `qd_len`
+/// readable doubles; `dq` and `dqd` are NULL or point to `dq_len` and `dqd_len` writable
+/// doubles, neither overlapping the inputs or each other.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn symbody_mechanism_force_jacobian(
+    m: *const SymbodyMechanism,
+    q: *const f64,
+    q_len: usize,
+    qd: *const f64,
+    qd_len: usize,
+    t: f64,
+    dq: *mut f64,
+    dq_len: usize,
+    dqd: *mut f64,
+    dqd_len: usize,
+) -> c_int {
+    guard(|| {
+        // SAFETY (all): the caller's contract; lengths checked inside.
+        let m = unsafe { arg(m, "mechanism")? };
+        let info = m.info();
+        let q = unsafe { input(q, q_len, info.n_coords, "q")? };
+        let qd = unsafe { input(qd, qd_len, info.n_coords, "qd")? };
+        let (nq, nqd) = (info.force_q_rows.len(), info.force_qd_rows.len());
+        let dq: &mut [f64] = if nq == 0 {
+            &mut []
+        } else {
+            unsafe { output(dq, dq_len, nq, "dq")? }
+        };
+        let dqd: &mut [f64] = if nqd == 0 {
+            &mut []
+        } else {
+            unsafe { output(dqd, dqd_len, nqd, "dqd")? }
+        };
+        m.mech.force_jacobian(q, qd, t, dq, dqd);
+        Ok(())
+    })
 }

@@ -589,3 +589,101 @@ fn garbage_in_is_a_status_out_never_a_panic() {
         "{statuses:?}"
     );
 }
+
+/// The loads' Jacobians through C equal the Rust trait's, bit for bit, on a mechanism with
+/// springs and dampers; one without has zero counts and accepts NULL outputs; a short buffer
+/// is an error.
+#[test]
+fn load_jacobians_match_rust_and_may_be_empty() {
+    let m = mechanism("flyball_governor", 0).unwrap();
+    let rust = symbody_mechanisms::find("flyball_governor")
+        .unwrap()
+        .default_mechanism();
+    let info = rust.info();
+    // SAFETY: live handles; every buffer has the length passed with it; freed once.
+    unsafe {
+        let (nq, nqd) = (
+            symbody_mechanism_force_q_nnz(m),
+            symbody_mechanism_force_qd_nnz(m),
+        );
+        assert_eq!(
+            (nq, nqd),
+            (info.force_q_rows.len(), info.force_qd_rows.len())
+        );
+        assert!(nq > 0 && nqd > 0);
+        let (mut rows, mut cols) = (vec![0u32; nq], vec![0u32; nq]);
+        let rc = symbody_mechanism_force_q_pattern(m, rows.as_mut_ptr(), cols.as_mut_ptr(), nq);
+        assert_eq!(rc, OK);
+        assert_eq!(
+            (&rows[..], &cols[..]),
+            (info.force_q_rows, info.force_q_cols)
+        );
+        let (mut rows, mut cols) = (vec![0u32; nqd], vec![0u32; nqd]);
+        let rc = symbody_mechanism_force_qd_pattern(m, rows.as_mut_ptr(), cols.as_mut_ptr(), nqd);
+        assert_eq!(rc, OK);
+        assert_eq!(
+            (&rows[..], &cols[..]),
+            (info.force_qd_rows, info.force_qd_cols)
+        );
+
+        let n = info.n_coords;
+        let q = info.q0.to_vec();
+        let qd: Vec<f64> = (0..n).map(|i| 0.01 * (i as f64 + 1.0)).collect();
+        let (mut cq, mut cqd) = (vec![0.0; nq], vec![0.0; nqd]);
+        let rc = symbody_mechanism_force_jacobian(
+            m,
+            q.as_ptr(),
+            n,
+            qd.as_ptr(),
+            n,
+            0.3,
+            cq.as_mut_ptr(),
+            nq,
+            cqd.as_mut_ptr(),
+            nqd,
+        );
+        assert_eq!(rc, OK, "{}", last_error());
+        let (mut rq, mut rqd) = (vec![0.0; nq], vec![0.0; nqd]);
+        rust.force_jacobian(&q, &qd, 0.3, &mut rq, &mut rqd);
+        assert_eq!((&cq, &cqd), (&rq, &rqd));
+        let mut short = vec![0.0; nq - 1];
+        let rc = symbody_mechanism_force_jacobian(
+            m,
+            q.as_ptr(),
+            n,
+            qd.as_ptr(),
+            n,
+            0.3,
+            short.as_mut_ptr(),
+            nq - 1,
+            rqd.as_mut_ptr(),
+            nqd,
+        );
+        assert_eq!(rc, status(SymbodyStatus::BufferTooShort));
+        assert!(last_error().contains("dq"), "{}", last_error());
+        symbody_mechanism_free(m);
+
+        let m = mechanism("four_bar", 0).unwrap();
+        assert_eq!(symbody_mechanism_force_q_nnz(m), 0);
+        assert_eq!(symbody_mechanism_force_qd_nnz(m), 0);
+        let q = symbody_mechanisms::find("four_bar")
+            .unwrap()
+            .default_mechanism()
+            .info()
+            .q0;
+        let rc = symbody_mechanism_force_jacobian(
+            m,
+            q.as_ptr(),
+            q.len(),
+            q.as_ptr(),
+            q.len(),
+            0.0,
+            null_mut(),
+            0,
+            null_mut(),
+            0,
+        );
+        assert_eq!(rc, OK, "{}", last_error());
+        symbody_mechanism_free(m);
+    }
+}

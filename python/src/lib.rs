@@ -500,6 +500,27 @@ impl Mechanism {
         Ok(array1(py, &out))
     }
 
+    /// The applied loads' ∂Q/∂q and ∂Q/∂q̇ (springs, dampers, actuators) at `(q, q̇, t)`, each
+    /// as `(data, (rows, cols))`, shape `(n_coords, n_coords)`; empty without such loads.
+    #[pyo3(signature = (q, qd, t=0.0))]
+    fn force_jacobian<'py>(
+        &self,
+        py: Python<'py>,
+        q: &Bound<'py, PyAny>,
+        qd: &Bound<'py, PyAny>,
+        t: f64,
+    ) -> PyResult<(Bound<'py, PyTuple>, Bound<'py, PyTuple>)> {
+        let info = self.info();
+        let mut dq = vec![0.0; info.force_q_rows.len()];
+        let mut dqd = vec![0.0; info.force_qd_rows.len()];
+        self.mech
+            .force_jacobian(&self.q(q)?, &self.qd(qd)?, t, &mut dq, &mut dqd);
+        Ok((
+            coo(py, &dq, info.force_q_rows, info.force_q_cols)?,
+            coo(py, &dqd, info.force_qd_rows, info.force_qd_cols)?,
+        ))
+    }
+
     /// Potential energy V(q) (J).
     fn potential(&self, q: &Bound<'_, PyAny>) -> PyResult<f64> {
         Ok(self.mech.potential(&self.q(q)?))

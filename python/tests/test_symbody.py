@@ -205,3 +205,26 @@ def test_simulate_crosses_singular_positions_when_asked():
     # The N-four-bar lies flat at t = 0.714 s (IFToMM A02); the option reaches the run.
     run = symbody.simulate("n_four_bar_2", t_end=1.0, cross_singular_positions=True)
     np.testing.assert_allclose(run["energy"]["t"][-1], 1.0, atol=1e-15)
+
+
+def test_force_jacobian_matches_central_differences_at_rest():
+    # At rest the inertial terms vanish with their derivatives, so central differences of
+    # force() see the springs and dampers alone (as tests/mechanisms_derivatives.rs does).
+    m = symbody.Mechanism("flyball_governor")
+    q, rest = np.asarray(m.q0), np.zeros(m.n_coords)
+    dq, dqd = m.force_jacobian(q, rest, 0.0)
+    assert dq.shape == dqd.shape == (m.n_coords, m.n_coords)
+    dq, dqd = dq.toarray(), dqd.toarray()
+    h = 1e-5
+    for j in range(m.n_coords):
+        e = np.zeros(m.n_coords)
+        e[j] = h
+        fd_q = (np.asarray(m.force(q + e, rest)) - np.asarray(m.force(q - e, rest))) / (2 * h)
+        fd_qd = (np.asarray(m.force(q, rest + e)) - np.asarray(m.force(q, rest - e))) / (2 * h)
+        scale = 1.0 + max(abs(dq).max(), abs(dqd).max())
+        assert abs(fd_q - dq[:, j]).max() <= 1e-6 * scale, j
+        assert abs(fd_qd - dqd[:, j]).max() <= 1e-6 * scale, j
+    empty_q, empty_qd = symbody.Mechanism("four_bar").force_jacobian(
+        symbody.Mechanism("four_bar").q0, np.zeros(21)
+    )
+    assert len(empty_q[0]) == len(empty_qd[0]) == 0

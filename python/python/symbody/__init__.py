@@ -14,7 +14,7 @@ Errors from Rust arrive as ``ValueError`` (an unknown name, a bad option or argu
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Dict, List, Optional, Sequence
+from typing import Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -210,7 +210,9 @@ class Mechanism(_native.Mechanism):
     ``phi(q, t)``, ``phi_t(q, t)``, ``phi_q(q, t)`` (a :class:`Coo` of shape
     ``(n_constraints, n_coords)``), ``gamma(q, qd, t)`` (Φq q̈ = γ), ``mass(q)`` (a
     :class:`Coo` of shape ``(n_coords, n_coords)``, both triangles), ``force(q, qd, t)``
-    (generalized forces) and ``potential(q)``.
+    (generalized forces), ``force_jacobian(q, qd, t)`` (the applied loads' ∂Q/∂q and ∂Q/∂q̇,
+    two :class:`Coo` of shape ``(n_coords, n_coords)``, empty without springs, dampers or
+    actuators) and ``potential(q)``.
     """
 
     def phi_q(self, q, t: float = 0.0) -> Coo:
@@ -218,6 +220,11 @@ class Mechanism(_native.Mechanism):
 
     def mass(self, q) -> Coo:
         return Coo(super().mass(q), (self.n_coords, self.n_coords))
+
+    def force_jacobian(self, q, qd, t: float = 0.0) -> Tuple[Coo, Coo]:
+        shape = (self.n_coords, self.n_coords)
+        dq, dqd = super().force_jacobian(q, qd, t)
+        return Coo(dq, shape), Coo(dqd, shape)
 
 
 def paper_leg1_force_at_1s() -> float:
