@@ -909,7 +909,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             if stalled && err > 1.0 {
                 // Stalled above the tolerance: if what is left is what roundoff alone makes
                 // of an increment through this factorization, Newton is done.
-                let residual = ResidualParts {
+                let parts = ResidualParts {
                     mass: &self.mass,
                     c,
                     qdd: &self.qdd1,
@@ -923,7 +923,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                         &mut self.kkt,
                         self.info,
                         &self.phi_q,
-                        &residual,
+                        &parts,
                         q_scale * inv_bh2,
                     )
                     .map_err(Failure::Kkt)?;
