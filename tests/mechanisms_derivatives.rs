@@ -26,7 +26,7 @@
 
 mod common;
 
-use common::{d1, dense_mass, dense_phi_q, random_state_for, rotation, Rng};
+use common::{d1, dense, dense_mass, dense_phi_q, random_state_for, rotation, Rng};
 use nalgebra::{DMatrix, Vector3};
 use symbody_mechanisms::REGISTRY;
 use symbody_runtime::{BodyInfo, Formulation, Mechanism, MechanismInfo, Rotation};
@@ -473,16 +473,9 @@ fn load_jacobians_match_central_differences_at_rest() {
             let mut dq = vec![0.0; info.force_q_rows.len()];
             let mut dqd = vec![0.0; info.force_qd_rows.len()];
             mech.force_jacobian(&q, &rest, t, &mut dq, &mut dqd);
-            let dense = |rows: &[u32], cols: &[u32], v: &[f64]| {
-                let mut m = DMatrix::zeros(n, n);
-                for ((&r, &c), &x) in rows.iter().zip(cols).zip(v) {
-                    m[(r as usize, c as usize)] = x;
-                }
-                m
-            };
             let (gq, gqd) = (
-                dense(info.force_q_rows, info.force_q_cols, &dq),
-                dense(info.force_qd_rows, info.force_qd_cols, &dqd),
+                dense((n, n), info.force_q_rows, info.force_q_cols, &dq),
+                dense((n, n), info.force_qd_rows, info.force_qd_cols, &dqd),
             );
             let force = |q: &[f64], qd: &[f64]| {
                 let mut f = vec![0.0; n];

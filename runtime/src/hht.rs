@@ -36,7 +36,8 @@
 
 use crate::error::{check_len, ConstraintRow, Error};
 use crate::kinematics::{
-    inf_norm, mass_times, phi_q_transpose_times, InitialVelocity, KinematicSettings, Kinematics,
+    inf_norm, largest_row, mass_times, phi_q_transpose_times, InitialVelocity, KinematicSettings,
+    Kinematics,
 };
 use crate::kkt::{KktError, KktPattern, KktSolver, SchurKkt};
 use crate::load_stiffness::LoadStiffness;
@@ -161,7 +162,8 @@ impl HhtBuilder {
 
     /// Lets the step pass singular positions (a linkage crossing a flat or dead-centre
     /// configuration, where its rows are dependent for an instant, as in the IFToMM A02
-    /// N-four-bar): rows whose Schur pivot falls below `tolerance` (relative, e.g. 1e-9) are
+    /// N-four-bar): rows whose Schur pivot falls below `tolerance` (relative; the rank-loss
+    /// threshold [`crate::kkt::DEFAULT_PIVOT_TOLERANCE`] drops only what would fail) are
     /// dropped for that factorization instead of failing the step. A step is still accepted
     /// only when every row, dropped or not, satisfies the constraint tolerance, so an
     /// unreachable pose still fails. Off by default (0): rank loss is reported.
@@ -939,7 +941,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 if err > 4.0 * last_err && iter >= 2 {
                     return Err(Failure::NotConverged {
                         residual,
-                        row: worst_row(&self.phi),
+                        row: largest_row(&self.phi),
                     });
                 }
                 self.need_factor = true;
@@ -954,7 +956,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         }
         Err(Failure::NotConverged {
             residual,
-            row: worst_row(&self.phi),
+            row: largest_row(&self.phi),
         })
     }
 }
@@ -1030,11 +1032,10 @@ impl NoiseProbe {
                 + (r.previous_weight * r.previous[i]).abs();
             *f = pseudo_sign(m + i) * NOISE_FACTOR * f64::EPSILON * size;
         }
-        let mass = r.mass;
         kkt.solve(&self.f, &self.g, &mut self.x, &mut self.y)?;
         let floor_a = g0.max(inf_norm(&self.x));
         phi_q_transpose_times(info, phi_q, &self.y, &mut self.x);
-        let floor_l = (g0 * inf_norm(mass)).max(inf_norm(&self.x));
+        let floor_l = (g0 * inf_norm(r.mass)).max(inf_norm(&self.x));
         self.floor = (floor_a, floor_l);
         Ok(())
     }
@@ -1058,13 +1059,6 @@ fn pseudo_sign(i: usize) -> f64 {
     } else {
         -1.0
     }
-}
-
-/// Index of the entry with the largest magnitude (0 for an empty slice).
-fn worst_row(phi: &[f64]) -> usize {
-    (0..phi.len())
-        .max_by(|&a, &b| phi[a].abs().total_cmp(&phi[b].abs()))
-        .unwrap_or(0)
 }
 
 #[cfg(test)]

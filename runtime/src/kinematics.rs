@@ -89,8 +89,8 @@ pub(crate) fn inf_norm(v: &[f64]) -> f64 {
     }
 }
 
-/// Index of the entry of largest magnitude.
-fn largest_row(v: &[f64]) -> usize {
+/// Index of the entry of largest magnitude (0 for an empty slice).
+pub(crate) fn largest_row(v: &[f64]) -> usize {
     (0..v.len())
         .max_by(|&a, &b| v[a].abs().total_cmp(&v[b].abs()))
         .unwrap_or(0)

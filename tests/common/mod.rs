@@ -23,23 +23,25 @@ impl Rng {
     }
 }
 
-/// Dense Φq from its nonzeros.
-pub fn dense_phi_q(info: &MechanismInfo, nnz: &[f64]) -> DMatrix<f64> {
-    let mut m = DMatrix::zeros(info.n_constraints, info.n_coords);
-    for (k, v) in nnz.iter().enumerate() {
-        m[(info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize)] = *v;
+/// A dense `shape` matrix from nonzeros `nnz` at `(rows[k], cols[k])`.
+pub fn dense(shape: (usize, usize), rows: &[u32], cols: &[u32], nnz: &[f64]) -> DMatrix<f64> {
+    let mut m = DMatrix::zeros(shape.0, shape.1);
+    for ((&r, &c), &v) in rows.iter().zip(cols).zip(nnz) {
+        m[(r as usize, c as usize)] = v;
     }
     m
 }
 
+/// Dense Φq from its nonzeros.
+pub fn dense_phi_q(info: &MechanismInfo, nnz: &[f64]) -> DMatrix<f64> {
+    let shape = (info.n_constraints, info.n_coords);
+    dense(shape, info.phi_q_rows, info.phi_q_cols, nnz)
+}
+
 /// Dense mass matrix from its nonzeros.
 pub fn dense_mass(info: &MechanismInfo, nnz: &[f64]) -> DMatrix<f64> {
-    let n = info.n_coords;
-    let mut m = DMatrix::zeros(n, n);
-    for (k, v) in nnz.iter().enumerate() {
-        m[(info.mass_rows[k] as usize, info.mass_cols[k] as usize)] = *v;
-    }
-    m
+    let shape = (info.n_coords, info.n_coords);
+    dense(shape, info.mass_rows, info.mass_cols, nnz)
 }
 
 /// A random configuration near q0: positions within ±5 cm, angles within ±0.5 rad, but
