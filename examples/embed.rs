@@ -7,7 +7,7 @@
 //! through `symbody::session`; all three must agree.
 
 use symbody_mechanisms::stewart_6_6::Exact;
-use symbody_runtime::alloc_count::CountingAllocator;
+use symbody_testkit::alloc::CountingAllocator;
 use symbody_runtime::{driver_effort, joint_wrench, Error, HhtBuilder, Kinematics, Mechanism};
 
 // Counts heap allocations, so the example can show its control loop makes none.
@@ -109,7 +109,7 @@ mod tests {
     fn the_control_loop_allocates_nothing_and_matches_the_session() {
         let r = control_loop(false).unwrap();
         assert_eq!(r.allocations_in_loop, 0);
-        let s = symbody::session::paper_leg1_force_at_1s().unwrap();
+        let s = symbody::session::paper_leg1_force_at_1s(&symbody_mechanisms::REGISTRY).unwrap();
         assert_eq!(
             r.leg1_at_1s.to_bits(),
             s.to_bits(),

@@ -2,9 +2,9 @@
 //! allocator fails the test on any allocation during 100 steps of the exact Stewart platform
 //! (runtime/tests/alloc.rs does the same for the hand-written test models).
 
-use symbody_runtime::alloc_count::CountingAllocator;
+use symbody_testkit::alloc::CountingAllocator;
 
-use symbody_mechanisms::stewart_6_6::{Exact, Paper};
+use symbody_benchmark_mechanisms::stewart_6_6::{Exact, Paper};
 use symbody_runtime::{DenseKkt, HhtBuilder};
 
 #[global_allocator]

@@ -28,7 +28,7 @@ fn temp_dir(name: &str) -> PathBuf {
 fn list_shows_every_registered_mechanism() {
     let (ok, out, err) = symbody(&["list"]);
     assert!(ok, "{err}");
-    for e in REGISTRY {
+    for e in REGISTRY.iter() {
         let info = e.default_mechanism().info();
         let line = out
             .lines()
@@ -147,7 +147,7 @@ fn bad_requests_name_what_exists() {
         err.contains("no mechanism `four_bars`") && err.contains("did you mean `four_bar`"),
         "{err}"
     );
-    for e in REGISTRY {
+    for e in REGISTRY.iter() {
         assert!(err.contains(e.name), "{err}");
     }
     let (ok, _, err) = symbody(&[

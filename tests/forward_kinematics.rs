@@ -7,7 +7,7 @@ use nalgebra::{Rotation3, Vector3};
 use std::process::Command;
 use symbody::fk::{self, Request};
 use symbody::scenario::{simulate, Options};
-use symbody_mechanisms::find;
+use symbody_benchmark_mechanisms::find;
 use symbody_runtime::fk::{Legs, Pose};
 use symbody_runtime::Error;
 
@@ -72,7 +72,7 @@ fn the_generator_finds_the_paper_platform_legs() {
 /// from the home pose. Both must give the same pose.
 #[test]
 fn fk_agrees_with_the_pose_tracked_by_the_paper_scenario() {
-    let run = simulate(&Options::default()).unwrap();
+    let run = simulate(&symbody_benchmark_mechanisms::REGISTRY, &Options::default()).unwrap();
     let p = fk::platform(find("stewart_6_6").unwrap()).unwrap();
     let n = run.t.len() - 1;
     let mut worst = 0.0_f64;

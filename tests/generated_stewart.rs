@@ -2,11 +2,11 @@
 //! the generated Φ, a hand-written kinetic energy (docs/paper-scenario.md's formula, nalgebra),
 //! the paper's constants, and the committed file against fresh generation.
 
-mod common;
+use symbody_testkit::common;
 
 use common::{dense_mass, dense_phi_q, random_state, Rng};
 use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Vector3};
-use symbody_mechanisms::stewart_6_6::{self as st, Exact, Paper};
+use symbody_benchmark_mechanisms::stewart_6_6::{self as st, Exact, Paper};
 use symbody_runtime::{KinematicOutputs, Mechanism, NewtonOutputs};
 
 const N: usize = 78;

@@ -3,7 +3,7 @@
 //! driver that demands an unreachable pose, a leg driven to zero length. The faults are
 //! injected by wrapping the generated paper platform, so the rest of the model is the real one.
 
-use symbody_mechanisms::stewart_6_6::Exact;
+use symbody_benchmark_mechanisms::stewart_6_6::Exact;
 use symbody_runtime::{
     Error, HhtBuilder, KinematicOutputs, KinematicPath, Mechanism, MechanismInfo, NewtonOutputs,
 };
@@ -187,7 +187,7 @@ fn a_driver_demanding_an_unreachable_pose_is_named() {
 fn a_zero_or_negative_leg_length_is_refused_not_tracked() {
     // Before the check, `fk --lengths 0,…` tracked the pose into a parallel singularity at
     // path parameter 0.28 and reported that instead of the impossible input.
-    let entry = symbody_mechanisms::find("stewart_6_6").unwrap();
+    let entry = symbody_benchmark_mechanisms::find("stewart_6_6").unwrap();
     let p = symbody::fk::platform(entry).unwrap();
     for bad in [0.0, -0.1, f64::NAN] {
         let mut lengths = [0.40004; 6];
@@ -226,7 +226,7 @@ fn a_zero_or_negative_leg_length_is_refused_not_tracked() {
 /// α = 0 default) keeps the energy to 2.7e-8 J over 60 s.
 #[test]
 fn alpha_zero_drifts_off_the_velocity_constraints_unless_projected() {
-    let mech = symbody_mechanisms::find("spherical_pendulum")
+    let mech = symbody_benchmark_mechanisms::find("spherical_pendulum")
         .unwrap()
         .default_mechanism();
     let info = mech.info();

@@ -3,7 +3,7 @@
 //! smaller steps, or the energy theorem (ΔE equals the actuators' work).
 
 use symbody::scenario::{simulate, simulate_mechanism, Options, Reactions, Run, ScenarioError};
-use symbody_mechanisms::stewart_6_6::Exact;
+use symbody_benchmark_mechanisms::stewart_6_6::Exact;
 use symbody_runtime::{
     Error, Formulation, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs,
 };
@@ -13,7 +13,7 @@ fn run(step: f64, alpha: f64, output_step: f64) -> Run {
 }
 
 fn run_with(step: f64, alpha: f64, output_step: f64, reactions: Reactions) -> Run {
-    simulate(&Options {
+    simulate(&symbody_benchmark_mechanisms::REGISTRY, &Options {
         formulation: Formulation::Exact,
         step,
         alpha,

@@ -1,8 +1,8 @@
 //! The IFToMM benchmark problems A01–A05, each run to its shortened length: the published
-//! error measure against each problem's independent reference (see `symbody::iftomm`) must
+//! error measure against each problem's independent reference (see `symbody_bench::iftomm`) must
 //! meet the published tolerance. The full lengths run in `mbs_benchmarks`.
 
-use symbody::iftomm::{problems, Problem};
+use symbody_bench::iftomm::{problems, Problem};
 
 fn check(id: &str) {
     let p: &Problem = problems()
@@ -68,7 +68,7 @@ fn a05_flyball_governor() {
 /// 13 912 steps, 157 235 iterations).
 #[test]
 fn a05_stiff_damper_does_not_limit_the_step() {
-    let mech = symbody::generic::find("flyball_governor")
+    let mech = symbody::generic::find(&symbody_benchmark_mechanisms::REGISTRY, "flyball_governor")
         .unwrap()
         .default_mechanism();
     let run = |with_loads: bool| {

@@ -1,4 +1,4 @@
-//! Every generated mechanism in `symbody_mechanisms::REGISTRY`, in every formulation it was
+//! Every generated mechanism in `symbody_benchmark_mechanisms::REGISTRY`, in every formulation it was
 //! generated for, against independent references at random states (a new mechanism is
 //! covered as soon as it is registered):
 //!
@@ -24,11 +24,11 @@
 //! only force (docs/design.md, decision 7); it is checked against that definition, not
 //! against T.
 
-mod common;
+use symbody_testkit::common;
 
 use common::{d1, dense, dense_mass, dense_phi_q, random_state_for, rotation, Rng};
 use nalgebra::{DMatrix, Vector3};
-use symbody_mechanisms::REGISTRY;
+use symbody_benchmark_mechanisms::REGISTRY;
 use symbody_runtime::{BodyInfo, Formulation, Mechanism, MechanismInfo, Rotation};
 
 /// Random states per mechanism and formulation.

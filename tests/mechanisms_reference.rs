@@ -4,13 +4,13 @@
 //! here from the numbers in `mechanisms/<name>.toml`, a conservation law, or a second,
 //! independently formulated model of the same machine.
 
-mod common;
+use symbody_testkit::common;
 
 use common::{d1, rotation};
 use nalgebra::{Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
 use std::f64::consts::PI;
 use symbody::generic::{run, Options, Recording};
-use symbody_mechanisms::find;
+use symbody_benchmark_mechanisms::find;
 use symbody_runtime::BodyInfo;
 
 fn simulate(name: &str, opts: &Options) -> Recording {

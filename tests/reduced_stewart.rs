@@ -3,7 +3,7 @@
 //! the same HHT settings must give the same motion and, read back through `REDUCTION`, the
 //! same joint and actuator forces.
 
-use symbody_mechanisms::stewart_6_6::{self, reduced, Exact};
+use symbody_benchmark_mechanisms::stewart_6_6::{self, reduced, Exact};
 use symbody_runtime::{
     actuator_force, joint_force, HhtBuilder, Kinematics, Mechanism, MechanismInfo,
 };
@@ -118,7 +118,7 @@ fn the_paper_scenario_on_the_reduced_model_records_the_same_series() {
         output_step: 0.05,
         ..Options::default()
     };
-    let (full, red) = (simulate(&opts).unwrap(), simulate_reduced(&opts).unwrap());
+    let (full, red) = (simulate(&symbody_benchmark_mechanisms::REGISTRY, &opts).unwrap(), simulate_reduced(&symbody_benchmark_mechanisms::REGISTRY, &opts).unwrap());
     let force =
         |f: fn(&symbody::scenario::Run, usize) -> &[f64]| red.max_difference(&full, f).unwrap().0;
     let upper = force(|r, k| r.upper[k].as_flattened());

@@ -2,13 +2,12 @@
 //! constraints (`benches/reference`, from docs/paper-scenario.md) differentiated by num-dual:
 //! Φ, Φq (values and sparsity pattern) and γ must agree at random states.
 
-mod common;
-#[path = "../benches/reference/mod.rs"]
-mod reference;
+use symbody_testkit::common;
+use symbody_testkit::reference;
 
 use common::Rng;
 use reference::{rotation, Stewart, M, N};
-use symbody_mechanisms::stewart_6_6 as st;
+use symbody_benchmark_mechanisms::stewart_6_6 as st;
 
 const STATES: usize = 25;
 

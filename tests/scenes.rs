@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use symbody::scene::{self, Outcome, PathChoice};
-use symbody_mechanisms::REGISTRY;
+use symbody_benchmark_mechanisms::REGISTRY;
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -15,7 +15,7 @@ fn root() -> PathBuf {
 fn load(path: &Path) -> scene::Scene {
     let text = std::fs::read_to_string(path).unwrap();
     let name = path.strip_prefix(root()).unwrap().display().to_string();
-    scene::load(&name, &text).unwrap_or_else(|e| panic!("{name}:\n{e}"))
+    scene::load(&symbody_benchmark_mechanisms::REGISTRY, &name, &text).unwrap_or_else(|e| panic!("{name}:\n{e}"))
 }
 
 /// The path each shipped scene must take: kinematic where the drivers fix every requested
@@ -52,12 +52,12 @@ fn every_shipped_scene_runs_on_its_pinned_path() {
         .map(|p| p.file_stem().unwrap().to_string_lossy().into_owned())
         .collect();
     assert_eq!(names, EXPECTED.map(|(n, _)| n.to_string()));
-    for e in REGISTRY {
+    for e in REGISTRY.iter() {
         assert!(names.iter().any(|n| n == e.name), "no scene for {}", e.name);
     }
     for (path, (name, kinematic)) in files.iter().zip(EXPECTED) {
         let s = load(path);
-        let entry = symbody_mechanisms::find(s.mechanism).unwrap();
+        let entry = symbody_benchmark_mechanisms::find(s.mechanism).unwrap();
         let (choice, outcome) = scene::run(&s, entry).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert_eq!(
             matches!(choice, PathChoice::Kinematic { .. }),
@@ -78,7 +78,7 @@ fn every_shipped_scene_runs_on_its_pinned_path() {
 #[test]
 fn a_scene_writes_only_what_it_asks_for() {
     let s = load(&root().join("scenes/four_bar.toml"));
-    let entry = symbody_mechanisms::find(s.mechanism).unwrap();
+    let entry = symbody_benchmark_mechanisms::find(s.mechanism).unwrap();
     let (_, outcome) = scene::run(&s, entry).unwrap();
     let Outcome::Tables(rec) = outcome else {
         panic!("four_bar writes tables")
@@ -97,7 +97,7 @@ fn a_scene_writes_only_what_it_asks_for() {
     assert_eq!(stems, ["bodies", "joints", "drivers", "energy"]);
 
     let s = load(&root().join("scenes/dietmaier_6_6.toml"));
-    let entry = symbody_mechanisms::find(s.mechanism).unwrap();
+    let entry = symbody_benchmark_mechanisms::find(s.mechanism).unwrap();
     let (_, outcome) = scene::run(&s, entry).unwrap();
     let Outcome::Tables(rec) = outcome else {
         panic!("dietmaier writes tables")
@@ -116,7 +116,7 @@ fn asking_for_the_legs_poses_makes_the_paper_platform_integrate() {
     let mut s = load(&root().join("scenes/stewart_6_6.toml"));
     s.poses = scene::Selection::All;
     let mech =
-        symbody::generic::mechanism(symbody_mechanisms::find(s.mechanism).unwrap(), None).unwrap();
+        symbody::generic::mechanism(symbody_benchmark_mechanisms::find(s.mechanism).unwrap(), None).unwrap();
     let choice = scene::choose_path(&s, mech).unwrap();
     let PathChoice::Integrate {
         reason: Some(reason),
@@ -160,7 +160,7 @@ fn bad_scene_files_are_refused_with_place_and_help() {
         };
         let help = expect("help");
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
-        let errors = scene::load(&name, &text).expect_err(&name);
+        let errors = scene::load(&symbody_benchmark_mechanisms::REGISTRY, &name, &text).expect_err(&name);
         let d = &errors.0[0];
         assert_eq!(format!("{}:{}", d.line, d.column), place, "{name}: {d}");
         assert!(d.message.contains(&message), "{name}: {d}");

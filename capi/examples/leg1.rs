@@ -17,8 +17,8 @@ fn c_exp(x: f64) -> String {
     }
 }
 
-fn main() -> Result<(), symbody_core::session::Error> {
-    let force = symbody_core::session::paper_leg1_force_at_1s()?;
+fn main() -> Result<(), symbody::session::Error> {
+    let force = symbody::session::paper_leg1_force_at_1s(&symbody_mechanisms::REGISTRY)?;
     println!("leg 1 force at t = 1 s: {} N", c_exp(force));
     Ok(())
 }

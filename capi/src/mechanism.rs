@@ -6,7 +6,7 @@ use crate::status::{arg, arg_mut, guard, guard_value, input, output, string, Fai
 use crate::status::{SymbodyFormulation, SymbodyStatus};
 use std::ffi::{c_char, c_int, CString};
 use std::sync::OnceLock;
-use symbody_core::session::Dyn;
+use symbody::session::Dyn;
 use symbody_mechanisms::REGISTRY;
 use symbody_runtime::{Formulation, JointKind, MechanismInfo};
 
@@ -52,7 +52,7 @@ pub(crate) fn formulation(f: c_int) -> Result<Option<Formulation>, Failure> {
 /// The registered mechanism `name` in formulation code `f`.
 pub(crate) fn lookup(name: &str, f: c_int) -> Result<Dyn, Failure> {
     let f = formulation(f)?;
-    let entry = symbody_core::generic::find(name)
+    let entry = symbody::generic::find(&REGISTRY, name)
         .map_err(|e| Failure::from_session(e, SymbodyStatus::UnknownName))?;
     match f {
         None => Ok(entry.default_mechanism()),

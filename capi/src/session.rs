@@ -4,7 +4,7 @@
 use crate::mechanism::{lookup, SymbodyMechanism};
 use crate::status::{arg, arg_mut, guard, guard_value, output, string, Failure, SymbodyStatus};
 use std::ffi::{c_char, c_int};
-use symbody_core::session::{Session, Settings};
+use symbody::session::{Session, Settings};
 
 /// A running simulation of one mechanism (opaque): HHT-α from a consistent start at t = 0.
 /// Made by `symbody_session_new`, released by `symbody_session_free`. A handle may be
@@ -48,7 +48,7 @@ pub unsafe extern "C" fn symbody_session_new(
             step,
             ..Settings::default()
         };
-        let session = Session::new(name, settings)
+        let session = Session::new(&symbody_mechanisms::REGISTRY, name, settings)
             .map_err(|e| Failure::from_session(e, SymbodyStatus::InvalidArgument))?;
         *out = Box::into_raw(Box::new(SymbodySession { session }));
         Ok(())
@@ -114,7 +114,7 @@ unsafe fn session<'a>(s: *mut SymbodySession) -> Result<&'a mut Session, Failure
     Ok(&mut unsafe { arg_mut(s, "session")? }.session)
 }
 
-fn solver(e: symbody_core::session::Error) -> Failure {
+fn solver(e: symbody::session::Error) -> Failure {
     Failure::from_session(e, SymbodyStatus::InvalidArgument)
 }
 

@@ -96,8 +96,8 @@ impl From<symbody_runtime::Error> for Failure {
 impl Failure {
     /// An error of `symbody::session`; `options` is the status its option errors (bad
     /// names) get in the calling context.
-    pub fn from_session(e: symbody_core::session::Error, options: SymbodyStatus) -> Failure {
-        use symbody_core::scenario::ScenarioError as E;
+    pub fn from_session(e: symbody::session::Error, options: SymbodyStatus) -> Failure {
+        use symbody::scenario::ScenarioError as E;
         match e {
             E::Runtime(e) => e.into(),
             E::Options(s) => Failure::new(options, s),

@@ -5,8 +5,8 @@
 
 use std::ffi::{c_char, c_int, CStr, CString};
 use std::ptr::{null, null_mut};
-use symbody::*;
-use symbody_core::session::{paper_leg1_force_at_1s, Session, Settings};
+use symbody_c::*;
+use symbody::session::{paper_leg1_force_at_1s, Session, Settings};
 
 const OK: c_int = SymbodyStatus::Ok as c_int;
 
@@ -67,7 +67,7 @@ fn the_leg_1_force_is_the_rust_sessions_bit_for_bit() {
             last_error()
         );
     }
-    let rust = paper_leg1_force_at_1s().unwrap();
+    let rust = paper_leg1_force_at_1s(&symbody_mechanisms::REGISTRY).unwrap();
     assert_eq!(
         force.to_bits(),
         rust.to_bits(),
@@ -75,7 +75,7 @@ fn the_leg_1_force_is_the_rust_sessions_bit_for_bit() {
     );
 
     // The rest of the state agrees with a Rust session advanced the same way.
-    let mut r = Session::new("stewart_6_6", Settings::default()).unwrap();
+    let mut r = Session::new(&symbody_mechanisms::REGISTRY, "stewart_6_6", Settings::default()).unwrap();
     r.advance_to(1.0).unwrap();
     let n = r.q().len();
     let (mut q, mut qd) = (vec![0.0; n], vec![0.0; n]);
@@ -128,7 +128,7 @@ fn the_mechanism_functions_are_the_generated_code() {
         .map(|i| unsafe { CStr::from_ptr(symbody_mechanism_name(i)) })
         .map(|c| c.to_str().unwrap().to_string())
         .collect();
-    let registry: Vec<&str> = Session::mechanisms().collect();
+    let registry = symbody_mechanisms::REGISTRY.names();
     assert_eq!(names, registry);
     assert!(symbody_mechanism_name(names.len()).is_null());
     assert!(last_error().contains("mechanism index"), "{}", last_error());
@@ -595,8 +595,8 @@ fn garbage_in_is_a_status_out_never_a_panic() {
 /// is an error.
 #[test]
 fn load_jacobians_match_rust_and_may_be_empty() {
-    let m = mechanism("flyball_governor", 0).unwrap();
-    let rust = symbody_mechanisms::find("flyball_governor")
+    let m = mechanism("oscillators", 0).unwrap();
+    let rust = symbody_mechanisms::find("oscillators")
         .unwrap()
         .default_mechanism();
     let info = rust.info();

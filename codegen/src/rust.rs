@@ -21,6 +21,21 @@ fn pattern(entries: &[Entry]) -> (Vec<u32>, Vec<u32>) {
     entries.iter().map(|e| (e.0, e.1)).unzip()
 }
 
+/// `s` safe inside one `//!` line: the file's free text (descriptions, driver expressions)
+/// is data, so a line break or any other control character in it is written escaped and can
+/// never end the comment and start code. Unicode line and paragraph separators too, for
+/// every reader of the file that treats them as line ends.
+pub fn comment_text(s: &str) -> String {
+    s.chars()
+        .map(|c| match c {
+            c if c.is_control() || matches!(c, '\u{2028}' | '\u{2029}') => {
+                c.escape_default().to_string()
+            }
+            c => c.to_string(),
+        })
+        .collect()
+}
+
 /// The header comment: provenance, regeneration command, coordinate and row order.
 fn header(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
     let mut h = String::new();
@@ -29,7 +44,7 @@ fn header(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
         if !s.is_empty() {
             h.push(' ');
         }
-        h.push_str(s);
+        h.push_str(&comment_text(s));
         h.push('\n');
     };
     line(&format!(
@@ -486,6 +501,36 @@ fn reduced_module(
     }
 }
 
+/// `pub static ENTRY`: the mechanism in each formulation (the file's order, default first)
+/// and its reduced model, for the registries that link this module.
+fn registry_entry(model: &Model, reduced: Option<&crate::reduce::Reduced>) -> TokenStream {
+    let list = |prefix: TokenStream| {
+        let items = model.formulations.iter().map(|&f| {
+            let (_, type_name, form) = formulation_names(f);
+            quote!((#form, &#prefix #type_name as &(dyn Mechanism + Sync)))
+        });
+        quote!(&[#(#items),*])
+    };
+    let full = list(quote!());
+    let reduced = match reduced {
+        Some(_) => {
+            let forms = list(quote!(reduced::));
+            quote!(Some(symbody_runtime::registry::Reduced { formulations: #forms, reduction: &reduced::REDUCTION }))
+        }
+        None => quote!(None),
+    };
+    let name = &model.name;
+    quote! {
+        /// This mechanism in the registries (`symbody_runtime::Registry`).
+        pub static ENTRY: Entry = Entry {
+            name: #name,
+            t_end: T_END,
+            formulations: #full,
+            reduced: #reduced,
+        };
+    }
+}
+
 pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
     let n = sys.n_coords;
     let m = sys.n_constraints;
@@ -690,13 +735,15 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
         Formulation::Exact => "Exact",
     });
 
+    let entry = registry_entry(model, reduced.as_ref());
     let file = quote! {
         #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]
-        use symbody_runtime::{BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, PlatformInfo, #reduction_import Rotation};
+        use symbody_runtime::{BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, PlatformInfo, #reduction_import Rotation};
         #(#items)*
         #(#impls)*
         /// The formulation listed first in the mechanism file.
         pub type DefaultFormulation = #default_type;
+        #entry
     };
     let syntax: syn::File = syn::parse2(file).expect("generated tokens form a valid Rust file");
     let body = prettyplease::unparse(&syntax);

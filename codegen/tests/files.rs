@@ -1,11 +1,11 @@
-//! The workspace's generated files: an invalid mechanism file never enters the module index
-//! (whatever `cargo xtask generate` was asked to regenerate) and its diagnostic is what the
-//! run reports; and generating every mechanism file twice gives the same module.
+//! The workspace's generated files: a mechanism file that does not generate changes no
+//! generated file (its previous crate stays, listed in the registries), a new invalid file
+//! never enters a registry, and its diagnostic is what the run reports; generating every
+//! mechanism file twice gives the same crate, and the committed files are that crate.
 
 use std::path::{Path, PathBuf};
-use symbody_codegen::files::{self, FilesError, GENERATED_DIR, MECHANISMS_DIR};
+use symbody_codegen::files::{self, FilesError, Group, GENERATED_DIR};
 use symbody_codegen::generate;
-use symbody_codegen::model::Formulation;
 
 fn workspace_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -31,10 +31,20 @@ at = [0.0, 0.0, 0.0]
 type = "sperical"
 "#;
 
-/// A copy of the workspace's mechanism files and committed generated modules in a fresh
+/// A copy of the workspace's mechanism files and committed generated crates in a fresh
 /// folder laid out like the workspace, plus `mechanisms/broken.toml`.
 struct Tree {
     root: PathBuf,
+}
+
+fn copy_dir(from: &Path, to: &Path, keep: impl Fn(&Path) -> bool) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_file() && keep(&path) {
+            std::fs::copy(&path, to.join(path.file_name().unwrap())).unwrap();
+        }
+    }
 }
 
 impl Tree {
@@ -43,35 +53,22 @@ impl Tree {
             .join(format!("files-{tag}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&root);
         let ws = workspace_root();
-        for (dir, ext) in [(MECHANISMS_DIR, "toml"), (GENERATED_DIR, "rs")] {
-            std::fs::create_dir_all(root.join(dir)).unwrap();
-            for entry in std::fs::read_dir(ws.join(dir)).unwrap() {
-                let path = entry.unwrap().path();
-                if path.extension().is_some_and(|e| e == ext) {
-                    std::fs::copy(&path, root.join(dir).join(path.file_name().unwrap())).unwrap();
-                }
-            }
+        let toml = |p: &Path| p.extension().is_some_and(|e| e == "toml");
+        for g in Group::ALL {
+            copy_dir(&ws.join(g.dir()), &root.join(g.dir()), toml);
         }
-        std::fs::write(root.join(MECHANISMS_DIR).join("broken.toml"), BROKEN).unwrap();
+        for n in files::mechanism_names(&ws).unwrap() {
+            let dir = files::crate_dir(&n);
+            copy_dir(&ws.join(&dir), &root.join(&dir), |_| true);
+        }
+        std::fs::write(root.join("mechanisms/broken.toml"), BROKEN).unwrap();
         Tree { root }
     }
 
-    /// What `cargo xtask generate <names>` does before writing: regenerate each name,
-    /// collect the failures, and build the index.
-    fn run(&self, names: &[&str]) -> (Vec<(String, FilesError)>, files::IndexEntries, String) {
+    /// What `cargo xtask generate <names>` would write.
+    fn plan(&self, names: &[&str]) -> files::Plan {
         let names: Vec<String> = names.iter().map(|s| s.to_string()).collect();
-        let mut regenerated = Vec::new();
-        let mut failures = Vec::new();
-        for n in &names {
-            match files::generated_module(&self.root, n) {
-                Ok((_, g)) => regenerated.push((n.clone(), g.formulations)),
-                Err(e) => failures.push((n.clone(), e)),
-            }
-        }
-        let index = files::index_entries(&self.root, &names, &regenerated).unwrap();
-        let (path, code) = files::generated_index(&index.entries);
-        assert_eq!(path, Path::new(GENERATED_DIR).join("mod.rs"));
-        (failures, index, code)
+        files::plan(&self.root, &names).unwrap()
     }
 }
 
@@ -81,9 +78,27 @@ impl Drop for Tree {
     }
 }
 
-/// The valid mechanisms of the workspace (every file there is valid).
-fn workspace_mechanisms() -> Vec<String> {
-    files::mechanism_names(&workspace_root()).unwrap()
+/// The registry files a plan writes, by path.
+fn registry_files(plan: &files::Plan) -> Vec<(PathBuf, String)> {
+    plan.outputs
+        .iter()
+        .filter(|(p, _)| !p.starts_with(GENERATED_DIR))
+        .cloned()
+        .collect()
+}
+
+/// The committed registry files.
+fn committed_registries() -> Vec<(PathBuf, String)> {
+    let ws = workspace_root();
+    files::plan(&ws, &[])
+        .unwrap()
+        .outputs
+        .into_iter()
+        .map(|(p, _)| {
+            let text = std::fs::read_to_string(ws.join(&p)).unwrap();
+            (p, text)
+        })
+        .collect()
 }
 
 /// The broken file's diagnostic is what a failed run reports for it.
@@ -109,93 +124,98 @@ fn check_broken_failure(failures: &[(String, FilesError)]) {
     );
 }
 
-fn check_index(index: &files::IndexEntries, code: &str) {
-    let listed: Vec<&str> = index.entries.iter().map(|(n, _)| n.as_str()).collect();
-    assert_eq!(listed, workspace_mechanisms(), "{code}");
-    assert!(!code.contains("broken"), "{code}");
-    for n in workspace_mechanisms() {
-        assert!(code.contains(&format!("pub mod {n};")), "{n}: {code}");
+#[test]
+fn the_committed_registries_list_every_mechanism_in_its_group() {
+    let committed = committed_registries();
+    let text = |path: &str| {
+        &committed
+            .iter()
+            .find(|(p, _)| p == Path::new(path))
+            .unwrap_or_else(|| panic!("{path}"))
+            .1
+    };
+    let ws = workspace_root();
+    for f in files::mechanism_files(&ws).unwrap() {
+        let entry = format!("&{}::ENTRY,", f.name);
+        let shipped = text("mechanisms/src/registry.rs");
+        assert_eq!(shipped.contains(&entry), f.group == Group::Shipped, "{}", f.name);
+        assert!(text("mechanisms/benchmarks/registry.rs").contains(&entry), "{}", f.name);
     }
-    // The workspace's formulations, e.g. Stewart's paper formulation after the exact one.
-    let stewart = index
-        .entries
-        .iter()
-        .find(|(n, _)| n == "stewart_6_6")
-        .unwrap();
-    assert_eq!(stewart.1, vec![Formulation::Exact, Formulation::Paper]);
 }
 
 #[test]
-fn generate_all_leaves_a_broken_file_out_of_the_index() {
-    let tree = Tree::new("all");
+fn a_failed_generation_changes_no_generated_file() {
+    // The slip a user makes: a typo in a shipped file that has a crate, then
+    // `cargo xtask generate <it>` (issue: the registry used to be rewritten without it).
+    let tree = Tree::new("typo");
+    let path = tree.root.join("mechanisms/slider_crank.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::write(&path, text.replacen("revolute", "revolut", 1)).unwrap();
+    let plan = tree.plan(&["slider_crank"]);
+    assert_eq!(plan.failures.len(), 1, "{:?}", plan.failures);
+    assert!(
+        plan.failures[0].1.to_string().contains("mechanisms/slider_crank.toml:"),
+        "{}",
+        plan.failures[0].1
+    );
+    assert!(plan.outputs.iter().all(|(p, _)| !p.starts_with(files::crate_dir("slider_crank"))));
+    // The registries it would write are the committed ones: slider_crank stays listed.
+    assert_eq!(registry_files(&plan), committed_registries());
+}
+
+#[test]
+fn a_new_invalid_file_is_reported_and_never_listed() {
+    let tree = Tree::new("new");
     let names = files::mechanism_names(&tree.root).unwrap();
     assert!(names.contains(&"broken".to_string()));
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
-    let (failures, index, code) = tree.run(&names);
-    check_broken_failure(&failures);
-    check_index(&index, &code);
-    assert!(index.left_out.is_empty(), "{:?}", index.left_out);
-    // Without the broken file, the index is the committed one.
-    let committed =
-        std::fs::read_to_string(workspace_root().join(GENERATED_DIR).join("mod.rs")).unwrap();
-    assert_eq!(code, committed);
+    let plan = tree.plan(&names);
+    check_broken_failure(&plan.failures);
+    assert_eq!(registry_files(&plan), committed_registries());
+    // Regenerating another mechanism does not list it either.
+    let plan = tree.plan(&["four_bar"]);
+    assert!(plan.failures.is_empty());
+    assert_eq!(registry_files(&plan), committed_registries());
     // The freshness check's view of the tree fails on the same diagnostic.
     let err = files::all_expected(&tree.root).expect_err("broken.toml is invalid");
-    assert!(
-        err.to_string().contains("mechanisms/broken.toml:14:8"),
-        "{err}"
-    );
+    assert!(err.to_string().contains("mechanisms/broken.toml:14:8"), "{err}");
 }
 
 #[test]
-fn generate_one_leaves_a_stale_module_of_a_broken_file_out() {
-    // broken.rs was generated when the file was still valid; regenerating another
-    // mechanism must not put it back in the index.
-    let tree = Tree::new("one");
-    let stale = tree.root.join(files::module_path("broken"));
-    std::fs::write(&stale, "// generated from an older, valid broken.toml\n").unwrap();
-    let (failures, index, code) = tree.run(&["four_bar"]);
-    assert!(failures.is_empty());
-    check_index(&index, &code);
-    assert_eq!(index.left_out, vec!["broken".to_string()]);
-
-    // Asking for the broken file itself: it fails, and the others stay in the index.
-    let (failures, index, code) = tree.run(&["broken"]);
-    check_broken_failure(&failures);
-    check_index(&index, &code);
-    assert!(index.left_out.is_empty(), "{:?}", index.left_out);
+fn a_mechanism_without_a_crate_is_listed_once_generated() {
+    let tree = Tree::new("gen");
+    std::fs::remove_dir_all(tree.root.join(files::crate_dir("bricard"))).unwrap();
+    let plan = tree.plan(&["four_bar"]);
+    assert!(registry_files(&plan).iter().all(|(_, t)| !t.contains("bricard")));
+    let plan = tree.plan(&["bricard"]);
+    assert_eq!(registry_files(&plan), committed_registries());
 }
 
 #[test]
-fn a_mechanism_without_a_module_is_not_indexed_until_generated() {
-    let tree = Tree::new("new");
-    std::fs::remove_file(tree.root.join(files::module_path("bricard"))).unwrap();
-    let (_, index, code) = tree.run(&["four_bar"]);
-    assert!(index.entries.iter().all(|(n, _)| n != "bricard"));
-    assert!(!code.contains("bricard"));
-    let (_, index, _) = tree.run(&["bricard"]);
-    assert!(index.entries.iter().any(|(n, _)| n == "bricard"));
+fn a_crate_whose_file_is_gone_is_an_orphan() {
+    let tree = Tree::new("orphan");
+    std::fs::remove_file(tree.root.join("mechanisms/four_bar.toml")).unwrap();
+    let plan = tree.plan(&[]);
+    assert_eq!(plan.orphans, vec![files::crate_dir("four_bar")]);
+    assert!(registry_files(&plan).iter().all(|(_, t)| !t.contains("four_bar")));
 }
 
 #[test]
 fn generation_is_deterministic_for_every_mechanism_file() {
     let root = workspace_root();
-    let names = workspace_mechanisms();
-    assert!(names.len() >= 6, "{names:?}");
-    for n in &names {
-        let rel = format!("{MECHANISMS_DIR}/{n}.toml");
+    let all = files::mechanism_files(&root).unwrap();
+    assert!(all.len() >= 6, "{all:?}");
+    for f in &all {
+        let rel = f.path();
         let text = std::fs::read_to_string(root.join(&rel)).unwrap();
         let first = generate(&rel, &text).unwrap_or_else(|e| panic!("{e}"));
         let second = generate(&rel, &text).unwrap_or_else(|e| panic!("{e}"));
-        assert!(first.code == second.code, "{n}: the generated code differs");
-        assert_eq!(first.report, second.report, "{n}");
-        assert_eq!(first.formulations, second.formulations, "{n}");
+        assert!(first.code == second.code, "{}: the generated code differs", f.name);
+        assert_eq!(first.report, second.report, "{}", f.name);
+        assert_eq!(first.formulations, second.formulations, "{}", f.name);
         // Through the files layer too (what xtask writes).
-        let (path, third) = files::generated_module(&root, n).unwrap();
-        assert_eq!(path, files::module_path(n));
-        assert!(
-            third.code == first.code,
-            "{n}: files::generated_module differs"
-        );
+        let (out, third) = files::generated_crate(&root, f).unwrap();
+        assert!(out.iter().any(|(p, c)| p == &files::module_path(&f.name) && *c == first.code));
+        assert!(third.code == first.code, "{}: files::generated_crate differs", f.name);
     }
 }

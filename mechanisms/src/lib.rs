@@ -1,39 +1,16 @@
-//! Mechanisms generated from the files in `mechanisms/`: each module implements
-//! `symbody_runtime::Mechanism` once per formulation (`Exact`, `Paper`), and [`REGISTRY`]
-//! lists them all by name (docs/design.md, decision 19), so programs dispatch on a name instead
-//! of naming modules.
+//! The shipped mechanisms: one generated crate per file in `mechanisms/` (re-exported here
+//! under the mechanism's name, e.g. [`stewart_6_6`]), and [`REGISTRY`], which lists them all
+//! by name (docs/design.md, decisions 19 and 29). Programs pass the registry to the library
+//! (`symbody`) instead of naming mechanisms, so the library never recompiles when a
+//! mechanism changes.
 //!
-//! The modules and the registry are committed; `cargo xtask generate --all` regenerates them.
+//! The crates and the registry are committed; `cargo xtask generate --all` regenerates them.
 
-mod generated;
-pub use generated::*;
+#[rustfmt::skip]
+mod registry;
+pub use registry::*;
 
-use symbody_runtime::{Formulation, Mechanism};
-
-/// One generated mechanism in the registry.
-pub struct Entry {
-    pub name: &'static str,
-    /// Simulation end time suggested by the mechanism file (s).
-    pub t_end: f64,
-    /// The mechanism in each generated formulation; the first is the default.
-    pub formulations: &'static [(Formulation, &'static (dyn Mechanism + Sync))],
-}
-
-impl Entry {
-    /// The mechanism in formulation `f`, if it was generated.
-    pub fn mechanism(&self, f: Formulation) -> Option<&'static (dyn Mechanism + Sync)> {
-        self.formulations
-            .iter()
-            .find(|(g, _)| *g == f)
-            .map(|(_, m)| *m)
-    }
-    /// The mechanism in its default (first) formulation.
-    pub fn default_mechanism(&self) -> &'static (dyn Mechanism + Sync) {
-        self.formulations[0].1
-    }
-}
-
-/// The registry entry called `name`.
-pub fn find(name: &str) -> Option<&'static Entry> {
-    REGISTRY.iter().find(|e| e.name == name)
+/// The mechanism called `name`.
+pub fn find(name: &str) -> Option<&'static symbody_runtime::Entry> {
+    REGISTRY.find(name)
 }

@@ -16,6 +16,7 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use symbody::generic;
+use symbody_mechanisms::REGISTRY;
 use symbody::scenario::ScenarioError;
 use symbody::session::{self, Dyn};
 use symbody_runtime::fk::Pose;
@@ -99,7 +100,7 @@ fn coo<'py>(
 /// Names of every registered mechanism, in registry order.
 #[pyfunction]
 fn mechanisms() -> Vec<&'static str> {
-    session::Session::mechanisms().collect()
+    REGISTRY.names()
 }
 
 /// One run of `symbody simulate <name>`: `[(stem, columns, data)]` for `bodies`, `joints`,
@@ -117,7 +118,7 @@ fn simulate<'py>(
     formulation: Option<&str>,
     cross_singular_positions: bool,
 ) -> PyResult<Vec<(&'static str, Vec<String>, Matrix<'py>)>> {
-    let entry = generic::find(name).map_err(py_err)?;
+    let entry = generic::find(&REGISTRY, name).map_err(py_err)?;
     let opts = generic::Options {
         formulation: self::formulation(formulation)?,
         t_end,
@@ -173,7 +174,7 @@ fn fk<'py>(
     at: f64,
     all: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let entry = generic::find(name).map_err(py_err)?;
+    let entry = generic::find(&REGISTRY, name).map_err(py_err)?;
     let p = symbody::fk::platform(entry).map_err(py_err)?;
     let req = symbody::fk::Request {
         lengths: match lengths {
@@ -268,7 +269,7 @@ impl Session {
             project_velocities,
         };
         Ok(Session {
-            inner: session::Session::new(name, settings).map_err(py_err)?,
+            inner: session::Session::new(&REGISTRY, name, settings).map_err(py_err)?,
         })
     }
 
@@ -388,7 +389,7 @@ impl Mechanism {
     #[new]
     #[pyo3(signature = (name, formulation=None))]
     fn new(name: &str, formulation: Option<&str>) -> PyResult<Self> {
-        let entry = generic::find(name).map_err(py_err)?;
+        let entry = generic::find(&REGISTRY, name).map_err(py_err)?;
         let mech = generic::mechanism(entry, self::formulation(formulation)?).map_err(py_err)?;
         Ok(Mechanism { mech })
     }
@@ -539,7 +540,7 @@ impl Mechanism {
 /// actuator 1 force (N) at t = 1 s with the session's default settings.
 #[pyfunction]
 fn paper_leg1_force_at_1s(py: Python<'_>) -> PyResult<f64> {
-    py.detach(session::paper_leg1_force_at_1s).map_err(py_err)
+    py.detach(|| session::paper_leg1_force_at_1s(&REGISTRY)).map_err(py_err)
 }
 
 #[pymodule]

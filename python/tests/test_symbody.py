@@ -210,7 +210,7 @@ def test_simulate_crosses_singular_positions_when_asked():
 def test_force_jacobian_matches_central_differences_at_rest():
     # At rest the inertial terms vanish with their derivatives, so central differences of
     # force() see the springs and dampers alone (as tests/mechanisms_derivatives.rs does).
-    m = symbody.Mechanism("flyball_governor")
+    m = symbody.Mechanism("oscillators")
     q, rest = np.asarray(m.q0), np.zeros(m.n_coords)
     dq, dqd = m.force_jacobian(q, rest, 0.0)
     assert dq.shape == dqd.shape == (m.n_coords, m.n_coords)

@@ -10,6 +10,7 @@
 //! - [`hht`]: the HHT-α integrator ([`HhtBuilder`] → [`Integrator`]), whose Newton matrix
 //!   takes the applied loads' stiffness and damping (`load_stiffness`).
 //! - [`reactions`]: joint wrenches and driver efforts from the multipliers.
+//! - [`registry`]: compiled mechanisms by name ([`Registry`] of [`Entry`]).
 //! - [`reduction`]: reduced generated mechanisms read back in their full model's terms.
 //! - [`pose`]: rotation matrices, poses, angular velocities and world points of Euler-angle
 //!   and quaternion bodies.
@@ -17,14 +18,12 @@
 //!   forces ([`EnergyMeter`]), for energy-balance checks.
 //! - [`watch`]: constraint-drift and Euler-singularity watchdogs.
 //! - [`error`]: the one [`Error`] type.
-//! - [`testmodels`]: hand-written fixtures (pendulum, circle driver) for tests and examples.
 //!
 //! All solvers allocate their work memory when built; stepping and solving allocate nothing.
 
 // `!(x > tol)` is used on purpose throughout: unlike `x <= tol` it also rejects NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-pub mod alloc_count;
 pub mod energy;
 pub mod error;
 pub mod fk;
@@ -38,7 +37,12 @@ pub mod pose;
 pub mod quadrature;
 pub mod reactions;
 pub mod reduction;
-pub mod testmodels;
+pub mod registry;
+// Hand-written fixtures for this crate's unit tests; other crates reach them through the
+// dev-only `symbody-testkit`, where the file lives.
+#[cfg(test)]
+#[path = "../../testkit/src/models.rs"]
+mod testmodels;
 pub mod watch;
 
 pub use energy::{EnergyMeter, EnergySample};
@@ -53,6 +57,7 @@ pub use mechanism::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo, Mechanism,
     MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
 };
+pub use registry::{Entry, Registry};
 pub use pose::{
     angular_velocity, angular_velocity_jacobian, body_pose, point_world, rotation_matrix,
 };

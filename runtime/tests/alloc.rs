@@ -1,9 +1,9 @@
 //! The hot paths (HHT steps, KKT factor/solve, kinematic solves, watchdogs) must not touch
 //! the heap: a counting global allocator fails the test on any allocation.
 
-use symbody_runtime::alloc_count::CountingAllocator;
+use symbody_testkit::alloc::CountingAllocator;
 
-use symbody_runtime::testmodels::{CircleDriver, Pendulum, TwoBallHinge};
+use symbody_testkit::models::{CircleDriver, Pendulum, TwoBallHinge};
 use symbody_runtime::{
     joint_wrench, DenseKkt, EnergyMeter, EulerLimits, HhtBuilder, Kinematics, Mechanism,
     ResidualWatch, SchurKkt,

@@ -1,5 +1,5 @@
 //! Developer tasks: `cargo xtask generate [<name>… | --all] [--check]` regenerates (or checks)
-//! the committed Rust of the mechanisms under `mechanisms/`, and prints what the generator
+//! the committed Rust of the mechanisms under `mechanisms/` (a crate each, and the registries), and prints what the generator
 //! found out about each (sizes, rank, degrees of freedom, redundant rows, warnings).
 
 use std::path::{Path, PathBuf};
@@ -9,7 +9,8 @@ use symbody_codegen::files;
 
 const USAGE: &str = "usage: cargo xtask generate [<name>... | --all] [--check]
 
-  generate <name>    regenerate mechanisms/src/generated/<name>.rs from mechanisms/<name>.toml
+  generate <name>    regenerate the crate mechanisms/generated/<name>/ from mechanisms/<name>.toml
+                     (or mechanisms/benchmarks/<name>.toml), and the registries
   generate --all     regenerate every mechanism (the default when no name is given)
   generate --check   fail if any generated file differs from what generation produces";
 
@@ -57,41 +58,27 @@ fn generate(args: &[String]) -> Result<(), String> {
         names = every.clone();
     }
     let start = Instant::now();
-    let mut expected = Vec::new();
-    let mut failures = Vec::new();
-    for n in &names {
-        match files::generated_module(&root, n) {
-            Ok((path, g)) => {
-                eprintln!("{}", g.report);
-                expected.push((n.clone(), path, g.code, g.formulations));
-            }
-            Err(e) => failures.push(format!("{n}: {e}")),
-        }
+    let plan = files::plan(&root, &names).map_err(|e| e.to_string())?;
+    for (_, g) in &plan.reports {
+        eprintln!("{}", g.report);
     }
-    // The registry lists what generates now, plus mechanisms not regenerated in this run
-    // whose module already exists: a broken file never enters the module index.
-    let regenerated: Vec<_> = expected
+    let failures: Vec<String> = plan
+        .failures
         .iter()
-        .map(|(n, _, _, forms)| (n.clone(), forms.clone()))
+        .map(|(n, e)| format!("{n}: {e}"))
         .collect();
-    let index = files::index_entries(&root, &names, &regenerated).map_err(|e| e.to_string())?;
-    for n in &index.left_out {
-        eprintln!("note: `{n}` is not valid and stays out of the module index");
-    }
-    let (index_path, index_code) = files::generated_index(&index.entries);
     let elapsed = start.elapsed();
 
-    let mut outputs: Vec<(PathBuf, String)> =
-        expected.into_iter().map(|(_, p, c, _)| (p, c)).collect();
-    outputs.push((index_path, index_code));
+    // A failed generation writes nothing at all: the registries would still list its old
+    // crate, but a half-written run is harder to reason about than none.
     let mut stale = Vec::new();
-    for (rel, contents) in &outputs {
+    for (rel, contents) in &plan.outputs {
         let path = root.join(rel);
         let current = std::fs::read_to_string(&path).ok();
         if current.as_deref() == Some(contents.as_str()) {
             continue;
         }
-        if check {
+        if check || !failures.is_empty() {
             stale.push(rel.display().to_string());
         } else {
             if let Some(dir) = path.parent() {
@@ -103,9 +90,18 @@ fn generate(args: &[String]) -> Result<(), String> {
             eprintln!("wrote {}", rel.display());
         }
     }
+    for dir in &plan.orphans {
+        if check || !failures.is_empty() {
+            stale.push(format!("{} (its mechanism file is gone)", dir.display()));
+        } else {
+            std::fs::remove_dir_all(root.join(dir))
+                .map_err(|e| format!("cannot remove {}: {e}", dir.display()))?;
+            eprintln!("removed {} (its mechanism file is gone)", dir.display());
+        }
+    }
     if !failures.is_empty() {
         return Err(format!(
-            "{}\n\n{} mechanism file(s) failed; nothing was written for them",
+            "{}\n\n{} mechanism file(s) failed; nothing was written, every generated file is as it was",
             failures.join("\n\n"),
             failures.len()
         ));

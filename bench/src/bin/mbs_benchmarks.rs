@@ -1,0 +1,179 @@
+//! The IFToMM multibody benchmark problems A01–A05, each run to its published end time:
+//! the published error measure against an independent reference, the published tolerance,
+//! pass/fail, our CPU time and the CPU times other codes published.
+//!
+//! `cargo run --release --bin mbs_benchmarks [-- --short] [-- --only A01]` writes
+//! `bench-results/mbs_benchmarks.{csv,md}` and prints the Markdown; it exits with 1 when a
+//! problem misses. `--short` runs the shortened lengths the CI test uses
+//! (`mbs_benchmarks_short.*`). `--steps 1e-3,5e-4` runs each problem at each of those steps
+//! (its own α, or `--alpha A`) instead of its own step: error against CPU time,
+//! `mbs_benchmarks_sweep[_<only>].*`, where a miss is a result, not a failure. Not run in CI.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use symbody_bench::iftomm::{problems, Outcome, Settings, Spec};
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let value = |flag: &str| {
+        args.iter()
+            .position(|a| a == flag)
+            .map(|i| args.get(i + 1).cloned().unwrap_or_default())
+    };
+    let short = args.iter().any(|a| a == "--short");
+    let only = value("--only");
+    let steps: Option<Vec<f64>> = match value("--steps").map(|list| {
+        list.split(',')
+            .map(|v| v.trim().parse::<f64>().ok().filter(|h| *h > 0.0))
+            .collect::<Option<Vec<f64>>>()
+    }) {
+        None => None,
+        Some(Some(steps)) if !steps.is_empty() => Some(steps),
+        Some(_) => {
+            eprintln!("error: --steps takes positive step sizes separated by commas, e.g. --steps 1e-3,5e-4");
+            std::process::exit(2);
+        }
+    };
+    let alpha: Option<f64> = match value("--alpha").map(|a| a.parse::<f64>()) {
+        None => None,
+        Some(Ok(a)) if (-1.0 / 3.0..=0.0).contains(&a) => Some(a),
+        Some(_) => {
+            eprintln!("error: --alpha takes HHT's α in [-1/3, 0], e.g. --alpha -0.05");
+            std::process::exit(2);
+        }
+    };
+    let mut csv = String::from(
+        "problem,mechanism,t_end_s,measure,error,tolerance,passed,cpu_s,steps,newton_iterations,step_s,alpha\n",
+    );
+    let mut md = String::from(
+        "| problem | t_end | error (measure in the notes) | tolerance | result | CPU (symbody) | steps | published CPU (other codes) |\n|---|---|---|---|---|---|---|---|\n",
+    );
+    let mut notes = String::new();
+    let mut failed = false;
+    for p in problems() {
+        let spec = &p.spec;
+        if only.as_deref().is_some_and(|o| !spec.id.starts_with(o)) {
+            continue;
+        }
+        let t_end = if short { spec.short_t_end } else { spec.t_end };
+        let own = Settings {
+            alpha: alpha.unwrap_or(p.settings.alpha),
+            ..p.settings
+        };
+        let runs: Vec<Settings> = match &steps {
+            Some(steps) => steps.iter().map(|&step| Settings { step, ..own }).collect(),
+            None => vec![own],
+        };
+        for settings in runs {
+            eprintln!(
+                "{}: {} to t = {t_end} s, h = {:e} …",
+                spec.id, spec.title, settings.step
+            );
+            match (p.run)(t_end, settings) {
+                Ok(o) => {
+                    failed |= !o.passed(spec);
+                    row(&mut csv, &mut md, spec, &o);
+                }
+                Err(e) => {
+                    failed = true;
+                    let _ = writeln!(
+                        md,
+                        "| {} | {t_end} s | not run | {:.0e} | **failed**: {e} | | (h = {:e}, α = {}) | {} |",
+                        spec.id,
+                        spec.tolerance,
+                        settings.step,
+                        settings.alpha,
+                        published(spec)
+                    );
+                    let _ = writeln!(
+                        csv,
+                        "{},{},{t_end},,,{},false,,,,{:e},{}",
+                        spec.id, spec.mechanism, spec.tolerance, settings.step, settings.alpha
+                    );
+                }
+            }
+        }
+        let _ = writeln!(
+            notes,
+            "- **{}** {}: {}; reference: {}. Source: {}.{}",
+            spec.id,
+            spec.title,
+            spec.measure,
+            spec.reference,
+            spec.source,
+            if spec.caveat.is_empty() {
+                String::new()
+            } else {
+                format!(" Not as published: {}.", spec.caveat)
+            }
+        );
+    }
+    md.push('\n');
+    md.push_str(&notes);
+    let dir = PathBuf::from("bench-results");
+    // A sweep of one problem (`--only A05`) gets its own files, so sweeps do not overwrite
+    // each other.
+    let only_tag: String = match (&steps, &only) {
+        (Some(_), Some(o)) => format!("_{}", o.replace(|c: char| !c.is_alphanumeric(), "")),
+        _ => String::new(),
+    };
+    let suffix = format!(
+        "{}{}{only_tag}",
+        if short { "_short" } else { "" },
+        if steps.is_some() { "_sweep" } else { "" }
+    );
+    let written = std::fs::create_dir_all(&dir)
+        .and_then(|_| std::fs::write(dir.join(format!("mbs_benchmarks{suffix}.csv")), &csv))
+        .and_then(|_| std::fs::write(dir.join(format!("mbs_benchmarks{suffix}.md")), &md));
+    if let Err(e) = written {
+        eprintln!("error: cannot write bench-results/: {e}");
+        std::process::exit(2);
+    }
+    print!("{md}");
+    if failed && steps.is_none() && alpha.is_none() {
+        std::process::exit(1);
+    }
+}
+
+fn row(csv: &mut String, md: &mut String, spec: &Spec, o: &Outcome) {
+    let passed = o.passed(spec);
+    let _ = writeln!(
+        csv,
+        "{},{},{},\"{}\",{:e},{:e},{},{:.6},{},{},{:e},{}",
+        spec.id,
+        spec.mechanism,
+        o.t_end,
+        spec.measure,
+        o.error,
+        spec.tolerance,
+        passed,
+        o.cpu.as_secs_f64(),
+        o.stats.steps,
+        o.stats.newton_iterations,
+        o.step,
+        o.alpha
+    );
+    let _ = writeln!(
+        md,
+        "| {} | {} s | {:.2e} | {:.0e} | {} | {:.3} s | {} (h = {:e}, α = {}) | {} |",
+        spec.id,
+        o.t_end,
+        o.error,
+        spec.tolerance,
+        if passed { "pass" } else { "**fail**" },
+        o.cpu.as_secs_f64(),
+        o.stats.steps,
+        o.step,
+        o.alpha,
+        published(spec)
+    );
+}
+
+fn published(spec: &Spec) -> String {
+    spec.published
+        .iter()
+        .map(|p| format!("{}: {} s ({})", p.code, p.cpu_seconds, p.machine))
+        .collect::<Vec<_>>()
+        .join("; ")
+}

@@ -1,0 +1,740 @@
+//! The `symbody` command-line tool as a library: `symbody list`, `symbody simulate [<mechanism>]`,
+//! `symbody run <scene>` and
+//! `symbody fk <mechanism>`: every generated mechanism by name from the registry; without a
+//! name, the paper's Stewart platform scenario and its figures; scene files solved by the
+//! cheapest exact path; forward kinematics of the six-leg platforms. [`main`] takes the
+//! registry of mechanisms the program links (the `symbody` executable passes the shipped
+//! ones), and the summaries, CSVs, figures ([`plot`]) and the HTML viewer ([`viewer`]) are
+//! written here.
+
+pub mod plot;
+pub mod viewer;
+
+use clap::{Parser, Subcommand, ValueEnum};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use symbody::scenario::{self, largest_rotation, Options, Reactions};
+use symbody::{fk, generic, scene};
+use symbody_runtime::fk::Pose;
+use symbody_runtime::{body_pose, Formulation, Registry};
+
+/// `println!` that ignores a closed standard output (e.g. piped into `head`) instead of
+/// panicking: the run still writes its files.
+macro_rules! say {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($arg)*);
+    }};
+}
+
+#[derive(Parser)]
+#[command(
+    name = "symbody",
+    version,
+    about = "Generated multibody equations, simulated"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum FormulationArg {
+    /// Diagonal mass matrix against Euler-angle accelerations, as the paper.
+    Paper,
+    /// Mass matrix and forces from the exact kinetic energy.
+    Exact,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum ReactionsArg {
+    /// λ from [M Φqᵀ; Φq 0][q̈; λ] = [Q; γ] at each output state.
+    Recovered,
+    /// The HHT integrator's λ.
+    Integrator,
+}
+
+/// Where a run writes, and what besides the CSVs.
+#[derive(clap::Args)]
+struct Files {
+    /// Output folder.
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// Skip the PNG figures.
+    #[arg(long)]
+    no_plots: bool,
+    /// Also write <out>/view.html: a self-contained 3D animation of the run.
+    #[arg(long)]
+    html: bool,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// List every generated mechanism: sizes, redundant rows, degrees of freedom.
+    List,
+    /// Simulate a generated mechanism; without a name, the paper's 6-6 Stewart platform
+    /// scenario (one period, 2π s) with the paper's figures.
+    Simulate {
+        /// A mechanism from `symbody list` (default: the paper's scenario).
+        mechanism: Option<String>,
+        /// Dynamics formulation (default: the mechanism's first; the paper scenario: exact).
+        #[arg(long, value_enum)]
+        formulation: Option<FormulationArg>,
+        /// End time (s) (default: the mechanism file's `t_end`; the paper scenario: 2π).
+        #[arg(long, allow_hyphen_values = true)]
+        t_end: Option<f64>,
+        /// HHT step (s).
+        #[arg(long, default_value_t = Options::default().step, allow_hyphen_values = true)]
+        step: f64,
+        /// HHT α in [−1/3, 0] (0: trapezoidal, no numerical damping) (default: 0 for a named
+        /// mechanism, with velocity projection; −0.05 for the paper scenario).
+        #[arg(long, allow_hyphen_values = true)]
+        alpha: Option<f64>,
+        /// Spacing of the rows in the CSVs (s).
+        #[arg(long, default_value_t = Options::default().output_step, allow_hyphen_values = true)]
+        output_step: f64,
+        /// Let the integrator pass positions where constraint rows are dependent for an
+        /// instant (a linkage lying flat, as the IFToMM A02 N-four-bar): a step landing on one
+        /// drops the rows whose pivot vanished, and every row must still hold (named
+        /// mechanisms; default: stop with the dependent rows named).
+        #[arg(long)]
+        cross_singular_positions: bool,
+        /// Paper scenario only: source of the joint and actuator forces, the saddle-point
+        /// solve at each output state (`recovered`) or the integrator's own multipliers
+        /// (`integrator`).
+        #[arg(long, value_enum)]
+        reactions: Option<ReactionsArg>,
+        #[command(flatten)]
+        files: Files,
+    },
+    /// Run a scene file (scenes/<name>.toml): the mechanism, time span and outputs it names,
+    /// solved by the cheapest exact path — kinematic (no integration) when the drivers fix
+    /// everything the scene asks for, HHT-α integration otherwise — with the same summary and
+    /// files as `simulate`.
+    Run {
+        /// The scene file, e.g. scenes/paper.toml.
+        scene: PathBuf,
+        #[command(flatten)]
+        files: Files,
+    },
+    /// Forward kinematics of a platform held by six legs of driven length: the pose reached
+    /// by continuation from a known pose, with its leg-length residual and the condition
+    /// number of the platform's Jacobian; with --all every assembly mode.
+    Fk {
+        /// A mechanism from `symbody list` whose FK column says yes.
+        mechanism: String,
+        /// Six leg lengths l1,…,l6 (m), joint centre to joint centre (default: what the
+        /// drivers prescribe at --at).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        lengths: Option<Vec<f64>>,
+        /// Pose to continue from: x,y,z (m) of the platform frame and its Euler angles θ,β,γ
+        /// (rad) of Rz(γ)·Ry(β)·Rx(θ) (default: the mechanism file's initial pose).
+        #[arg(long, value_delimiter = ',', allow_hyphen_values = true)]
+        from: Option<Vec<f64>>,
+        /// Time at which the drivers give the default lengths (s).
+        #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+        at: f64,
+        /// Every assembly mode (all complex solutions by homotopy continuation; the real
+        /// ones written to <out>/assembly_modes.csv, the tracked one marked `current`).
+        #[arg(long)]
+        all: bool,
+        /// Follow the drivers' motion over the file's t_end and find every assembly mode at
+        /// this many equally spaced times: <out>/assembly_modes_over_time.{csv,png}.
+        #[arg(long)]
+        over_time: Option<usize>,
+        /// Output folder.
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Skip the PNG figure.
+        #[arg(long)]
+        no_plots: bool,
+    },
+}
+
+/// The command-line tool over the mechanisms of `registry`: parses the process's arguments,
+/// runs the command, prints its summary or error, and gives the exit code.
+pub fn main(registry: &Registry) -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::List => {
+            list(registry);
+            Ok(())
+        }
+        Command::Simulate {
+            mechanism,
+            formulation,
+            t_end,
+            step,
+            alpha,
+            output_step,
+            cross_singular_positions,
+            reactions,
+            files,
+        } => match mechanism {
+            None if cross_singular_positions => Err("--cross-singular-positions applies to named mechanisms; the paper scenario has no singular position to cross".to_string()),
+            Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
+            Some(name) => {
+                let defaults = generic::Options::default();
+                let opts = generic::Options {
+                    formulation: formulation.map(FormulationArg::formulation),
+                    t_end,
+                    step,
+                    alpha: alpha.unwrap_or(defaults.alpha),
+                    output_step,
+                    cross_singular: cross_singular_positions,
+                };
+                simulate_named(registry, &name, &opts, &files.out, !files.no_plots, files.html)
+            }
+            None => {
+                let defaults = Options::default();
+                let opts = Options {
+                    formulation: formulation.map_or(defaults.formulation, FormulationArg::formulation),
+                    t_end: t_end.unwrap_or(defaults.t_end),
+                    step,
+                    alpha: alpha.unwrap_or(defaults.alpha),
+                    output_step,
+                    reactions: match reactions {
+                        Some(ReactionsArg::Integrator) => Reactions::Integrator,
+                        Some(ReactionsArg::Recovered) | None => Reactions::Recovered,
+                    },
+                };
+                simulate(registry, &opts, &files.out, !files.no_plots, files.html)
+            }
+        },
+        Command::Run { scene, files } => {
+            run_scene(registry, &scene, &files.out, !files.no_plots, files.html)
+        }
+        Command::Fk {
+            mechanism,
+            lengths,
+            from,
+            at,
+            all,
+            over_time,
+            out,
+            no_plots,
+        } => {
+            six("--lengths", lengths.as_deref())
+                .and_then(|l| {
+                    if let Some((i, x)) = l.iter().flatten().enumerate().find(|(_, x)| x.is_nan() || **x <= 0.0) {
+                        return Err(format!(
+                            "--lengths: leg {} is {x} m long; a leg's length runs from joint centre to joint centre and must be positive",
+                            i + 1
+                        ));
+                    }
+                    let from = six("--from", from.as_deref())?;
+                    Ok(fk::Request {
+                        lengths: l,
+                        from: from.map(|p| Pose::from_euler([p[0], p[1], p[2]], [p[3], p[4], p[5]])),
+                        at,
+                    })
+                })
+                .and_then(|req| forward_kinematics(registry, &mechanism, &req, all, over_time, &out, !no_plots))
+        }
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+impl FormulationArg {
+    fn formulation(self) -> Formulation {
+        match self {
+            FormulationArg::Paper => Formulation::Paper,
+            FormulationArg::Exact => Formulation::Exact,
+        }
+    }
+}
+
+fn list(registry: &Registry) {
+    say!(
+        "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7} {:>3}",
+        "mechanism",
+        "formulations",
+        "bodies",
+        "coords",
+        "rows",
+        "redundant",
+        "DOF",
+        "t_end",
+        "FK"
+    );
+    for e in registry.iter() {
+        let info = e.default_mechanism().info();
+        let forms: Vec<&str> = e.formulations.iter().map(|(f, _)| f.name()).collect();
+        say!(
+            "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7.3} {:>3}",
+            e.name,
+            forms.join(","),
+            info.bodies.len(),
+            info.n_coords,
+            info.n_constraints,
+            info.redundant_rows.len(),
+            info.dof(),
+            e.t_end,
+            if info.platform.is_some() { "yes" } else { "-" }
+        );
+    }
+}
+
+fn simulate_named(
+    registry: &Registry,
+    name: &str,
+    opts: &generic::Options,
+    out: &std::path::Path,
+    plots: bool,
+    html: bool,
+) -> Result<(), String> {
+    let entry = generic::find(registry, name).map_err(|e| e.to_string())?;
+    let rec = generic::run(entry, opts).map_err(|e| format!("{name}: {e}"))?;
+    // Every output time is landed on, so no step is longer than the output spacing.
+    let method = format!(
+        "step {} s, alpha {}, velocities projected",
+        opts.step.min(opts.output_step),
+        opts.alpha
+    );
+    report_named(&rec, &method, out, plots, html)
+}
+
+/// The summary and files of a generic run (`simulate <name>` or a scene with tables);
+/// `method` says how it was solved.
+fn report_named(
+    rec: &generic::Recording,
+    method: &str,
+    out: &std::path::Path,
+    plots: bool,
+    html: bool,
+) -> Result<(), String> {
+    let info = rec.info;
+    let span = rec.t.last().copied().unwrap_or(0.0);
+    say!("{} ({} formulation)", info.name, info.formulation.name());
+    say!(
+        "  size             {} bod{}, {} coordinates, {} rows, {} DOF",
+        info.bodies.len(),
+        if info.bodies.len() == 1 { "y" } else { "ies" },
+        info.n_coords,
+        info.n_constraints,
+        info.dof()
+    );
+    say!("  time span        0 .. {span:.6} s, {method}");
+    print_work(&rec.stats, rec.kinematic, span, rec.wall);
+    let norms = if info
+        .bodies
+        .iter()
+        .any(|b| b.rotation == symbody_runtime::Rotation::Quaternion)
+    {
+        format!("; quaternion norms |e'e - 1| {:.2e}", rec.max_norm_error)
+    } else {
+        String::new()
+    };
+    say!(
+        "  max |Phi|        {:.2e} (velocity residual {:.2e}{norms})",
+        rec.max_phi,
+        rec.max_velocity_residual
+    );
+    let (drift, scale) = rec.energy_balance();
+    if scale > 0.0 {
+        say!(
+            "  energy balance   max |dT + dV - W| = {drift:.3e} J on a scale of {scale:.4} J ({:.1e})",
+            drift / scale
+        );
+    } else {
+        say!(
+            "  energy balance   no energy anywhere in the run (max |dT + dV - W| = {drift:.1e} J)"
+        );
+    }
+    if !info.redundant_rows.is_empty() {
+        // A long list (the 40-bar chain has 120) would bury the summary: the first few, then
+        // how many more (`symbody list` counts them; the generated module lists them all).
+        const SHOWN: usize = 9;
+        let rows = &info.redundant_rows;
+        let mut names: Vec<&str> = rows
+            .iter()
+            .take(SHOWN)
+            .map(|&r| info.row_names[r as usize])
+            .collect();
+        let more = format!("and {} more", rows.len().saturating_sub(SHOWN));
+        if rows.len() > SHOWN {
+            names.push(&more);
+        }
+        say!(
+            "  redundant rows   {} (λ = 0: the reactions of their joints are one valid choice, not unique)",
+            names.join(", ")
+        );
+    }
+    if let Some(w) = rec.euler_warning {
+        say!(
+            "  warning: body `{}` reached beta = {:.3} rad at t = {:.3} s (Euler singularity at ±pi/2; use rotation = \"quaternion\")",
+            w.name, w.beta, w.time
+        );
+    }
+    let files = plot::write_outputs(rec, out, plots)?;
+    let names: Vec<&str> = files
+        .iter()
+        .filter_map(|f| f.file_name()?.to_str())
+        .collect();
+    say!("  wrote {}/: {}", out.display(), names.join(", "));
+    if html {
+        let forces: Vec<viewer::Force<'_>> = rec
+            .drivers
+            .iter()
+            .enumerate()
+            .map(|(i, &j)| viewer::Force {
+                name: info.joints[j].name,
+                unit: info.joints[j].effort_unit,
+                values: rec.efforts.iter().map(|e| e[i]).collect(),
+            })
+            .collect();
+        let path = out.join("view.html");
+        let title = format!("{} ({} formulation)", info.name, info.formulation.name());
+        viewer::write(&path, &title, info, &rec.t, &rec.poses, &forces)?;
+        say!("  wrote {}", path.display());
+    }
+    Ok(())
+}
+
+/// The solver statistics and wall time lines of a run summary: the integrator's, or the
+/// kinematic path's when the run was not integrated.
+fn print_work(
+    s: &symbody_runtime::Stats,
+    kinematic: Option<symbody_runtime::PathStats>,
+    span: f64,
+    wall: std::time::Duration,
+) {
+    match kinematic {
+        Some(k) => say!(
+            "  solves           {} output times; {} simplified-Newton corrections, {} Newton iterations, {} factorizations",
+            k.outputs,
+            k.chord_iterations,
+            k.newton_iterations,
+            k.factorizations
+        ),
+        None => print_steps(s),
+    }
+    say!(
+        "  wall time        {:.1} ms ({} real time)",
+        wall.as_secs_f64() * 1e3,
+        speed(span / wall.as_secs_f64())
+    );
+}
+
+fn print_steps(s: &symbody_runtime::Stats) {
+    say!(
+        "  steps            {} accepted, {} rejected; {} Newton iterations ({:.2}/step), {} factorizations",
+        s.steps,
+        s.rejected_steps,
+        s.newton_iterations,
+        s.newton_iterations as f64 / s.steps.max(1) as f64,
+        s.factorizations
+    );
+}
+
+/// "123x faster than" or "0.06x", readable at any ratio.
+fn speed(ratio: f64) -> String {
+    if ratio >= 10.0 {
+        format!("{ratio:.0}x faster than")
+    } else {
+        format!("{ratio:.2}x")
+    }
+}
+
+fn simulate(
+    registry: &Registry,
+    opts: &Options,
+    out: &std::path::Path,
+    plots: bool,
+    html: bool,
+) -> Result<(), String> {
+    let run = scenario::simulate(registry, opts).map_err(|e| match e {
+        scenario::ScenarioError::Runtime(symbody_runtime::Error::EulerSingularity {
+            time, ..
+        }) => {
+            format!(
+                "{e}\nhint: the exact formulation's mass matrix is singular at β = ±90° (Euler \
+                 rates); nothing was written. Simulate up to before t = {time:.3} s with --t-end, \
+                 or give that body quaternion coordinates (rotation = \"quaternion\")"
+            )
+        }
+        other => other.to_string(),
+    })?;
+    let method = format!("step {} s, alpha {}", opts.step, opts.alpha);
+    report_paper(registry, &run, opts.formulation, &method, out, plots, html)
+}
+
+/// The summary and files of the paper scenario (`simulate` or a scene with the paper's
+/// files); `method` says how it was solved.
+fn report_paper(
+    registry: &Registry,
+    run: &scenario::Run,
+    formulation: Formulation,
+    method: &str,
+    out: &std::path::Path,
+    plots: bool,
+    html: bool,
+) -> Result<(), String> {
+    let (xlo, xhi) = run.platform_range(0);
+    let (axis, rot) = largest_rotation(run);
+    let f0 = run.upper[0][0];
+    say!(
+        "Stewart 6-6, paper scenario ({} formulation)",
+        formulation.name()
+    );
+    say!(
+        "  time span        0 .. {:.6} s, {method}",
+        run.t.last().unwrap_or(&0.0)
+    );
+    print_work(
+        &run.stats,
+        run.kinematic,
+        run.t.last().copied().unwrap_or(0.0),
+        run.wall,
+    );
+    say!(
+        "  max |Phi|        {:.2e} (velocity residual {:.2e})",
+        run.max_phi,
+        run.max_velocity_residual
+    );
+    say!("  platform X range [{xlo:.5}, {xhi:.5}] m");
+    say!("  largest rotation {rot:.4} rad, {axis}");
+    say!(
+        "  F on platform at leg 1 upper joint, t=0: ({:.5}, {:.5}, {:.5}) N",
+        f0[0],
+        f0[1],
+        f0[2]
+    );
+    if let Some((t, body, beta)) = run.euler_warning {
+        say!("  warning: body `{body}` reached beta = {beta:.3} rad at t = {t:.3} s (Euler singularity at ±pi/2)");
+        if formulation == Formulation::Paper {
+            say!("           the constant mass matrix keeps the run regular; the leg's spin is the paper model's flaw (README, Formulations)");
+        }
+    }
+    symbody::output::write_csvs(run, out)
+        .map_err(|e| format!("cannot write CSVs to {}: {e}", out.display()))?;
+    say!(
+        "  wrote {}/platform.csv, joint_forces.csv, actuators.csv",
+        out.display()
+    );
+    if plots {
+        let files = plot::paper_figures(run, out)?;
+        say!(
+            "  wrote {} figures: {}",
+            files.len(),
+            files
+                .iter()
+                .filter_map(|f| f.file_name()?.to_str())
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    if html {
+        let info = scenario::mechanism_info(registry, formulation).map_err(|e| e.to_string())?;
+        let poses = run
+            .q
+            .iter()
+            .map(|q| {
+                info.bodies
+                    .iter()
+                    .map(|b| body_pose(b, q))
+                    .collect::<Result<Vec<_>, _>>()
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .map_err(|e| e.to_string())?;
+        let forces: Vec<viewer::Force<'_>> = (0..6)
+            .map(|i| viewer::Force {
+                name: ["act1", "act2", "act3", "act4", "act5", "act6"][i],
+                unit: "N",
+                values: run.actuators.iter().map(|a| a[i]).collect(),
+            })
+            .collect();
+        let path = out.join("view.html");
+        let title = format!(
+            "Stewart 6-6, paper scenario ({} formulation)",
+            formulation.name()
+        );
+        viewer::write(&path, &title, info, &run.t, &poses, &forces)?;
+        say!("  wrote {}", path.display());
+    }
+    Ok(())
+}
+
+/// `symbody run <scene>`: load and check the scene, choose the path, run, report.
+fn run_scene(
+    registry: &Registry,
+    path: &std::path::Path,
+    out: &std::path::Path,
+    plots: bool,
+    html: bool,
+) -> Result<(), String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read scene file {}: {e}", path.display()))?;
+    // The diagnostics carry their own `error:` prefix; `main` adds the first one.
+    let scene = scene::load(registry, &path.display().to_string(), &text).map_err(|e| {
+        let shown = e.to_string();
+        shown.strip_prefix("error: ").unwrap_or(&shown).to_string()
+    })?;
+    let entry = generic::find(registry, scene.mechanism).map_err(|e| e.to_string())?;
+    let (choice, outcome) =
+        scene::run(&scene, entry).map_err(|e| format!("{}: {e}", path.display()))?;
+    let info = generic::mechanism(entry, Some(scene.formulation))
+        .map_err(|e| e.to_string())?
+        .info();
+    say!("scene {}", path.display());
+    say!("  path             {}", choice.describe(info));
+    let method = match choice {
+        scene::PathChoice::Kinematic { .. } => {
+            format!("outputs every {} s, no integration", scene.output_step)
+        }
+        scene::PathChoice::Integrate { .. } => format!(
+            "step {} s, alpha {}",
+            scene.step.min(scene.output_step),
+            scene.alpha
+        ),
+    };
+    match outcome {
+        scene::Outcome::Paper(run) => {
+            report_paper(registry, &run, scene.formulation, &method, out, plots, html)
+        }
+        scene::Outcome::Tables(rec) => report_named(&rec, &method, out, plots, html),
+    }
+}
+
+/// Six comma-separated numbers, or an error naming the option.
+fn six(option: &str, v: Option<&[f64]>) -> Result<Option<[f64; 6]>, String> {
+    match v {
+        None => Ok(None),
+        Some(v) if v.len() == 6 && v.iter().all(|x| x.is_finite()) => {
+            Ok(Some(std::array::from_fn(|i| v[i])))
+        }
+        Some(v) => Err(format!(
+            "{option} needs six finite comma-separated numbers, got {}: {v:?}",
+            v.len()
+        )),
+    }
+}
+
+fn forward_kinematics(
+    registry: &Registry,
+    name: &str,
+    req: &fk::Request,
+    all: bool,
+    over_time: Option<usize>,
+    out: &std::path::Path,
+    plots: bool,
+) -> Result<(), String> {
+    let entry = generic::find(registry, name).map_err(|e| e.to_string())?;
+    let p = fk::platform(entry).map_err(|e| e.to_string())?;
+    let names = p.leg_names();
+    say!(
+        "{name}: platform `{}` on legs {}",
+        p.body().name,
+        names.join(", ")
+    );
+    let answer = fk::solve(&p, req).map_err(|e| {
+        format!(
+            "{name}: continuing the pose along the straight leg-length path from the start \
+             pose (t = 0) to the requested lengths (t = 1): {e}"
+        )
+    });
+    match &answer {
+        Ok(a) => {
+            let s = a.tracked.solution;
+            let [x, y, z] = [s.pose.position.x, s.pose.position.y, s.pose.position.z];
+            let [th, be, ga] = s.pose.euler_angles();
+            say!("  lengths          {}", join(&a.lengths, 9));
+            say!("  position         {x:.12} {y:.12} {z:.12} m");
+            say!("  euler angles     {th:.12} {be:.12} {ga:.12} rad (theta, beta, gamma)");
+            for r in 0..3 {
+                say!(
+                    "  rotation row {}   {}",
+                    r + 1,
+                    join(&[0, 1, 2].map(|c| s.pose.rotation[(r, c)]), 12)
+                );
+            }
+            say!(
+                "  residual         {:.2e} m (largest leg-length error)",
+                s.residual
+            );
+            say!(
+                "  continuation     {} steps from the start pose; {} Newton iterations in the last",
+                a.tracked.steps,
+                s.iterations
+            );
+            say!(
+                "  condition        {:.4e} (Jacobian, rotation columns scaled by the platform radius {:.4} m); det sign {:+}",
+                s.condition,
+                p.legs().characteristic_length(),
+                s.det_sign
+            );
+            say!("  wall time        {:.3} ms", a.wall.as_secs_f64() * 1e3);
+        }
+        Err(e) if all => say!("  no tracked pose: {e}"),
+        Err(e) => return Err(e.clone()),
+    }
+    if all {
+        let lengths = answer
+            .as_ref()
+            .map(|a| a.lengths)
+            .unwrap_or_else(|_| req.lengths.unwrap_or_else(|| p.lengths_at(req.at)));
+        let current = answer.as_ref().ok().map(|a| a.tracked.solution.pose);
+        let (modes, index, wall) =
+            fk::all_modes(&p, &lengths, current.as_ref()).map_err(|e| e.to_string())?;
+        say!(
+            "  assembly modes   {} real of {} complex (general platform: 40); {} paths in {} attempt{}, {:.1} ms",
+            modes.real.len(),
+            modes.complex,
+            modes.paths,
+            modes.attempts,
+            if modes.attempts == 1 { "" } else { "s" },
+            wall.as_secs_f64() * 1e3
+        );
+        let worst = modes.real.iter().map(|m| m.residual).fold(0.0, f64::max);
+        say!("  worst residual   {worst:.2e} m over the real modes");
+        match index {
+            Some(k) => say!(
+                "  current          mode {} of the CSV (row {})",
+                k + 1,
+                k + 2
+            ),
+            None => say!("  current          none: no tracked pose to compare with"),
+        }
+        fk::write_modes(out, &modes, index)?;
+        say!("  wrote {}/assembly_modes.csv", out.display());
+    }
+    if let Some(n) = over_time {
+        if n == 0 {
+            return Err("--over-time needs at least 1 interval".to_string());
+        }
+        let clock = std::time::Instant::now();
+        let samples = fk::over_time(&p, entry.t_end, n).map_err(|e| format!("{name}: {e}"))?;
+        let lo = samples.iter().map(|s| s.real).min().unwrap_or(0);
+        let hi = samples.iter().map(|s| s.real).max().unwrap_or(0);
+        let near = samples
+            .iter()
+            .map(|s| s.nearest)
+            .fold(f64::INFINITY, f64::min);
+        let cond = samples.iter().map(|s| s.condition).fold(0.0, f64::max);
+        say!(
+            "  over time        0 .. {:.4} s, {} samples: {lo}..{hi} real modes; nearest other mode at least {near:.4} m away; condition at most {cond:.3e}; {:.0} ms",
+            entry.t_end,
+            samples.len(),
+            clock.elapsed().as_secs_f64() * 1e3
+        );
+        let mut files = fk::write_over_time(out, &samples)?;
+        if plots {
+            files.push(plot::modes_over_time(out, &samples)?);
+        }
+        say!("  wrote {}/: {}", out.display(), files.join(", "));
+    }
+    Ok(())
+}
+
+fn join(v: &[f64], digits: usize) -> String {
+    v.iter()
+        .map(|x| format!("{x:.digits$}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}

@@ -1,0 +1,366 @@
+//! PNG plots reproducing the paper's figures 2–6, drawn with plotters and an embedded
+//! DejaVu Sans font (no system font libraries needed).
+
+use symbody::generic::{self, Recording};
+use symbody::fk::Sample;
+use symbody::scenario::Run;
+use plotters::prelude::*;
+use plotters::style::FontStyle;
+use std::path::{Path, PathBuf};
+use std::sync::Once;
+
+static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+static REGISTER: Once = Once::new();
+
+/// Registers the embedded font as `sans-serif`; every drawing function calls it first.
+pub fn register_font() {
+    REGISTER.call_once(|| {
+        // The font is compiled in; failing to parse it is a build defect, reported on use.
+        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, FONT);
+    });
+}
+
+/// One panel: a y-axis label and named series over the common time axis.
+pub struct Panel<'a> {
+    pub y_label: &'a str,
+    pub series: Vec<(&'a str, Vec<f64>)>,
+}
+
+const COLORS: [RGBColor; 3] = [
+    RGBColor(0, 90, 181),
+    RGBColor(220, 50, 32),
+    RGBColor(0, 140, 70),
+];
+
+/// Draws panels stacked vertically, sharing the time axis.
+pub fn draw(path: &Path, title: &str, t: &[f64], panels: &[Panel<'_>]) -> Result<(), String> {
+    register_font();
+    let height = 260 * panels.len() as u32 + 60;
+    let root = BitMapBackend::new(path, (900, height)).into_drawing_area();
+    let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let root = root
+        .titled(title, ("sans-serif", 24))
+        .map_err(|e| err(&e))?;
+    let areas = root.split_evenly((panels.len(), 1));
+    let (t0, t1) = (
+        t.first().copied().unwrap_or(0.0),
+        t.last().copied().unwrap_or(1.0),
+    );
+    for (area, panel) in areas.iter().zip(panels) {
+        let (mut lo, mut hi) = panel
+            .series
+            .iter()
+            .flat_map(|(_, v)| v.iter().copied())
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
+        if !lo.is_finite() || !hi.is_finite() {
+            (lo, hi) = (-1.0, 1.0);
+        }
+        // A series flat to roundoff (a planar mechanism's Z) gets a readable unit-scale
+        // axis instead of one spanning 1e-9 whose tick labels all round to the same value.
+        let scale = 1.0 + hi.abs().max(lo.abs());
+        let pad = if hi - lo <= 1e-9 * scale {
+            0.1 * scale
+        } else {
+            (hi - lo) * 0.08
+        };
+        let mut chart = ChartBuilder::on(area)
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(80)
+            .build_cartesian_2d(t0..t1.max(t0 + 1e-9), (lo - pad)..(hi + pad))
+            .map_err(|e| err(&e))?;
+        chart
+            .configure_mesh()
+            .x_desc("time t (s)")
+            .y_desc(panel.y_label)
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 17))
+            .draw()
+            .map_err(|e| err(&e))?;
+        for (k, (name, values)) in panel.series.iter().enumerate() {
+            let color = COLORS[k % COLORS.len()];
+            chart
+                .draw_series(LineSeries::new(
+                    t.iter().copied().zip(values.iter().copied()),
+                    color.stroke_width(2),
+                ))
+                .map_err(|e| err(&e))?
+                .label(*name)
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                });
+        }
+        if panel.series.len() > 1 {
+            chart
+                .configure_series_labels()
+                .background_style(WHITE.mix(0.85))
+                .border_style(BLACK)
+                .label_font(("sans-serif", 15))
+                .draw()
+                .map_err(|e| err(&e))?;
+        }
+    }
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
+}
+
+/// Writes the paper's figures 2–6 into `dir`; returns the files written.
+pub fn paper_figures(run: &Run, dir: &Path) -> Result<Vec<PathBuf>, String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    let col = |k: usize| run.platform.iter().map(|p| p[k]).collect::<Vec<f64>>();
+    let force = |c: usize| run.upper.iter().map(|f| f[0][c]).collect::<Vec<f64>>();
+    let mut files = Vec::new();
+    let mut out = |name: &str, title: &str, panels: Vec<Panel<'_>>| -> Result<(), String> {
+        let p = dir.join(name);
+        draw(&p, title, &run.t, &panels)?;
+        files.push(p);
+        Ok(())
+    };
+    out(
+        "fig2_platform_position.png",
+        "Fig. 2: platform centre of mass position",
+        vec![
+            Panel {
+                y_label: "X (m)",
+                series: vec![("X", col(0))],
+            },
+            Panel {
+                y_label: "Y (m)",
+                series: vec![("Y", col(1))],
+            },
+            Panel {
+                y_label: "Z (m)",
+                series: vec![("Z", col(2))],
+            },
+        ],
+    )?;
+    out(
+        "fig3_platform_orientation.png",
+        "Fig. 3: platform orientation (Rz·Ry·Rx Euler angles)",
+        vec![Panel {
+            y_label: "angle (rad)",
+            series: vec![
+                ("θ about X", col(3)),
+                ("β about Y", col(4)),
+                ("γ about Z", col(5)),
+            ],
+        }],
+    )?;
+    for (k, axis) in ["X", "Y", "Z"].iter().enumerate() {
+        out(
+            &format!("fig{}_upper1_force_{}.png", 4 + k, axis.to_lowercase()),
+            &format!(
+                "Fig. {}: {axis} reaction force on the platform at leg 1's upper joint",
+                4 + k
+            ),
+            vec![Panel {
+                y_label: &format!("F{} (N)", axis.to_lowercase()),
+                series: vec![(axis, force(k))],
+            }],
+        )?;
+    }
+    Ok(files)
+}
+
+/// One line of a log-log chart: a name and its `(x, y)` points (non-positive points are
+/// dropped, a log axis cannot show them).
+pub struct LogSeries {
+    pub name: String,
+    pub points: Vec<(f64, f64)>,
+    /// Drawn with a thin line and triangle markers, to tell a second family of lines apart
+    /// when the palette repeats.
+    pub secondary: bool,
+}
+
+/// Draws named lines (with point markers) on log-log axes, e.g. a work-precision diagram.
+pub fn draw_log_log(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    series: &[LogSeries],
+) -> Result<(), String> {
+    register_font();
+    let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
+    let usable = |&(x, y): &(f64, f64)| x > 0.0 && y > 0.0 && x.is_finite() && y.is_finite();
+    let pts = || {
+        series
+            .iter()
+            .flat_map(|s| s.points.iter().copied().filter(usable))
+    };
+    let range = |f: fn((f64, f64)) -> f64| {
+        let (lo, hi) = pts()
+            .map(f)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
+        if lo.is_finite() {
+            // Half a decade of margin so end points and markers stay inside the frame.
+            (lo / 2.0, hi * 2.0)
+        } else {
+            (1.0, 10.0)
+        }
+    };
+    let ((x0, x1), (y0, y1)) = (range(|p| p.0), range(|p| p.1));
+    // The chart on the left, the legend in its own column so it never hides data.
+    let root = BitMapBackend::new(path, (1240, 640)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let (plot_area, legend_area) = root.split_horizontally(900);
+    let mut chart = ChartBuilder::on(&plot_area)
+        .caption(title, ("sans-serif", 22))
+        .margin(16)
+        .x_label_area_size(48)
+        .y_label_area_size(90)
+        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .y_desc(y_label)
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .label_style(("sans-serif", 15))
+        .axis_desc_style(("sans-serif", 17))
+        .draw()
+        .map_err(|e| err(&e))?;
+    const PALETTE: [RGBColor; 8] = [
+        RGBColor(0, 90, 181),
+        RGBColor(220, 50, 32),
+        RGBColor(0, 140, 70),
+        RGBColor(230, 150, 0),
+        RGBColor(120, 60, 170),
+        RGBColor(90, 90, 90),
+        RGBColor(0, 170, 200),
+        RGBColor(200, 0, 140),
+    ];
+    for (k, s) in series.iter().enumerate() {
+        let color = PALETTE[k % PALETTE.len()];
+        let width = if s.secondary { 1 } else { 2 };
+        let p: Vec<(f64, f64)> = s.points.iter().copied().filter(usable).collect();
+        chart
+            .draw_series(LineSeries::new(
+                p.iter().copied(),
+                color.stroke_width(width),
+            ))
+            .map_err(|e| err(&e))?;
+        let y = 60 + 24 * k as i32;
+        legend_area
+            .draw(&PathElement::new(
+                vec![(10, y), (40, y)],
+                color.stroke_width(width),
+            ))
+            .map_err(|e| err(&e))?;
+        legend_area
+            .draw(&Text::new(s.name.as_str(), (48, y - 8), ("sans-serif", 15)))
+            .map_err(|e| err(&e))?;
+        if s.secondary {
+            chart
+                .draw_series(p.iter().map(|&c| TriangleMarker::new(c, 5, color.filled())))
+                .map_err(|e| err(&e))?;
+        } else {
+            chart
+                .draw_series(p.iter().map(|&c| Circle::new(c, 4, color.filled())))
+                .map_err(|e| err(&e))?;
+        }
+    }
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
+}
+
+/// Writes everything `symbody simulate <name>` writes into `dir`: the CSVs
+/// ([`generic::write_csvs`]) and, with `plots`, the figures ([`write_plots`]). Returns the
+/// files written; the error names the folder or file that could not be written.
+pub fn write_outputs(rec: &Recording, dir: &Path, plots: bool) -> Result<Vec<PathBuf>, String> {
+    let mut files = generic::write_csvs(rec, dir)
+        .map_err(|e| format!("cannot write CSVs to {}: {e}", dir.display()))?;
+    if plots {
+        files.extend(write_plots(rec, dir)?);
+    }
+    Ok(files)
+}
+
+/// Draws `drivers.png` (one panel per driver, if any) and `position_<body>.png` (X, Y, Z
+/// panels of its centre of mass) for every recorded body.
+pub fn write_plots(rec: &Recording, dir: &Path) -> Result<Vec<PathBuf>, String> {
+    let info = rec.info;
+    let mut files = Vec::new();
+    if !rec.drivers.is_empty() {
+        let labels: Vec<String> = rec
+            .drivers
+            .iter()
+            .map(|&j| format!("{} ({})", info.joints[j].name, info.joints[j].effort_unit))
+            .collect();
+        let panels: Vec<Panel> = labels
+            .iter()
+            .enumerate()
+            .map(|(d, label)| Panel {
+                y_label: label,
+                series: vec![("effort", rec.efforts.iter().map(|e| e[d]).collect())],
+            })
+            .collect();
+        let path = dir.join("drivers.png");
+        draw(
+            &path,
+            &format!("{}: driver efforts", info.name),
+            &rec.t,
+            &panels,
+        )?;
+        files.push(path);
+    }
+    for &b in &rec.bodies {
+        let body = &info.bodies[b];
+        // One panel per axis: a coordinate that barely moves keeps its own scale instead
+        // of being flattened by the others' range.
+        let panels: Vec<Panel> = ["X (m)", "Y (m)", "Z (m)"]
+            .into_iter()
+            .enumerate()
+            .map(|(c, label)| Panel {
+                y_label: label,
+                series: vec![(label, rec.poses.iter().map(|p| p[b].0[c]).collect())],
+            })
+            .collect();
+        let path = dir.join(format!("position_{}.png", body.name));
+        draw(
+            &path,
+            &format!("{}: centre of mass of {}", info.name, body.name),
+            &rec.t,
+            &panels,
+        )?;
+        files.push(path);
+    }
+    Ok(files)
+}
+
+
+/// `assembly_modes_over_time.png`: the number of real assembly modes, the distance to the
+/// nearest other mode and the conditions along the driver motion (`fk --over-time`).
+pub fn modes_over_time(dir: &Path, samples: &[Sample]) -> Result<String, String> {
+    let t: Vec<f64> = samples.iter().map(|s| s.t).collect();
+    let col = |f: fn(&Sample) -> f64| samples.iter().map(f).collect::<Vec<f64>>();
+    draw(
+        &dir.join("assembly_modes_over_time.png"),
+        "Assembly modes along the driver motion",
+        &t,
+        &[
+            Panel {
+                y_label: "real modes",
+                series: vec![("real assembly modes", col(|s| s.real as f64))],
+            },
+            Panel {
+                y_label: "distance (m)",
+                series: vec![("to the nearest other mode", col(|s| s.nearest))],
+            },
+            Panel {
+                y_label: "log10 condition",
+                series: vec![
+                    ("current mode", col(|s| s.condition.log10())),
+                    ("nearest mode", col(|s| s.nearest_condition.log10())),
+                ],
+            },
+        ],
+    )?;
+    Ok("assembly_modes_over_time.png".to_string())
+}

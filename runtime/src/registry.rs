@@ -1,0 +1,85 @@
+//! Compiled mechanisms by name: each generated crate exports one [`Entry`], and the crates
+//! that link a set of them (the shipped mechanisms, the benchmark problems) list those
+//! entries in a [`Registry`]. Programs and libraries take a `&Registry` instead of naming
+//! generated crates, so a library built once serves any set of mechanisms, and changing one
+//! mechanism rebuilds only its crate and the programs that link it.
+
+use crate::mechanism::{Formulation, Mechanism};
+use crate::reduction::Reduction;
+
+/// A mechanism in each formulation it was generated in; the first is the default.
+pub type Formulations = &'static [(Formulation, &'static (dyn Mechanism + Sync))];
+
+/// One generated mechanism.
+pub struct Entry {
+    pub name: &'static str,
+    /// Simulation end time suggested by the mechanism file (s).
+    pub t_end: f64,
+    pub formulations: Formulations,
+    /// The model after the substitution pass, where the generator found rows to substitute.
+    pub reduced: Option<Reduced>,
+}
+
+/// A mechanism reduced by substitution, and the way back to its full model.
+pub struct Reduced {
+    /// One per formulation of the full model, in the same order.
+    pub formulations: Formulations,
+    pub reduction: &'static Reduction,
+}
+
+impl Entry {
+    /// The mechanism in formulation `f`, if it was generated.
+    pub fn mechanism(&self, f: Formulation) -> Option<&'static (dyn Mechanism + Sync)> {
+        find_formulation(self.formulations, f)
+    }
+    /// The mechanism in its default (first) formulation.
+    pub fn default_mechanism(&self) -> &'static (dyn Mechanism + Sync) {
+        self.formulations[0].1
+    }
+    /// The reduced mechanism in formulation `f` and its reduction, if both exist.
+    pub fn reduced(
+        &self,
+        f: Formulation,
+    ) -> Option<(&'static (dyn Mechanism + Sync), &'static Reduction)> {
+        let r = self.reduced.as_ref()?;
+        Some((find_formulation(r.formulations, f)?, r.reduction))
+    }
+}
+
+fn find_formulation(
+    list: Formulations,
+    f: Formulation,
+) -> Option<&'static (dyn Mechanism + Sync)> {
+    list.iter().find(|(g, _)| *g == f).map(|(_, m)| *m)
+}
+
+/// A set of compiled mechanisms, in name order.
+#[derive(Clone, Copy)]
+pub struct Registry(pub &'static [&'static Entry]);
+
+impl Registry {
+    /// The entry called `name`.
+    pub fn find(&self, name: &str) -> Option<&'static Entry> {
+        self.0.iter().copied().find(|e| e.name == name)
+    }
+    /// Every entry, in name order.
+    pub fn iter(&self) -> impl Iterator<Item = &'static Entry> + '_ {
+        self.0.iter().copied()
+    }
+    /// Every mechanism's name, in order.
+    pub fn names(&self) -> Vec<&'static str> {
+        self.iter().map(|e| e.name).collect()
+    }
+    pub fn len(&self) -> usize {
+        self.0.len()
+    }
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+}
+
+impl std::fmt::Debug for Registry {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_list().entries(self.names()).finish()
+    }
+}

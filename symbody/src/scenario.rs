@@ -1,0 +1,493 @@
+//! The paper's scenario on the generated Stewart platform: consistent start, HHT-α over the
+//! requested span, and the time series the paper plots (pose, joint reactions, actuators).
+
+use std::time::{Duration, Instant};
+use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
+use symbody_runtime::{
+    actuator_force, joint_force, Entry, Error, Formulation, HhtBuilder, KinematicPath,
+    Kinematics, Mechanism, MechanismInfo, PathStats, Registry, ResidualWatch, Stats,
+};
+
+/// Options of one simulation; `Default` is the paper's scenario over one period.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Options {
+    pub formulation: Formulation,
+    /// End time (s); the motion repeats every 2π s.
+    pub t_end: f64,
+    /// Nominal HHT step (s).
+    pub step: f64,
+    /// HHT α in [−1/3, 0].
+    pub alpha: f64,
+    /// Spacing of recorded outputs (s); the integrator lands exactly on each.
+    pub output_step: f64,
+    /// Where the recorded joint and actuator forces come from.
+    pub reactions: Reactions,
+}
+
+/// Source of the multipliers λ behind the recorded forces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Reactions {
+    /// The integrator's own λ. HHT-α satisfies the α-shifted equilibrium, and λ comes out
+    /// of constraint rows scaled by 1/(βh²), so it carries an O(h) start-up transient and
+    /// roundoff that grows like 1/h² as the step shrinks.
+    Integrator,
+    /// λ recomputed at each output from the saddle-point system
+    /// `[M Φqᵀ; Φq 0][q̈; λ] = [Q; γ]` at the integrator's (q, q̇, t): the multipliers that
+    /// belong to that state exactly, at the cost of one factorization per output.
+    Recovered,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            formulation: Formulation::Exact,
+            t_end: 2.0 * std::f64::consts::PI,
+            step: 1e-3,
+            alpha: -0.05,
+            output_step: 0.01,
+            reactions: Reactions::Recovered,
+        }
+    }
+}
+
+/// Number of legs of the platform.
+pub const LEGS: usize = 6;
+
+/// Where the scenario's quantities live in the generated model, looked up by name.
+#[derive(Debug, Clone, Copy)]
+pub struct Layout {
+    pub platform: usize,
+    pub upper_joints: [usize; LEGS],
+    pub lower_joints: [usize; LEGS],
+    pub lower_bodies: [usize; LEGS],
+    pub drivers: [usize; LEGS],
+}
+
+impl Layout {
+    /// Finds the paper's names (`platform`, `upper_sph1..6`, `lower_sph1..6`, `lower1..6`,
+    /// `act1..6`) in `info`, naming the first one missing.
+    pub fn find(info: &MechanismInfo) -> Result<Layout, String> {
+        let body = |n: &str| {
+            info.body_index(n)
+                .ok_or_else(|| format!("mechanism `{}` has no body `{n}`", info.name))
+        };
+        let joint = |n: &str| {
+            info.joint_index(n)
+                .ok_or_else(|| format!("mechanism `{}` has no joint `{n}`", info.name))
+        };
+        let mut l = Layout {
+            platform: body("platform")?,
+            upper_joints: [0; LEGS],
+            lower_joints: [0; LEGS],
+            lower_bodies: [0; LEGS],
+            drivers: [0; LEGS],
+        };
+        for i in 0..LEGS {
+            l.upper_joints[i] = joint(&format!("upper_sph{}", i + 1))?;
+            l.lower_joints[i] = joint(&format!("lower_sph{}", i + 1))?;
+            l.lower_bodies[i] = body(&format!("lower{}", i + 1))?;
+            l.drivers[i] = joint(&format!("act{}", i + 1))?;
+        }
+        Ok(l)
+    }
+}
+
+/// Recorded outputs of one run, one entry per output time.
+#[derive(Debug, Clone, Default)]
+pub struct Run {
+    pub t: Vec<f64>,
+    /// All coordinates and velocities at each output time.
+    pub q: Vec<Vec<f64>>,
+    pub qd: Vec<Vec<f64>>,
+    /// Platform `[X, Y, Z, θ, β, γ]`.
+    pub platform: Vec<[f64; 6]>,
+    /// Force on the platform at each upper spherical joint (global frame, N).
+    pub upper: Vec<[[f64; 3]; LEGS]>,
+    /// Force on each lower leg (cylinder) at its base spherical joint (global frame, N);
+    /// the force on the base plate is its negative.
+    pub lower: Vec<[[f64; 3]; LEGS]>,
+    /// Actuator forces (N), positive pushing the platform away from the base.
+    pub actuators: Vec<[f64; LEGS]>,
+    /// Kinetic plus potential energy (J).
+    pub energy: Vec<f64>,
+    /// Power of the actuators Σ Fᵢ ċᵢ (W): the only non-conservative input.
+    pub actuator_power: Vec<f64>,
+    /// Largest |Φ|∞ and |Φq q̇ + Φt|∞ seen at the output times.
+    pub max_phi: f64,
+    pub max_velocity_residual: f64,
+    pub stats: Stats,
+    /// The kinematic path's counters when the run was not integrated ([`kinematic`]).
+    pub kinematic: Option<PathStats>,
+    pub wall: Duration,
+    /// First Euler-angle warning (time, body, β), if any body came near β = ±90°.
+    pub euler_warning: Option<(f64, &'static str, f64)>,
+}
+
+/// Why a scenario could not run.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ScenarioError {
+    /// A solver failed (with time and residual).
+    Runtime(Error),
+    /// The mechanism lacks a body or joint the scenario needs.
+    Layout(String),
+    /// An option is out of range.
+    Options(String),
+}
+
+impl std::fmt::Display for ScenarioError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ScenarioError::Runtime(e) => write!(f, "{e}"),
+            ScenarioError::Layout(s) | ScenarioError::Options(s) => write!(f, "{s}"),
+        }
+    }
+}
+
+impl std::error::Error for ScenarioError {}
+
+impl From<Error> for ScenarioError {
+    fn from(e: Error) -> Self {
+        ScenarioError::Runtime(e)
+    }
+}
+
+/// The registered mechanism the paper's scenario runs on.
+pub const MECHANISM: &str = "stewart_6_6";
+
+/// The paper's platform in `registry`.
+pub fn platform_entry(registry: &Registry) -> Result<&'static Entry, ScenarioError> {
+    crate::generic::find(registry, MECHANISM)
+}
+
+/// The generated platform the scenario runs in formulation `f`.
+pub fn platform(
+    registry: &Registry,
+    f: Formulation,
+) -> Result<&'static (dyn Mechanism + Sync), ScenarioError> {
+    crate::generic::mechanism(platform_entry(registry)?, Some(f))
+}
+
+/// The generated platform's sizes and names in formulation `f`.
+pub fn mechanism_info(
+    registry: &Registry,
+    f: Formulation,
+) -> Result<&'static MechanismInfo, ScenarioError> {
+    Ok(platform(registry, f)?.info())
+}
+
+/// Runs the paper's scenario with `opts` on the platform in `registry`.
+pub fn simulate(registry: &Registry, opts: &Options) -> Result<Run, ScenarioError> {
+    simulate_mechanism(platform(registry, opts.formulation)?, opts)
+}
+
+/// Runs any mechanism with the Stewart platform's names (see [`Layout::find`]).
+pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
+    let info = mech.info();
+    let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
+    let n_out = output_count(opts.t_end, opts.output_step)?;
+    let start = Instant::now();
+    let mut it = HhtBuilder::new()
+        .alpha(opts.alpha)
+        .step(opts.step)
+        // Allow step cuts well below a step chosen smaller than the default minimum.
+        .min_step((opts.step * 1e-4).min(1e-7))
+        .build(mech)?;
+    let mut run = Run::default();
+    let mut recorder = Recorder::new(info, layout)?;
+    // The platform's determinant sign is watched at the outputs: a pose that crossed a
+    // parallel singularity between two outputs is on another assembly mode at the next.
+    let modes = ModeWatch::new(
+        &Platform::new(it.mechanism())?,
+        it.q(),
+        SIMULATION_MAX_CONDITION,
+    )?;
+    for k in 0..=n_out {
+        let t_out = (k as f64 * opts.output_step).min(opts.t_end);
+        it.advance_to(t_out)?;
+        modes.check(it.q(), it.t())?;
+        let lambda = match opts.reactions {
+            Reactions::Integrator => Some(it.lambda()),
+            Reactions::Recovered => None,
+        };
+        let state = State {
+            t: it.t(),
+            q: it.q(),
+            qd: it.qd(),
+            lambda,
+            energy: it.energy(),
+        };
+        recorder.record(it.mechanism(), state, &mut run)?;
+    }
+    run.stats = it.stats();
+    run.wall = start.elapsed();
+    run.euler_warning = it.first_euler_warning().map(|w| (w.time, w.name, w.beta));
+    Ok(run)
+}
+
+/// The paper's scenario by the kinematic path (docs/design.md, decision 23): no integration;
+/// at each output time the pose from the drivers, the velocity of least kinetic energy (the
+/// legs' idle spins carry no momentum, see `symbody::scene::choose_path`) and the
+/// accelerations and multipliers of the saddle-point system. `opts.step`, `alpha` and
+/// `reactions` do not apply: the multipliers are the saddle-point ones.
+pub fn kinematic(registry: &Registry, opts: &Options) -> Result<Run, ScenarioError> {
+    kinematic_mechanism(platform(registry, opts.formulation)?, opts)
+}
+
+/// [`kinematic`] for any mechanism with the Stewart platform's names.
+pub fn kinematic_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
+    let info = mech.info();
+    let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
+    let n_out = output_count(opts.t_end, opts.output_step)?;
+    let start = Instant::now();
+    let mut path = KinematicPath::<M>::new(mech, 0.0)?;
+    let mut run = Run::default();
+    let mut recorder = Recorder::new(info, layout)?;
+    let modes = ModeWatch::new(
+        &Platform::new(path.mechanism())?,
+        path.q(),
+        SIMULATION_MAX_CONDITION,
+    )?;
+    for k in 0..=n_out {
+        let t_out = (k as f64 * opts.output_step).min(opts.t_end);
+        if k > 0 {
+            path.advance_to(t_out)?;
+        }
+        modes.check(path.q(), path.t())?;
+        let state = State {
+            t: path.t(),
+            q: path.q(),
+            qd: path.qd(),
+            lambda: Some(path.lambda()),
+            energy: path.energy(),
+        };
+        recorder.record(path.mechanism(), state, &mut run)?;
+    }
+    run.kinematic = Some(path.stats());
+    run.wall = start.elapsed();
+    Ok(run)
+}
+
+/// The paper's scenario integrated on the reduced model (`stewart_6_6::reduced`: the 18
+/// Euler-angle equalities substituted away, 60 coordinates and 54 rows): HHT on the reduced
+/// mechanism, each output expanded to the full state and recorded on the full model, with
+/// forces recovered there (`opts.reactions` is ignored).
+pub fn simulate_reduced(registry: &Registry, opts: &Options) -> Result<Run, ScenarioError> {
+    let entry = platform_entry(registry)?;
+    let full = crate::generic::mechanism(entry, Some(opts.formulation))?;
+    let (red, reduction) = entry.reduced(opts.formulation).ok_or_else(|| {
+        ScenarioError::Options(format!(
+            "`{MECHANISM}` has no reduced model in the {} formulation",
+            opts.formulation.name()
+        ))
+    })?;
+    let info = full.info();
+    let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
+    let n_out = output_count(opts.t_end, opts.output_step)?;
+    let start = Instant::now();
+    let mut it = HhtBuilder::new()
+        .alpha(opts.alpha)
+        .step(opts.step)
+        .min_step((opts.step * 1e-4).min(1e-7))
+        .build(red)?;
+    let mut run = Run::default();
+    let mut recorder = Recorder::new(info, layout)?;
+    let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);
+    for k in 0..=n_out {
+        let t_out = (k as f64 * opts.output_step).min(opts.t_end);
+        it.advance_to(t_out)?;
+        reduction.expand(it.q(), it.t(), 0, &mut q)?;
+        reduction.expand(it.qd(), it.t(), 1, &mut qd)?;
+        let state = State {
+            t: it.t(),
+            q: &q,
+            qd: &qd,
+            lambda: None,
+            energy: it.energy(),
+        };
+        recorder.record(&full, state, &mut run)?;
+    }
+    run.stats = it.stats();
+    run.wall = start.elapsed();
+    Ok(run)
+}
+
+/// One output state, with its multipliers when they are already known.
+struct State<'a> {
+    t: f64,
+    q: &'a [f64],
+    qd: &'a [f64],
+    /// `None`: recover them from the saddle-point system at (q, q̇, t).
+    lambda: Option<&'a [f64]>,
+    /// Kinetic plus potential energy (J).
+    energy: f64,
+}
+
+/// Number of output intervals of `t_end` at `output_step` (outputs at 0, Δ, …, t_end),
+/// after checking both.
+pub fn output_count(t_end: f64, output_step: f64) -> Result<usize, ScenarioError> {
+    if !(output_step.is_finite() && output_step > 0.0) {
+        return Err(ScenarioError::Options(format!(
+            "--output-step must be positive and finite, got {output_step}"
+        )));
+    }
+    if !(t_end.is_finite() && t_end >= 0.0) {
+        return Err(ScenarioError::Options(format!(
+            "--t-end must be finite and zero or positive, got {t_end}"
+        )));
+    }
+    // Every output is kept in memory; beyond this the run would exhaust it, not finish.
+    const MAX_OUTPUTS: f64 = 1e7;
+    if t_end / output_step > MAX_OUTPUTS {
+        return Err(ScenarioError::Options(format!(
+            "{t_end} s every {output_step:e} s is more than {MAX_OUTPUTS:e} outputs: raise --output-step"
+        )));
+    }
+    Ok((t_end / output_step - 1e-9).ceil().max(0.0) as usize)
+}
+
+/// Work memory for recording outputs, allocated once per run.
+struct Recorder {
+    layout: Layout,
+    kinematics: Kinematics,
+    watch: ResidualWatch,
+    phi_t: Vec<f64>,
+    jac: Vec<f64>,
+    qdd: Vec<f64>,
+    lambda: Vec<f64>,
+}
+
+impl Recorder {
+    fn new(info: &'static MechanismInfo, layout: Layout) -> Result<Self, Error> {
+        Ok(Recorder {
+            layout,
+            kinematics: Kinematics::new(info)?,
+            watch: ResidualWatch::new(info),
+            phi_t: vec![0.0; info.n_constraints],
+            jac: vec![0.0; info.phi_q_nnz()],
+            qdd: vec![0.0; info.n_coords],
+            lambda: vec![0.0; info.n_constraints],
+        })
+    }
+
+    fn record<M: Mechanism>(&mut self, mech: &M, s: State<'_>, run: &mut Run) -> Result<(), Error> {
+        let info = mech.info();
+        let layout = self.layout;
+        let (t, q, qd) = (s.t, s.q.to_vec(), s.qd.to_vec());
+        let residuals = self.watch.check(mech, t, &q, &qd)?;
+        run.max_phi = run.max_phi.max(residuals.position);
+        run.max_velocity_residual = run.max_velocity_residual.max(residuals.velocity);
+        mech.phi_q(&q, t, &mut self.jac);
+        mech.phi_t(&q, t, &mut self.phi_t);
+        // Φ_D = d(q) − c(t), so each driver's ċ = −Φt on its row.
+        let c_dot: [f64; LEGS] =
+            std::array::from_fn(|i| -self.phi_t[info.joints[layout.drivers[i]].row_start]);
+        match s.lambda {
+            Some(l) => self.lambda.copy_from_slice(l),
+            None => {
+                self.kinematics
+                    .acceleration(mech, t, &q, &qd, &mut self.qdd, &mut self.lambda)?
+            }
+        }
+        let o = info.bodies[layout.platform].coord_offset;
+        run.platform
+            .push([q[o], q[o + 1], q[o + 2], q[o + 3], q[o + 4], q[o + 5]]);
+        let mut upper = [[0.0; 3]; LEGS];
+        let mut lower = [[0.0; 3]; LEGS];
+        let mut act = [0.0; LEGS];
+        let mut power = 0.0;
+        for i in 0..LEGS {
+            upper[i] = joint_force(
+                info,
+                &self.jac,
+                &self.lambda,
+                layout.upper_joints[i],
+                layout.platform,
+            )?;
+            lower[i] = joint_force(
+                info,
+                &self.jac,
+                &self.lambda,
+                layout.lower_joints[i],
+                layout.lower_bodies[i],
+            )?;
+            act[i] = actuator_force(info, &self.lambda, layout.drivers[i])?;
+            power += act[i] * c_dot[i];
+        }
+        run.upper.push(upper);
+        run.lower.push(lower);
+        run.actuators.push(act);
+        run.actuator_power.push(power);
+        run.energy.push(s.energy);
+        run.t.push(t);
+        run.q.push(q);
+        run.qd.push(qd);
+        Ok(())
+    }
+}
+
+impl Run {
+    /// Work done by the actuators from the first output to each output (J), by the
+    /// trapezoidal rule over the recorded power.
+    pub fn actuator_work(&self) -> Vec<f64> {
+        let mut w = vec![0.0; self.t.len()];
+        for k in 1..self.t.len() {
+            let dt = self.t[k] - self.t[k - 1];
+            w[k] = w[k - 1] + 0.5 * dt * (self.actuator_power[k] + self.actuator_power[k - 1]);
+        }
+        w
+    }
+
+    /// Largest |self − reference| of the quantity `of` picks at each output, and the time
+    /// where it occurs. Both runs must have the same output times.
+    pub fn max_difference(
+        &self,
+        reference: &Run,
+        of: impl Fn(&Run, usize) -> &[f64],
+    ) -> Result<(f64, f64), String> {
+        if self.t.len() != reference.t.len() {
+            return Err(format!(
+                "{} outputs against the reference's {}",
+                self.t.len(),
+                reference.t.len()
+            ));
+        }
+        let mut worst = (0.0f64, 0.0);
+        for k in 0..self.t.len() {
+            if (self.t[k] - reference.t[k]).abs() > 1e-12 {
+                return Err(format!(
+                    "output {k} at t = {} against {}",
+                    self.t[k], reference.t[k]
+                ));
+            }
+            for (a, b) in of(self, k).iter().zip(of(reference, k)) {
+                if (a - b).abs() > worst.0 {
+                    worst = ((a - b).abs(), self.t[k]);
+                }
+            }
+        }
+        Ok(worst)
+    }
+
+    /// Range of platform coordinate `k` over the run.
+    pub fn platform_range(&self, k: usize) -> (f64, f64) {
+        self.platform
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p[k]), hi.max(p[k]))
+            })
+    }
+}
+
+/// The largest |θ|, |β|, |γ| of the platform over the run, with the axis name.
+pub fn largest_rotation(run: &Run) -> (&'static str, f64) {
+    let names = ["theta (about X)", "beta (about Y)", "gamma (about Z)"];
+    (0..3)
+        .map(|k| {
+            let m = run
+                .platform
+                .iter()
+                .fold(0.0f64, |a, p| a.max(p[3 + k].abs()));
+            (names[k], m)
+        })
+        .fold(("none", 0.0), |best, c| if c.1 > best.1 { c } else { best })
+}

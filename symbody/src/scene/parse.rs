@@ -1,0 +1,360 @@
+//! Reading a scene file: TOML into a [`Scene`], every mistake reported with file, line,
+//! column, the item and what to do (the mechanism files' diagnostics, `symbody_codegen::diag`).
+
+use serde::Deserialize;
+use symbody_codegen::diag::{Diagnostic, Errors, SourceMap};
+use symbody_runtime::{Formulation, JointKind, Registry};
+use toml::Spanned;
+
+use super::{Files, PathRequest, Scene, Selection};
+use crate::generic::{closest, mechanism};
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawScene {
+    mechanism: Spanned<String>,
+    formulation: Option<Spanned<String>>,
+    time: Option<RawTime>,
+    outputs: Option<RawOutputs>,
+    solver: Option<RawSolver>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawTime {
+    end: Option<Spanned<f64>>,
+    output_step: Option<Spanned<f64>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawOutputs {
+    poses: Option<Spanned<toml::Value>>,
+    reactions: Option<Spanned<toml::Value>>,
+    efforts: Option<bool>,
+    energy: Option<bool>,
+    files: Option<Spanned<String>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSolver {
+    path: Option<Spanned<String>>,
+    step: Option<Spanned<f64>>,
+    alpha: Option<Spanned<f64>>,
+    cross_singular_positions: Option<Spanned<bool>>,
+}
+
+/// Reads and checks the scene in `text`; `file` names it in messages.
+pub fn load(registry: &Registry, file: &str, text: &str) -> Result<Scene, Errors> {
+    let map = SourceMap { file, text };
+    let raw: RawScene = toml::from_str(text).map_err(|e| {
+        let span = e.span().unwrap_or(0..0);
+        let message = e.message().trim().to_string();
+        let help = symbody_codegen::diag::toml_error_help(&message).replace(
+            "the TOML syntax at this place",
+            "the TOML at this place (docs/scenes.md lists every field)",
+        );
+        Errors(vec![map.diag(span, "the scene", &message, help)])
+    })?;
+    let mut errors = Vec::new();
+    let scene = check(registry, &map, raw, &mut errors);
+    match scene {
+        Some(s) if errors.is_empty() => Ok(s),
+        _ => Err(Errors(errors)),
+    }
+}
+
+fn check(
+    registry: &Registry,
+    map: &SourceMap<'_>,
+    raw: RawScene,
+    errors: &mut Vec<Diagnostic>,
+) -> Option<Scene> {
+    let name = raw.mechanism.get_ref();
+    let Some(entry) = registry.find(name) else {
+        let known = registry.names();
+        let help = match closest(name, known.iter().copied()) {
+            Some(s) => format!("did you mean `{s}`?"),
+            None => format!("known mechanisms: {}", known.join(", ")),
+        };
+        errors.push(map.diag(
+            raw.mechanism.span(),
+            "`mechanism`",
+            format!("no mechanism `{name}`"),
+            help,
+        ));
+        return None;
+    };
+    let formulation = match &raw.formulation {
+        None => None,
+        Some(f) => match f.get_ref().as_str() {
+            "exact" => Some(Formulation::Exact),
+            "paper" => Some(Formulation::Paper),
+            other => {
+                errors.push(map.diag(
+                    f.span(),
+                    "`formulation`",
+                    format!("unknown formulation `{other}`"),
+                    "use \"exact\" or \"paper\"",
+                ));
+                return None;
+            }
+        },
+    };
+    let mech = match mechanism(entry, formulation) {
+        Ok(m) => m,
+        Err(e) => {
+            let span = raw.formulation.as_ref().map_or(0..0, |f| f.span());
+            errors.push(map.diag(
+                span,
+                "`formulation`",
+                e.to_string(),
+                "pick a generated formulation",
+            ));
+            return None;
+        }
+    };
+    let info = mech.info();
+
+    let time = raw.time.unwrap_or(RawTime {
+        end: None,
+        output_step: None,
+    });
+    let t_end =
+        positive(map, errors, time.end.as_ref(), "[time] `end`", true).unwrap_or(entry.t_end);
+    let output_step = positive(
+        map,
+        errors,
+        time.output_step.as_ref(),
+        "[time] `output_step`",
+        false,
+    )
+    .unwrap_or(0.01);
+
+    let outputs = raw.outputs.unwrap_or(RawOutputs {
+        poses: None,
+        reactions: None,
+        efforts: None,
+        energy: None,
+        files: None,
+    });
+    let bodies: Vec<&str> = info.bodies.iter().map(|b| b.name).collect();
+    let poses = selection(
+        map,
+        errors,
+        outputs.poses.as_ref(),
+        "[outputs] `poses`",
+        "body",
+        &bodies,
+        |_| true,
+    );
+    let joints: Vec<&str> = info.joints.iter().map(|j| j.name).collect();
+    let reactions = selection(
+        map,
+        errors,
+        outputs.reactions.as_ref(),
+        "[outputs] `reactions`",
+        "joint",
+        &joints,
+        |j| {
+            !matches!(
+                info.joints[j].kind,
+                JointKind::Driver | JointKind::Normalization
+            )
+        },
+    );
+    let files = match &outputs.files {
+        None => Files::Tables,
+        Some(f) => match f.get_ref().as_str() {
+            "tables" => Files::Tables,
+            "paper" => {
+                if let Err(e) = crate::scenario::Layout::find(info) {
+                    errors.push(map.diag(
+                        f.span(),
+                        "[outputs] `files`",
+                        format!("the paper scenario's files need its names: {e}"),
+                        "use files = \"tables\" for this mechanism",
+                    ));
+                }
+                Files::Paper
+            }
+            other => {
+                errors.push(map.diag(
+                    f.span(),
+                    "[outputs] `files`",
+                    format!("unknown files `{other}`"),
+                    "use \"tables\" (bodies, joints, drivers, energy CSVs) or \"paper\" (the paper scenario's CSVs and figures)",
+                ));
+                Files::Tables
+            }
+        },
+    };
+
+    let solver = raw.solver.unwrap_or(RawSolver {
+        path: None,
+        step: None,
+        alpha: None,
+        cross_singular_positions: None,
+    });
+    let path = match &solver.path {
+        None => PathRequest::Auto,
+        Some(p) => match p.get_ref().as_str() {
+            "auto" => PathRequest::Auto,
+            "kinematic" => PathRequest::Kinematic,
+            "integrate" => PathRequest::Integrate,
+            other => {
+                errors.push(map.diag(
+                    p.span(),
+                    "[solver] `path`",
+                    format!("unknown path `{other}`"),
+                    "use \"auto\" (kinematic when exact, else integrate), \"kinematic\" or \"integrate\"",
+                ));
+                PathRequest::Auto
+            }
+        },
+    };
+    let step =
+        positive(map, errors, solver.step.as_ref(), "[solver] `step`", false).unwrap_or(1e-3);
+    let alpha = match &solver.alpha {
+        None => match files {
+            Files::Paper => crate::scenario::Options::default().alpha,
+            Files::Tables => crate::generic::Options::default().alpha,
+        },
+        Some(a) => {
+            let v = *a.get_ref();
+            if !(-1.0 / 3.0..=0.0).contains(&v) {
+                errors.push(map.diag(
+                    a.span(),
+                    "[solver] `alpha`",
+                    format!("HHT α must lie in [−1/3, 0], got {v}"),
+                    "0 adds no numerical damping; −0.05 damps the highest frequencies a little",
+                ));
+            }
+            v
+        }
+    };
+    let cross_singular = match (&solver.cross_singular_positions, files) {
+        (Some(c), Files::Paper) if *c.get_ref() => {
+            errors.push(map.diag(
+                c.span(),
+                "[solver] `cross_singular_positions`",
+                "the paper's files run the paper scenario, which has no singular position to cross",
+                "remove it, or use files = \"tables\"",
+            ));
+            false
+        }
+        (c, _) => c.as_ref().is_some_and(|c| *c.get_ref()),
+    };
+    Some(Scene {
+        file: map.file.to_string(),
+        mechanism: entry.name,
+        formulation: info.formulation,
+        t_end,
+        output_step,
+        poses,
+        reactions,
+        efforts: outputs.efforts.unwrap_or(true),
+        energy: outputs.energy.unwrap_or(true),
+        files,
+        path,
+        step,
+        alpha,
+        cross_singular,
+    })
+}
+
+/// A finite time that is positive (or, with `zero_ok`, zero), or a diagnostic.
+fn positive(
+    map: &SourceMap<'_>,
+    errors: &mut Vec<Diagnostic>,
+    v: Option<&Spanned<f64>>,
+    item: &str,
+    zero_ok: bool,
+) -> Option<f64> {
+    let v = v?;
+    let x = *v.get_ref();
+    if x.is_finite() && (x > 0.0 || (zero_ok && x == 0.0)) {
+        Some(x)
+    } else {
+        errors.push(map.diag(
+            v.span(),
+            item,
+            format!(
+                "must be a finite {} time in seconds, got {x}",
+                if zero_ok { "non-negative" } else { "positive" }
+            ),
+            "give the time in seconds, e.g. 0.01",
+        ));
+        None
+    }
+}
+
+/// `"all"`, `"none"` or a list of names out of `known` (`allowed` filters which indices may
+/// be named).
+#[allow(clippy::too_many_arguments)]
+fn selection(
+    map: &SourceMap<'_>,
+    errors: &mut Vec<Diagnostic>,
+    v: Option<&Spanned<toml::Value>>,
+    item: &str,
+    what: &str,
+    known: &[&str],
+    allowed: impl Fn(usize) -> bool,
+) -> Selection {
+    let Some(v) = v else {
+        return Selection::All;
+    };
+    let help_all = format!("write \"all\", \"none\" or a list of {what} names");
+    match v.get_ref() {
+        toml::Value::String(s) if s == "all" => Selection::All,
+        toml::Value::String(s) if s == "none" => Selection::None,
+        toml::Value::Array(items) => {
+            let mut picked = Vec::new();
+            for it in items {
+                let Some(name) = it.as_str() else {
+                    errors.push(map.diag(
+                        v.span(),
+                        item,
+                        format!("expected {what} names, found `{it}`"),
+                        &help_all,
+                    ));
+                    continue;
+                };
+                match known.iter().position(|k| *k == name) {
+                    Some(i) if allowed(i) => {
+                        if !picked.contains(&i) {
+                            picked.push(i);
+                        }
+                    }
+                    Some(_) => errors.push(map.diag(
+                        v.span(),
+                        item,
+                        format!("`{name}` is a driver or a normalization row, not a joint with a reaction"),
+                        "its effort is in the drivers' output (`efforts = true`)",
+                    )),
+                    None => errors.push(map.diag(
+                        v.span(),
+                        item,
+                        format!("no {what} `{name}` in this mechanism"),
+                        match closest(name, known.iter().copied()) {
+                            Some(s) => format!("did you mean `{s}`?"),
+                            None => format!("its {what}s: {}", known.join(", ")),
+                        },
+                    )),
+                }
+            }
+            picked.sort_unstable();
+            Selection::Only(picked)
+        }
+        other => {
+            errors.push(map.diag(
+                v.span(),
+                item,
+                format!("expected \"all\", \"none\" or a list, found `{other}`"),
+                help_all,
+            ));
+            Selection::All
+        }
+    }
+}
