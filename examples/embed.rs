@@ -7,8 +7,8 @@
 //! through `symbody::session`; all three must agree.
 
 use symbody_mechanisms::stewart_6_6::Exact;
-use symbody_testkit::alloc::CountingAllocator;
 use symbody_runtime::{driver_effort, joint_wrench, Error, HhtBuilder, Kinematics, Mechanism};
+use symbody_testkit::alloc::CountingAllocator;
 
 // Counts heap allocations, so the example can show its control loop makes none.
 #[global_allocator]

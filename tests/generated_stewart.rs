@@ -353,8 +353,8 @@ fn every_angle_has_one_sine_and_one_cosine_per_evaluation() {
     // Hash-consing makes sin(q_i) one node; emission must then compute it once per call of
     // a public function, across all of its chunk helpers.
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    let src =
-        std::fs::read_to_string(root.join("mechanisms/src/generated/stewart_6_6.rs")).unwrap();
+    let src = std::fs::read_to_string(root.join("mechanisms/generated/stewart_6_6/equations.rs"))
+        .unwrap();
     let mut counts: std::collections::HashMap<(String, String), usize> = Default::default();
     let (mut module, mut function) = (String::from("top"), String::new());
     // The reduced system (`pub mod reduced`, the file's last module) has its own functions

@@ -13,14 +13,17 @@ fn run(step: f64, alpha: f64, output_step: f64) -> Run {
 }
 
 fn run_with(step: f64, alpha: f64, output_step: f64, reactions: Reactions) -> Run {
-    simulate(&symbody_benchmark_mechanisms::REGISTRY, &Options {
-        formulation: Formulation::Exact,
-        step,
-        alpha,
-        output_step,
-        reactions,
-        ..Options::default()
-    })
+    simulate(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        &Options {
+            formulation: Formulation::Exact,
+            step,
+            alpha,
+            output_step,
+            reactions,
+            ..Options::default()
+        },
+    )
     .unwrap_or_else(|e| panic!("simulation failed: {e}"))
 }
 

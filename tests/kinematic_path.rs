@@ -64,9 +64,21 @@ fn axisymmetric_legs_spin_idle_so_the_kinematic_path_is_the_integrated_motion() 
 
     // HHT converges to the kinematic path at second order. Measured: 4.0e-9 N at h = 2e-4 s,
     // 9.8e-10 N at 1e-4 s (ratio 4.1); the platform pose agrees to 8.9e-14.
-    let kinematic = scenario::kinematic(&symbody_benchmark_mechanisms::REGISTRY, &options(Formulation::Exact, 0.0)).unwrap();
-    let coarse = scenario::simulate(&symbody_benchmark_mechanisms::REGISTRY, &options(Formulation::Exact, 2e-4)).unwrap();
-    let fine = scenario::simulate(&symbody_benchmark_mechanisms::REGISTRY, &options(Formulation::Exact, 1e-4)).unwrap();
+    let kinematic = scenario::kinematic(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        &options(Formulation::Exact, 0.0),
+    )
+    .unwrap();
+    let coarse = scenario::simulate(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        &options(Formulation::Exact, 2e-4),
+    )
+    .unwrap();
+    let fine = scenario::simulate(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        &options(Formulation::Exact, 1e-4),
+    )
+    .unwrap();
     let (e2, e1) = (
         force_difference(&coarse, &kinematic),
         force_difference(&fine, &kinematic),
@@ -117,8 +129,16 @@ fn the_paper_formulation_drives_the_spins_so_it_must_be_integrated() {
     );
     assert!(!free.kinematic_is_exact(&[]));
     // ... and rightly: followed kinematically anyway, its forces leave the integrated ones.
-    let kinematic = scenario::kinematic(&symbody_benchmark_mechanisms::REGISTRY, &options(Formulation::Paper, 0.0)).unwrap();
-    let integrated = scenario::simulate(&symbody_benchmark_mechanisms::REGISTRY, &options(Formulation::Paper, 1e-4)).unwrap();
+    let kinematic = scenario::kinematic(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        &options(Formulation::Paper, 0.0),
+    )
+    .unwrap();
+    let integrated = scenario::simulate(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        &options(Formulation::Paper, 1e-4),
+    )
+    .unwrap();
     let d = force_difference(&kinematic, &integrated);
     assert!(d > 1e-4, "{d:e} N");
 }

@@ -1,10 +1,11 @@
 //! The paper scenario's recorded forces against an independent Newton–Euler inverse dynamics
-//! (tests/common/newton_euler.rs), derived by hand from docs/paper-scenario.md.
+//! (testkit/src/newton_euler.rs), derived by hand from docs/paper-scenario.md.
 
-
-use symbody_testkit::newton_euler::{inverse_dynamics, paper_forces, paper_lengths, paper_pose, Pose};
 use nalgebra::{Rotation3, Vector3};
 use symbody::scenario::{simulate, Options};
+use symbody_testkit::newton_euler::{
+    inverse_dynamics, paper_forces, paper_lengths, paper_pose, Pose,
+};
 
 const LEGS: usize = 6;
 // docs/paper-scenario.md, for rebuilding the leg lengths from the reported pose.
@@ -88,11 +89,14 @@ fn reference_pose_has_the_driven_leg_lengths() {
 /// Largest |HHT − reference| over the outputs: (upper, lower, actuators) in N, then the
 /// platform's position (m) and Euler angles (rad).
 fn max_differences(step: f64) -> ([f64; 3], [f64; 2]) {
-    let run = simulate(&symbody_benchmark_mechanisms::REGISTRY, &Options {
-        step,
-        output_step: 0.04,
-        ..Default::default()
-    })
+    let run = simulate(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        &Options {
+            step,
+            output_step: 0.04,
+            ..Default::default()
+        },
+    )
     .unwrap_or_else(|e| panic!("simulation failed: {e}"));
     assert!((run.t.last().unwrap() - 2.0 * std::f64::consts::PI).abs() < 1e-12);
     assert_eq!(run.t.len(), 159);
@@ -155,7 +159,12 @@ fn recorded_forces_match_newton_euler_inverse_dynamics() {
 fn paper_scene_on_the_kinematic_path_matches_the_reference() {
     let root = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(root.join("scenes/paper.toml")).unwrap();
-    let scene = symbody::scene::load(&symbody_benchmark_mechanisms::REGISTRY, "scenes/paper.toml", &text).unwrap();
+    let scene = symbody::scene::load(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        "scenes/paper.toml",
+        &text,
+    )
+    .unwrap();
     let entry = symbody_benchmark_mechanisms::find(scene.mechanism).unwrap();
     let (choice, outcome) = symbody::scene::run(&scene, entry).unwrap();
     assert!(

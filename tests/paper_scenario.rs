@@ -2,7 +2,6 @@
 //! model: a six-equation forward-kinematics solve of the leg lengths, the paper's reported
 //! numbers, static equilibrium by symmetry, the energy balance, and step refinement.
 
-
 use nalgebra::{Matrix6, Rotation3, Vector3, Vector6};
 use symbody::scenario::{simulate, Options, Run};
 use symbody_benchmark_mechanisms::stewart_6_6::{Exact, Paper};
@@ -83,12 +82,15 @@ fn reference_poses(times: &[f64]) -> Vec<Vector6<f64>> {
 }
 
 fn run(formulation: Formulation, step: f64, output_step: f64) -> Run {
-    simulate(&symbody_benchmark_mechanisms::REGISTRY, &Options {
-        formulation,
-        step,
-        output_step,
-        ..Options::default()
-    })
+    simulate(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        &Options {
+            formulation,
+            step,
+            output_step,
+            ..Options::default()
+        },
+    )
     .unwrap_or_else(|e| panic!("simulation failed: {e}"))
 }
 
@@ -147,7 +149,11 @@ fn paper_formulation_runs_the_period_with_the_same_pose_and_spinning_legs() {
     }
     assert!(dpos <= 1e-9, "platform position differs by {dpos:e} m");
     // Leg 6's lower part: its rotation relative to the exact run's, at the end.
-    let info = symbody::scenario::mechanism_info(&symbody_benchmark_mechanisms::REGISTRY, Formulation::Paper).unwrap();
+    let info = symbody::scenario::mechanism_info(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        Formulation::Paper,
+    )
+    .unwrap();
     let b = info.body_index("lower6").unwrap();
     let rot = |q: &[f64]| symbody_runtime::rotation_matrix(&info.bodies[b], q).unwrap();
     let (qp, qe) = (paper.q.last().unwrap(), exact.q.last().unwrap());

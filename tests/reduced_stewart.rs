@@ -118,7 +118,10 @@ fn the_paper_scenario_on_the_reduced_model_records_the_same_series() {
         output_step: 0.05,
         ..Options::default()
     };
-    let (full, red) = (simulate(&symbody_benchmark_mechanisms::REGISTRY, &opts).unwrap(), simulate_reduced(&symbody_benchmark_mechanisms::REGISTRY, &opts).unwrap());
+    let (full, red) = (
+        simulate(&symbody_benchmark_mechanisms::REGISTRY, &opts).unwrap(),
+        simulate_reduced(&symbody_benchmark_mechanisms::REGISTRY, &opts).unwrap(),
+    );
     let force =
         |f: fn(&symbody::scenario::Run, usize) -> &[f64]| red.max_difference(&full, f).unwrap().0;
     let upper = force(|r, k| r.upper[k].as_flattened());

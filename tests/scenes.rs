@@ -15,7 +15,8 @@ fn root() -> PathBuf {
 fn load(path: &Path) -> scene::Scene {
     let text = std::fs::read_to_string(path).unwrap();
     let name = path.strip_prefix(root()).unwrap().display().to_string();
-    scene::load(&symbody_benchmark_mechanisms::REGISTRY, &name, &text).unwrap_or_else(|e| panic!("{name}:\n{e}"))
+    scene::load(&symbody_benchmark_mechanisms::REGISTRY, &name, &text)
+        .unwrap_or_else(|e| panic!("{name}:\n{e}"))
 }
 
 /// The path each shipped scene must take: kinematic where the drivers fix every requested
@@ -115,8 +116,11 @@ fn asking_for_the_legs_poses_makes_the_paper_platform_integrate() {
     // at the predictor's values, so their poses need integration.
     let mut s = load(&root().join("scenes/stewart_6_6.toml"));
     s.poses = scene::Selection::All;
-    let mech =
-        symbody::generic::mechanism(symbody_benchmark_mechanisms::find(s.mechanism).unwrap(), None).unwrap();
+    let mech = symbody::generic::mechanism(
+        symbody_benchmark_mechanisms::find(s.mechanism).unwrap(),
+        None,
+    )
+    .unwrap();
     let choice = scene::choose_path(&s, mech).unwrap();
     let PathChoice::Integrate {
         reason: Some(reason),
@@ -160,7 +164,8 @@ fn bad_scene_files_are_refused_with_place_and_help() {
         };
         let help = expect("help");
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
-        let errors = scene::load(&symbody_benchmark_mechanisms::REGISTRY, &name, &text).expect_err(&name);
+        let errors =
+            scene::load(&symbody_benchmark_mechanisms::REGISTRY, &name, &text).expect_err(&name);
         let d = &errors.0[0];
         assert_eq!(format!("{}:{}", d.line, d.column), place, "{name}: {d}");
         assert!(d.message.contains(&message), "{name}: {d}");

@@ -6,13 +6,12 @@
 //! Every kernel runs at the same state: the consistent start advanced by HHT to t = 1 s,
 //! where no coordinate or velocity is at a special value. Results: the "Micro-benchmarks" section of BENCHMARKS.md.
 
-
 use criterion::{criterion_group, criterion_main, Criterion};
-use symbody_testkit::reference::{PatternIndex, Stewart, M, N};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 use symbody_benchmark_mechanisms::stewart_6_6::{self as st, exact, reduced, Exact};
 use symbody_runtime::{HhtBuilder, Integrator, Kinematics, Mechanism, Stats};
+use symbody_testkit::reference::{PatternIndex, Stewart, M, N};
 
 const NNZ: usize = 390;
 /// Time at which every kernel is evaluated (s).

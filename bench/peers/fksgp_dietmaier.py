@@ -1,6 +1,6 @@
 """Peer timing: Martyushev's fkSGP elimination-template solver (github.com/martyushev/fkSGP, MIT; Mech. Mach. Theory 215:106170, 2025) on Dietmaier's 40-real-mode 6-6 Stewart-Gough platform -- wall time per call (all 40 complex assembly modes), real-mode count, leg-length residuals, and how often repeated calls (random internal rotations) miss real modes. Side-by-side reference for our Rust forward-kinematics solver; a manual benchmark, NOT run in CI.
 
-Usage: python3 benches/peers/fksgp_dietmaier.py [--fksgp /tmp/fkSGP] [-n 200] [--warmup 20] [--repeats 50] [--threads 1] [--seed 0]
+Usage: python3 bench/peers/fksgp_dietmaier.py [--fksgp /tmp/fkSGP] [-n 200] [--warmup 20] [--repeats 50] [--threads 1] [--seed 0]
 
 Needs numpy and scipy. --fksgp is a checkout of the fkSGP repository (the directory holding its python/ folder).
 Only this harness is ours; the solver is imported from that checkout, unmodified. Its package

@@ -2,10 +2,10 @@
 
 Usage (from the repository root, after `cargo build --release --bin symbody`):
 
-    python3 benches/peers/mujoco_stewart.py [--runs 3] [--quick] [--symbody target/release/symbody]
-        [--csv benches/peers/mujoco_stewart.csv] [--md benches/peers/mujoco_stewart.md]
+    python3 bench/peers/mujoco_stewart.py [--runs 3] [--quick] [--symbody target/release/symbody]
+        [--csv bench/peers/mujoco_stewart.csv] [--md bench/peers/mujoco_stewart.md]
 
-Needs `pip install mujoco numpy`. benches/peers/mujoco_stewart.md explains the model and the choices.
+Needs `pip install mujoco numpy`. bench/peers/mujoco_stewart.md explains the model and the choices.
 
 The model (docs/paper-scenario.md, kept in the paper's frames: MuJoCo's gravity is set to
 (0, -9.81, 0), so Y is up and nothing is rotated or mapped back):
@@ -47,7 +47,7 @@ def parse_args():
     p.add_argument("--runs", type=int, default=3, help="timed repetitions of every run (median reported; default 3)")
     p.add_argument("--quick", action="store_true", help="a few coarse runs only (smoke test)")
     p.add_argument("--symbody", default="target/release/symbody", help="symbody binary (default target/release/symbody)")
-    p.add_argument("--csv", default="benches/peers/mujoco_stewart.csv", help="results CSV ('' to skip)")
+    p.add_argument("--csv", default="bench/peers/mujoco_stewart.csv", help="results CSV ('' to skip)")
     p.add_argument("--md", default="", help="also write the Markdown tables to this file")
     p.add_argument("--threads", default="1", help="BLAS threads for numpy's small solves (default 1)")
     return p.parse_args()

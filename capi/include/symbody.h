@@ -2,7 +2,7 @@
  * symbody.h: the C ABI of symbody, a symbolic multibody code generator.
  *
  * Build with `cargo build --release -p symbody-capi`, then link against target/release/
- * libsymbody.so, or libsymbody.a plus the system libraries rustc lists with
+ * libsymbody_c.so, or libsymbody_c.a plus the system libraries rustc lists with
  * `--print native-static-libs` (Linux: -lgcc_s -lutil -lrt -lpthread -lm -ldl -lc);
  * examples/c/build.sh does the latter. C99; usable from C++.
  *

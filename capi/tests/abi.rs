@@ -5,8 +5,8 @@
 
 use std::ffi::{c_char, c_int, CStr, CString};
 use std::ptr::{null, null_mut};
-use symbody_c::*;
 use symbody::session::{paper_leg1_force_at_1s, Session, Settings};
+use symbody_c::*;
 
 const OK: c_int = SymbodyStatus::Ok as c_int;
 
@@ -75,7 +75,12 @@ fn the_leg_1_force_is_the_rust_sessions_bit_for_bit() {
     );
 
     // The rest of the state agrees with a Rust session advanced the same way.
-    let mut r = Session::new(&symbody_mechanisms::REGISTRY, "stewart_6_6", Settings::default()).unwrap();
+    let mut r = Session::new(
+        &symbody_mechanisms::REGISTRY,
+        "stewart_6_6",
+        Settings::default(),
+    )
+    .unwrap();
     r.advance_to(1.0).unwrap();
     let n = r.q().len();
     let (mut q, mut qd) = (vec![0.0; n], vec![0.0; n]);

@@ -1,13 +1,13 @@
 //! PNG plots reproducing the paper's figures 2–6, drawn with plotters and an embedded
 //! DejaVu Sans font (no system font libraries needed).
 
-use symbody::generic::{self, Recording};
-use symbody::fk::Sample;
-use symbody::scenario::Run;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 use std::path::{Path, PathBuf};
 use std::sync::Once;
+use symbody::fk::Sample;
+use symbody::generic::{self, Recording};
+use symbody::scenario::Run;
 
 static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
 static REGISTER: Once = Once::new();
@@ -333,7 +333,6 @@ pub fn write_plots(rec: &Recording, dir: &Path) -> Result<Vec<PathBuf>, String> 
     }
     Ok(files)
 }
-
 
 /// `assembly_modes_over_time.png`: the number of real assembly modes, the distance to the
 /// nearest other mode and the conditions along the driver motion (`fk --over-time`).

@@ -61,7 +61,10 @@ impl MechanismFile {
 pub enum FilesError {
     Io(PathBuf, std::io::Error),
     Invalid(Errors),
-    UnknownMechanism { name: String, known: Vec<String> },
+    UnknownMechanism {
+        name: String,
+        known: Vec<String>,
+    },
     /// The same name in both groups: one crate name, two files.
     Duplicate(String),
     /// A file name that is not a Rust identifier cannot name a crate or a module.
@@ -232,7 +235,10 @@ pub fn registries(listed: &[MechanismFile]) -> Vec<(PathBuf, String)> {
             .map(|f| format!("    &{}::ENTRY,\n", f.name))
             .collect()
     };
-    let shipped: Vec<&MechanismFile> = listed.iter().filter(|f| f.group == Group::Shipped).collect();
+    let shipped: Vec<&MechanismFile> = listed
+        .iter()
+        .filter(|f| f.group == Group::Shipped)
+        .collect();
     let all: Vec<&MechanismFile> = listed.iter().collect();
     let bench_only: Vec<&MechanismFile> = listed
         .iter()
@@ -267,8 +273,14 @@ pub fn registries(listed: &[MechanismFile]) -> Vec<(PathBuf, String)> {
     vec![
         (PathBuf::from("mechanisms/Cargo.toml"), shipped_manifest),
         (PathBuf::from("mechanisms/src/registry.rs"), shipped_list),
-        (PathBuf::from("mechanisms/benchmarks/Cargo.toml"), bench_manifest),
-        (PathBuf::from("mechanisms/benchmarks/registry.rs"), bench_list),
+        (
+            PathBuf::from("mechanisms/benchmarks/Cargo.toml"),
+            bench_manifest,
+        ),
+        (
+            PathBuf::from("mechanisms/benchmarks/registry.rs"),
+            bench_list,
+        ),
     ]
 }
 

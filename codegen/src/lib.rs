@@ -6,6 +6,7 @@
 //! [`primitives`], loads from [`loads`], built and differentiated on the [`expr`] DAG) →
 //! [`assembly`] (initial pose, rank, redundant rows, and [`legs`]: a six-leg platform for
 //! forward kinematics) → [`emit`] (chunked straight-line functions) → [`rust`] (the module).
+//! [`symbolic`] holds the pieces the equation stages share (no stage imports a later one).
 //! [`reduce`] is a pass between equations and emission: substitution of rows qᵢ − qⱼ − c(t).
 
 // `!(x > tol)` is used on purpose: unlike `x <= tol` it also rejects NaN.
@@ -26,6 +27,7 @@ pub mod parse;
 pub mod primitives;
 pub mod reduce;
 pub mod rust;
+pub mod symbolic;
 
 pub use assembly::Report;
 pub use diag::{Diagnostic, Errors};

@@ -4,10 +4,10 @@
 //! torque (Q += (∂ω/∂q̇)ᵀτ); conservative parts add to the potential, the others to the
 //! non-conservative power.
 
-use crate::equations::{jacobian, BodySym, V3s};
 use crate::expr::{Arena, Id, Var};
 use crate::model::{ForceKind, Model};
 use crate::primitives::{angle_cos_sin, distance, mat_vec, point_world, sym_frame};
+use crate::symbolic::{jacobian, BodySym, V3s};
 
 /// The generalized load vector, potential energy and non-conservative power.
 pub struct Loads {

@@ -1,9 +1,9 @@
 //! Constraint primitives on joint frames (docs/design.md, decision 16), one derivation each, and
 //! the joints and drivers composed from them. Every joint's rows are built here.
 
-use crate::equations::{BodySym, M3s, V3s};
 use crate::expr::{Arena, Id};
 use crate::model::{DriverTarget, Frame, Joint, JointKind, Model};
+use crate::symbolic::{BodySym, M3s, V3s};
 
 /// A joint frame in global coordinates: point and axes as expressions in `q`.
 pub struct SymFrame {

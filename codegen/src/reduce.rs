@@ -10,8 +10,9 @@
 //! `M̃ = Tᵀ M T` and `Q̃ = Tᵀ (Q − M c̈)` at the substituted state; Φ̃, Φ̃q, Φ̃t and γ̃ are derived
 //! from the substituted rows like any others.
 
-use crate::equations::{derivatives, Dynamics, Entry, System};
+use crate::equations::{derivatives, Dynamics, System};
 use crate::expr::{Arena, Id, Var};
+use crate::symbolic::Entry;
 
 /// One eliminated row: `coord = weight · target + offset(t)`.
 #[derive(Debug, Clone)]

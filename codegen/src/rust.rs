@@ -3,9 +3,10 @@
 
 use crate::assembly::Assembly;
 use crate::emit::{self, Function, Input, Output};
-use crate::equations::{Dynamics, Entry, System};
+use crate::equations::{Dynamics, System};
 use crate::expr::Id;
 use crate::model::{DriverTarget, Formulation, JointKind, Model, Rotation};
+use crate::symbolic::Entry;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
 

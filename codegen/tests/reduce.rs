@@ -6,8 +6,9 @@
 //! multipliers.
 
 use nalgebra::{DMatrix, DVector};
-use symbody_codegen::equations::{Entry, System};
+use symbody_codegen::equations::System;
 use symbody_codegen::expr::{Id, Var};
+use symbody_codegen::symbolic::Entry;
 use symbody_codegen::{assembly, equations, model, reduce};
 
 fn load(name: &str) -> (model::Model, System, Vec<f64>) {

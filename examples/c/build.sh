@@ -16,7 +16,7 @@ cargo build --release -p symbody-capi --lib --example leg1
 # (`cargo rustc --release -p symbody-capi --lib --crate-type staticlib -- --print native-static-libs`).
 native_libs=(-lgcc_s -lutil -lrt -lpthread -lm -ldl -lc)
 "${CC:-cc}" -std=c99 -pedantic -Wall -Wextra -Werror -I capi/include \
-    -o "$out/main" examples/c/main.c "$target/release/libsymbody.a" "${native_libs[@]}"
+    -o "$out/main" examples/c/main.c "$target/release/libsymbody_c.a" "${native_libs[@]}"
 # The header's extern "C" guards: it must also compile as C++.
 if command -v c++ >/dev/null; then
     c++ -std=c++11 -Wall -Wextra -Werror -fsyntax-only -x c++ capi/include/symbody.h

@@ -57,10 +57,10 @@ pub use mechanism::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo, Mechanism,
     MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
 };
-pub use registry::{Entry, Registry};
 pub use pose::{
     angular_velocity, angular_velocity_jacobian, body_pose, point_world, rotation_matrix,
 };
 pub use reactions::{actuator_force, driver_effort, joint_force, joint_wrench, Wrench};
 pub use reduction::{Reduction, Substitution};
+pub use registry::{Entry, Registry};
 pub use watch::{EulerLimits, EulerWarning, ResidualWatch, Residuals};

@@ -46,10 +46,7 @@ impl Entry {
     }
 }
 
-fn find_formulation(
-    list: Formulations,
-    f: Formulation,
-) -> Option<&'static (dyn Mechanism + Sync)> {
+fn find_formulation(list: Formulations, f: Formulation) -> Option<&'static (dyn Mechanism + Sync)> {
     list.iter().find(|(g, _)| *g == f).map(|(_, m)| *m)
 }
 

@@ -3,11 +3,11 @@
 
 use symbody_testkit::alloc::CountingAllocator;
 
-use symbody_testkit::models::{CircleDriver, Pendulum, TwoBallHinge};
 use symbody_runtime::{
     joint_wrench, DenseKkt, EnergyMeter, EulerLimits, HhtBuilder, Kinematics, Mechanism,
     ResidualWatch, SchurKkt,
 };
+use symbody_testkit::models::{CircleDriver, Pendulum, TwoBallHinge};
 
 #[global_allocator]
 static GLOBAL: CountingAllocator = CountingAllocator;

@@ -12,9 +12,8 @@ use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, Entry, EulerWarning,
-    Formulation, Registry,
-    HhtBuilder, Integrator, JointKind, KinematicPath, Mechanism, MechanismInfo, PathStats,
-    ResidualWatch, Rotation, Stats, Wrench,
+    Formulation, HhtBuilder, Integrator, JointKind, KinematicPath, Mechanism, MechanismInfo,
+    PathStats, Registry, ResidualWatch, Rotation, Stats, Wrench,
 };
 
 /// Why a run could not be made: an option out of range or not available for the mechanism

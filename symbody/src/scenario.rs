@@ -4,8 +4,8 @@
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
-    actuator_force, joint_force, Entry, Error, Formulation, HhtBuilder, KinematicPath,
-    Kinematics, Mechanism, MechanismInfo, PathStats, Registry, ResidualWatch, Stats,
+    actuator_force, joint_force, Entry, Error, Formulation, HhtBuilder, KinematicPath, Kinematics,
+    Mechanism, MechanismInfo, PathStats, Registry, ResidualWatch, Stats,
 };
 
 /// Options of one simulation; `Default` is the paper's scenario over one period.

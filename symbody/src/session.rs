@@ -219,7 +219,9 @@ mod tests {
 
     #[test]
     fn unknown_names_are_errors_that_list_the_known_ones() {
-        let e = Session::new(&REGISTRY, "stewart", Settings::default()).err().unwrap();
+        let e = Session::new(&REGISTRY, "stewart", Settings::default())
+            .err()
+            .unwrap();
         assert!(e.to_string().contains("stewart_6_6"), "{e}");
         let mut s = Session::new(&REGISTRY, "four_bar", Settings::default()).unwrap();
         let e = s.driver_effort("act9").unwrap_err();

@@ -3,7 +3,7 @@
 //! residual and energy balance sampled every 10 s, and the final state compared with the
 //! kinematic path at the same time (exact to roundoff, no integration error to accumulate).
 //!
-//! `cargo run --release --bin long_run [-- --steps N]` writes `bench-results/long_run.{csv,md}`
+//! `cargo run --release -p symbody-bench --bin long_run [-- --steps N]` writes `bench-results/long_run.{csv,md}`
 //! and prints the Markdown. Not run in CI (≈ 1 min).
 
 use std::fmt::Write as _;
@@ -152,7 +152,7 @@ fn main() {
         md,
         "\nThe kinematic path reached t = {t_end:.1} s through {outputs} output times in {path_wall:.2} s."
     );
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("bench-results");
+    let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../bench-results"));
     std::fs::create_dir_all(&dir).unwrap_or_else(|e| fail(&e.to_string()));
     for (file, text) in [("long_run.csv", &csv), ("long_run.md", &md)] {
         let p = dir.join(file);

@@ -2,7 +2,7 @@
 //! the published error measure against an independent reference, the published tolerance,
 //! pass/fail, our CPU time and the CPU times other codes published.
 //!
-//! `cargo run --release --bin mbs_benchmarks [-- --short] [-- --only A01]` writes
+//! `cargo run --release -p symbody-bench --bin mbs_benchmarks [-- --short] [-- --only A01]` writes
 //! `bench-results/mbs_benchmarks.{csv,md}` and prints the Markdown; it exits with 1 when a
 //! problem misses. `--short` runs the shortened lengths the CI test uses
 //! (`mbs_benchmarks_short.*`). `--steps 1e-3,5e-4` runs each problem at each of those steps

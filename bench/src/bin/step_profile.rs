@@ -1,7 +1,7 @@
 //! Where one HHT step of the exact Stewart model spends its time, and the structured KKT
 //! solver against dense LU on the real KKT matrix.
 //!
-//! `cargo run --release --bin step_profile` times, at a state of the paper's scenario
+//! `cargo run --release -p symbody-bench --bin step_profile` times, at a state of the paper's scenario
 //! (t = 1 s, α = −0.05, h = 1 ms): a whole step, `eval_newton`, and factor/solve of both KKT
 //! solvers; prints a Markdown table and writes `bench-results/step_profile.md`.
 //! `-- --steps N` only takes N steps (for `valgrind --tool=callgrind`, which is deterministic
@@ -229,7 +229,7 @@ fn main() {
         (d_factor + 2.0 * d_solve) * us
     );
     print!("{md}");
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("bench-results");
+    let dir = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../bench-results"));
     std::fs::create_dir_all(&dir)
         .and_then(|_| std::fs::write(dir.join("step_profile.md"), &md))
         .unwrap_or_else(|e| fail(&format!("cannot write step_profile.md: {e}")));

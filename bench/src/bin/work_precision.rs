@@ -3,7 +3,7 @@
 //! against a reference: for the `exact` formulation the independent Newton–Euler inverse
 //! dynamics of testkit/src/newton_euler.rs, for `paper` a much finer HHT run.
 //!
-//! `cargo run --release --bin work_precision [-- --runs N] [-- --quick]` writes
+//! `cargo run --release -p symbody-bench --bin work_precision [-- --runs N] [-- --quick]` writes
 //! `bench-results/work_precision.{csv,md,png}` and prints the Markdown table.
 //!
 //! Errors are maxima over common output times (every 0.04 s, which every step of the sweep
@@ -18,9 +18,9 @@
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use symbody_cli::plot::{draw_log_log, LogSeries};
 use symbody::scenario::{kinematic, simulate, simulate_reduced, Options, Reactions, Run};
 use symbody_bench::REGISTRY;
+use symbody_cli::plot::{draw_log_log, LogSeries};
 use symbody_runtime::Formulation;
 
 // The independent reference of the `exact` formulation, shared with the tests.
@@ -167,7 +167,7 @@ fn main() {
     } else {
         (&STEPS, &ALPHAS, REFERENCE_STEP)
     };
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let root = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
     let dir = root.join("bench-results");
     std::fs::create_dir_all(&dir)
         .unwrap_or_else(|e| fail(&format!("cannot create {}: {e}", dir.display())));
@@ -182,12 +182,10 @@ fn main() {
         for &alpha in alphas {
             let reference = match formulation {
                 Formulation::Exact => independent.clone(),
-                Formulation::Paper => simulate(&REGISTRY, &options(
-                    formulation,
-                    reference_step,
-                    alpha,
-                    Reactions::Recovered,
-                ))
+                Formulation::Paper => simulate(
+                    &REGISTRY,
+                    &options(formulation, reference_step, alpha, Reactions::Recovered),
+                )
                 .unwrap_or_else(|e| {
                     fail(&format!(
                         "reference run ({}, α = {alpha}, h = {reference_step}) failed: {e}",
@@ -197,9 +195,12 @@ fn main() {
             };
             // The reference's own error, bounded by runs at half and twice its step.
             let check = |h: f64| {
-                simulate(&REGISTRY, &options(formulation, h, alpha, Reactions::Recovered))
-                    .map_err(|e| e.to_string())
-                    .and_then(|r| errors(&r, &reference))
+                simulate(
+                    &REGISTRY,
+                    &options(formulation, h, alpha, Reactions::Recovered),
+                )
+                .map_err(|e| e.to_string())
+                .and_then(|r| errors(&r, &reference))
             };
             let check = [check(0.5 * reference_step), check(2.0 * reference_step)];
             eprintln!(
@@ -219,7 +220,8 @@ fn main() {
                     && alpha == Options::default().alpha
                     && reactions == Reactions::Recovered
                 {
-                    let (walls, outcome) = repeat(runs, &reference, || simulate_reduced(&REGISTRY, &opts));
+                    let (walls, outcome) =
+                        repeat(runs, &reference, || simulate_reduced(&REGISTRY, &opts));
                     rows.push(Row {
                         method: Method::Reduced,
                         formulation,
@@ -324,9 +326,7 @@ fn main() {
                 })
                 .collect(),
         }))
-        .chain(mujoco_series(
-            &root.join("benches/peers/mujoco_stewart.csv"),
-        ))
+        .chain(mujoco_series(&root.join("bench/peers/mujoco_stewart.csv")))
         .collect();
     let png = dir.join("work_precision.png");
     draw_log_log(

@@ -93,7 +93,9 @@ struct Unwrapper {
 
 impl Unwrapper {
     fn new() -> Result<Self, Error> {
-        let info = symbody::generic::find(&crate::REGISTRY, MECHANISM)?.default_mechanism().info();
+        let info = symbody::generic::find(&crate::REGISTRY, MECHANISM)?
+            .default_mechanism()
+            .info();
         let mut body = [0; 7];
         for (slot, name) in body.iter_mut().zip(BODIES) {
             *slot = info
@@ -105,7 +107,9 @@ impl Unwrapper {
 
     /// Pushes the state `q` and returns the continued angles.
     fn push(&mut self, q: &[f64]) -> Result<[f64; 7], Error> {
-        let info = symbody::generic::find(&crate::REGISTRY, MECHANISM)?.default_mechanism().info();
+        let info = symbody::generic::find(&crate::REGISTRY, MECHANISM)?
+            .default_mechanism()
+            .info();
         let mut now = [0.0; 7];
         for (a, &b) in now.iter_mut().zip(&self.body) {
             let r = symbody_runtime::pose::rotation_matrix(&info.bodies[b], q)?;
