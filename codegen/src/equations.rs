@@ -284,36 +284,6 @@ fn paper_dynamics(a: &mut Arena, model: &Model, loads: &[Id]) -> Dynamics {
     Dynamics::new(a, Formulation::Paper, mass, force, Some(loads), true)
 }
 
-/// Body-frame angular velocity from Euler-angle rates:
-/// ω_b = Aᵀ(γ̇ e_z + β̇ Rz e_y + θ̇ Rz Ry e_x) = θ̇ e_x + Rxᵀ(β̇ e_y + Ryᵀ γ̇ e_z),
-/// using RzᵀRz = RyᵀRy = I exactly so the engine need not discover sin² + cos² = 1.
-pub fn body_angular_velocity(a: &mut Arena, angles: V3s, rates: V3s) -> V3s {
-    let [th, be, _] = angles;
-    let [thd, bed, gad] = rates;
-    let (st, ct) = (a.sin(th), a.cos(th));
-    let (sb, cb) = (a.sin(be), a.cos(be));
-    // Ryᵀ (0, 0, γ̇) = (−sβ γ̇, 0, cβ γ̇)
-    let v0 = {
-        let p = a.mul(sb, gad);
-        a.neg(p)
-    };
-    let v2 = a.mul(cb, gad);
-    // add β̇ e_y, then Rxᵀ (x, y, z) = (x, cθ y + sθ z, −sθ y + cθ z)
-    let y = bed;
-    let w1 = {
-        let p = a.mul(ct, y);
-        let q = a.mul(st, v2);
-        a.add(p, q)
-    };
-    let w2 = {
-        let p = a.mul(st, y);
-        let q = a.mul(ct, v2);
-        a.sub(q, p)
-    };
-    let w0 = a.add(v0, thd);
-    [w0, w1, w2]
-}
-
 fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]) -> Dynamics {
     let n = model.n_coords();
     let half = a.constant(0.5);
