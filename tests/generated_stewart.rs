@@ -335,9 +335,9 @@ fn potential_energy_is_gravity() {
 #[test]
 fn committed_code_is_fresh_and_generation_is_deterministic() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    // The committed files were written by another process: equal to this one's output, the
+    // generation does not depend on hash-map seeds (random per map and process) or the run.
     let first = symbody_codegen::files::all_expected(root).unwrap_or_else(|e| panic!("{e}"));
-    let second = symbody_codegen::files::all_expected(root).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(first, second, "generation is not deterministic");
     for (rel, contents) in &first {
         let on_disk = std::fs::read_to_string(root.join(rel)).unwrap_or_default();
         assert!(

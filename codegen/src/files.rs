@@ -193,7 +193,7 @@ pub fn generated_crate(
     let name = &file.name;
     let dir = crate_dir(name);
     let manifest = format!(
-        "# {GENERATED_NOTE}\n# From {rel}: the mechanism's equations as their own crate, so that changing the\n# file recompiles only this crate and the programs that link it.\n[package]\nname = \"{}\"\nversion = \"0.1.0\"\nedition = \"2021\"\npublish = false\n\n[lib]\npath = \"lib.rs\"\n\n[dependencies]\nsymbody-runtime.workspace = true\n",
+        "# {GENERATED_NOTE}\n# From {rel}: the mechanism's equations as their own crate, so that changing the\n# file recompiles only this crate and the programs that link it.\n[package]\nname = \"{}\"\nversion = \"0.1.0\"\nedition = \"2021\"\npublish = false\n\n[lib]\npath = \"lib.rs\"\n# Generated code has no tests of its own (tests/ checks it): no test harness to compile.\ntest = false\ndoctest = false\n\n[dependencies]\nsymbody-runtime.workspace = true\n",
         package_name(name)
     );
     let lib = format!(
@@ -246,7 +246,7 @@ pub fn registries(listed: &[MechanismFile]) -> Vec<(PathBuf, String)> {
         .collect();
 
     let shipped_manifest = format!(
-        "# {GENERATED_NOTE}\n# The shipped mechanisms' registry: a dependency on each generated crate.\n[package]\nname = \"{}\"\nversion = \"0.1.0\"\nedition = \"2021\"\npublish = false\ndescription = \"The shipped mechanisms (files in this folder), each a generated crate, and their registry\"\n\n[dependencies]\nsymbody-runtime.workspace = true\n{}",
+        "# {GENERATED_NOTE}\n# The shipped mechanisms' registry: a dependency on each generated crate.\n[package]\nname = \"{}\"\nversion = \"0.1.0\"\nedition = \"2021\"\npublish = false\ndescription = \"The shipped mechanisms (files in this folder), each a generated crate, and their registry\"\n\n[lib]\ntest = false\ndoctest = false\n\n[dependencies]\nsymbody-runtime.workspace = true\n{}",
         Group::Shipped.package(),
         deps(&shipped, "generated")
     );
@@ -256,7 +256,7 @@ pub fn registries(listed: &[MechanismFile]) -> Vec<(PathBuf, String)> {
         list(&shipped)
     );
     let bench_manifest = format!(
-        "# {GENERATED_NOTE}\n# The benchmarks' registry: the shipped mechanisms and the benchmark problems.\n[package]\nname = \"{}\"\nversion = \"0.1.0\"\nedition = \"2021\"\npublish = false\ndescription = \"The benchmark problems' mechanisms (files in this folder) and a registry of them with the shipped ones\"\n\n[lib]\npath = \"lib.rs\"\n\n[dependencies]\nsymbody-runtime.workspace = true\nsymbody-mechanisms.workspace = true\n{}",
+        "# {GENERATED_NOTE}\n# The benchmarks' registry: the shipped mechanisms and the benchmark problems.\n[package]\nname = \"{}\"\nversion = \"0.1.0\"\nedition = \"2021\"\npublish = false\ndescription = \"The benchmark problems' mechanisms (files in this folder) and a registry of them with the shipped ones\"\n\n[lib]\npath = \"lib.rs\"\ntest = false\ndoctest = false\n\n[dependencies]\nsymbody-runtime.workspace = true\nsymbody-mechanisms.workspace = true\n{}",
         Group::Benchmarks.package(),
         deps(&bench_only, "../generated")
     );
