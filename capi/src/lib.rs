@@ -1,7 +1,7 @@
 //! The C ABI of symbody: every registered mechanism's generated equations
 //! ([`mechanism`]) and a running simulation of one ([`session`]) behind opaque handles,
 //! with integer statuses and a thread-local error message ([`status`]). The header
-//! `include/symbody.h` is generated from this crate by cbindgen (`tests/header.rs`).
+//! `include/symbody.h` is generated from this crate by cbindgen (`header/`, a separate package).
 //!
 //! Rust callers use the same functions through the rlib; they are `unsafe` because they
 //! take raw pointers, and each one's `# Safety` section (copied into the header) says what

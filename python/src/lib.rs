@@ -16,9 +16,9 @@ use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 use symbody::generic;
-use symbody_mechanisms::REGISTRY;
 use symbody::scenario::ScenarioError;
 use symbody::session::{self, Dyn};
+use symbody_mechanisms::REGISTRY;
 use symbody_runtime::fk::Pose;
 use symbody_runtime::{Error as RuntimeError, Formulation, JointKind, MechanismInfo};
 
@@ -540,7 +540,8 @@ impl Mechanism {
 /// actuator 1 force (N) at t = 1 s with the session's default settings.
 #[pyfunction]
 fn paper_leg1_force_at_1s(py: Python<'_>) -> PyResult<f64> {
-    py.detach(|| session::paper_leg1_force_at_1s(&REGISTRY)).map_err(py_err)
+    py.detach(|| session::paper_leg1_force_at_1s(&REGISTRY))
+        .map_err(py_err)
 }
 
 #[pymodule]
