@@ -1,6 +1,7 @@
 //! PNG plots reproducing the paper's figures 2–6, drawn with plotters and an embedded
 //! DejaVu Sans font (no system font libraries needed).
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 use std::path::{Path, PathBuf};
@@ -32,79 +33,103 @@ const COLORS: [RGBColor; 3] = [
     RGBColor(0, 140, 70),
 ];
 
+/// Draws with `paint` on a `size` canvas and writes it to `path` as PNG. plotters' own file
+/// output would compile the `image` crate (JPEG, BMP and PNG codecs, ≈ 20 s of every fresh
+/// build) for this one format; the `png` crate alone encodes it.
+fn png(
+    path: &Path,
+    size: (u32, u32),
+    paint: impl FnOnce(&DrawingArea<BitMapBackend<'_>, Shift>) -> Result<(), String>,
+) -> Result<(), String> {
+    let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
+    let mut pixels = vec![0u8; size.0 as usize * size.1 as usize * 3];
+    {
+        let root = BitMapBackend::with_buffer(&mut pixels, size).into_drawing_area();
+        paint(&root)?;
+        root.present().map_err(|e| err(&e))?;
+    }
+    let file = std::fs::File::create(path).map_err(|e| err(&e))?;
+    let mut encoder = ::png::Encoder::new(std::io::BufWriter::new(file), size.0, size.1);
+    encoder.set_color(::png::ColorType::Rgb);
+    encoder.set_depth(::png::BitDepth::Eight);
+    let mut writer = encoder.write_header().map_err(|e| err(&e))?;
+    writer.write_image_data(&pixels).map_err(|e| err(&e))?;
+    writer.finish().map_err(|e| err(&e))
+}
+
 /// Draws panels stacked vertically, sharing the time axis.
 pub fn draw(path: &Path, title: &str, t: &[f64], panels: &[Panel<'_>]) -> Result<(), String> {
     register_font();
     let height = 260 * panels.len() as u32 + 60;
-    let root = BitMapBackend::new(path, (900, height)).into_drawing_area();
     let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let root = root
-        .titled(title, ("sans-serif", 24))
-        .map_err(|e| err(&e))?;
-    let areas = root.split_evenly((panels.len(), 1));
-    let (t0, t1) = (
-        t.first().copied().unwrap_or(0.0),
-        t.last().copied().unwrap_or(1.0),
-    );
-    for (area, panel) in areas.iter().zip(panels) {
-        let (mut lo, mut hi) = panel
-            .series
-            .iter()
-            .flat_map(|(_, v)| v.iter().copied())
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-                (a.min(v), b.max(v))
-            });
-        if !lo.is_finite() || !hi.is_finite() {
-            (lo, hi) = (-1.0, 1.0);
-        }
-        // A series flat to roundoff (a planar mechanism's Z) gets a readable unit-scale
-        // axis instead of one spanning 1e-9 whose tick labels all round to the same value.
-        let scale = 1.0 + hi.abs().max(lo.abs());
-        let pad = if hi - lo <= 1e-9 * scale {
-            0.1 * scale
-        } else {
-            (hi - lo) * 0.08
-        };
-        let mut chart = ChartBuilder::on(area)
-            .margin(12)
-            .x_label_area_size(40)
-            .y_label_area_size(80)
-            .build_cartesian_2d(t0..t1.max(t0 + 1e-9), (lo - pad)..(hi + pad))
+    png(path, (900, height), |root| {
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let root = root
+            .titled(title, ("sans-serif", 24))
             .map_err(|e| err(&e))?;
-        chart
-            .configure_mesh()
-            .x_desc("time t (s)")
-            .y_desc(panel.y_label)
-            .label_style(("sans-serif", 15))
-            .axis_desc_style(("sans-serif", 17))
-            .draw()
-            .map_err(|e| err(&e))?;
-        for (k, (name, values)) in panel.series.iter().enumerate() {
-            let color = COLORS[k % COLORS.len()];
-            chart
-                .draw_series(LineSeries::new(
-                    t.iter().copied().zip(values.iter().copied()),
-                    color.stroke_width(2),
-                ))
-                .map_err(|e| err(&e))?
-                .label(*name)
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+        let areas = root.split_evenly((panels.len(), 1));
+        let (t0, t1) = (
+            t.first().copied().unwrap_or(0.0),
+            t.last().copied().unwrap_or(1.0),
+        );
+        for (area, panel) in areas.iter().zip(panels) {
+            let (mut lo, mut hi) = panel
+                .series
+                .iter()
+                .flat_map(|(_, v)| v.iter().copied())
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                    (a.min(v), b.max(v))
                 });
-        }
-        if panel.series.len() > 1 {
+            if !lo.is_finite() || !hi.is_finite() {
+                (lo, hi) = (-1.0, 1.0);
+            }
+            // A series flat to roundoff (a planar mechanism's Z) gets a readable unit-scale
+            // axis instead of one spanning 1e-9 whose tick labels all round to the same value.
+            let scale = 1.0 + hi.abs().max(lo.abs());
+            let pad = if hi - lo <= 1e-9 * scale {
+                0.1 * scale
+            } else {
+                (hi - lo) * 0.08
+            };
+            let mut chart = ChartBuilder::on(area)
+                .margin(12)
+                .x_label_area_size(40)
+                .y_label_area_size(80)
+                .build_cartesian_2d(t0..t1.max(t0 + 1e-9), (lo - pad)..(hi + pad))
+                .map_err(|e| err(&e))?;
             chart
-                .configure_series_labels()
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK)
-                .label_font(("sans-serif", 15))
+                .configure_mesh()
+                .x_desc("time t (s)")
+                .y_desc(panel.y_label)
+                .label_style(("sans-serif", 15))
+                .axis_desc_style(("sans-serif", 17))
                 .draw()
                 .map_err(|e| err(&e))?;
+            for (k, (name, values)) in panel.series.iter().enumerate() {
+                let color = COLORS[k % COLORS.len()];
+                chart
+                    .draw_series(LineSeries::new(
+                        t.iter().copied().zip(values.iter().copied()),
+                        color.stroke_width(2),
+                    ))
+                    .map_err(|e| err(&e))?
+                    .label(*name)
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
+                    });
+            }
+            if panel.series.len() > 1 {
+                chart
+                    .configure_series_labels()
+                    .background_style(WHITE.mix(0.85))
+                    .border_style(BLACK)
+                    .label_font(("sans-serif", 15))
+                    .draw()
+                    .map_err(|e| err(&e))?;
+            }
         }
-    }
-    root.present().map_err(|e| err(&e))?;
-    Ok(())
+        Ok(())
+    })
 }
 
 /// Writes the paper's figures 2–6 into `dir`; returns the files written.
@@ -206,68 +231,68 @@ pub fn draw_log_log(
     };
     let ((x0, x1), (y0, y1)) = (range(|p| p.0), range(|p| p.1));
     // The chart on the left, the legend in its own column so it never hides data.
-    let root = BitMapBackend::new(path, (1240, 640)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let (plot_area, legend_area) = root.split_horizontally(900);
-    let mut chart = ChartBuilder::on(&plot_area)
-        .caption(title, ("sans-serif", 22))
-        .margin(16)
-        .x_label_area_size(48)
-        .y_label_area_size(90)
-        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-        .map_err(|e| err(&e))?;
-    chart
-        .configure_mesh()
-        .x_desc(x_label)
-        .y_desc(y_label)
-        .x_label_formatter(&|v| format!("{v:.0e}"))
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .label_style(("sans-serif", 15))
-        .axis_desc_style(("sans-serif", 17))
-        .draw()
-        .map_err(|e| err(&e))?;
-    const PALETTE: [RGBColor; 8] = [
-        RGBColor(0, 90, 181),
-        RGBColor(220, 50, 32),
-        RGBColor(0, 140, 70),
-        RGBColor(230, 150, 0),
-        RGBColor(120, 60, 170),
-        RGBColor(90, 90, 90),
-        RGBColor(0, 170, 200),
-        RGBColor(200, 0, 140),
-    ];
-    for (k, s) in series.iter().enumerate() {
-        let color = PALETTE[k % PALETTE.len()];
-        let width = if s.secondary { 1 } else { 2 };
-        let p: Vec<(f64, f64)> = s.points.iter().copied().filter(usable).collect();
+    png(path, (1240, 640), |root| {
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let (plot_area, legend_area) = root.split_horizontally(900);
+        let mut chart = ChartBuilder::on(&plot_area)
+            .caption(title, ("sans-serif", 22))
+            .margin(16)
+            .x_label_area_size(48)
+            .y_label_area_size(90)
+            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+            .map_err(|e| err(&e))?;
         chart
-            .draw_series(LineSeries::new(
-                p.iter().copied(),
-                color.stroke_width(width),
-            ))
+            .configure_mesh()
+            .x_desc(x_label)
+            .y_desc(y_label)
+            .x_label_formatter(&|v| format!("{v:.0e}"))
+            .y_label_formatter(&|v| format!("{v:.0e}"))
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 17))
+            .draw()
             .map_err(|e| err(&e))?;
-        let y = 60 + 24 * k as i32;
-        legend_area
-            .draw(&PathElement::new(
-                vec![(10, y), (40, y)],
-                color.stroke_width(width),
-            ))
-            .map_err(|e| err(&e))?;
-        legend_area
-            .draw(&Text::new(s.name.as_str(), (48, y - 8), ("sans-serif", 15)))
-            .map_err(|e| err(&e))?;
-        if s.secondary {
+        const PALETTE: [RGBColor; 8] = [
+            RGBColor(0, 90, 181),
+            RGBColor(220, 50, 32),
+            RGBColor(0, 140, 70),
+            RGBColor(230, 150, 0),
+            RGBColor(120, 60, 170),
+            RGBColor(90, 90, 90),
+            RGBColor(0, 170, 200),
+            RGBColor(200, 0, 140),
+        ];
+        for (k, s) in series.iter().enumerate() {
+            let color = PALETTE[k % PALETTE.len()];
+            let width = if s.secondary { 1 } else { 2 };
+            let p: Vec<(f64, f64)> = s.points.iter().copied().filter(usable).collect();
             chart
-                .draw_series(p.iter().map(|&c| TriangleMarker::new(c, 5, color.filled())))
+                .draw_series(LineSeries::new(
+                    p.iter().copied(),
+                    color.stroke_width(width),
+                ))
                 .map_err(|e| err(&e))?;
-        } else {
-            chart
-                .draw_series(p.iter().map(|&c| Circle::new(c, 4, color.filled())))
+            let y = 60 + 24 * k as i32;
+            legend_area
+                .draw(&PathElement::new(
+                    vec![(10, y), (40, y)],
+                    color.stroke_width(width),
+                ))
                 .map_err(|e| err(&e))?;
+            legend_area
+                .draw(&Text::new(s.name.as_str(), (48, y - 8), ("sans-serif", 15)))
+                .map_err(|e| err(&e))?;
+            if s.secondary {
+                chart
+                    .draw_series(p.iter().map(|&c| TriangleMarker::new(c, 5, color.filled())))
+                    .map_err(|e| err(&e))?;
+            } else {
+                chart
+                    .draw_series(p.iter().map(|&c| Circle::new(c, 4, color.filled())))
+                    .map_err(|e| err(&e))?;
+            }
         }
-    }
-    root.present().map_err(|e| err(&e))?;
-    Ok(())
+        Ok(())
+    })
 }
 
 /// Writes everything `symbody simulate <name>` writes into `dir`: the CSVs
