@@ -1,18 +1,42 @@
 //! Developer tasks: `cargo xtask generate [<name>… | --all] [--check]` regenerates (or checks)
-//! the committed Rust of the mechanisms under `mechanisms/` (a crate each, and the registries), and prints what the generator
-//! found out about each (sizes, rank, degrees of freedom, redundant rows, warnings).
+//! the committed Rust of the mechanisms under `mechanisms/` (a crate each, and the registries),
+//! and prints what the generator found out about each (sizes, rank, degrees of freedom,
+//! redundant rows, warnings).
 
+use clap::{Parser, Subcommand};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 use symbody_codegen::files;
 
-const USAGE: &str = "usage: cargo xtask generate [<name>... | --all] [--check]
+/// `cargo xtask`: developer tasks.
+#[derive(Parser)]
+#[command(
+    name = "cargo xtask",
+    bin_name = "cargo xtask",
+    about = "Developer tasks of the symbody workspace"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Task,
+}
 
-  generate <name>    regenerate the crate mechanisms/generated/<name>/ from mechanisms/<name>.toml
-                     (or mechanisms/benchmarks/<name>.toml), and the registries
-  generate --all     regenerate every mechanism (the default when no name is given)
-  generate --check   fail if any generated file differs from what generation produces";
+#[derive(Subcommand)]
+enum Task {
+    /// Regenerate the crate mechanisms/generated/<name>/ from mechanisms/<name>.toml (or
+    /// mechanisms/benchmarks/<name>.toml) for each name, and the registries; every mechanism
+    /// when no name is given.
+    Generate {
+        /// Mechanisms to regenerate.
+        names: Vec<String>,
+        /// Regenerate every mechanism (the default when no name is given).
+        #[arg(long)]
+        all: bool,
+        /// Write nothing; fail if any generated file differs from what generation produces.
+        #[arg(long)]
+        check: bool,
+    },
+}
 
 fn workspace_root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -22,37 +46,18 @@ fn workspace_root() -> PathBuf {
 }
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match args.first().map(String::as_str) {
-        Some("generate") => match generate(&args[1..]) {
-            Ok(()) => ExitCode::SUCCESS,
-            Err(msg) => {
-                eprintln!("{msg}");
-                ExitCode::FAILURE
-            }
-        },
-        _ => {
-            eprintln!("{USAGE}");
+    let Task::Generate { names, all, check } = Cli::parse().command;
+    match generate(names, all, check) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(msg) => {
+            eprintln!("{msg}");
             ExitCode::FAILURE
         }
     }
 }
 
-fn generate(args: &[String]) -> Result<(), String> {
+fn generate(mut names: Vec<String>, all: bool, check: bool) -> Result<(), String> {
     let root = workspace_root();
-    let check = args.iter().any(|a| a == "--check");
-    let all = args.iter().any(|a| a == "--all");
-    if let Some(bad) = args
-        .iter()
-        .find(|a| a.starts_with("--") && *a != "--check" && *a != "--all")
-    {
-        return Err(format!("unknown option `{bad}`\n\n{USAGE}"));
-    }
-    let mut names: Vec<String> = args
-        .iter()
-        .filter(|a| !a.starts_with("--"))
-        .cloned()
-        .collect();
     let every = files::mechanism_names(&root).map_err(|e| e.to_string())?;
     if all || names.is_empty() {
         names = every.clone();
