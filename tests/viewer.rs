@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-/// The fill colour the viewer gives plates (`PLATE` in src/viewer.html).
+/// The fill colour the viewer gives plates (`PLATE` in cli/src/viewer.html).
 const PLATE: [u8; 3] = [70, 130, 180];
 
 fn find_chromium() -> Option<PathBuf> {

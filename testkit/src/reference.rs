@@ -2,7 +2,7 @@
 //! once from `docs/paper-scenario.md` (not from the generator), generic over num-dual's
 //! scalars so one formulation yields Φ (`f64`), Φq (`Dual64`, `DualSVec64`) and γ (`Dual2_64`).
 //!
-//! Shared by `benches/kernels.rs` (the AD baselines) and `tests/reference_model.rs` (the
+//! Shared by `bench/micro/benches/kernels.rs` (the AD baselines) and `tests/reference_model.rs` (the
 //! cross-check of the generated code). Coordinate and row order are the scenario's:
 //! coordinates platform, upper legs 1..6, lower legs 1..6, six per body `[X, Y, Z, θ, β, γ]`;
 //! rows upper spherical (0–17), prismatic (18–47), lower spherical (48–65), drivers (66–71).
