@@ -1,8 +1,8 @@
-//! The `symbody` command-line tool as a library: `symbody list`, `symbody simulate [<mechanism>]`,
-//! `symbody run <scene>` and
-//! `symbody fk <mechanism>`: every generated mechanism by name from the registry; without a
-//! name, the paper's Stewart platform scenario and its figures; scene files solved by the
-//! cheapest exact path; forward kinematics of the six-leg platforms. [`main`] takes the
+//! The `symbody` command-line tool as a library: `symbody list`, `symbody simulate
+//! [<mechanism>]`, `symbody run <scene>` and `symbody fk <mechanism>`: every generated
+//! mechanism by name from the registry; without a name, the paper's Stewart platform
+//! scenario and its figures; scene files solved by the cheapest exact path; forward
+//! kinematics of the six-leg platforms. [`main`] takes the
 //! registry of mechanisms the program links (the `symbody` executable passes the shipped
 //! ones), and the summaries, CSVs, figures ([`plot`]) and the HTML viewer ([`viewer`]) are
 //! written here.

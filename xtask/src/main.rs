@@ -76,6 +76,7 @@ fn generate(mut names: Vec<String>, all: bool, check: bool) -> Result<(), String
 
     // A failed generation writes nothing at all: the registries would still list its old
     // crate, but a half-written run is harder to reason about than none.
+    let write = !check && failures.is_empty();
     let mut stale = Vec::new();
     for (rel, contents) in &plan.outputs {
         let path = root.join(rel);
@@ -83,7 +84,7 @@ fn generate(mut names: Vec<String>, all: bool, check: bool) -> Result<(), String
         if current.as_deref() == Some(contents.as_str()) {
             continue;
         }
-        if check || !failures.is_empty() {
+        if !write {
             stale.push(rel.display().to_string());
         } else {
             if let Some(dir) = path.parent() {
@@ -96,7 +97,7 @@ fn generate(mut names: Vec<String>, all: bool, check: bool) -> Result<(), String
         }
     }
     for dir in &plan.orphans {
-        if check || !failures.is_empty() {
+        if !write {
             stale.push(format!("{} (its mechanism file is gone)", dir.display()));
         } else {
             std::fs::remove_dir_all(root.join(dir))
