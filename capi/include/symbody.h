@@ -29,6 +29,19 @@
 #include <stdint.h>
 
 /**
+ * Flag of `symbody_session_new_ex`: pass singular positions (a linkage lying flat), where
+ * constraint rows are dependent for an instant; the steps and the multipliers drop those
+ * rows (their joints carry no load at such a state) instead of failing.
+ */
+#define SYMBODY_CROSS_SINGULAR_POSITIONS 1
+
+/**
+ * Flag of `symbody_session_new_ex`: project the velocities onto the constraints after
+ * every step.
+ */
+#define SYMBODY_PROJECT_VELOCITIES 2
+
+/**
  * What a fallible function returns (as an `int`): 0 on success, one of the other values on
  * failure, with a message for `symbody_last_error_message()`.
  */
@@ -392,7 +405,7 @@ int symbody_mechanism_force_jacobian(const struct SymbodyMechanism *m,
  * `SymbodyFormulation`) with HHT parameter `alpha` in [-1/3, 0] and step `step` (s)
  * (the paper's: -0.05 and 1e-3), started consistently at t = 0 from the mechanism file's
  * pose and velocities, and stores it in `*out` (NULL on failure). Release it with
- * `symbody_session_free`.
+ * `symbody_session_free`. The same as `symbody_session_new_ex` with no flags.
  *
  * Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the registered names),
  * `SYMBODY_STATUS_INVALID_ARGUMENT` (formulation, alpha, step), `SYMBODY_STATUS_SOLVER`
@@ -407,6 +420,21 @@ int symbody_session_new(const char *name,
                         double alpha,
                         double step,
                         struct SymbodySession **out);
+
+/**
+ * As `symbody_session_new`, with `flags`: a bitwise or of `SYMBODY_CROSS_SINGULAR_POSITIONS`
+ * and `SYMBODY_PROJECT_VELOCITIES` (0 for none). Unknown bits are
+ * `SYMBODY_STATUS_INVALID_ARGUMENT`.
+ *
+ * # Safety
+ * As `symbody_session_new`.
+ */
+int symbody_session_new_ex(const char *name,
+                           int formulation,
+                           double alpha,
+                           double step,
+                           uint32_t flags,
+                           struct SymbodySession **out);
 
 /**
  * Releases a session; NULL is ignored.

@@ -17,7 +17,7 @@ pub struct SymbodySession {
 /// `SymbodyFormulation`) with HHT parameter `alpha` in [-1/3, 0] and step `step` (s)
 /// (the paper's: -0.05 and 1e-3), started consistently at t = 0 from the mechanism file's
 /// pose and velocities, and stores it in `*out` (NULL on failure). Release it with
-/// `symbody_session_free`.
+/// `symbody_session_free`. The same as `symbody_session_new_ex` with no flags.
 ///
 /// Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the registered names),
 /// `SYMBODY_STATUS_INVALID_ARGUMENT` (formulation, alpha, step), `SYMBODY_STATUS_SOLVER`
@@ -34,19 +34,54 @@ pub unsafe extern "C" fn symbody_session_new(
     step: f64,
     out: *mut *mut SymbodySession,
 ) -> c_int {
+    // SAFETY: the same contract.
+    unsafe { symbody_session_new_ex(name, formulation, alpha, step, 0, out) }
+}
+
+/// Flag of `symbody_session_new_ex`: pass singular positions (a linkage lying flat), where
+/// constraint rows are dependent for an instant; the steps and the multipliers drop those
+/// rows (their joints carry no load at such a state) instead of failing.
+pub const SYMBODY_CROSS_SINGULAR_POSITIONS: u32 = 1;
+/// Flag of `symbody_session_new_ex`: project the velocities onto the constraints after
+/// every step.
+pub const SYMBODY_PROJECT_VELOCITIES: u32 = 2;
+
+/// As `symbody_session_new`, with `flags`: a bitwise or of `SYMBODY_CROSS_SINGULAR_POSITIONS`
+/// and `SYMBODY_PROJECT_VELOCITIES` (0 for none). Unknown bits are
+/// `SYMBODY_STATUS_INVALID_ARGUMENT`.
+///
+/// # Safety
+/// As `symbody_session_new`.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_new_ex(
+    name: *const c_char,
+    formulation: c_int,
+    alpha: f64,
+    step: f64,
+    flags: u32,
+    out: *mut *mut SymbodySession,
+) -> c_int {
     guard(|| {
         // SAFETY: the caller's contract above.
         let out = unsafe { arg_mut(out, "out")? };
         *out = std::ptr::null_mut();
         // SAFETY: the caller's contract above.
         let name = unsafe { string(name, "name")? };
+        let known = SYMBODY_CROSS_SINGULAR_POSITIONS | SYMBODY_PROJECT_VELOCITIES;
+        if flags & !known != 0 {
+            return Err(Failure::new(
+                SymbodyStatus::InvalidArgument,
+                format!("flags: unknown bits {:#x}; the flags are SYMBODY_CROSS_SINGULAR_POSITIONS (1) and SYMBODY_PROJECT_VELOCITIES (2)", flags & !known),
+            ));
+        }
         // Resolves the name and formulation with this API's statuses first.
         let mech = lookup(name, formulation)?;
         let settings = Settings {
             formulation: Some(mech.info().formulation),
             alpha,
             step,
-            ..Settings::default()
+            cross_singular_positions: flags & SYMBODY_CROSS_SINGULAR_POSITIONS != 0,
+            project_velocities: flags & SYMBODY_PROJECT_VELOCITIES != 0,
         };
         let session = Session::new(&symbody_mechanisms::REGISTRY, name, settings)
             .map_err(|e| Failure::from_session(e, SymbodyStatus::InvalidArgument))?;

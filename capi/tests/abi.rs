@@ -692,3 +692,46 @@ fn load_jacobians_match_rust_and_may_be_empty() {
         symbody_mechanism_free(m);
     }
 }
+
+/// The N-four-bar lies flat at t ≈ 0.70 and 1.22 s (IFToMM A02): with the flag a C session
+/// steps across both and gives multipliers at every 10 ms output, as the Rust session does
+/// (tests/singular_positions.rs sweeps the steps there); unknown flag bits are refused.
+#[test]
+fn a_session_with_the_flag_crosses_singular_positions() {
+    let name = cstr("n_four_bar_2");
+    for step in [5e-4, 1e-4] {
+        let mut s = null_mut();
+        // SAFETY: valid string and out pointer.
+        let rc = unsafe {
+            symbody_session_new_ex(
+                name.as_ptr(),
+                0,
+                0.0,
+                step,
+                SYMBODY_CROSS_SINGULAR_POSITIONS | SYMBODY_PROJECT_VELOCITIES,
+                &mut s,
+            )
+        };
+        assert_eq!(rc, OK, "{}", last_error());
+        // NaN until written: more room than the mechanism's rows.
+        let mut lambda = vec![f64::NAN; 64];
+        for k in 1..=150 {
+            // SAFETY: live handle, buffer of the given length, valid out pointer.
+            unsafe {
+                let rc = symbody_session_advance_to(s, k as f64 * 0.01);
+                assert_eq!(rc, OK, "step {step}, output {k}: {}", last_error());
+                let rc = symbody_session_multipliers(s, lambda.as_mut_ptr(), lambda.len());
+                assert_eq!(rc, OK, "step {step}, output {k}: {}", last_error());
+            }
+        }
+        let rows = lambda.iter().take_while(|l| l.is_finite()).count();
+        assert!(rows > 20, "{rows} multipliers written");
+        // SAFETY: live handle, freed once.
+        unsafe { symbody_session_free(s) };
+    }
+    let mut s = null_mut();
+    // SAFETY: valid string and out pointer.
+    let rc = unsafe { symbody_session_new_ex(name.as_ptr(), 0, 0.0, 1e-3, 4, &mut s) };
+    assert_eq!(rc, status(SymbodyStatus::InvalidArgument));
+    assert!(s.is_null() && last_error().contains("flags"), "{}", last_error());
+}

@@ -366,6 +366,28 @@ fn report_named(
             names.join(", ")
         );
     }
+    let windows = rec.ill_conditioned();
+    if let Some(worst) = windows
+        .iter()
+        .min_by(|a, b| a.smallest.total_cmp(&b.smallest))
+    {
+        let outputs: usize = windows.iter().map(|w| w.outputs).sum();
+        let dropped: usize = windows.iter().map(|w| w.dropped).sum();
+        let first = windows[0];
+        say!(
+            "  reactions        ill-conditioned near singular positions at {outputs} output(s) in {} window(s), the first t = {:.4} .. {:.4} s; smallest relative pivot {:.1e} at t = {:.4} s (regular positions: ~1e-3 or more){}: there the reactions amplify the motion's error by about 1/pivot (README: singular positions)",
+            windows.len(),
+            first.from,
+            first.to,
+            worst.smallest,
+            worst.at,
+            if dropped > 0 {
+                format!("; at {dropped} output(s) rows were dependent and dropped: their joints carry none of the load there")
+            } else {
+                String::new()
+            },
+        );
+    }
     if let Some(w) = rec.euler_warning {
         say!(
             "  warning: body `{}` reached beta = {:.3} rad at t = {:.3} s (Euler singularity at ±pi/2; use rotation = \"quaternion\")",

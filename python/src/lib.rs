@@ -254,19 +254,21 @@ struct Session {
 #[pymethods]
 impl Session {
     #[new]
-    #[pyo3(signature = (name, formulation=None, alpha=-0.05, step=1e-3, project_velocities=false))]
+    #[pyo3(signature = (name, formulation=None, alpha=-0.05, step=1e-3, project_velocities=false, cross_singular_positions=false))]
     fn new(
         name: &str,
         formulation: Option<&str>,
         alpha: f64,
         step: f64,
         project_velocities: bool,
+        cross_singular_positions: bool,
     ) -> PyResult<Self> {
         let settings = session::Settings {
             formulation: self::formulation(formulation)?,
             alpha,
             step,
             project_velocities,
+            cross_singular_positions,
         };
         Ok(Session {
             inner: session::Session::new(&REGISTRY, name, settings).map_err(py_err)?,

@@ -207,6 +207,18 @@ def test_simulate_crosses_singular_positions_when_asked():
     np.testing.assert_allclose(run["energy"]["t"][-1], 1.0, atol=1e-15)
 
 
+def test_session_crosses_singular_positions_when_asked():
+    # Flat at t = 0.70 and 1.22 s; the multipliers at every output need the dropped rows too
+    # (the Rust session's sweep over ten steps is in tests/singular_positions.rs).
+    for step in (5e-4, 1e-4):
+        s = symbody.Session("n_four_bar_2", alpha=0.0, step=step, project_velocities=True,
+                            cross_singular_positions=True)
+        for k in range(1, 151):
+            s.advance_to(k * 0.01)
+            assert np.all(np.isfinite(s.multipliers()))
+        assert s.t == 1.5
+
+
 def test_force_jacobian_matches_central_differences_at_rest():
     # At rest the inertial terms vanish with their derivatives, so central differences of
     # force() see the springs and dampers alone (as tests/mechanisms_derivatives.rs does).

@@ -12,7 +12,7 @@
 //! two valid λ differ by `δλ` with `Φqᵀδλ = 0`, and `Φt = −Φq v` for a consistent `v`.
 
 use crate::error::{check_len, Error};
-use crate::kinematics::{kinetic_energy, Kinematics};
+use crate::kinematics::{kinetic_energy, KinematicSettings, Kinematics};
 use crate::kkt::{KktSolver, SchurKkt};
 use crate::mechanism::{Mechanism, MechanismInfo};
 use crate::quadrature::RunningIntegral;
@@ -54,9 +54,18 @@ pub struct EnergyMeter<K: KktSolver = SchurKkt> {
 impl<K: KktSolver> EnergyMeter<K> {
     /// A meter for `info`'s mechanism, with no records yet.
     pub fn new(info: &'static MechanismInfo) -> Result<Self, Error> {
+        Self::with_settings(info, KinematicSettings::default())
+    }
+
+    /// As [`EnergyMeter::new`], with the settings of its saddle-point solves (e.g. to drop
+    /// rows that are dependent at a singular position).
+    pub fn with_settings(
+        info: &'static MechanismInfo,
+        settings: KinematicSettings,
+    ) -> Result<Self, Error> {
         Ok(EnergyMeter {
             info,
-            kin: Kinematics::new(info)?,
+            kin: Kinematics::with_settings(info, settings)?,
             phi_t: vec![0.0; info.n_constraints],
             qdd: vec![0.0; info.n_coords],
             lambda: vec![0.0; info.n_constraints],
@@ -138,6 +147,11 @@ impl<K: KktSolver> EnergyMeter<K> {
     /// Accelerations at the last recorded state.
     pub fn qdd(&self) -> &[f64] {
         &self.qdd
+    }
+
+    /// How well the constraint rows determined λ at the last recorded state.
+    pub fn pivots(&self) -> Option<crate::kkt::Pivots> {
+        self.kin.pivots()
     }
 
     /// Φq nonzeros at the last recorded state.

@@ -211,7 +211,9 @@ impl HhtBuilder {
         self
     }
 
-    /// Settings of the position analysis of the consistent start.
+    /// Settings of the position analysis of the consistent start; their
+    /// `drop_dependent_rows`, when set, applies to the steps too (as
+    /// [`HhtBuilder::drop_dependent_rows`], unless that was given).
     pub fn kinematic_settings(mut self, s: KinematicSettings) -> Self {
         self.kinematics = s;
         self
@@ -317,7 +319,16 @@ impl HhtBuilder {
         let velocity = InitialVelocity::ProjectGiven;
         let mut qdd = vec![0.0; n];
         let mut lambda = vec![0.0; m];
-        let mut kin = Kinematics::<K>::with_settings(info, self.kinematics)?;
+        // A start at a singular position is as legitimate as a step onto one.
+        let drop_dependent = match self.kinematics.drop_dependent_rows {
+            Some(tolerance) if self.drop_dependent == 0.0 => tolerance,
+            _ => self.drop_dependent,
+        };
+        let start_settings = KinematicSettings {
+            drop_dependent_rows: (drop_dependent > 0.0).then_some(drop_dependent),
+            ..self.kinematics
+        };
+        let mut kin = Kinematics::<K>::with_settings(info, start_settings)?;
         kin.consistent_start(
             &mech,
             self.t0,
@@ -341,10 +352,10 @@ impl HhtBuilder {
                     None => KktPattern::from_info(info),
                 };
                 let mut kkt = K::new(&pattern)?;
-                if self.drop_dependent > 0.0 && !kkt.drop_dependent_rows(self.drop_dependent) {
+                if drop_dependent > 0.0 && !kkt.drop_dependent_rows(drop_dependent) {
                     return Err(Error::InvalidSetting {
                         name: "drop_dependent_rows",
-                        value: self.drop_dependent,
+                        value: drop_dependent,
                         reason: "the KKT solver cannot drop dependent rows; use SchurKkt",
                     });
                 }

@@ -18,6 +18,10 @@ pub struct KinematicSettings {
     pub position_tolerance: f64,
     /// Maximum Newton iterations (default 30; Newton from a nearby point needs 3–5).
     pub max_iterations: usize,
+    /// Drop rows whose relative pivot falls below this instead of failing with rank loss
+    /// ([`KktSolver::drop_dependent_rows`]; default `None`): for mechanisms that pass
+    /// singular positions, where the multipliers are then one valid choice.
+    pub drop_dependent_rows: Option<f64>,
 }
 
 impl Default for KinematicSettings {
@@ -25,6 +29,7 @@ impl Default for KinematicSettings {
         KinematicSettings {
             position_tolerance: 1e-11,
             max_iterations: 30,
+            drop_dependent_rows: None,
         }
     }
 }
@@ -147,10 +152,20 @@ impl<K: KktSolver> Kinematics<K> {
         let (n, m) = (info.n_coords, info.n_constraints);
         check_len("coord_names", n, info.coord_names.len())?;
         check_len("row_names", m, info.row_names.len())?;
+        let mut kkt = K::new(&KktPattern::from_info(info))?;
+        if let Some(tolerance) = settings.drop_dependent_rows {
+            if !(tolerance > 0.0 && tolerance < 1.0) || !kkt.drop_dependent_rows(tolerance) {
+                return Err(Error::InvalidSetting {
+                    name: "drop_dependent_rows",
+                    value: tolerance,
+                    reason: "must lie in (0, 1), with a KKT solver that can drop rows (SchurKkt)",
+                });
+            }
+        }
         Ok(Kinematics {
             info,
             settings,
-            kkt: K::new(&KktPattern::from_info(info))?,
+            kkt,
             phi: vec![0.0; m],
             phi_q: vec![0.0; info.phi_q_nnz()],
             phi_t: vec![0.0; m],
@@ -167,6 +182,11 @@ impl<K: KktSolver> Kinematics<K> {
     /// The settings in use.
     pub fn settings(&self) -> KinematicSettings {
         self.settings
+    }
+
+    /// The conditioning of the last factorization (see [`crate::kkt::Pivots`]).
+    pub fn pivots(&self) -> Option<crate::kkt::Pivots> {
+        self.kkt.pivots()
     }
 
     /// Φq nonzeros of the last velocity or acceleration analysis, at its state (after a

@@ -52,7 +52,7 @@ pub use kinematic_path::{
     free_motion, FreeMotion, KinematicPath, PathStats, MAX_ACCELERATION_MISMATCH, MAX_OUTPUT_CHANGE,
 };
 pub use kinematics::{InitialVelocity, KinematicSettings, Kinematics, PositionReport};
-pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, SchurKkt};
+pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, Pivots, SchurKkt};
 pub use mechanism::{
     BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo, Mechanism,
     MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,

@@ -4,9 +4,10 @@
 //! three languages compute the same numbers by the same code.
 
 use crate::scenario::ScenarioError;
+use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
-    driver_effort, joint_wrench, Formulation, HhtBuilder, Integrator, Kinematics, Mechanism,
-    MechanismInfo, Registry, Wrench,
+    driver_effort, joint_wrench, Formulation, HhtBuilder, Integrator, KinematicSettings,
+    Kinematics, Mechanism, MechanismInfo, Registry, Wrench,
 };
 
 pub type Error = ScenarioError;
@@ -25,6 +26,9 @@ pub struct Settings {
     pub step: f64,
     /// Project velocities onto the constraints after each step (see `generic::Options`).
     pub project_velocities: bool,
+    /// Pass singular positions (`generic::Options::cross_singular`): the step and the
+    /// multipliers drop rows that are dependent at the state.
+    pub cross_singular_positions: bool,
 }
 
 impl Default for Settings {
@@ -34,6 +38,7 @@ impl Default for Settings {
             alpha: -0.05,
             step: 1e-3,
             project_velocities: false,
+            cross_singular_positions: false,
         }
     }
 }
@@ -65,15 +70,20 @@ impl Session {
             })?,
         };
         let info = mech.info();
+        let solves = KinematicSettings {
+            drop_dependent_rows: s.cross_singular_positions.then_some(DEFAULT_PIVOT_TOLERANCE),
+            ..KinematicSettings::default()
+        };
         let it = HhtBuilder::new()
             .alpha(s.alpha)
             .step(s.step)
             .qd0(info.qd0)
             .project_velocities(s.project_velocities)
+            .kinematic_settings(solves)
             .build(mech)?;
         Ok(Session {
             it,
-            kinematics: Kinematics::new(info)?,
+            kinematics: Kinematics::with_settings(info, solves)?,
             qdd: vec![0.0; info.n_coords],
             lambda: vec![0.0; info.n_constraints],
             phi_q: vec![0.0; info.phi_q_nnz()],

@@ -204,6 +204,35 @@ pub trait KktSolver: Sized {
         let _ = tolerance;
         false
     }
+
+    /// How close the last factorization came to rank loss, if the solver measures it
+    /// (`None` before a factorization, or from a solver that does not).
+    fn pivots(&self) -> Option<Pivots> {
+        None
+    }
+}
+
+/// The conditioning of the constraint rows in one factorization: how far `Φq` was from
+/// losing rank (near a singular position the multipliers, and every reaction built from
+/// them, amplify errors in the state by about `1 / smallest`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pivots {
+    /// The smallest pivot of `Φq M⁻¹ Φqᵀ` relative to its row's diagonal, over the rows
+    /// kept (1 for a row orthogonal to the others, 0 for a dependent one; 1 with no rows).
+    pub smallest: f64,
+    /// Rows dropped as dependent ([`KktSolver::drop_dependent_rows`]), declared redundant
+    /// rows aside: at such a state the multipliers are one valid choice, with those rows
+    /// carrying nothing.
+    pub dropped: usize,
+}
+
+impl Default for Pivots {
+    fn default() -> Self {
+        Pivots {
+            smallest: 1.0,
+            dropped: 0,
+        }
+    }
 }
 
 pub(crate) fn check_kkt_len(expected: usize, got: usize) -> Result<(), KktError> {

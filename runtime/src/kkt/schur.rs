@@ -9,7 +9,7 @@
 //! in the rank-loss branch, where it gets `D = 1`, `1/D = 0` and hence `y = 0`.
 
 use super::ordering::{minimum_degree, Symbolic};
-use super::{check_kkt_len, KktError, KktPattern, KktSolver, DEFAULT_PIVOT_TOLERANCE};
+use super::{check_kkt_len, KktError, KktPattern, KktSolver, Pivots, DEFAULT_PIVOT_TOLERANCE};
 use crate::error::Error;
 
 /// Largest group of mass-matrix blocks factored together as one dense block.
@@ -66,6 +66,8 @@ pub struct SchurKkt {
     /// Rows with a pivot below `pivot_tol` are dropped instead of reported
     /// ([`KktSolver::drop_dependent_rows`]).
     drop_dependent: bool,
+    /// Of the last factorization ([`KktSolver::pivots`]).
+    pivots: Pivots,
 }
 
 impl SchurKkt {
@@ -425,6 +427,7 @@ impl KktSolver for SchurKkt {
             factored: false,
             pivot_tol: DEFAULT_PIVOT_TOLERANCE,
             drop_dependent: false,
+            pivots: Pivots::default(),
         })
     }
 
@@ -475,6 +478,10 @@ impl KktSolver for SchurKkt {
         let mut bad = [0usize; 4];
         let mut nbad = 0;
         let mut worst = f64::INFINITY;
+        // The smallest kept pivot relative to its row's diag(S), as the pair (D, diag) so
+        // the loop compares by multiplication instead of dividing every row.
+        let (mut small_d, mut small_scale) = (1.0, 1.0);
+        let mut dropped = 0;
         let sym = &self.sym;
         self.work.fill(0.0);
         for j in 0..self.m {
@@ -505,6 +512,7 @@ impl KktSolver for SchurKkt {
                     continue;
                 }
                 if self.drop_dependent {
+                    dropped += 1;
                     // As a redundant row, once its column of L is cleared below. (Clamping the
                     // pivot instead keeps the row corrected, but Newton then converges too
                     // slowly along the nearly dependent direction to finish a step.)
@@ -525,6 +533,9 @@ impl KktSolver for SchurKkt {
                 }
                 continue;
             }
+            if dj * small_scale < small_d * scale {
+                (small_d, small_scale) = (dj, scale);
+            }
             self.diag[j] = dj;
             let inv = 1.0 / dj;
             self.dinv[j] = inv;
@@ -541,8 +552,16 @@ impl KktSolver for SchurKkt {
                 pivot: worst,
             });
         }
+        self.pivots = Pivots {
+            smallest: small_d / small_scale,
+            dropped,
+        };
         self.factored = true;
         Ok(())
+    }
+
+    fn pivots(&self) -> Option<Pivots> {
+        self.factored.then_some(self.pivots)
     }
 
     fn solve(
