@@ -22,7 +22,9 @@ const T_END: f64 = 3.5;
 const FLATS: usize = 4;
 /// Ten steps between 1e-3 and 1e-4 s, among them every one at which `simulate` stopped
 /// before the multipliers' solves dropped dependent rows too (5e-4, 4e-4, 2.5e-4, 2e-4, 1e-4).
-const STEPS: [f64; 10] = [1e-3, 8e-4, 6e-4, 5e-4, 4e-4, 3e-4, 2.5e-4, 2e-4, 1.5e-4, 1e-4];
+const STEPS: [f64; 10] = [
+    1e-3, 8e-4, 6e-4, 5e-4, 4e-4, 3e-4, 2.5e-4, 2e-4, 1.5e-4, 1e-4,
+];
 
 fn mechanism() -> &'static (dyn Mechanism + Sync) {
     REGISTRY.find(NAME).expect("registered").default_mechanism()
@@ -68,14 +70,21 @@ fn simulate_sweep(ks: impl Iterator<Item = usize>) -> Vec<(f64, f64)> {
         assert_eq!(flats, FLATS, "h = {h}");
         assert!(rec.max_phi < 1e-8, "h = {h}: |Φ| {}", rec.max_phi);
         let (drift, scale) = rec.energy_balance();
-        assert!(drift < 1e-4 * scale, "h = {h}: energy drift {drift} of {scale}");
+        assert!(
+            drift < 1e-4 * scale,
+            "h = {h}: energy drift {drift} of {scale}"
+        );
         // Flagged outputs (ill-conditioned reactions) are those near a flat position.
         let windows = rec.ill_conditioned();
         assert!(!windows.is_empty(), "h = {h}");
         for w in windows {
             let k = rec.t.iter().position(|&t| t == w.at).unwrap();
             let s = crank_sine(info, &rec.q[k]);
-            assert!(s.abs() < 0.05, "h = {h}: flagged at t = {} where sin θ = {s}", w.at);
+            assert!(
+                s.abs() < 0.05,
+                "h = {h}: flagged at t = {} where sin θ = {s}",
+                w.at
+            );
         }
         finals.push((h, crank_sine(info, rec.q.last().unwrap())));
     }
@@ -157,7 +166,10 @@ fn from_the_flat_position(h: f64) -> f64 {
     let (q0, qd0) = flat_state(info, 1.0);
     let mut phi = vec![0.0; info.n_constraints];
     mech.phi(&q0, 0.0, &mut phi);
-    assert!(phi.iter().all(|p| p.abs() < 1e-15), "not assembled: {phi:?}");
+    assert!(
+        phi.iter().all(|p| p.abs() < 1e-15),
+        "not assembled: {phi:?}"
+    );
     let solves = KinematicSettings {
         drop_dependent_rows: Some(DEFAULT_PIVOT_TOLERANCE),
         ..KinematicSettings::default()
@@ -206,7 +218,11 @@ fn from_the_flat_position(h: f64) -> f64 {
     // 0.5 s later.
     let e0 = total_energy(mech, &q0, &qd0);
     it.advance_to(0.5).unwrap();
-    assert!(crank_sine(info, it.q()) < -0.3, "{}", crank_sine(info, it.q()));
+    assert!(
+        crank_sine(info, it.q()) < -0.3,
+        "{}",
+        crank_sine(info, it.q())
+    );
     (total_energy(mech, it.q(), it.qd()) - e0).abs() / e0
 }
 
@@ -217,5 +233,8 @@ fn a_run_that_starts_exactly_on_a_flat_position_crosses_it_at_second_order() {
     let (coarse, fine) = (from_the_flat_position(1e-3), from_the_flat_position(5e-4));
     assert!(coarse < 3e-4, "{coarse}");
     let order = (coarse / fine).log2();
-    assert!((1.7..2.3).contains(&order), "{coarse} -> {fine}: order {order}");
+    assert!(
+        (1.7..2.3).contains(&order),
+        "{coarse} -> {fine}: order {order}"
+    );
 }

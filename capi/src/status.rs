@@ -102,6 +102,10 @@ impl Failure {
             E::Runtime(e) => e.into(),
             E::Options(s) => Failure::new(options, s),
             E::Layout(s) => Failure::new(SymbodyStatus::InvalidArgument, s),
+            // A session neither writes files nor watches for interrupts.
+            e @ (E::Interrupted { .. } | E::Output(_)) => {
+                Failure::new(SymbodyStatus::Solver, e.to_string())
+            }
         }
     }
 }

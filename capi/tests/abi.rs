@@ -733,5 +733,9 @@ fn a_session_with_the_flag_crosses_singular_positions() {
     // SAFETY: valid string and out pointer.
     let rc = unsafe { symbody_session_new_ex(name.as_ptr(), 0, 0.0, 1e-3, 4, &mut s) };
     assert_eq!(rc, status(SymbodyStatus::InvalidArgument));
-    assert!(s.is_null() && last_error().contains("flags"), "{}", last_error());
+    assert!(
+        s.is_null() && last_error().contains("flags"),
+        "{}",
+        last_error()
+    );
 }

@@ -7,6 +7,7 @@
 //! ones), and the summaries, CSVs, figures ([`plot`]) and the HTML viewer ([`viewer`]) are
 //! written here.
 
+mod live;
 pub mod plot;
 pub mod viewer;
 
@@ -155,6 +156,7 @@ enum Command {
 /// runs the command, prints its summary or error, and gives the exit code.
 pub fn main(registry: &Registry) -> ExitCode {
     let cli = Cli::parse();
+    live::catch_interrupts();
     let result = match cli.command {
         Command::List => {
             list(registry);
@@ -290,20 +292,50 @@ fn simulate_named(
     html: bool,
 ) -> Result<(), String> {
     let entry = generic::find(registry, name).map_err(|e| e.to_string())?;
-    let rec = generic::run(entry, opts).map_err(|e| format!("{name}: {e}"))?;
+    let mut live = live::Live::new(out, opts.t_end.unwrap_or(entry.t_end));
+    let run = generic::run_observed(entry, opts, &mut live);
     // Every output time is landed on, so no step is longer than the output spacing.
     let method = format!(
         "step {} s, alpha {}, velocities projected",
         opts.step.min(opts.output_step),
         opts.alpha
     );
-    report_named(&rec, &method, out, plots, html)
+    report_run(run, live, &method, out, plots, html).map_err(|e| format!("{name}: {e}"))
+}
+
+/// The summary and files of a generic run that went to its end, or of the part a stopped
+/// one recorded, with where and why it stopped (then the error).
+fn report_run(
+    run: Result<generic::Recording, generic::Stopped>,
+    live: live::Live,
+    method: &str,
+    out: &std::path::Path,
+    plots: bool,
+    html: bool,
+) -> Result<(), String> {
+    let csvs = live.finish()?;
+    match run {
+        Ok(rec) => report_named(&rec, csvs, method, out, plots, html),
+        Err(generic::Stopped {
+            recording: Some(rec),
+            error,
+        }) if !rec.t.is_empty() => {
+            report_named(&rec, csvs, method, out, plots, html)?;
+            say!(
+                "  stopped          after the output at t = {:.6} s: {error}",
+                rec.t.last().copied().unwrap_or(0.0)
+            );
+            Err(error.to_string())
+        }
+        Err(stopped) => Err(stopped.error.to_string()),
+    }
 }
 
 /// The summary and files of a generic run (`simulate <name>` or a scene with tables);
 /// `method` says how it was solved.
 fn report_named(
     rec: &generic::Recording,
+    csvs: Vec<std::path::PathBuf>,
     method: &str,
     out: &std::path::Path,
     plots: bool,
@@ -394,7 +426,10 @@ fn report_named(
             w.name, w.beta, w.time
         );
     }
-    let files = plot::write_outputs(rec, out, plots)?;
+    let mut files = csvs;
+    if plots {
+        files.extend(plot::write_plots(rec, out)?);
+    }
     let names: Vec<&str> = files
         .iter()
         .filter_map(|f| f.file_name()?.to_str())
@@ -471,6 +506,7 @@ fn simulate(
     plots: bool,
     html: bool,
 ) -> Result<(), String> {
+    live::check_folder(out)?;
     let run = scenario::simulate(registry, opts).map_err(|e| match e {
         scenario::ScenarioError::Runtime(symbody_runtime::Error::EulerSingularity {
             time, ..
@@ -599,8 +635,10 @@ fn run_scene(
         shown.strip_prefix("error: ").unwrap_or(&shown).to_string()
     })?;
     let entry = generic::find(registry, scene.mechanism).map_err(|e| e.to_string())?;
-    let (choice, outcome) =
-        scene::run(&scene, entry).map_err(|e| format!("{}: {e}", path.display()))?;
+    live::check_folder(out)?;
+    let mut live = live::Live::new(out, scene.t_end);
+    let (choice, outcome) = scene::run_observed(&scene, entry, &mut live)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     let info = generic::mechanism(entry, Some(scene.formulation))
         .map_err(|e| e.to_string())?
         .info();
@@ -616,11 +654,16 @@ fn run_scene(
             scene.alpha
         ),
     };
+    let at = |e: String| format!("{}: {e}", path.display());
     match outcome {
-        scene::Outcome::Paper(run) => {
+        Ok(scene::Outcome::Paper(run)) => {
+            live.finish()?;
             report_paper(registry, &run, scene.formulation, &method, out, plots, html)
         }
-        scene::Outcome::Tables(rec) => report_named(&rec, &method, out, plots, html),
+        Ok(scene::Outcome::Tables(rec)) => {
+            report_run(Ok(rec), live, &method, out, plots, html).map_err(at)
+        }
+        Err(stopped) => report_run(Err(stopped), live, &method, out, plots, html).map_err(at),
     }
 }
 

@@ -7,7 +7,7 @@ use plotters::style::FontStyle;
 use std::path::{Path, PathBuf};
 use std::sync::Once;
 use symbody::fk::Sample;
-use symbody::generic::{self, Recording};
+use symbody::generic::Recording;
 use symbody::scenario::Run;
 
 static FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
@@ -293,18 +293,6 @@ pub fn draw_log_log(
         }
         Ok(())
     })
-}
-
-/// Writes everything `symbody simulate <name>` writes into `dir`: the CSVs
-/// ([`generic::write_csvs`]) and, with `plots`, the figures ([`write_plots`]). Returns the
-/// files written; the error names the folder or file that could not be written.
-pub fn write_outputs(rec: &Recording, dir: &Path, plots: bool) -> Result<Vec<PathBuf>, String> {
-    let mut files = generic::write_csvs(rec, dir)
-        .map_err(|e| format!("cannot write CSVs to {}: {e}", dir.display()))?;
-    if plots {
-        files.extend(write_plots(rec, dir)?);
-    }
-    Ok(files)
 }
 
 /// Draws `drivers.png` (one panel per driver, if any) and `position_<body>.png` (X, Y, Z

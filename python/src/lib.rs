@@ -26,6 +26,7 @@ use symbody_runtime::{Error as RuntimeError, Formulation, JointKind, MechanismIn
 fn py_err(e: ScenarioError) -> PyErr {
     let bad_input = match &e {
         ScenarioError::Options(_) | ScenarioError::Layout(_) => true,
+        ScenarioError::Interrupted { .. } | ScenarioError::Output(_) => false,
         ScenarioError::Runtime(r) => matches!(
             r,
             RuntimeError::InvalidSetting { .. }

@@ -4,9 +4,8 @@
 
 pub use symbody_codegen::diag::closest;
 
-use crate::output::write;
 use crate::scenario::{output_count, ScenarioError};
-use std::path::{Path, PathBuf};
+use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
@@ -221,6 +220,50 @@ pub fn mechanism(
     }
 }
 
+/// What a caller sees of a run while it goes: each output as soon as it is recorded (to
+/// write it before the run goes on) and the progress after every step; either may stop the
+/// run. `()` watches nothing.
+pub trait Observer {
+    /// Once, before the first output, with the empty recording: a caller may narrow what
+    /// it records (`bodies`, `joints`, `drivers`, `energy_table`) and open its files.
+    fn start(&mut self, rec: &mut Recording) -> Result<(), Error> {
+        let _ = rec;
+        Ok(())
+    }
+
+    /// After each output is recorded (the last entry of every per-output `Vec`).
+    fn output(&mut self, rec: &Recording) -> Result<(), Error> {
+        let _ = rec;
+        Ok(())
+    }
+
+    /// After every accepted step (the kinematic path: every output) at time `t`;
+    /// `Break` stops the run with [`ScenarioError::Interrupted`].
+    fn progress(&mut self, t: f64) -> ControlFlow<()> {
+        let _ = t;
+        ControlFlow::Continue(())
+    }
+}
+
+impl Observer for () {}
+
+/// A run that stopped before its end: the outputs it recorded up to its last good state
+/// (`None` if it stopped before it had a mechanism), and why it stopped.
+#[derive(Debug)]
+pub struct Stopped {
+    pub recording: Option<Box<Recording>>,
+    pub error: Error,
+}
+
+impl From<Error> for Stopped {
+    fn from(error: Error) -> Self {
+        Stopped {
+            recording: None,
+            error,
+        }
+    }
+}
+
 /// Simulates `entry` with `opts`: what `symbody simulate <name>` runs before writing.
 ///
 /// The integrator projects the velocities onto the constraints after every step, and the
@@ -228,39 +271,97 @@ pub fn mechanism(
 /// loads is integrated at the integration step. Reactions come from the multipliers of the
 /// saddle-point solve at each output state.
 pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
+    run_observed(entry, opts, &mut ()).map_err(|s| s.error)
+}
+
+/// [`run`], telling `obs` as it goes; a run that fails or is stopped returns what it
+/// recorded.
+pub fn run_observed(
+    entry: &Entry,
+    opts: &Options,
+    obs: &mut dyn Observer,
+) -> Result<Recording, Stopped> {
+    observed(entry, opts, obs, integrate)
+}
+
+/// The loop of a run: outputs at `k · output_step` (k = 0..=n_out) up to `t_end`.
+type Loop = fn(
+    &'static (dyn Mechanism + Sync),
+    &Options,
+    (f64, usize),
+    &mut Recording,
+    &mut dyn Observer,
+) -> Result<(), Error>;
+
+/// Runs `body` on a fresh recording that `obs` has seen start, timing it.
+fn observed(
+    entry: &Entry,
+    opts: &Options,
+    obs: &mut dyn Observer,
+    body: Loop,
+) -> Result<Recording, Stopped> {
     let mech = mechanism(entry, opts.formulation)?;
-    let info = mech.info();
     let t_end = opts.t_end.unwrap_or(entry.t_end);
     let n_out = output_count(t_end, opts.output_step)?;
+    let mut rec = Recording::new(mech.info());
+    obs.start(&mut rec)?;
     let start = Instant::now();
+    let result = body(mech, opts, (t_end, n_out), &mut rec, obs);
+    rec.wall = start.elapsed();
+    match result {
+        Ok(()) => Ok(rec),
+        Err(error) => Err(Stopped {
+            recording: Some(Box::new(rec)),
+            error,
+        }),
+    }
+}
+
+/// The integration loop of [`run_observed`].
+fn integrate(
+    mech: &'static (dyn Mechanism + Sync),
+    opts: &Options,
+    (t_end, n_out): (f64, usize),
+    rec: &mut Recording,
+    obs: &mut dyn Observer,
+) -> Result<(), Error> {
+    let info = mech.info();
     let mut it = integrator(mech, opts)?;
     let mut meter: EnergyMeter = EnergyMeter::with_settings(info, solve_settings(opts))?;
     let mut watch = ResidualWatch::new(info);
-    let mut rec = Recording::new(info);
     let modes = mode_watch(mech, it.q())?;
     let mut sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(t_end);
         // One accepted step per call, so the meter sees every step.
-        while it.step_toward(t_out)?.is_some() {
+        loop {
+            let stepped = it.step_toward(t_out);
+            // The counters and warnings so far belong to the recording even if this step
+            // failed.
+            rec.stats = it.stats();
+            rec.euler_warning = it.first_euler_warning();
+            if stepped?.is_none() {
+                break;
+            }
             if let Some(w) = &modes {
                 w.check(it.q(), it.t())?;
             }
             sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
+            if obs.progress(it.t()).is_break() {
+                return Err(ScenarioError::Interrupted { time: it.t() });
+            }
         }
         record(
-            &mut rec,
+            rec,
             &meter,
             &mut watch,
             mech,
             (it.t(), it.q(), it.qd()),
             sample,
         )?;
+        obs.output(rec)?;
     }
-    rec.stats = it.stats();
-    rec.euler_warning = it.first_euler_warning();
-    rec.wall = start.elapsed();
-    Ok(rec)
+    Ok(())
 }
 
 /// As [`run`], by the kinematic path (docs/design.md, decision 23) instead of integration:
@@ -269,36 +370,56 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
 /// free direction with momentum (`symbody::scene::choose_path` checks); `opts.step` and
 /// `opts.alpha` do not apply. The work of drivers and loads is integrated over the outputs.
 pub fn run_kinematic(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
-    let mech = mechanism(entry, opts.formulation)?;
+    run_kinematic_observed(entry, opts, &mut ()).map_err(|s| s.error)
+}
+
+/// [`run_kinematic`], telling `obs` as it goes (see [`run_observed`]).
+pub fn run_kinematic_observed(
+    entry: &Entry,
+    opts: &Options,
+    obs: &mut dyn Observer,
+) -> Result<Recording, Stopped> {
+    observed(entry, opts, obs, follow_path)
+}
+
+/// The loop of [`run_kinematic_observed`].
+fn follow_path(
+    mech: &'static (dyn Mechanism + Sync),
+    opts: &Options,
+    (t_end, n_out): (f64, usize),
+    rec: &mut Recording,
+    obs: &mut dyn Observer,
+) -> Result<(), Error> {
     let info = mech.info();
-    let t_end = opts.t_end.unwrap_or(entry.t_end);
-    let n_out = output_count(t_end, opts.output_step)?;
-    let start = Instant::now();
     let mut path = KinematicPath::<_>::new(mech, 0.0)?;
     let mut meter: EnergyMeter = EnergyMeter::new(info)?;
     let mut watch = ResidualWatch::new(info);
-    let mut rec = Recording::new(info);
     let modes = mode_watch(mech, path.q())?;
     for k in 0..=n_out {
         if k > 0 {
-            path.advance_to((k as f64 * opts.output_step).min(t_end))?;
+            let advanced = path.advance_to((k as f64 * opts.output_step).min(t_end));
+            rec.kinematic = Some(path.stats());
+            advanced?;
         }
         if let Some(w) = &modes {
             w.check(path.q(), path.t())?;
         }
         let sample = meter.record(&mech, path.t(), path.q(), path.qd())?;
         record(
-            &mut rec,
+            rec,
             &meter,
             &mut watch,
             mech,
             (path.t(), path.q(), path.qd()),
             sample,
         )?;
+        rec.kinematic = Some(path.stats());
+        obs.output(rec)?;
+        if obs.progress(path.t()).is_break() {
+            return Err(ScenarioError::Interrupted { time: path.t() });
+        }
     }
-    rec.kinematic = Some(path.stats());
-    rec.wall = start.elapsed();
-    Ok(rec)
+    Ok(())
 }
 
 /// A six-leg platform must stay on its assembly mode: a step across a parallel singularity
@@ -429,118 +550,7 @@ fn record<M: Mechanism>(
     Ok(())
 }
 
-/// One output table of a run: what `symbody simulate <name>` writes to `<stem>.csv` and what
-/// the Python package returns as `simulate(name)[stem]`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Table {
-    /// File stem: `bodies`, `joints`, `drivers` or `energy`.
-    pub stem: &'static str,
-    /// Column names, `t` first.
-    pub columns: Vec<String>,
-    /// One row per output time, `columns.len()` values each.
-    pub rows: Vec<Vec<f64>>,
-}
-
-/// The tables of a run: body poses, joint wrenches, driver efforts and energies, one column
-/// group per recorded body, joint and driver; a table with nothing recorded is left out.
-pub fn tables(rec: &Recording) -> Vec<Table> {
-    let info = rec.info;
-    let header = |names: Vec<String>| std::iter::once("t".to_string()).chain(names).collect();
-    let with_t = |k: usize, values: Vec<f64>| {
-        std::iter::once(rec.t[k])
-            .chain(values)
-            .collect::<Vec<f64>>()
-    };
-    let tables = [
-        Table {
-            stem: "bodies",
-            columns: header(
-                rec.bodies
-                    .iter()
-                    .flat_map(|&b| {
-                        ["x", "y", "z", "qw", "qx", "qy", "qz"]
-                            .map(|c| format!("{}.{c}", info.bodies[b].name))
-                    })
-                    .collect(),
-            ),
-            rows: (0..rec.t.len())
-                .map(|k| {
-                    with_t(
-                        k,
-                        rec.bodies
-                            .iter()
-                            .flat_map(|&b| {
-                                let (r, e) = &rec.poses[k][b];
-                                r.iter().chain(e).copied()
-                            })
-                            .collect(),
-                    )
-                })
-                .collect(),
-        },
-        Table {
-            stem: "joints",
-            columns: header(
-                rec.joints
-                    .iter()
-                    .flat_map(|&j| {
-                        ["fx", "fy", "fz", "mx", "my", "mz"]
-                            .map(|c| format!("{}.{c}", info.joints[j].name))
-                    })
-                    .collect(),
-            ),
-            rows: (0..rec.t.len())
-                .map(|k| {
-                    with_t(
-                        k,
-                        rec.wrenches[k]
-                            .iter()
-                            .flat_map(|w| w.force.iter().chain(&w.moment).copied())
-                            .collect(),
-                    )
-                })
-                .collect(),
-        },
-        Table {
-            stem: "drivers",
-            columns: header(
-                rec.drivers
-                    .iter()
-                    .map(|&j| info.joints[j].name.to_string())
-                    .collect(),
-            ),
-            rows: (0..rec.t.len())
-                .map(|k| with_t(k, rec.efforts[k].clone()))
-                .collect(),
-        },
-        Table {
-            stem: "energy",
-            columns: header(["kinetic", "potential", "work"].map(String::from).to_vec()),
-            rows: (0..rec.t.len())
-                .map(|k| {
-                    let e = &rec.energy[k];
-                    with_t(k, vec![e.kinetic, e.potential, e.work])
-                })
-                .collect(),
-        },
-    ];
-    tables
-        .into_iter()
-        .filter(|t| t.columns.len() > 1 && (t.stem != "energy" || rec.energy_table))
-        .collect()
-}
-
-/// Writes `bodies.csv`, `joints.csv`, `drivers.csv` and `energy.csv` ([`tables`]) into `dir`.
-pub fn write_csvs(rec: &Recording, dir: &Path) -> std::io::Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir)?;
-    let mut written = Vec::new();
-    for table in tables(rec) {
-        let path = dir.join(format!("{}.csv", table.stem));
-        write(&path, &table.columns.join(","), table.rows.into_iter())?;
-        written.push(path);
-    }
-    Ok(written)
-}
+pub use crate::tables::{tables, write_csvs, Table};
 
 #[cfg(test)]
 mod tests {

@@ -14,3 +14,4 @@ pub mod output;
 pub mod scenario;
 pub mod scene;
 pub mod session;
+pub mod tables;

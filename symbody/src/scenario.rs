@@ -132,13 +132,20 @@ pub enum ScenarioError {
     Layout(String),
     /// An option is out of range.
     Options(String),
+    /// The caller stopped the run (Ctrl-C) at this simulated time.
+    Interrupted { time: f64 },
+    /// An output could not be written.
+    Output(String),
 }
 
 impl std::fmt::Display for ScenarioError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             ScenarioError::Runtime(e) => write!(f, "{e}"),
-            ScenarioError::Layout(s) | ScenarioError::Options(s) => write!(f, "{s}"),
+            ScenarioError::Layout(s) | ScenarioError::Options(s) | ScenarioError::Output(s) => {
+                write!(f, "{s}")
+            }
+            ScenarioError::Interrupted { time } => write!(f, "interrupted at t = {time:.6} s"),
         }
     }
 }

@@ -71,7 +71,9 @@ impl Session {
         };
         let info = mech.info();
         let solves = KinematicSettings {
-            drop_dependent_rows: s.cross_singular_positions.then_some(DEFAULT_PIVOT_TOLERANCE),
+            drop_dependent_rows: s
+                .cross_singular_positions
+                .then_some(DEFAULT_PIVOT_TOLERANCE),
             ..KinematicSettings::default()
         };
         let it = HhtBuilder::new()

@@ -28,7 +28,7 @@ mod parse;
 pub mod run;
 
 pub use parse::load;
-pub use run::{choose_path, run, Outcome, PathChoice};
+pub use run::{choose_path, run, run_observed, Outcome, PathChoice};
 
 use symbody_runtime::Formulation;
 

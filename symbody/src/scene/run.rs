@@ -9,7 +9,7 @@ use symbody_runtime::{
 };
 
 use super::{Files, PathRequest, Scene};
-use crate::generic::{self, Recording};
+use crate::generic::{self, Observer, Recording, Stopped};
 use crate::scenario::{self, Reactions, Run, ScenarioError};
 
 /// How a scene is solved, and why.
@@ -167,6 +167,18 @@ fn requested_joints(scene: &Scene, info: &symbody_runtime::MechanismInfo) -> Vec
 /// Runs `scene`: chooses the path, runs it, and restricts the recording to the requested
 /// outputs. The recorded wall time includes the choice.
 pub fn run(scene: &Scene, entry: &Entry) -> Result<(PathChoice, Outcome), ScenarioError> {
+    let (choice, outcome) = run_observed(scene, entry, &mut ())?;
+    Ok((choice, outcome.map_err(|s| s.error)?))
+}
+
+/// [`run`], telling `obs` as it goes when the scene writes tables (`files = "paper"` runs
+/// the paper scenario, which it does not see); the outcome of a run that stopped is what it
+/// recorded, and why. The outer error: no path could be chosen.
+pub fn run_observed(
+    scene: &Scene,
+    entry: &Entry,
+    obs: &mut dyn Observer,
+) -> Result<(PathChoice, Result<Outcome, Stopped>), ScenarioError> {
     let mech = generic::mechanism(entry, Some(scene.formulation))?;
     // The choice is part of the run's cost: its wall time is added to the run's.
     let clock = Instant::now();
@@ -183,13 +195,16 @@ pub fn run(scene: &Scene, entry: &Entry) -> Result<(PathChoice, Outcome), Scenar
                 output_step: scene.output_step,
                 reactions: Reactions::Recovered,
             };
-            let mut run = if kinematic {
-                scenario::kinematic_mechanism(mech, &opts)?
+            let run = if kinematic {
+                scenario::kinematic_mechanism(mech, &opts)
             } else {
-                scenario::simulate_mechanism(mech, &opts)?
+                scenario::simulate_mechanism(mech, &opts)
             };
-            run.wall += choice_wall;
-            Outcome::Paper(run)
+            run.map(|mut run| {
+                run.wall += choice_wall;
+                Outcome::Paper(run)
+            })
+            .map_err(Stopped::from)
         }
         Files::Tables => {
             let opts = generic::Options {
@@ -200,34 +215,50 @@ pub fn run(scene: &Scene, entry: &Entry) -> Result<(PathChoice, Outcome), Scenar
                 output_step: scene.output_step,
                 cross_singular: scene.cross_singular,
             };
-            let mut rec = if kinematic {
-                generic::run_kinematic(entry, &opts)?
+            let mut obs = Restricted { scene, inner: obs };
+            let rec = if kinematic {
+                generic::run_kinematic_observed(entry, &opts, &mut obs)
             } else {
-                generic::run(entry, &opts)?
+                generic::run_observed(entry, &opts, &mut obs)
             };
-            restrict(&mut rec, scene);
-            rec.wall += choice_wall;
-            Outcome::Tables(rec)
+            rec.map(|mut rec| {
+                rec.wall += choice_wall;
+                Outcome::Tables(rec)
+            })
         }
     };
     Ok((choice, outcome))
 }
 
-/// Keeps only the outputs `scene` asks for.
+/// Narrows the recording to the scene's outputs before the first one, then passes
+/// everything on.
+struct Restricted<'a> {
+    scene: &'a Scene,
+    inner: &'a mut dyn Observer,
+}
+
+impl Observer for Restricted<'_> {
+    fn start(&mut self, rec: &mut Recording) -> Result<(), ScenarioError> {
+        restrict(rec, self.scene);
+        self.inner.start(rec)
+    }
+    fn output(&mut self, rec: &Recording) -> Result<(), ScenarioError> {
+        self.inner.output(rec)
+    }
+    fn progress(&mut self, t: f64) -> std::ops::ControlFlow<()> {
+        self.inner.progress(t)
+    }
+}
+
+/// Records only the outputs `scene` asks for (before the first output: nothing is
+/// computed for the others).
 fn restrict(rec: &mut Recording, scene: &Scene) {
     let info = rec.info;
     rec.bodies = scene.poses.indices(info.bodies.len());
     let keep = requested_joints(scene, info);
-    let columns: Vec<usize> = (0..rec.joints.len())
-        .filter(|&c| keep.contains(&rec.joints[c]))
-        .collect();
-    rec.joints = columns.iter().map(|&c| rec.joints[c]).collect();
-    for w in &mut rec.wrenches {
-        *w = columns.iter().map(|&c| w[c]).collect();
-    }
+    rec.joints.retain(|j| keep.contains(j));
     if !scene.efforts {
         rec.drivers.clear();
-        rec.efforts.iter_mut().for_each(Vec::clear);
     }
     rec.energy_table = scene.energy;
 }

@@ -1,0 +1,132 @@
+//! What a run shows and writes while it goes: its tables as CSV output by output (so a run
+//! that fails or is interrupted keeps everything up to its last good state), a progress bar
+//! on a terminal, and Ctrl-C as a request to stop after the current step.
+
+use indicatif::{ProgressBar, ProgressStyle};
+use std::ops::ControlFlow;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::OnceLock;
+use std::time::{Duration, Instant};
+use symbody::generic::{Observer, Recording};
+use symbody::scenario::ScenarioError;
+use symbody::tables::CsvTables;
+
+/// Set by Ctrl-C; a second Ctrl-C while a run is stopping ends the process.
+static INTERRUPTED: OnceLock<&'static AtomicBool> = OnceLock::new();
+
+/// Makes Ctrl-C stop the run after its current step instead of killing the process (once
+/// per process; later calls do nothing).
+pub fn catch_interrupts() {
+    INTERRUPTED.get_or_init(|| {
+        let flag: &'static AtomicBool = Box::leak(Box::new(AtomicBool::new(false)));
+        // Without a handler (e.g. in a sandbox that forbids it) Ctrl-C keeps its default.
+        let _ = ctrlc::set_handler(move || {
+            if flag.swap(true, Ordering::SeqCst) {
+                std::process::exit(130);
+            }
+        });
+        flag
+    });
+}
+
+fn interrupted() -> bool {
+    INTERRUPTED.get().is_some_and(|f| f.load(Ordering::Relaxed))
+}
+
+/// Fails with a message naming `dir` unless it can be created and written: checked before a
+/// run, not after it.
+pub fn check_folder(dir: &Path) -> Result<(), String> {
+    let probe = dir.join(".symbody-write-check");
+    std::fs::create_dir_all(dir)
+        .and_then(|()| std::fs::write(&probe, b""))
+        .and_then(|()| std::fs::remove_file(&probe))
+        .map_err(|e| cannot_write(dir, &e))
+}
+
+fn cannot_write(dir: &Path, e: &std::io::Error) -> String {
+    format!(
+        "cannot write to {}: {e}; choose another folder with --out",
+        dir.display()
+    )
+}
+
+/// The observer of a run whose tables go to `dir`.
+pub struct Live {
+    dir: PathBuf,
+    tables: Option<CsvTables>,
+    bar: ProgressBar,
+    t_end: f64,
+    steps: usize,
+    /// When the message was last set (`None`: not yet, so the first step sets it).
+    drawn: Option<Instant>,
+}
+
+/// Between redraws of the progress message.
+const REDRAW: Duration = Duration::from_millis(100);
+
+impl Live {
+    /// For a run to `t_end` (s) writing into `dir`. The bar draws only on a terminal
+    /// (stderr), so piped or captured output stays clean.
+    pub fn new(dir: &Path, t_end: f64) -> Self {
+        let bar = ProgressBar::new(1000);
+        bar.set_style(
+            ProgressStyle::with_template("{bar:24} {msg}, {eta} left").expect("a valid template"),
+        );
+        Live {
+            dir: dir.to_path_buf(),
+            tables: None,
+            bar,
+            t_end,
+            steps: 0,
+            drawn: None,
+        }
+    }
+
+    /// Clears the bar and closes the files; returns them.
+    pub fn finish(self) -> Result<Vec<PathBuf>, String> {
+        self.bar.finish_and_clear();
+        match self.tables {
+            Some(t) => t.finish().map_err(|e| cannot_write(&self.dir, &e)),
+            None => Ok(Vec::new()),
+        }
+    }
+}
+
+impl Observer for Live {
+    fn start(&mut self, rec: &mut Recording) -> Result<(), ScenarioError> {
+        let tables = CsvTables::create(rec, &self.dir)
+            .map_err(|e| ScenarioError::Output(cannot_write(&self.dir, &e)))?;
+        self.tables = Some(tables);
+        Ok(())
+    }
+
+    fn output(&mut self, rec: &Recording) -> Result<(), ScenarioError> {
+        if let Some(t) = &mut self.tables {
+            t.append(rec, rec.t.len() - 1)
+                .map_err(|e| ScenarioError::Output(cannot_write(&self.dir, &e)))?;
+        }
+        Ok(())
+    }
+
+    fn progress(&mut self, t: f64) -> ControlFlow<()> {
+        self.steps += 1;
+        if self.drawn.is_none_or(|d| d.elapsed() >= REDRAW) {
+            self.drawn = Some(Instant::now());
+            let elapsed = self.bar.elapsed().as_secs_f64().max(1e-9);
+            self.bar
+                .set_position((1000.0 * t / self.t_end).clamp(0.0, 1000.0) as u64);
+            self.bar.set_message(format!(
+                "t = {t:.3}/{} s, {} steps, {:.0}/s",
+                self.t_end,
+                self.steps,
+                self.steps as f64 / elapsed
+            ));
+        }
+        if interrupted() {
+            ControlFlow::Break(())
+        } else {
+            ControlFlow::Continue(())
+        }
+    }
+}

@@ -1,0 +1,173 @@
+//! The tables of a generic run (`bodies`, `joints`, `drivers`, `energy`): their columns, one
+//! row per output, whole for Python and tests, and as CSV files written while the run goes,
+//! so that a run that stops keeps every output it reached.
+
+use crate::generic::Recording;
+use std::fs::File;
+use std::io::{self, BufWriter};
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+/// One output table of a run: what `symbody simulate <name>` writes to `<stem>.csv` and what
+/// the Python package returns as `simulate(name)[stem]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// File stem: `bodies`, `joints`, `drivers` or `energy`.
+    pub stem: &'static str,
+    /// Column names, `t` first.
+    pub columns: Vec<String>,
+    /// One row per output time, `columns.len()` values each.
+    pub rows: Vec<Vec<f64>>,
+}
+
+const STEMS: [&str; 4] = ["bodies", "joints", "drivers", "energy"];
+
+/// The stems and columns (`t` first) of the tables `rec` records: one column group per
+/// recorded body, joint and driver; a table with nothing recorded is left out.
+pub fn columns(rec: &Recording) -> Vec<(&'static str, Vec<String>)> {
+    let info = rec.info;
+    let named = |names: &[usize], label: &dyn Fn(usize) -> &'static str, parts: &[&str]| {
+        names
+            .iter()
+            .flat_map(|&i| {
+                let name = label(i);
+                parts.iter().map(move |c| format!("{name}.{c}"))
+            })
+            .collect::<Vec<_>>()
+    };
+    STEMS
+        .into_iter()
+        .filter_map(|stem| {
+            let values = match stem {
+                "bodies" => named(
+                    &rec.bodies,
+                    &|b| info.bodies[b].name,
+                    &["x", "y", "z", "qw", "qx", "qy", "qz"],
+                ),
+                "joints" => named(
+                    &rec.joints,
+                    &|j| info.joints[j].name,
+                    &["fx", "fy", "fz", "mx", "my", "mz"],
+                ),
+                "drivers" => rec
+                    .drivers
+                    .iter()
+                    .map(|&j| info.joints[j].name.to_string())
+                    .collect(),
+                _ if rec.energy_table => ["kinetic", "potential", "work"].map(String::from).into(),
+                _ => Vec::new(),
+            };
+            (!values.is_empty()).then(|| {
+                (
+                    stem,
+                    std::iter::once("t".to_string()).chain(values).collect(),
+                )
+            })
+        })
+        .collect()
+}
+
+/// Row `k` (output `rec.t[k]`) of the table `stem`, `t` first.
+pub fn row(rec: &Recording, stem: &str, k: usize) -> Vec<f64> {
+    let mut row = vec![rec.t[k]];
+    match stem {
+        "bodies" => row.extend(rec.bodies.iter().flat_map(|&b| {
+            let (r, e) = &rec.poses[k][b];
+            r.iter().chain(e).copied()
+        })),
+        "joints" => row.extend(
+            rec.wrenches[k]
+                .iter()
+                .flat_map(|w| w.force.iter().chain(&w.moment).copied()),
+        ),
+        "drivers" => row.extend(&rec.efforts[k]),
+        _ => {
+            let e = &rec.energy[k];
+            row.extend([e.kinetic, e.potential, e.work]);
+        }
+    }
+    row
+}
+
+/// The tables of a run, whole ([`columns`], every output's [`row`]).
+pub fn tables(rec: &Recording) -> Vec<Table> {
+    columns(rec)
+        .into_iter()
+        .map(|(stem, columns)| Table {
+            stem,
+            columns,
+            rows: (0..rec.t.len()).map(|k| row(rec, stem, k)).collect(),
+        })
+        .collect()
+}
+
+/// Writes `bodies.csv`, `joints.csv`, `drivers.csv` and `energy.csv` ([`tables`]) into `dir`.
+pub fn write_csvs(rec: &Recording, dir: &Path) -> io::Result<Vec<PathBuf>> {
+    let mut files = CsvTables::create(rec, dir)?;
+    for k in 0..rec.t.len() {
+        files.append(rec, k)?;
+    }
+    files.finish()
+}
+
+/// How long rows may wait in memory before they are flushed to disk: a run that is killed
+/// loses at most this much of its output, and a run with many small outputs does not pay a
+/// system call for each.
+const FLUSH_EVERY: Duration = Duration::from_millis(200);
+
+/// The tables' CSV files, open while a run goes: [`CsvTables::create`] writes the headers
+/// before the first step (so an unwritable folder is reported before any work), and
+/// [`CsvTables::append`] each output as it is recorded.
+pub struct CsvTables {
+    files: Vec<(&'static str, PathBuf, csv::Writer<BufWriter<File>>)>,
+    flushed: Instant,
+}
+
+impl CsvTables {
+    /// Creates `dir` and one file per table of `rec` (its selection of bodies, joints,
+    /// drivers; no rows yet), with its header. Names from the mechanism file are quoted
+    /// where CSV needs it.
+    pub fn create(rec: &Recording, dir: &Path) -> io::Result<Self> {
+        std::fs::create_dir_all(dir)?;
+        let mut files = Vec::new();
+        for (stem, columns) in columns(rec) {
+            let path = dir.join(format!("{stem}.csv"));
+            let mut w = csv::Writer::from_writer(BufWriter::new(File::create(&path)?));
+            w.write_record(&columns)?;
+            files.push((stem, path, w));
+        }
+        let mut tables = CsvTables {
+            files,
+            flushed: Instant::now(),
+        };
+        tables.flush()?;
+        Ok(tables)
+    }
+
+    /// Appends output `k` of `rec` to every file (flushing now and then, see
+    /// [`FLUSH_EVERY`]).
+    pub fn append(&mut self, rec: &Recording, k: usize) -> io::Result<()> {
+        for (stem, _, w) in &mut self.files {
+            // Shortest text that reads back to the same f64 (as the paper's CSVs).
+            w.write_record(row(rec, stem, k).iter().map(|v| format!("{v:?}")))?;
+        }
+        if self.flushed.elapsed() >= FLUSH_EVERY {
+            self.flush()?;
+        }
+        Ok(())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        for (_, _, w) in &mut self.files {
+            w.flush()?;
+        }
+        self.flushed = Instant::now();
+        Ok(())
+    }
+
+    /// Flushes every file and returns their paths.
+    pub fn finish(mut self) -> io::Result<Vec<PathBuf>> {
+        self.flush()?;
+        Ok(self.files.into_iter().map(|(_, path, _)| path).collect())
+    }
+}

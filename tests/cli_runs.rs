@@ -1,0 +1,170 @@
+//! Nothing lost, nothing silent, on the command line: a run writes its tables as it goes, so
+//! one that fails or is interrupted keeps every output up to its last good state and says
+//! where and why it stopped; an unwritable output folder is reported before any work; long
+//! runs show progress on a terminal and print nothing extra when not on one.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+const BIN: &str = env!("CARGO_BIN_EXE_symbody");
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("symbody-runs-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+/// The data rows of a CSV (header aside), each as numbers.
+fn rows(path: &Path) -> Vec<Vec<f64>> {
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    text.lines()
+        .skip(1)
+        .filter(|l| !l.is_empty())
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect()
+}
+
+#[test]
+fn a_run_that_fails_keeps_its_outputs_and_says_where_and_why_it_stopped() {
+    // hexapod_twist drives its platform into a parallel singularity at t = 1.797 s, by design.
+    let dir = temp_dir("hexapod");
+    let out = Command::new(BIN)
+        .args(["simulate", "hexapod_twist", "--no-plots", "--out"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert!(!out.status.success());
+    assert!(
+        stderr.contains("parallel singularity at t = 1.797"),
+        "{stderr}"
+    );
+    assert!(
+        stdout.contains("stopped          after the output at t = 1.790000 s"),
+        "{stdout}"
+    );
+    for stem in ["bodies", "drivers", "energy"] {
+        let r = rows(&dir.join(format!("{stem}.csv")));
+        // Outputs every 10 ms from 0 to the last before the singularity.
+        assert_eq!(r.len(), 180, "{stem}");
+        assert_eq!(r.last().unwrap()[0], 1.79, "{stem}");
+        assert!(r.iter().all(|row| row.iter().all(|v| v.is_finite())));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn an_unwritable_output_folder_is_reported_before_the_run() {
+    // At its speed, 1e5 s of the four-bar would take minutes: the error must come first.
+    let clock = Instant::now();
+    for args in [
+        &["simulate", "four_bar", "--t-end", "1e5"][..],
+        &["simulate", "--t-end", "1e5"][..],
+        &["run", "scenes/four_bar.toml"][..],
+    ] {
+        let out = Command::new(BIN)
+            .args(args)
+            .args(["--out", "/proc/forbidden"])
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{args:?}");
+        assert!(
+            stderr.contains("cannot write to /proc/forbidden") && stderr.contains("--out"),
+            "{args:?}: {stderr}"
+        );
+    }
+    assert!(clock.elapsed() < Duration::from_secs(60));
+}
+
+#[test]
+fn ctrl_c_stops_the_run_and_keeps_what_it_computed() {
+    let dir = temp_dir("interrupt");
+    let child = Command::new(BIN)
+        .args(["simulate", "n_four_bar_2", "--cross-singular-positions"])
+        .args(["--t-end", "1e4", "--no-plots", "--out"])
+        .arg(&dir)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Waits for outputs on disk (they are flushed every 200 ms), then interrupts.
+    let bodies = dir.join("bodies.csv");
+    let clock = Instant::now();
+    while rows(&bodies).len() < 5 {
+        assert!(
+            clock.elapsed() < Duration::from_secs(120),
+            "no output written"
+        );
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    let seen = rows(&bodies).len();
+    let kill = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(kill.success());
+    let out = child.wait_with_output().unwrap();
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert!(!out.status.success());
+    assert!(stderr.contains("interrupted at t = "), "{stderr}");
+    assert!(stdout.contains("stopped "), "{stdout}");
+    let kept = rows(&bodies);
+    assert!(
+        kept.len() >= seen,
+        "{} rows after, {seen} before",
+        kept.len()
+    );
+    // The summary's last output is the files' last row.
+    let last = kept.last().unwrap()[0];
+    assert!(
+        stdout.contains(&format!("after the output at t = {last:.6} s")),
+        "{last}: {stdout}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn progress_shows_on_a_terminal_only() {
+    let dir = temp_dir("progress");
+    let args = [
+        "simulate",
+        "n_four_bar_2",
+        "--cross-singular-positions",
+        "--t-end",
+        "20",
+        "--no-plots",
+        "--out",
+        dir.to_str().unwrap(),
+    ];
+    // Not a terminal: stderr stays empty.
+    let out = Command::new(BIN).args(args).output().unwrap();
+    assert!(out.status.success());
+    assert_eq!(String::from_utf8_lossy(&out.stderr), "");
+    // A terminal (util-linux `script` gives the run a pseudo-terminal): the bar shows the
+    // simulated time, the steps and their rate, and the time left.
+    let line = std::iter::once(BIN)
+        .chain(args)
+        .collect::<Vec<_>>()
+        .join(" ");
+    let out = Command::new("script")
+        .args(["-qec", &line, "/dev/null"])
+        .output()
+        .expect("util-linux `script` runs");
+    assert!(out.status.success());
+    let screen = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        screen.contains("/20 s,") && screen.contains(" steps, "),
+        "{screen}"
+    );
+    assert!(screen.contains(" left"), "{screen}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
