@@ -154,7 +154,7 @@ impl<K: KktSolver> Kinematics<K> {
         check_len("row_names", m, info.row_names.len())?;
         let mut kkt = K::new(&KktPattern::from_info(info))?;
         if let Some(tolerance) = settings.drop_dependent_rows {
-            if !(tolerance > 0.0 && tolerance < 1.0) || !kkt.drop_dependent_rows(tolerance) {
+            if !(tolerance > 0.0 && tolerance < 1.0 && kkt.drop_dependent_rows(tolerance)) {
                 return Err(Error::InvalidSetting {
                     name: "drop_dependent_rows",
                     value: tolerance,
