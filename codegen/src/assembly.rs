@@ -1,14 +1,17 @@
 //! Assembly at generation time: brings the file's initial pose onto the constraints
 //! (warning when a joint was violated by more than a tolerance, an error naming the rows
-//! when it cannot be done), then counts degrees of freedom and finds redundant rows with
-//! a rank-revealing elimination of Φq at the assembled pose, and recognizes a six-leg
-//! platform there ([`crate::legs`]).
+//! when it cannot be done, and an error naming the joint when the violation is a modelling
+//! error rather than imprecise numbers, unless the file sets `repair_initial_pose`), then
+//! counts degrees of freedom and finds redundant rows with a rank-revealing elimination of
+//! Φq at the assembled pose, and recognizes a six-leg platform there ([`crate::legs`]).
 
 use crate::diag::{Diagnostic, Errors};
 use crate::equations::System;
 use crate::expr::{Id, Var};
+use crate::geometry::{v3, V3};
 use crate::legs::{self, Platform};
-use crate::model::Model;
+use crate::model::{Body, DriverTarget, Frame, Model};
+use crate::primitives::{driver_row_is_length, joint_row_is_length};
 use nalgebra::{DMatrix, DVector};
 use std::fmt;
 
@@ -17,6 +20,12 @@ use std::fmt;
 const CONSISTENT: f64 = 1e-10;
 /// Largest correction of the file's pose accepted without a warning.
 pub const WARN_CORRECTION: f64 = 1e-6;
+/// Largest violation of a joint or driver at the file's pose that is assembled without
+/// `repair_initial_pose`, as a fraction of the mechanism's [`size`]. Numbers typed with a
+/// few digits, or rounded placements, are off by far less; a joint point on the wrong side
+/// of a body or a wrong length is off by far more, and moving the bodies would hide it. A
+/// misaligned axis counts as the gap it opens across the mechanism's size.
+pub const MODELLING_TOLERANCE: f64 = 1e-3;
 /// A row is dependent when the part of it independent of the rows before it is smaller
 /// than this fraction of its norm.
 const RANK_TOL: f64 = 1e-9;
@@ -220,6 +229,129 @@ fn non_finite_constants(sys: &System, file: &str) -> Result<(), Errors> {
     Ok(())
 }
 
+/// The mechanism's size (m): the diagonal of the box around the bodies' centres of mass and
+/// the points of its joints and point-distance drivers at the file's pose; 1 m when these
+/// all coincide (then no joint has points apart, and only axes can be violated).
+pub fn size(model: &Model) -> f64 {
+    let world = |f: &Frame| match f.body {
+        Some(b) => {
+            let body = &model.bodies[b];
+            body.position() + body.orientation() * v3(f.point)
+        }
+        None => v3(f.point),
+    };
+    let mut points: Vec<V3> = model.bodies.iter().map(Body::position).collect();
+    for j in &model.joints {
+        points.extend([world(&j.f1), world(&j.f2)]);
+    }
+    for d in &model.drivers {
+        if let DriverTarget::PointDistance { f1, f2 } = &d.target {
+            points.extend([world(f1), world(f2)]);
+        }
+    }
+    let lo = points
+        .iter()
+        .fold(V3::repeat(f64::INFINITY), |m, p| m.inf(p));
+    let hi = points
+        .iter()
+        .fold(V3::repeat(f64::NEG_INFINITY), |m, p| m.sup(p));
+    let d = (hi - lo).norm();
+    if d > 0.0 && d.is_finite() {
+        d
+    } else {
+        1.0
+    }
+}
+
+/// A length in metres with four significant digits.
+fn metres(x: f64) -> String {
+    let digits = if x > 0.0 && x.is_finite() {
+        (3.0 - x.log10().floor()).clamp(0.0, 15.0) as usize
+    } else {
+        3
+    };
+    format!("{x:.digits$} m")
+}
+
+/// One diagnostic per joint or driver that the file's pose violates by more than
+/// [`MODELLING_TOLERANCE`] of the mechanism's size, the worst first. `phi` is Φ at the
+/// file's pose. A joint's gap is the norm of its rows in metres (for a spherical joint, the
+/// distance between its two points), or its axes' misalignment (the norm of its cosine
+/// rows, about the angle in radians) times the size, whichever is larger.
+fn modelling_errors(
+    model: &Model,
+    sys: &System,
+    phi: &DVector<f64>,
+    file: &str,
+) -> Vec<Diagnostic> {
+    let size = size(model);
+    let limit = MODELLING_TOLERANCE * size;
+    let nj = model.joints.len();
+    let nd = model.drivers.len();
+    let end = |k: usize| sys.joint_rows.get(k + 1).copied().unwrap_or(phi.len());
+    let mut found = Vec::new();
+    for k in 0..nj + nd {
+        let (mut length, mut angle) = (0.0f64, 0.0f64);
+        let (mut worst, mut worst_gap) = (sys.joint_rows[k], -1.0);
+        for r in sys.joint_rows[k]..end(k) {
+            let is_length = if k < nj {
+                let prefix = format!("{}.", model.joints[k].name);
+                joint_row_is_length(sys.row_names[r].strip_prefix(&prefix).unwrap_or(""))
+            } else {
+                driver_row_is_length(&model.drivers[k - nj].target)
+            };
+            let v = phi[r].abs();
+            let gap = if is_length { v } else { v * size };
+            if gap > worst_gap {
+                (worst, worst_gap) = (r, gap);
+            }
+            if is_length {
+                length = length.hypot(v);
+            } else {
+                angle = angle.hypot(v);
+            }
+        }
+        let gap = length.max(angle * size);
+        // `!(gap <= limit)`: a NaN residual is not a small one.
+        if !(gap <= limit) {
+            found.push((gap, k, length, angle, worst));
+        }
+    }
+    found.sort_by(|a, b| b.0.total_cmp(&a.0));
+    found
+        .into_iter()
+        .map(|(gap, _, length, angle, row)| {
+            let what = if length >= angle * size {
+                format!("by {}", metres(length))
+            } else {
+                format!(
+                    "by {angle:.3e} rad of its axes (a gap of {} across the mechanism)",
+                    metres(gap)
+                )
+            };
+            let owner = owner(model, sys, row);
+            let item = owner.1.clone();
+            diagnostic(
+                model,
+                file,
+                owner,
+                format!(
+                    "the initial pose violates {item} {what} (row `{}`): more than the modelling \
+                     tolerance of {} ({MODELLING_TOLERANCE:e} of the mechanism's size, {}); the \
+                     generator would have to move bodies that far to assemble it",
+                    sys.row_names[row],
+                    metres(limit),
+                    metres(size)
+                ),
+                "check this item's points, axes and lengths against the bodies' positions and \
+                 orientations; if the pose is only a rough guess, add `repair_initial_pose = \
+                 true` at the top of the file to let the generator move the bodies onto the \
+                 joints (with a warning)",
+            )
+        })
+        .collect()
+}
+
 /// Assembles the initial pose at t = 0 and analyses Φq there.
 pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Errors> {
     let eval = Eval { sys };
@@ -285,6 +417,12 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
                 ),
                 "the joints contradict each other: check these joints' points, axes and lengths, and the drivers' values at t = 0",
             )]));
+        }
+        if !model.repair_initial_pose {
+            let errors = modelling_errors(model, sys, &first, file);
+            if !errors.is_empty() {
+                return Err(Errors(errors));
+            }
         }
         let moved = q
             .iter()
