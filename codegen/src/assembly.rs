@@ -8,9 +8,11 @@
 use crate::diag::{Diagnostic, Errors};
 use crate::equations::System;
 use crate::expr::{Id, Var};
-use crate::geometry::{v3, V3};
+use crate::geometry::{
+    euler_matrix, euler_rate_matrix, quaternion_matrix, quaternion_rates, v3, V3,
+};
 use crate::legs::{self, Platform};
-use crate::model::{Body, DriverTarget, Frame, Model};
+use crate::model::{Body, DriverTarget, Formulation, Frame, Model, Rotation};
 use crate::primitives::{driver_row_is_length, joint_row_is_length};
 use nalgebra::{DMatrix, DVector};
 use std::fmt;
@@ -352,6 +354,114 @@ fn modelling_errors(
         .collect()
 }
 
+/// The directions of `body`'s coordinates at `q` that carry no kinetic energy under
+/// `formulation`, one per zero principal inertia (with its local axis), plus, for a
+/// quaternion body without any inertia, `ė ∥ e` (axis index 3).
+fn zero_energy_directions(
+    body: &Body,
+    formulation: Formulation,
+    q: &[f64],
+    n: usize,
+) -> Vec<(usize, DVector<f64>)> {
+    let off = body.offset;
+    let c = &q[off + 3..off + body.n_coords()];
+    let mut out = Vec::new();
+    for k in (0..3).filter(|&k| body.inertia[k] == 0.0) {
+        let mut d = DVector::zeros(n);
+        match (formulation, body.rotation) {
+            // The paper's M is diag(m, m, m, Ixx, Iyy, Izz) against the Euler angles' rates.
+            (Formulation::Paper, _) => d[off + 3 + k] = 1.0,
+            // Exact: ½ωᵀJω, so the spin about the body's local axis k.
+            (Formulation::Exact, Rotation::Euler) => {
+                let angles = [c[0], c[1], c[2]];
+                let w = euler_matrix(angles).column(k).into_owned();
+                // Singular only at β = ±90°, where the runtime refuses to run anyway.
+                let Some(h) = euler_rate_matrix(angles).try_inverse() else {
+                    continue;
+                };
+                let rates = h * w;
+                for i in 0..3 {
+                    d[off + 3 + i] = rates[i];
+                }
+            }
+            (Formulation::Exact, Rotation::Quaternion) => {
+                let e = [c[0], c[1], c[2], c[3]];
+                let w = quaternion_matrix(e).column(k).into_owned();
+                for (i, r) in quaternion_rates(e, &w).into_iter().enumerate() {
+                    d[off + 3 + i] = r;
+                }
+            }
+        }
+        out.push((k, d));
+    }
+    // The regularization k·eeᵀ (k = 4·mean inertia) vanishes with every inertia; the
+    // normalization row always fixes this direction, but it belongs to the null space.
+    if formulation == Formulation::Exact
+        && body.rotation == Rotation::Quaternion
+        && body.inertia == [0.0; 3]
+    {
+        let mut d = DVector::zeros(n);
+        for i in 0..4 {
+            d[off + 3 + i] = c[i];
+        }
+        out.push((3, d));
+    }
+    out
+}
+
+/// With zero principal inertias M is only positive semi-definite, and the equations of
+/// motion are regular exactly when M is positive definite on the null space of Φq: when
+/// the constraints fix every direction without kinetic energy, i.e. Φq times those
+/// directions has full column rank. Checked at the assembled pose `q` for each formulation;
+/// the direction that adds no rank names the body and the axis left free.
+fn zero_inertias_fixed(
+    model: &Model,
+    jac: &DMatrix<f64>,
+    q: &[f64],
+    file: &str,
+) -> Result<(), Errors> {
+    const AXES: [&str; 3] = ["x", "y", "z"];
+    let scale = jac.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    for &formulation in &model.formulations {
+        let mut basis: Vec<DVector<f64>> = Vec::new();
+        for body in &model.bodies {
+            for (k, d) in zero_energy_directions(body, formulation, q, jac.ncols()) {
+                let mut v = jac * &d;
+                for _ in 0..2 {
+                    for b in &basis {
+                        let c = b.dot(&v);
+                        v -= b * c;
+                    }
+                }
+                if v.norm() > RANK_TOL * scale * d.norm() {
+                    basis.push(v.normalize());
+                    continue;
+                }
+                let what = match AXES.get(k) {
+                    Some(axis) => format!(
+                        "zero inertia about its local {axis} axis, and no joint fixes its \
+                         rotation about that axis at the initial pose"
+                    ),
+                    None => "no inertia at all, and the joints leave a rotation free".to_string(),
+                };
+                return Err(Errors(vec![diagnostic(
+                    model,
+                    file,
+                    (body.name.clone(), format!("body `{}`", body.name)),
+                    format!(
+                        "{what}: the mass matrix ({} formulation) is singular on the motions \
+                         the constraints allow, so the accelerations are undetermined",
+                        formulation.name()
+                    ),
+                    "give the body a small inertia about that axis, or a joint that fixes the \
+                     rotation (e.g. a revolute joint along that axis instead of a spherical one)",
+                )]));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Assembles the initial pose at t = 0 and analyses Φq there.
 pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Errors> {
     let eval = Eval { sys };
@@ -445,6 +555,7 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
     non_finite(model, sys, &eval, &q, file)?;
 
     let jac = eval.phi_q(&q);
+    zero_inertias_fixed(model, &jac, &q, file)?;
     let m = sys.n_constraints;
     let nj = model.joints.len();
     let nd = model.drivers.len();

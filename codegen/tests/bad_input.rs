@@ -336,7 +336,7 @@ fn negative_inertia_and_mass_are_errors() {
         &d,
         line_of(&text, "inertia = [0.005, -0.0005"),
         "body `upper`",
-        "inertias must be",
+        "inertias must not be negative",
         "principal inertias",
     );
     for mass in ["mass = 0.0\n", "mass = -0.5\n"] {

@@ -80,12 +80,15 @@ impl Validator<'_> {
             };
             if let Some(inr) = inertia {
                 let at = rb.inertia.as_ref().map_or(span.clone(), |s| s.span());
-                if inr.iter().any(|x| *x <= 0.0) {
+                // Zero is allowed (a slender rod about its own axis): whether the equations
+                // stay regular depends on the joints, checked at the assembled pose.
+                if inr.iter().any(|x| *x < 0.0) {
                     self.err(
                         at,
                         &item,
-                        format!("inertias must be positive, got {inr:?}"),
-                        "give principal inertias in kg·m²",
+                        format!("inertias must not be negative, got {inr:?}"),
+                        "give principal inertias in kg·m² (zero only about an axis a joint \
+                         fixes, e.g. a slender rod's own axis)",
                     );
                 } else if let Some(message) = triangle_violation(inr) {
                     self.err(
