@@ -1,9 +1,10 @@
 //! Assembly at generation time: brings the file's initial pose onto the constraints
 //! (warning when a joint was violated by more than a tolerance, an error naming the rows
 //! when it cannot be done, and an error naming the joint when the violation is a modelling
-//! error rather than imprecise numbers, unless the file sets `repair_initial_pose`), then
-//! counts degrees of freedom and finds redundant rows with a rank-revealing elimination of
-//! Φq at the assembled pose, and recognizes a six-leg platform there ([`crate::legs`]).
+//! error rather than imprecise numbers, unless the file sets `repair_initial_pose`), checks
+//! there that the joints fix every rotation about an axis of zero inertia, then counts
+//! degrees of freedom and finds redundant rows with a rank-revealing elimination of Φq at
+//! the assembled pose, and recognizes a six-leg platform there ([`crate::legs`]).
 
 use crate::diag::{Diagnostic, Errors};
 use crate::equations::System;
