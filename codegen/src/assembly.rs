@@ -1,14 +1,20 @@
 //! Assembly at generation time: brings the file's initial pose onto the constraints
 //! (warning when a joint was violated by more than a tolerance, an error naming the rows
-//! when it cannot be done), then counts degrees of freedom and finds redundant rows with
-//! a rank-revealing elimination of Φq at the assembled pose, and recognizes a six-leg
-//! platform there ([`crate::legs`]).
+//! when it cannot be done, and an error naming the joint when the violation is a modelling
+//! error rather than imprecise numbers, unless the file sets `repair_initial_pose`), checks
+//! there that the joints fix every rotation about an axis of zero inertia, then counts
+//! degrees of freedom and finds redundant rows with a rank-revealing elimination of Φq at
+//! the assembled pose, and recognizes a six-leg platform there ([`crate::legs`]).
 
 use crate::diag::{Diagnostic, Errors};
 use crate::equations::System;
 use crate::expr::{Id, Var};
+use crate::geometry::{
+    euler_matrix, euler_rate_matrix, quaternion_matrix, quaternion_rates, v3, V3,
+};
 use crate::legs::{self, Platform};
-use crate::model::Model;
+use crate::model::{Body, DriverTarget, Formulation, Frame, Model, Rotation};
+use crate::primitives::{driver_row_is_length, joint_row_is_length};
 use nalgebra::{DMatrix, DVector};
 use std::fmt;
 
@@ -17,6 +23,12 @@ use std::fmt;
 const CONSISTENT: f64 = 1e-10;
 /// Largest correction of the file's pose accepted without a warning.
 pub const WARN_CORRECTION: f64 = 1e-6;
+/// Largest violation of a joint or driver at the file's pose that is assembled without
+/// `repair_initial_pose`, as a fraction of the mechanism's [`size`]. Numbers typed with a
+/// few digits, or rounded placements, are off by far less; a joint point on the wrong side
+/// of a body or a wrong length is off by far more, and moving the bodies would hide it. A
+/// misaligned axis counts as the gap it opens across the mechanism's size.
+pub const MODELLING_TOLERANCE: f64 = 1e-3;
 /// A row is dependent when the part of it independent of the rows before it is smaller
 /// than this fraction of its norm.
 const RANK_TOL: f64 = 1e-9;
@@ -220,6 +232,237 @@ fn non_finite_constants(sys: &System, file: &str) -> Result<(), Errors> {
     Ok(())
 }
 
+/// The mechanism's size (m): the diagonal of the box around the bodies' centres of mass and
+/// the points of its joints and point-distance drivers at the file's pose; 1 m when these
+/// all coincide (then no joint has points apart, and only axes can be violated).
+pub fn size(model: &Model) -> f64 {
+    let world = |f: &Frame| match f.body {
+        Some(b) => {
+            let body = &model.bodies[b];
+            body.position() + body.orientation() * v3(f.point)
+        }
+        None => v3(f.point),
+    };
+    let mut points: Vec<V3> = model.bodies.iter().map(Body::position).collect();
+    for j in &model.joints {
+        points.extend([world(&j.f1), world(&j.f2)]);
+    }
+    for d in &model.drivers {
+        if let DriverTarget::PointDistance { f1, f2 } = &d.target {
+            points.extend([world(f1), world(f2)]);
+        }
+    }
+    let lo = points
+        .iter()
+        .fold(V3::repeat(f64::INFINITY), |m, p| m.inf(p));
+    let hi = points
+        .iter()
+        .fold(V3::repeat(f64::NEG_INFINITY), |m, p| m.sup(p));
+    let d = (hi - lo).norm();
+    if d > 0.0 && d.is_finite() {
+        d
+    } else {
+        1.0
+    }
+}
+
+/// A length in metres with four significant digits.
+fn metres(x: f64) -> String {
+    let digits = if x > 0.0 && x.is_finite() {
+        (3.0 - x.log10().floor()).clamp(0.0, 15.0) as usize
+    } else {
+        3
+    };
+    format!("{x:.digits$} m")
+}
+
+/// One diagnostic per joint or driver that the file's pose violates by more than
+/// [`MODELLING_TOLERANCE`] of the mechanism's size, the worst first. `phi` is Φ at the
+/// file's pose. A joint's gap is the norm of its rows in metres (for a spherical joint, the
+/// distance between its two points), or its axes' misalignment (the norm of its cosine
+/// rows, about the angle in radians) times the size, whichever is larger.
+fn modelling_errors(
+    model: &Model,
+    sys: &System,
+    phi: &DVector<f64>,
+    file: &str,
+) -> Vec<Diagnostic> {
+    let size = size(model);
+    let limit = MODELLING_TOLERANCE * size;
+    let nj = model.joints.len();
+    let nd = model.drivers.len();
+    let end = |k: usize| sys.joint_rows.get(k + 1).copied().unwrap_or(phi.len());
+    let mut found = Vec::new();
+    for k in 0..nj + nd {
+        let (mut length, mut angle) = (0.0f64, 0.0f64);
+        let (mut worst, mut worst_gap) = (sys.joint_rows[k], -1.0);
+        for r in sys.joint_rows[k]..end(k) {
+            let is_length = if k < nj {
+                let prefix = format!("{}.", model.joints[k].name);
+                joint_row_is_length(sys.row_names[r].strip_prefix(&prefix).unwrap_or(""))
+            } else {
+                driver_row_is_length(&model.drivers[k - nj].target)
+            };
+            let v = phi[r].abs();
+            let gap = if is_length { v } else { v * size };
+            if gap > worst_gap {
+                (worst, worst_gap) = (r, gap);
+            }
+            if is_length {
+                length = length.hypot(v);
+            } else {
+                angle = angle.hypot(v);
+            }
+        }
+        let gap = length.max(angle * size);
+        // `!(gap <= limit)`: a NaN residual is not a small one.
+        if !(gap <= limit) {
+            found.push((gap, k, length, angle, worst));
+        }
+    }
+    found.sort_by(|a, b| b.0.total_cmp(&a.0));
+    found
+        .into_iter()
+        .map(|(gap, _, length, angle, row)| {
+            let what = if length >= angle * size {
+                format!("by {}", metres(length))
+            } else {
+                format!(
+                    "by {angle:.3e} rad of its axes (a gap of {} across the mechanism)",
+                    metres(gap)
+                )
+            };
+            let owner = owner(model, sys, row);
+            let item = owner.1.clone();
+            diagnostic(
+                model,
+                file,
+                owner,
+                format!(
+                    "the initial pose violates {item} {what} (row `{}`): more than the modelling \
+                     tolerance of {} ({MODELLING_TOLERANCE:e} of the mechanism's size, {}); the \
+                     generator would have to move bodies that far to assemble it",
+                    sys.row_names[row],
+                    metres(limit),
+                    metres(size)
+                ),
+                "check this item's points, axes and lengths against the bodies' positions and \
+                 orientations; if the pose is only a rough guess, add `repair_initial_pose = \
+                 true` at the top of the file to let the generator move the bodies onto the \
+                 joints (with a warning)",
+            )
+        })
+        .collect()
+}
+
+/// The directions of `body`'s coordinates at `q` that carry no kinetic energy under
+/// `formulation`, one per zero principal inertia (with its local axis), plus, for a
+/// quaternion body without any inertia, `ė ∥ e` (axis index 3).
+fn zero_energy_directions(
+    body: &Body,
+    formulation: Formulation,
+    q: &[f64],
+    n: usize,
+) -> Vec<(usize, DVector<f64>)> {
+    let off = body.offset;
+    let c = &q[off + 3..off + body.n_coords()];
+    let mut out = Vec::new();
+    for k in (0..3).filter(|&k| body.inertia[k] == 0.0) {
+        let mut d = DVector::zeros(n);
+        match (formulation, body.rotation) {
+            // The paper's M is diag(m, m, m, Ixx, Iyy, Izz) against the Euler angles' rates.
+            (Formulation::Paper, _) => d[off + 3 + k] = 1.0,
+            // Exact: ½ωᵀJω, so the spin about the body's local axis k.
+            (Formulation::Exact, Rotation::Euler) => {
+                let angles = [c[0], c[1], c[2]];
+                let w = euler_matrix(angles).column(k).into_owned();
+                // Singular only at β = ±90°, where the runtime refuses to run anyway.
+                let Some(h) = euler_rate_matrix(angles).try_inverse() else {
+                    continue;
+                };
+                let rates = h * w;
+                for i in 0..3 {
+                    d[off + 3 + i] = rates[i];
+                }
+            }
+            (Formulation::Exact, Rotation::Quaternion) => {
+                let e = [c[0], c[1], c[2], c[3]];
+                let w = quaternion_matrix(e).column(k).into_owned();
+                for (i, r) in quaternion_rates(e, &w).into_iter().enumerate() {
+                    d[off + 3 + i] = r;
+                }
+            }
+        }
+        out.push((k, d));
+    }
+    // The regularization k·eeᵀ (k = 4·mean inertia) vanishes with every inertia; the
+    // normalization row always fixes this direction, but it belongs to the null space.
+    if formulation == Formulation::Exact
+        && body.rotation == Rotation::Quaternion
+        && body.inertia == [0.0; 3]
+    {
+        let mut d = DVector::zeros(n);
+        for i in 0..4 {
+            d[off + 3 + i] = c[i];
+        }
+        out.push((3, d));
+    }
+    out
+}
+
+/// With zero principal inertias M is only positive semi-definite, and the equations of
+/// motion are regular exactly when M is positive definite on the null space of Φq: when
+/// the constraints fix every direction without kinetic energy, i.e. Φq times those
+/// directions has full column rank. Checked at the assembled pose `q` for each formulation;
+/// the direction that adds no rank names the body and the axis left free.
+fn zero_inertias_fixed(
+    model: &Model,
+    jac: &DMatrix<f64>,
+    q: &[f64],
+    file: &str,
+) -> Result<(), Errors> {
+    const AXES: [&str; 3] = ["x", "y", "z"];
+    let scale = jac.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    for &formulation in &model.formulations {
+        let mut basis: Vec<DVector<f64>> = Vec::new();
+        for body in &model.bodies {
+            for (k, d) in zero_energy_directions(body, formulation, q, jac.ncols()) {
+                let mut v = jac * &d;
+                for _ in 0..2 {
+                    for b in &basis {
+                        let c = b.dot(&v);
+                        v -= b * c;
+                    }
+                }
+                if v.norm() > RANK_TOL * scale * d.norm() {
+                    basis.push(v.normalize());
+                    continue;
+                }
+                let what = match AXES.get(k) {
+                    Some(axis) => format!(
+                        "zero inertia about its local {axis} axis, and no joint fixes its \
+                         rotation about that axis at the initial pose"
+                    ),
+                    None => "no inertia at all, and the joints leave a rotation free".to_string(),
+                };
+                return Err(Errors(vec![diagnostic(
+                    model,
+                    file,
+                    (body.name.clone(), format!("body `{}`", body.name)),
+                    format!(
+                        "{what}: the mass matrix ({} formulation) is singular on the motions \
+                         the constraints allow, so the accelerations are undetermined",
+                        formulation.name()
+                    ),
+                    "give the body a small inertia about that axis, or a joint that fixes the \
+                     rotation (e.g. a revolute joint along that axis instead of a spherical one)",
+                )]));
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Assembles the initial pose at t = 0 and analyses Φq there.
 pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Errors> {
     let eval = Eval { sys };
@@ -286,6 +529,12 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
                 "the joints contradict each other: check these joints' points, axes and lengths, and the drivers' values at t = 0",
             )]));
         }
+        if !model.repair_initial_pose {
+            let errors = modelling_errors(model, sys, &first, file);
+            if !errors.is_empty() {
+                return Err(Errors(errors));
+            }
+        }
         let moved = q
             .iter()
             .zip(&q_file)
@@ -307,6 +556,7 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
     non_finite(model, sys, &eval, &q, file)?;
 
     let jac = eval.phi_q(&q);
+    zero_inertias_fixed(model, &jac, &q, file)?;
     let m = sys.n_constraints;
     let nj = model.joints.len();
     let nd = model.drivers.len();

@@ -280,6 +280,9 @@ pub struct Model {
     pub gravity: [f64; 3],
     /// Suggested simulation end time (s), from the file's `t_end`.
     pub t_end: f64,
+    /// The file's `repair_initial_pose`: joints violated by more than a modelling tolerance
+    /// are assembled with a warning instead of being an error ([`crate::assembly`]).
+    pub repair_initial_pose: bool,
     pub bodies: Vec<Body>,
     pub joints: Vec<Joint>,
     pub drivers: Vec<Driver>,
@@ -427,6 +430,7 @@ impl Validator<'_> {
             formulations,
             gravity: gravity?,
             t_end: t_end?,
+            repair_initial_pose: raw.repair_initial_pose.unwrap_or(false),
             bodies,
             lines: names
                 .iter()

@@ -148,6 +148,26 @@ pub fn joint_rows(a: &mut Arena, bodies: &[BodySym], j: &Joint) -> Vec<(String, 
     rows
 }
 
+/// Whether the joint row `<joint>.<primitive>` of [`joint_rows`] measures how far apart
+/// points are (metres), rather than how far axes are from their directions (cosines, or
+/// the paper's Euler-angle differences: dimensionless).
+pub fn joint_row_is_length(primitive: &str) -> bool {
+    matches!(
+        primitive,
+        "x" | "y" | "z" | "distance" | "slide1" | "slide2"
+    ) || primitive.starts_with("dot2")
+}
+
+/// Whether a driver's row of [`driver_row`] is in metres (else dimensionless: the sine of
+/// an angle error, or an Euler angle).
+pub fn driver_row_is_length(target: &DriverTarget) -> bool {
+    match target {
+        DriverTarget::JointAngle(_) => false,
+        DriverTarget::JointSlide(_) | DriverTarget::PointDistance { .. } => true,
+        DriverTarget::BodyCoordinate { coord, .. } => *coord < 3,
+    }
+}
+
 /// The paper's prismatic joint (eqs. 4–8): equal Euler angles, and no motion of body 2's
 /// centre of mass across the axis.
 fn euler_prismatic(

@@ -107,12 +107,17 @@ fn an_assembled_pose_is_taken_as_written() {
     assert!(moved <= 1e-15, "moved by {moved:e}");
 }
 
+/// `text` with `repair_initial_pose = true` at the top level.
+fn repairing(text: &str) -> String {
+    text.replacen('\n', "\nrepair_initial_pose = true\n", 1)
+}
+
 #[test]
-fn a_violated_joint_is_corrected_with_a_warning() {
+fn a_violated_joint_is_corrected_with_a_warning_when_the_file_allows_it() {
     // 0.3 m too far out along the rod: the hinge is violated by 0.3 m.
     let (c, s) = (0.3f64.cos(), 0.3f64.sin());
     let position = format!("[{}, {}, 0.0]", 0.8 * c, 0.8 * s);
-    let text = pendulum(&position);
+    let text = repairing(&pendulum(&position));
     let g = generated(&text);
     let (q_file, asm, sys) = stages(&text);
     assert_eq!(g.report, asm.report);
@@ -142,6 +147,113 @@ fn a_violated_joint_is_corrected_with_a_warning() {
     let q0 = generated_q0(&g.code);
     assert_eq!(q0, asm.q0);
     assert!(residual(&sys, &q0) <= 1e-12);
+}
+
+/// The single error of a pose violated beyond the modelling tolerance, checked to name
+/// `item` with the line of its name, the gap `gap` and the way out.
+fn modelling_error(text: &str, item: &str, name: &str, gap: &str) -> Diagnostic {
+    let errs = generate(FILE, text).expect_err("the violation is a modelling error");
+    assert_eq!(errs.0.len(), 1, "{errs}");
+    let d = errs.0[0].clone();
+    let shown = d.to_string();
+    assert_eq!(d.item, item, "{shown}");
+    assert_eq!(
+        d.line,
+        line_of(text, &format!("name = \"{name}\"")),
+        "{shown}"
+    );
+    assert!(
+        d.message.contains(&format!("violates {item} by {gap}")),
+        "{shown}"
+    );
+    assert!(d.message.contains("modelling tolerance"), "{shown}");
+    assert!(d.help.contains("repair_initial_pose = true"), "{shown}");
+    d
+}
+
+/// A rod hung from the ground by a spherical joint at its end, whose point on the rod is
+/// `gap` metres further along the rod (x) than the ground point the file puts it at.
+fn ball_pendulum(gap: f64) -> String {
+    format!(
+        r#"name = "ball_pendulum"
+
+[[body]]
+name = "rod"
+mass = 1.0
+inertia = [0.001, 0.1, 0.1]
+position = [0.5, 0.0, 0.0]
+
+[[joint]]
+name = "ball"
+type = "spherical"
+body1 = "ground"
+body2 = "rod"
+point1 = [0.0, 0.0, 0.0]
+point2 = [{}, 0.0, 0.0]
+"#,
+        -0.5 + gap
+    )
+}
+
+#[test]
+fn a_joint_one_metre_apart_is_an_error_not_a_repair() {
+    // The ball's two points are 1 m apart on a mechanism 1 m across (the ground point at 0,
+    // the rod's centre at 0.5, its ball point at 1.0 m): a modelling error, which the
+    // generator used to hide by moving the rod 1 m with a warning.
+    let text = ball_pendulum(1.0);
+    let d = modelling_error(&text, "joint `ball`", "ball", "1.000 m");
+    assert!(d.message.contains("(row `ball.x`)"), "{d}");
+    // 1e-3 of the size, 1 m across the points' box.
+    assert!(d.message.contains("tolerance of 0.001000 m"), "{d}");
+    assert!(d.message.contains("size, 1.000 m"), "{d}");
+
+    // Allowed by the file: assembled with the warning, the rod moved by about 1 m.
+    let g = generated(&repairing(&text));
+    assert_eq!(g.report.warnings.len(), 1, "{}", g.report);
+    let w = &g.report.warnings[0];
+    assert!(w.contains("joint `ball` by 1.000e0"), "{w}");
+    let (q_file, asm, sys) = stages(&repairing(&text));
+    assert!(residual(&sys, &asm.q0) <= 1e-12);
+    let moved = q_file
+        .iter()
+        .zip(&asm.q0)
+        .fold(0.0, |m, (a, b)| f64::max(m, (a - b).abs()));
+    assert!(moved > 0.5, "moved by {moved}");
+}
+
+#[test]
+fn a_violation_below_the_modelling_tolerance_stays_a_warning() {
+    // 0.5 mm on a mechanism 0.5 m across (tolerance 0.5 mm) is just under; 0.6 mm is over.
+    let g = generated(&ball_pendulum(0.00049));
+    assert_eq!(g.report.warnings.len(), 1, "{}", g.report);
+    assert!(
+        g.report.warnings[0].contains("joint `ball`"),
+        "{}",
+        g.report
+    );
+    modelling_error(
+        &ball_pendulum(0.0006),
+        "joint `ball`",
+        "ball",
+        "0.0006000 m",
+    );
+}
+
+#[test]
+fn a_misaligned_axis_is_an_error_giving_the_angle() {
+    // The hinge's axis on the rod is tilted by 0.1 rad from the ground's: the joint's points
+    // coincide but the axes do not: sin 0.1 across the mechanism's 0.5 m.
+    let text = pendulum("[0.5, 0.0, 0.0]").replace(
+        "axis = [0.0, 0.0, 1.0]",
+        &format!(
+            "axis1 = [0.0, 0.0, 1.0]\naxis2 = [0.0, {}, {}]",
+            0.1f64.sin(),
+            0.1f64.cos()
+        ),
+    );
+    let text = text.replace("angles = [0.0, 0.0, 0.3]", "angles = [0.0, 0.0, 0.0]");
+    let d = modelling_error(&text, "joint `hinge`", "hinge", "9.983e-2 rad of its axes");
+    assert!(d.message.contains("a gap of 0.04992 m"), "{d}");
 }
 
 #[test]

@@ -288,6 +288,70 @@ fn wrong_vector_length() {
 }
 
 #[test]
+fn impossible_inertias_are_an_error_naming_the_inequality() {
+    // Izz = 0.006 exceeds Ixx + Iyy = 0.0055: no distribution of mass has these.
+    let (text, d) = single_error(
+        "inertia = [0.005, 0.0005, 0.005]",
+        "inertia = [0.005, 0.0005, 0.006]",
+    );
+    check(
+        &d,
+        line_of(&text, "inertia = [0.005, 0.0005, 0.006]"),
+        "body `upper`",
+        "impossible principal inertias: Izz = 0.006 > Ixx + Iyy = 0.0055",
+        "at most the sum of the other two",
+    );
+    // Each axis is checked, and the names follow the file's order.
+    let (_, d) = single_error(
+        "inertia = [0.0001, 0.002, 0.002]",
+        "inertia = [0.0001, 0.002, 0.0001]",
+    );
+    assert_eq!(d.item, "body `arm`", "{d}");
+    assert!(
+        d.message.contains("Iyy = 0.002 > Ixx + Izz = 0.0002"),
+        "{d}"
+    );
+}
+
+#[test]
+fn a_flat_plate_and_roundoff_are_possible_inertias() {
+    // Izz = Ixx + Iyy exactly (a thin plate), and a plate whose Izz computed in one
+    // expression exceeds the sum of the other two by roundoff (2e-19).
+    for inertia in [
+        "inertia = [0.005, 0.0005, 0.0055]",
+        "inertia = [\"0.3 * 0.1 * 0.1 / 12.0\", \"0.3 * 0.2 * 0.2 / 12.0\", \"0.3 * (0.1 * 0.1 + 0.2 * 0.2) / 12.0\"]",
+    ] {
+        let text = mutated(&[("inertia = [0.005, 0.0005, 0.005]", inertia)]);
+        generate(FILE, &text).unwrap_or_else(|e| panic!("{inertia}: {e}"));
+    }
+}
+
+#[test]
+fn negative_inertia_and_mass_are_errors() {
+    let (text, d) = single_error(
+        "inertia = [0.005, 0.0005, 0.005]",
+        "inertia = [0.005, -0.0005, 0.005]",
+    );
+    check(
+        &d,
+        line_of(&text, "inertia = [0.005, -0.0005"),
+        "body `upper`",
+        "inertias must not be negative",
+        "principal inertias",
+    );
+    for mass in ["mass = 0.0\n", "mass = -0.5\n"] {
+        let (text, d) = single_error("mass = 0.5\n", mass);
+        check(
+            &d,
+            line_of(&text, mass.trim()),
+            "body `upper`",
+            "mass must be positive",
+            "mass in kg",
+        );
+    }
+}
+
+#[test]
 fn missing_field() {
     let (text, d) = single_error("mass = 0.5\n", "");
     // Reported at the start of the [[body]] table that lacks it.

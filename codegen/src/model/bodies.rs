@@ -18,6 +18,28 @@ pub(super) struct PoseSpec<'r> {
     angular_velocity: Option<(Range<usize>, [f64; 3])>,
 }
 
+/// Principal inertias are sums `Σ m (other two coordinates)²`, so each is at most the sum of
+/// the other two. Allowed beyond that: roundoff of inertias computed in expressions.
+const TRIANGLE_SLACK: f64 = 1e-9;
+
+/// The first principal inertia larger than the sum of the other two (beyond roundoff),
+/// described for a diagnostic.
+fn triangle_violation(i: [f64; 3]) -> Option<String> {
+    const AXES: [&str; 3] = ["Ixx", "Iyy", "Izz"];
+    let trace = i[0] + i[1] + i[2];
+    (0..3).find_map(|k| {
+        let (a, b) = ((k + 1) % 3, (k + 2) % 3);
+        let (a, b) = (a.min(b), a.max(b));
+        let others = i[a] + i[b];
+        (i[k] - others > TRIANGLE_SLACK * trace).then(|| {
+            format!(
+                "impossible principal inertias: {} = {} > {} + {} = {}",
+                AXES[k], i[k], AXES[a], AXES[b], others
+            )
+        })
+    })
+}
+
 impl Validator<'_> {
     pub(super) fn bodies<'r>(
         &mut self,
@@ -57,12 +79,25 @@ impl Validator<'_> {
                 }
             };
             if let Some(inr) = inertia {
-                if inr.iter().any(|x| *x <= 0.0) {
+                let at = rb.inertia.as_ref().map_or(span.clone(), |s| s.span());
+                // Zero is allowed (a slender rod about its own axis): whether the equations
+                // stay regular depends on the joints, checked at the assembled pose.
+                if inr.iter().any(|x| *x < 0.0) {
                     self.err(
-                        rb.inertia.as_ref().map_or(span.clone(), |s| s.span()),
+                        at,
                         &item,
-                        format!("inertias must be positive, got {inr:?}"),
-                        "give principal inertias in kg·m²",
+                        format!("inertias must not be negative, got {inr:?}"),
+                        "give principal inertias in kg·m² (zero only about an axis a joint \
+                         fixes, e.g. a slender rod's own axis)",
+                    );
+                } else if let Some(message) = triangle_violation(inr) {
+                    self.err(
+                        at,
+                        &item,
+                        message,
+                        "no rigid body has these inertias: each principal inertia is at most \
+                         the sum of the other two (equal for a flat plate); check the values \
+                         and their order [Ixx, Iyy, Izz]",
                     );
                 }
             }

@@ -29,6 +29,9 @@ pub struct RawFile {
     pub rotation: Option<SStr>,
     /// Suggested simulation end time (s).
     pub t_end: Option<SScalar>,
+    /// Lets the generator move bodies by more than a modelling tolerance to assemble the
+    /// initial pose (otherwise such a violation is an error).
+    pub repair_initial_pose: Option<bool>,
     #[serde(default)]
     pub parameters: BTreeMap<SStr, SScalar>,
     #[serde(default)]

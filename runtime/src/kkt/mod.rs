@@ -13,7 +13,9 @@
 //!
 //! Two implementations: [`DenseKkt`] (LU with partial pivoting on the full matrix; the
 //! reference) and [`SchurKkt`] (block Cholesky of `M`, sparse LDLᵀ of the Schur complement
-//! `Φq M⁻¹ Φqᵀ` under a minimum-degree ordering; the fast one).
+//! `Φq M⁻¹ Φqᵀ` under a minimum-degree ordering; the fast one). A mass matrix that is only
+//! semi-definite ([`KktPattern::mass_semidefinite`]) has no `M⁻¹`: `SchurKkt` then runs the
+//! dense LU.
 
 mod dense;
 mod ordering;
@@ -45,6 +47,11 @@ pub struct KktPattern {
     /// Rows solved as if absent (their `y` is 0): rows the generator found to be linear
     /// combinations of others ([`MechanismInfo::redundant_rows`]). Ascending.
     pub redundant_rows: Vec<u32>,
+    /// `M` is only positive semi-definite (a body has a zero principal inertia, e.g. a
+    /// slender rod about its own axis): the saddle point is still regular when the
+    /// constraints fix the directions without kinetic energy (the generator checks that),
+    /// but `M` has no inverse, so [`SchurKkt`] solves it as [`DenseKkt`] does.
+    pub mass_semidefinite: bool,
 }
 
 impl KktPattern {
@@ -58,6 +65,7 @@ impl KktPattern {
             phi_q_rows: info.phi_q_rows.to_vec(),
             phi_q_cols: info.phi_q_cols.to_vec(),
             redundant_rows: info.redundant_rows.to_vec(),
+            mass_semidefinite: info.bodies.iter().any(|b| b.inertia.contains(&0.0)),
         }
     }
 

@@ -7,9 +7,15 @@
 //! one dummy slot of the work matrix that no block reads, so their rows of `S` stay empty
 //! (isolated in the ordering, no fill), and their zero pivot is recognised as dropped only
 //! in the rank-loss branch, where it gets `D = 1`, `1/D = 0` and hence `y = 0`.
+//!
+//! A mass matrix that is only semi-definite ([`KktPattern::mass_semidefinite`]: a zero
+//! principal inertia) has no block inverses; the saddle point is still regular, and is then
+//! solved by a [`DenseKkt`] inside, so callers keep one solver type.
 
 use super::ordering::{minimum_degree, Symbolic};
-use super::{check_kkt_len, KktError, KktPattern, KktSolver, Pivots, DEFAULT_PIVOT_TOLERANCE};
+use super::{
+    check_kkt_len, DenseKkt, KktError, KktPattern, KktSolver, Pivots, DEFAULT_PIVOT_TOLERANCE,
+};
 use crate::error::Error;
 
 /// Largest group of mass-matrix blocks factored together as one dense block.
@@ -68,18 +74,63 @@ pub struct SchurKkt {
     drop_dependent: bool,
     /// Of the last factorization ([`KktSolver::pivots`]).
     pivots: Pivots,
+    /// The solver for a semi-definite `M`; every other field is then empty.
+    dense: Option<Box<DenseKkt>>,
 }
 
 impl SchurKkt {
-    /// Number of structural nonzeros of the factor `L` (strict lower triangle).
+    /// Number of structural nonzeros of the factor `L` (strict lower triangle); 0 when a
+    /// semi-definite `M` is solved densely.
     pub fn factor_nnz(&self) -> usize {
         self.lval.len()
     }
 
     /// Sizes of the detected diagonal blocks of `M` (connected components of its pattern),
-    /// in order of their first coordinate.
+    /// in order of their first coordinate; empty when a semi-definite `M` is solved densely.
     pub fn block_sizes(&self) -> Vec<usize> {
         self.component_sizes.clone()
+    }
+
+    /// Whether this solver runs the dense LU because `M` is only semi-definite.
+    pub fn is_dense(&self) -> bool {
+        self.dense.is_some()
+    }
+
+    /// The solver for a semi-definite `M`: a [`DenseKkt`] and nothing else.
+    fn dense(pattern: &KktPattern) -> Result<Self, Error> {
+        Ok(SchurKkt {
+            n: pattern.n,
+            m: pattern.m,
+            component_sizes: Vec::new(),
+            block_ptr: vec![0],
+            block_coords: Vec::new(),
+            chol_off: Vec::new(),
+            chol: Vec::new(),
+            mass_dest: Vec::new(),
+            brow_ptr: vec![0],
+            brows: Vec::new(),
+            p_off: Vec::new(),
+            wmat: Vec::new(),
+            inv_diag: Vec::new(),
+            ustore: Vec::new(),
+            phi_q_dest: Vec::new(),
+            pair_ptr: vec![0],
+            pair_dest: Vec::new(),
+            sym: minimum_degree(0, &[]),
+            lval: Vec::new(),
+            diag: Vec::new(),
+            dinv: Vec::new(),
+            redundant: Vec::new(),
+            row_list_ptr: vec![0],
+            row_list: Vec::new(),
+            work: Vec::new(),
+            rvec: Vec::new(),
+            factored: false,
+            pivot_tol: DEFAULT_PIVOT_TOLERANCE,
+            drop_dependent: false,
+            pivots: Pivots::default(),
+            dense: Some(Box::new(DenseKkt::new(pattern)?)),
+        })
     }
 }
 
@@ -217,6 +268,9 @@ fn find(parent: &mut [usize], mut i: usize) -> usize {
 
 impl KktSolver for SchurKkt {
     fn drop_dependent_rows(&mut self, tolerance: f64) -> bool {
+        if let Some(d) = &mut self.dense {
+            return d.drop_dependent_rows(tolerance);
+        }
         self.pivot_tol = tolerance;
         self.drop_dependent = true;
         true
@@ -224,6 +278,9 @@ impl KktSolver for SchurKkt {
 
     fn new(pattern: &KktPattern) -> Result<Self, Error> {
         pattern.validate()?;
+        if pattern.mass_semidefinite {
+            return Self::dense(pattern);
+        }
         let (n, m) = (pattern.n, pattern.m);
 
         // Blocks of M = connected components of its pattern graph.
@@ -428,10 +485,14 @@ impl KktSolver for SchurKkt {
             pivot_tol: DEFAULT_PIVOT_TOLERANCE,
             drop_dependent: false,
             pivots: Pivots::default(),
+            dense: None,
         })
     }
 
     fn factor(&mut self, mass: &[f64], mass_scale: f64, phi_q: &[f64]) -> Result<(), KktError> {
+        if let Some(d) = &mut self.dense {
+            return d.factor(mass, mass_scale, phi_q);
+        }
         self.factored = false;
         check_kkt_len(self.mass_dest.len(), mass.len())?;
         check_kkt_len(self.phi_q_dest.len(), phi_q.len())?;
@@ -571,6 +632,9 @@ impl KktSolver for SchurKkt {
         x: &mut [f64],
         y: &mut [f64],
     ) -> Result<(), KktError> {
+        if let Some(d) = &mut self.dense {
+            return d.solve(f, g, x, y);
+        }
         if !self.factored {
             return Err(KktError::NotFactored);
         }

@@ -88,6 +88,7 @@ fn random_problem(rng: &mut Rng, n_blocks: usize, m: Option<usize>) -> Problem {
             phi_q_rows,
             phi_q_cols,
             redundant_rows: Vec::new(),
+            mass_semidefinite: false,
         },
         mass,
         phi_q,
@@ -233,6 +234,7 @@ fn pattern_errors_are_reported() {
         phi_q_rows: vec![0],
         phi_q_cols: vec![1],
         redundant_rows: Vec::new(),
+        mass_semidefinite: false,
     };
     assert!(matches!(
         SchurKkt::new(&pat),
@@ -307,6 +309,7 @@ fn with_combination_rows(
         phi_q_rows: rows,
         phi_q_cols: cols,
         redundant_rows: extra.iter().map(|(at, _)| *at as u32).collect(),
+        mass_semidefinite: false,
         ..p.pattern.clone()
     };
     (
@@ -378,6 +381,7 @@ fn redundant_rows_are_solved_as_absent_with_zero_multipliers() {
         let undeclared = Problem {
             pattern: KktPattern {
                 redundant_rows: Vec::new(),
+                mass_semidefinite: false,
                 ..r.pattern.clone()
             },
             mass: r.mass.clone(),
@@ -403,6 +407,7 @@ fn redundant_rows_must_be_in_range_and_ascending() {
     for bad in [vec![3], vec![1, 1], vec![2, 0]] {
         let pat = KktPattern {
             redundant_rows: bad.clone(),
+            mass_semidefinite: false,
             ..p.pattern.clone()
         };
         assert!(
@@ -414,4 +419,42 @@ fn redundant_rows_must_be_in_range_and_ascending() {
             Err(Error::InvalidPattern { .. })
         ));
     }
+}
+
+#[test]
+fn a_semidefinite_mass_is_solved_when_the_constraints_fix_its_null_direction() {
+    // Two coordinates, M = diag(2, 0) (a spin with no inertia) and one row fixing the second
+    // coordinate: [2c 0 0; 0 0 1; 0 1 0][x; y] = [f; g] is regular, with x = (f₀/2c, g),
+    // y = f₁. The block inverse of M does not exist.
+    let pattern = KktPattern {
+        n: 2,
+        m: 1,
+        mass_rows: vec![0, 1],
+        mass_cols: vec![0, 1],
+        phi_q_rows: vec![0],
+        phi_q_cols: vec![1],
+        redundant_rows: Vec::new(),
+        mass_semidefinite: true,
+    };
+    let (mass, c, phi_q) = ([2.0, 0.0], 0.5, [1.0]);
+    let (f, g) = ([3.0, -4.0], [0.25]);
+    let mut s = SchurKkt::new(&pattern).unwrap();
+    assert!(s.is_dense());
+    s.factor(&mass, c, &phi_q).unwrap();
+    let (mut x, mut y) = ([0.0; 2], [0.0; 1]);
+    s.solve(&f, &g, &mut x, &mut y).unwrap();
+    assert_eq!(x, [3.0, 0.25]);
+    assert_eq!(y, [-4.0]);
+
+    // Without the flag the structured path fails on the singular block, as before.
+    let mut s = SchurKkt::new(&KktPattern {
+        mass_semidefinite: false,
+        ..pattern
+    })
+    .unwrap();
+    assert!(!s.is_dense());
+    assert!(matches!(
+        s.factor(&mass, c, &phi_q),
+        Err(KktError::MassNotPositiveDefinite { coord: 1 })
+    ));
 }
