@@ -232,4 +232,34 @@ mod tests {
     fn strings_cannot_close_the_script() {
         assert_eq!(string("a\"</script>"), "\"a\\\"\\u003c/script>\"");
     }
+
+    /// Whatever the text (a title, a force's name or unit), the page keeps the template's
+    /// scripts: nothing closes one early or opens another.
+    #[test]
+    fn text_cannot_break_out_of_the_page() {
+        let info = symbody_mechanisms::REGISTRY
+            .find("four_bar")
+            .unwrap()
+            .default_mechanism()
+            .info();
+        let evil = "x</script><script>alert(1)</script><!--\u{2028}\"\\\n-->";
+        let poses = vec![vec![([0.0; 3], [1.0, 0.0, 0.0, 0.0]); info.bodies.len()]];
+        let force = Force {
+            name: evil,
+            unit: evil,
+            values: vec![1.0],
+        };
+        let path = std::env::temp_dir().join(format!("symbody-viewer-{}.html", std::process::id()));
+        write(&path, evil, info, &[0.0], &poses, &[force]).unwrap();
+        let page = std::fs::read_to_string(&path).unwrap();
+        let _ = std::fs::remove_file(&path);
+        let template = include_str!("viewer.html");
+        for tag in ["</script", "<script", "<!--", "</"] {
+            assert_eq!(
+                page.matches(tag).count(),
+                template.matches(tag).count(),
+                "{tag}"
+            );
+        }
+    }
 }
