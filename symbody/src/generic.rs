@@ -131,6 +131,26 @@ impl Recording {
 pub fn find(registry: &Registry, name: &str) -> Result<&'static Entry, Error> {
     registry.find(name).ok_or_else(|| {
         let known = registry.names();
+        // A path to a mechanism file: the tool runs the code generated from it, so the file
+        // itself (perhaps edited since) is not what would run; its name is.
+        let path = std::path::Path::new(name);
+        if name.ends_with(".toml") || path.components().count() > 1 {
+            let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or(name);
+            return ScenarioError::Options(if registry.find(stem).is_some() {
+                format!(
+                    "`{name}` is a file; give the mechanism's name instead: `{stem}` (the tool \
+                     runs the code generated from mechanisms/{stem}.toml; after editing the \
+                     file, regenerate it with `cargo xtask generate {stem}`)"
+                )
+            } else {
+                format!(
+                    "`{name}` is a file, and no mechanism `{stem}` was generated; put it in \
+                     mechanisms/{stem}.toml, run `cargo xtask generate {stem}`, then give the \
+                     name `{stem}`; known: {}",
+                    known.join(", ")
+                )
+            });
+        }
         let close = closest(name, known.iter().copied())
             .map(|k| format!(" (did you mean `{k}`?)"))
             .unwrap_or_default();
