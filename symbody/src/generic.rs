@@ -227,7 +227,11 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
 /// at each output time the position from the drivers, the velocity of least kinetic energy,
 /// and the saddle-point accelerations and multipliers. Exact only when the drivers leave no
 /// free direction with momentum (`symbody::scene::choose_path` checks); `opts.step` and
-/// `opts.alpha` do not apply. The work of drivers and loads is integrated over the outputs.
+/// `opts.alpha` do not apply. The work of drivers and loads is integrated by the four-point
+/// Gauss–Lobatto rule over each output interval, the path solved at its two interior nodes
+/// too: sixth order in the output spacing, as accurate as the integrator's step-by-step sum
+/// at the CLI's spacing (the outputs alone gave fourth order: 1.8e-6 of the energy scale on
+/// the four-bar's scene, against 1.5e-10 integrated).
 pub fn run_kinematic(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
     let mech = mechanism(entry, opts.formulation)?;
     let info = mech.info();
@@ -239,14 +243,38 @@ pub fn run_kinematic(entry: &Entry, opts: &Options) -> Result<Recording, Error> 
     let mut watch = ResidualWatch::new(info);
     let mut rec = Recording::new(info);
     let modes = mode_watch(mech, path.q())?;
+    use symbody_runtime::{energy, quadrature};
+    let mut phi_t = vec![0.0; info.n_constraints];
+    let (mut work, mut power_before, mut t_before) = (0.0, 0.0, 0.0);
     for k in 0..=n_out {
+        let mut inside = [0.0; 2];
         if k > 0 {
-            path.advance_to((k as f64 * opts.output_step).min(t_end))?;
+            let t = (k as f64 * opts.output_step).min(t_end);
+            for (p, node) in inside.iter_mut().zip(quadrature::LOBATTO4_NODES) {
+                path.advance_to(t_before + node * (t - t_before))?;
+                *p = energy::power(
+                    &mech,
+                    path.t(),
+                    path.q(),
+                    path.qd(),
+                    path.lambda(),
+                    &mut phi_t,
+                );
+            }
+            path.advance_to(t)?;
         }
         if let Some(w) = &modes {
             w.check(path.q(), path.t())?;
         }
-        let sample = meter.record(&mech, path.t(), path.q(), path.qd())?;
+        let mut sample = meter.record(&mech, path.t(), path.q(), path.qd())?;
+        if k > 0 {
+            work += quadrature::lobatto4(
+                path.t() - t_before,
+                [power_before, inside[0], inside[1], sample.power],
+            );
+        }
+        (power_before, t_before) = (sample.power, path.t());
+        sample.work = work;
         record(
             &mut rec,
             &meter,
@@ -256,7 +284,12 @@ pub fn run_kinematic(entry: &Entry, opts: &Options) -> Result<Recording, Error> 
             sample,
         )?;
     }
-    rec.kinematic = Some(path.stats());
+    // The summary counts output times; the quadrature's interior solves are in the
+    // iteration and factorization counts.
+    rec.kinematic = Some(PathStats {
+        outputs: n_out + 1,
+        ..path.stats()
+    });
     rec.wall = start.elapsed();
     Ok(rec)
 }
