@@ -155,23 +155,21 @@ pub fn all_modes<M: Mechanism + ?Sized>(
     Ok((modes, index, wall))
 }
 
-/// Columns of `assembly_modes.csv`: the mode's number (from 1, as the summary counts them),
-/// the platform frame's origin, its rotation matrix row by row, the condition number, and 1
-/// on the mode nearest the tracked pose (0 elsewhere).
-pub const MODE_COLUMNS: [&str; 15] = [
-    "mode", "x", "y", "z", "r11", "r12", "r13", "r21", "r22", "r23", "r31", "r32", "r33", "cond",
-    "current",
+/// Columns of [`mode_rows`]: the platform frame's origin, its rotation matrix row by row,
+/// the condition number, and 1 on the mode nearest the tracked pose (0 elsewhere).
+/// `assembly_modes.csv` puts the mode's number first ([`write_modes`]).
+pub const MODE_COLUMNS: [&str; 14] = [
+    "x", "y", "z", "r11", "r12", "r13", "r21", "r22", "r23", "r31", "r32", "r33", "cond", "current",
 ];
 
-/// The rows of `assembly_modes.csv` ([`MODE_COLUMNS`]), one per real mode.
+/// One row per real mode ([`MODE_COLUMNS`]).
 pub fn mode_rows(modes: &Modes, current: Option<usize>) -> Vec<Vec<f64>> {
     modes
         .real
         .iter()
         .enumerate()
         .map(|(k, m)| {
-            let mut row = vec![(k + 1) as f64];
-            row.extend(m.pose.position.iter().copied());
+            let mut row: Vec<f64> = m.pose.position.iter().copied().collect();
             row.extend((0..9).map(|i| m.pose.rotation[(i / 3, i % 3)]));
             row.push(m.condition);
             row.push(if current == Some(k) { 1.0 } else { 0.0 });
@@ -180,14 +178,16 @@ pub fn mode_rows(modes: &Modes, current: Option<usize>) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// `assembly_modes.csv`: one row per real mode.
+/// `assembly_modes.csv`: one row per real mode, its number (from 1, as the summary's
+/// "current mode k of n" counts) in the `mode` column, then [`MODE_COLUMNS`].
 pub fn write_modes(dir: &Path, modes: &Modes, current: Option<usize>) -> Result<(), String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let path = dir.join("assembly_modes.csv");
+    let rows = mode_rows(modes, current).into_iter().enumerate();
     write(
         &path,
-        &MODE_COLUMNS.join(","),
-        mode_rows(modes, current).into_iter(),
+        &format!("mode,{}", MODE_COLUMNS.join(",")),
+        rows.map(|(k, row)| std::iter::once((k + 1) as f64).chain(row).collect()),
     )
     .map_err(|e| format!("cannot write {}: {e}", path.display()))
 }
