@@ -23,12 +23,13 @@ pub struct ConstraintRow {
 /// What a constraint row belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum RowOwner {
+    /// A `[[joint]]` of the file; the row is `<joint>.<primitive>`.
     Joint,
+    /// A `[[driver]]`: one row, named as the driver.
     Driver,
     /// A quaternion body's `eᵀe = 1`: generated, not written in the file.
-    UnitQuaternion {
-        body: &'static str,
-    },
+    UnitQuaternion { body: &'static str },
+    /// Outside every joint (a hand-written mechanism without joint tables).
     Unknown,
 }
 

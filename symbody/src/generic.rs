@@ -233,6 +233,7 @@ pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
 /// at the CLI's spacing (the outputs alone gave fourth order: 1.8e-6 of the energy scale on
 /// the four-bar's scene, against 1.5e-10 integrated).
 pub fn run_kinematic(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
+    use symbody_runtime::{energy, quadrature};
     let mech = mechanism(entry, opts.formulation)?;
     let info = mech.info();
     let t_end = opts.t_end.unwrap_or(entry.t_end);
@@ -243,7 +244,6 @@ pub fn run_kinematic(entry: &Entry, opts: &Options) -> Result<Recording, Error> 
     let mut watch = ResidualWatch::new(info);
     let mut rec = Recording::new(info);
     let modes = mode_watch(mech, path.q())?;
-    use symbody_runtime::{energy, quadrature};
     let mut phi_t = vec![0.0; info.n_constraints];
     let (mut work, mut power_before, mut t_before) = (0.0, 0.0, 0.0);
     for k in 0..=n_out {
