@@ -164,3 +164,40 @@ fn bad_requests_name_what_exists() {
     let (ok, _, err) = symbody(&["simulate", "--cross-singular-positions"]);
     assert!(!ok && err.contains("applies to named mechanisms"), "{err}");
 }
+
+/// A mechanism file's path where a mechanism's name belongs (`simulate`, `fk`): the tool runs
+/// the code generated from the file, so it says to give the name (with how to regenerate),
+/// instead of looking for `mechanisms/mechanisms/four_bar.toml.toml`.
+#[test]
+fn a_mechanism_file_path_is_answered_with_its_name() {
+    let (ok, _, err) = symbody(&["simulate", "mechanisms/four_bar.toml", "--t-end", "0.01"]);
+    assert!(!ok);
+    assert!(!err.contains("mechanisms/mechanisms"), "{err}");
+    assert!(!err.contains(".toml.toml"), "{err}");
+    assert!(err.contains("`four_bar`"), "{err}");
+    assert!(err.contains("cargo xtask generate four_bar"), "{err}");
+    let (ok, _, err) = symbody(&["simulate", "mechanisms/not_generated.toml"]);
+    assert!(!ok);
+    assert!(
+        err.contains("no mechanism `not_generated` was generated") && err.contains("four_bar"),
+        "{err}"
+    );
+}
+
+/// `run` given a mechanism file instead of a scene: it says what the file is and the commands
+/// that take it (the name, and the shipped scene of that mechanism), not a typo suggestion for
+/// the mechanism file's `name` field.
+#[test]
+fn run_on_a_mechanism_file_shows_the_commands_that_take_it() {
+    assert!(std::path::Path::new("scenes/four_bar.toml").is_file());
+    let (ok, _, err) = symbody(&["run", "mechanisms/four_bar.toml", "--no-plots"]);
+    assert!(!ok);
+    assert!(!err.contains("did you mean"), "{err}");
+    assert!(err.contains("mechanism file"), "{err}");
+    assert!(err.contains("mechanisms/four_bar.toml:1:1"), "{err}");
+    assert!(
+        err.contains("`symbody simulate four_bar`")
+            && err.contains("`symbody run scenes/four_bar.toml`"),
+        "{err}"
+    );
+}

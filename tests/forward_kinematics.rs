@@ -119,7 +119,7 @@ fn fk_all_finds_dietmaiers_forty_real_poses() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33,cond,current"
+        "mode,x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33,cond,current"
     );
     // Dietmaier's data, typed in from the mechanism file's source.
     let v = Vector3::new;
@@ -144,10 +144,17 @@ fn fk_all_finds_dietmaiers_forty_real_poses() {
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
     assert_eq!(rows.len(), 40);
-    assert_eq!(rows.iter().filter(|r| r[13] == 1.0).count(), 1);
+    // Numbered from 1 in the CSV, and the summary names the current mode by that number.
+    for (k, r) in rows.iter().enumerate() {
+        assert_eq!(r[0], (k + 1) as f64, "row {k}");
+    }
+    let current: Vec<&Vec<f64>> = rows.iter().filter(|r| r[14] == 1.0).collect();
+    assert_eq!(current.len(), 1);
+    let said = format!("current          mode {} of 40 ", current[0][0]);
+    assert!(stdout.contains(&said), "`{said}` not in\n{stdout}");
     for r in &rows {
-        let p = v(r[0], r[1], r[2]);
-        let rot = nalgebra::Matrix3::from_row_slice(&r[3..12]);
+        let p = v(r[1], r[2], r[3]);
+        let rot = nalgebra::Matrix3::from_row_slice(&r[4..13]);
         for i in 0..6 {
             // The CSV's 17 significant digits carry the pose to roundoff.
             let l = (p + rot * top[i] - base[i]).norm();
@@ -163,30 +170,33 @@ fn fk_all_finds_dietmaiers_forty_real_poses() {
 
 /// Shortening every leg of the paper's platform to 0.1 m lowers it into the base plane, where
 /// the legs' lines become coplanar (a parallel singularity) and the branch folds back: no
-/// pose of the start's assembly mode has these lengths. `fk` must say so, with where along
-/// the path it happened, instead of answering with a pose of another mode.
+/// pose at all has these lengths. `fk` must say so, with where along the path continuation
+/// stopped, instead of answering with a pose of another mode.
 #[test]
 fn fk_reports_the_singularity_between_the_start_and_the_requested_lengths() {
     let o = symbody(&["fk", "stewart_6_6", "--lengths", "0.1,0.1,0.1,0.1,0.1,0.1"]);
     let stderr = String::from_utf8_lossy(&o.stderr);
     assert!(!o.status.success());
     assert!(stderr.contains("parallel singularity"), "{stderr}");
+    // No mode at all has these lengths (every one of the 28 is complex), so that is the
+    // answer, with where the continuation stopped.
+    assert!(stderr.contains("no real pose"), "{stderr}");
 
     let p = fk::platform(find("stewart_6_6").unwrap()).unwrap();
-    let req = Request {
-        lengths: Some([0.1; 6]),
-        ..Request::default()
-    };
-    match fk::solve(&p, &req) {
-        Err(symbody::scenario::ScenarioError::Runtime(Error::PlatformSingularity {
+    let start = p.pose(p.q0()).unwrap();
+    let l0 = p.legs().lengths(&start);
+    let line = |s: f64| std::array::from_fn(|i| l0[i] + s * (0.1 - l0[i]));
+    match symbody_runtime::fk::track(p.legs(), line, &start, 0.0, 1.0, Default::default()) {
+        Err(Error::PlatformSingularity {
             time,
             condition,
             switched,
             ..
-        })) => {
+        }) => {
             assert!(time > 0.0 && time < 1.0, "path parameter {time}");
             assert!(condition > 1e3, "condition {condition}");
             assert!(!switched, "stopped before passing it");
+            assert!(stderr.contains(&format!("t = {time:.6}")), "{stderr}");
         }
         other => panic!("expected a platform singularity, got {other:?}"),
     }
@@ -290,7 +300,7 @@ fn fk_over_time_follows_the_paper_period_and_bad_options_are_named() {
     let o = symbody(&["fk", "four_bar"]);
     let stderr = String::from_utf8_lossy(&o.stderr);
     assert!(
-        !o.status.success() && stderr.contains("no forward kinematics"),
+        !o.status.success() && stderr.contains("no six-leg platform"),
         "{stderr}"
     );
 }
@@ -336,4 +346,79 @@ fn a_driver_path_into_a_parallel_singularity_stops_the_simulation_first() {
     )
     .unwrap();
     assert!(rec.efforts.iter().flatten().all(|f| f.is_finite()));
+}
+
+/// Leg lengths of 100 m on Dietmaier's platform (legs about 1 m): no pose has them.
+/// Reference: every assembly mode at these lengths from the homotopy of
+/// `symbody_runtime::fk::assembly_modes` (checked against Dietmaier's 40 real poses above),
+/// all complex. `fk` must say no pose has these lengths, not blame a parallel singularity at
+/// t = 0.001461 as if another leg-length path could get there; `--all` must fail instead of
+/// writing an empty table.
+#[test]
+fn fk_says_no_pose_has_unreachable_lengths() {
+    let p = fk::platform(find("dietmaier_6_6").unwrap()).unwrap();
+    let far = [100.0; 6];
+    let modes = symbody_runtime::fk::assembly_modes(p.legs(), &far).unwrap();
+    assert!(
+        modes.real.is_empty() && modes.complex > 0,
+        "{} real",
+        modes.real.len()
+    );
+
+    let o = symbody(&[
+        "fk",
+        "dietmaier_6_6",
+        "--lengths",
+        "100,100,100,100,100,100",
+    ]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success());
+    assert!(
+        stderr.contains("no real pose of the platform has the leg lengths")
+            && stderr.contains("cannot reach"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("change the leg-length path"), "{stderr}");
+
+    let out = std::env::temp_dir().join(format!("symbody-fk-far-{}", std::process::id()));
+    let o = symbody(&[
+        "fk",
+        "dietmaier_6_6",
+        "--lengths",
+        "100,100,100,100,100,100",
+        "--all",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success(), "--all with 0 real modes must fail");
+    assert!(stderr.contains("no real assembly mode"), "{stderr}");
+    assert!(!out.join("assembly_modes.csv").exists());
+    std::fs::remove_dir_all(&out).ok();
+}
+
+/// `fk` on a mechanism without a six-leg platform says so in the mechanism's terms and names
+/// the ones that have one (from `symbody list`'s FK column, read here), not the runtime's
+/// "invalid platform index 0".
+#[test]
+fn fk_on_a_mechanism_without_a_platform_names_the_ones_with_one() {
+    let o = symbody(&["fk", "four_bar"]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success());
+    assert!(!stderr.contains("index"), "{stderr}");
+    assert!(
+        stderr.contains("`four_bar` has no six-leg platform"),
+        "{stderr}"
+    );
+    let list = String::from_utf8_lossy(&symbody(&["list"]).stdout).into_owned();
+    let with: Vec<&str> = list
+        .lines()
+        .skip(1)
+        .filter(|l| l.split_whitespace().last() == Some("yes"))
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
+    assert!(with.contains(&"stewart_6_6"), "{list}");
+    for name in with {
+        assert!(stderr.contains(name), "{name} missing: {stderr}");
+    }
 }

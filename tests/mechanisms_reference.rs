@@ -303,6 +303,70 @@ fn slider_crank_follows_its_closed_form_position() {
     );
 }
 
+/// Slider–crank: the guide (ground → slider prismatic) reports its moment about the joint
+/// point that travels with the slider, as docs/design.md (decision 18) says. Reference:
+/// Newton–Euler on the slider. The guide keeps it from turning (ω = 0), so the moments on it
+/// about its centre of mass — which is the slider pin and the guide's point on the slider —
+/// sum to zero: the guide's moment on the slider is minus the pin's, and the guide's
+/// reported wrench (the one on the ground) carries the pin's moment. Gravity acts at the
+/// centre. Its force balance −F_guide + F_pin + m g = m a is checked with a from central
+/// differences of the closed-form position s(θ) of `slider_crank_follows_its_closed_form_position`.
+/// The slider travels 0.2 m, so a moment about the ground point where the guide was written
+/// (the slider's start) differs by (P − O) × F, up to 2.5 N·m.
+#[test]
+fn slider_crank_guide_moment_is_about_the_travelling_slider() {
+    let (r, len, e, h, mass, g) = (0.1, 0.35, 0.05, 0.12, 1.0, 9.81);
+    let s_of = |t: f64| {
+        let theta = 2.0 * PI * t;
+        r * theta.cos() + (len * len - (e - r * theta.sin()).powi(2) - h * h).sqrt()
+    };
+    let rec = simulate(
+        "slider_crank",
+        &Options {
+            t_end: Some(1.0),
+            ..Options::default()
+        },
+    );
+    let column = |name: &str| {
+        let j = rec.info.joint_index(name).unwrap();
+        rec.joints.iter().position(|&k| k == j).unwrap()
+    };
+    let (guide, pin) = (column("guide"), column("slider_pin"));
+    let (mut worst_moment, mut worst_force, mut travel, mut old_point) =
+        (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+    let s0 = s_of(0.0);
+    for (k, &t) in rec.t.iter().enumerate() {
+        let (wg, wp) = (rec.wrenches[k][guide], rec.wrenches[k][pin]);
+        let (mg, mp) = (Vector3::from(wg.moment), Vector3::from(wp.moment));
+        worst_moment = worst_moment.max((mg - mp).norm());
+        let dt = 1e-4;
+        let a = (s_of(t + dt) - 2.0 * s_of(t) + s_of(t - dt)) / (dt * dt);
+        let newton = -Vector3::from(wg.force) + Vector3::from(wp.force)
+            - Vector3::new(0.0, mass * g, 0.0)
+            - Vector3::new(mass * a, 0.0, 0.0);
+        worst_force = worst_force.max(newton.norm());
+        let moved = Vector3::new(s_of(t) - s0, 0.0, 0.0);
+        travel = travel.max(moved.norm());
+        // The guide's moment about its ground point: M_O = M_P + (P − O) × F.
+        old_point = old_point.max((moved.cross(&Vector3::from(wg.force))).norm());
+    }
+    eprintln!(
+        "slider_crank guide: travel {travel:.3} m; max |M_guide − M_pin| = {worst_moment:e} N·m \
+         (about the ground point it would be off by up to {old_point:.3} N·m); max Newton \
+         residual {worst_force:e} N"
+    );
+    assert!(travel > 0.15, "the slider travels only {travel} m");
+    assert!(
+        old_point > 0.1,
+        "the test would not see the ground point: {old_point}"
+    );
+    assert!(
+        worst_moment < 1e-8,
+        "max |M_guide − M_pin| = {worst_moment:e} N·m"
+    );
+    assert!(worst_force < 1e-3, "max Newton residual {worst_force:e} N");
+}
+
 /// Bricard's mechanism, 10 s of free motion from rest under gravity (the IFToMM benchmark
 /// A04 of `mechanisms/bricard.toml`): no driver and no dissipation, so kinetic plus
 /// potential energy is conserved; and the mechanism stays on its one-DOF path. The path is

@@ -136,7 +136,8 @@ enum Command {
         #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
         at: f64,
         /// Every assembly mode (all complex solutions by homotopy continuation; the real
-        /// ones written to <out>/assembly_modes.csv, the tracked one marked `current`).
+        /// ones written to <out>/assembly_modes.csv, numbered from 1 in its `mode` column,
+        /// the tracked one marked `current`); an error when none is real.
         #[arg(long)]
         all: bool,
         /// Follow the drivers' motion over the file's t_end and find every assembly mode at
@@ -691,18 +692,21 @@ fn forward_kinematics(
     plots: bool,
 ) -> Result<(), String> {
     let entry = generic::find(registry, name).map_err(|e| e.to_string())?;
-    let p = fk::platform(entry).map_err(|e| e.to_string())?;
+    let p = fk::platform(entry)
+        .map_err(|e| format!("{e}; here: {}", fk::platforms(registry).join(", ")))?;
     let names = p.leg_names();
     say!(
         "{name}: platform `{}` on legs {}",
         p.body().name,
         names.join(", ")
     );
-    let answer = fk::solve(&p, req).map_err(|e| {
-        format!(
+    let answer = fk::solve(&p, req).map_err(|e| match e {
+        symbody::scenario::ScenarioError::Runtime(_) => format!(
             "{name}: continuing the pose along the straight leg-length path from the start \
              pose (t = 0) to the requested lengths (t = 1): {e}"
-        )
+        ),
+        // Already says where and why (lengths no pose has).
+        other => format!("{name}: {other}"),
     });
     match &answer {
         Ok(a) => {
@@ -756,13 +760,22 @@ fn forward_kinematics(
             if modes.attempts == 1 { "" } else { "s" },
             wall.as_secs_f64() * 1e3
         );
+        if modes.real.is_empty() {
+            return Err(format!(
+                "{name}: no real assembly mode at the leg lengths {} m (all {} are complex): no \
+                 pose of the platform has them, and nothing was written; give lengths the legs can reach (the drivers' \
+                 at some time: --at)",
+                lengths.map(|l| l.to_string()).join(", "),
+                modes.complex
+            ));
+        }
         let worst = modes.real.iter().map(|m| m.residual).fold(0.0, f64::max);
         say!("  worst residual   {worst:.2e} m over the real modes");
         match index {
             Some(k) => say!(
-                "  current          mode {} of the CSV (row {})",
+                "  current          mode {} of {} (column `mode` of assembly_modes.csv)",
                 k + 1,
-                k + 2
+                modes.real.len()
             ),
             None => say!("  current          none: no tracked pose to compare with"),
         }

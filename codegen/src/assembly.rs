@@ -152,6 +152,27 @@ fn owner(model: &Model, sys: &System, row: usize) -> (String, String) {
     (name.clone(), format!("{kind} `{name}`"))
 }
 
+/// A row as a message names it: `` `joint.primitive` `` for joints and drivers, whose names
+/// the file wrote; a quaternion body's generated `eᵀe = 1` row by its body instead of its
+/// internal name `<body>.norm`.
+fn row_label(model: &Model, sys: &System, row: usize) -> String {
+    let norm_start = sys
+        .joint_rows
+        .get(model.joints.len() + model.drivers.len())
+        .copied()
+        .unwrap_or(sys.n_constraints);
+    match row
+        .checked_sub(norm_start)
+        .and_then(|k| sys.normalized_bodies.get(k))
+    {
+        Some(&b) => format!(
+            "the unit-quaternion condition of body `{}`",
+            model.bodies[b].name
+        ),
+        None => format!("`{}`", sys.row_names[row]),
+    }
+}
+
 fn diagnostic(
     model: &Model,
     file: &str,
@@ -189,7 +210,7 @@ fn non_finite(
         model,
         file,
         owner(model, sys, r),
-        format!("row `{}` or its derivative is not a finite number at the initial pose", sys.row_names[r]),
+        format!("row {} or its derivative is not a finite number at the initial pose", row_label(model, sys, r)),
         "check this item's points and axes: a distance between coincident points or a direction of zero length is undefined",
     )]))
 }
@@ -516,7 +537,7 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
             rows.truncate(5);
             let list: Vec<String> = rows
                 .iter()
-                .map(|&r| format!("`{}` ({:.3e})", sys.row_names[r], phi[r]))
+                .map(|&r| format!("{} ({:.3e})", row_label(model, sys, r), phi[r]))
                 .collect();
             return Err(Errors(vec![diagnostic(
                 model,
@@ -543,10 +564,10 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
         if moved > WARN_CORRECTION {
             let worst = first.iamax();
             warnings.push(format!(
-                "the initial pose violates {} by {:.3e} (row `{}`); the generator moved the coordinates by up to {:.3e} to assemble it",
+                "the initial pose violates {} by {:.3e} (row {}); the generator moved the coordinates by up to {:.3e} to assemble it",
                 owner(model, sys, worst).1,
                 first[worst].abs(),
-                sys.row_names[worst],
+                row_label(model, sys, worst),
                 moved
             ));
         }

@@ -336,8 +336,15 @@ point1 = [1.0, 0.0, 0.0]
 point2 = [0.5, 0.0, 0.0]
 "#;
     // The quaternion's norm row is off too (the least-squares compromise stretches the
-    // rod), but a joint is blamed.
-    assembly_error(text, &["left.x", "right.x"], &["left", "right"]);
+    // rod), but a joint is blamed; the row is named by its body, not by the generated
+    // `rod.norm` no file contains.
+    let d = assembly_error(text, &["left.x", "right.x"], &["left", "right"]);
+    assert!(
+        d.message
+            .contains("the unit-quaternion condition of body `rod`")
+            && !d.message.contains("rod.norm"),
+        "{d}"
+    );
 }
 
 #[test]

@@ -114,14 +114,7 @@ impl<K: KktSolver> EnergyMeter<K> {
         // Checks the mechanism against `info` too.
         self.kin
             .acceleration(mech, t, q, qd, &mut self.qdd, &mut self.lambda)?;
-        mech.phi_t(q, t, &mut self.phi_t);
-        let constraint_power: f64 = self
-            .lambda
-            .iter()
-            .zip(&self.phi_t)
-            .map(|(l, p)| l * p)
-            .sum();
-        let power = constraint_power + mech.power_nc(q, qd, t);
+        let power = power(mech, t, q, qd, &self.lambda, &mut self.phi_t);
         let kinetic = kinetic_energy(info, self.kin.mass(), qd);
         let potential = mech.potential(q);
         if !(kinetic.is_finite() && potential.is_finite() && power.is_finite()) {
@@ -158,6 +151,23 @@ impl<K: KktSolver> EnergyMeter<K> {
     pub fn phi_q(&self) -> &[f64] {
         self.kin.phi_q()
     }
+}
+
+/// The power of drivers and non-conservative loads at the state `(q, q̇)` with multipliers
+/// `lambda` (from `[M Φqᵀ; Φq 0][q̈; λ] = [Q; γ]` at that state): `λᵀΦt + P_nc` (W).
+/// `phi_t` is scratch of `n_constraints`. For callers that already hold λ of a state
+/// between records (a kinematic path's sub-samples).
+pub fn power<M: Mechanism>(
+    mech: &M,
+    t: f64,
+    q: &[f64],
+    qd: &[f64],
+    lambda: &[f64],
+    phi_t: &mut [f64],
+) -> f64 {
+    mech.phi_t(q, t, phi_t);
+    let constraint_power: f64 = lambda.iter().zip(phi_t.iter()).map(|(l, p)| l * p).sum();
+    constraint_power + mech.power_nc(q, qd, t)
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 
 use std::fmt;
 
-use crate::mechanism::MechanismInfo;
+use crate::mechanism::{JointKind, MechanismInfo};
 
 /// A constraint row named for a report.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -14,26 +14,62 @@ pub struct ConstraintRow {
     pub name: &'static str,
     /// The joint owning the row (`"?"` if none does).
     pub joint: &'static str,
+    /// What owns the row, in the words of the mechanism file: reports say "joint `j`",
+    /// "driver `d`" or "the unit-quaternion condition of body `b`" from it, never an
+    /// internal row name the user did not write (`b.norm`).
+    pub owner: RowOwner,
+}
+
+/// What a constraint row belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RowOwner {
+    /// A `[[joint]]` of the file; the row is `<joint>.<primitive>`.
+    Joint,
+    /// A `[[driver]]`: one row, named as the driver.
+    Driver,
+    /// A quaternion body's `eᵀe = 1`: generated, not written in the file.
+    UnitQuaternion { body: &'static str },
+    /// Outside every joint (a hand-written mechanism without joint tables).
+    Unknown,
 }
 
 impl ConstraintRow {
     /// Looks the row's names up in `info`; never panics on an out-of-range row.
     pub fn new(info: &MechanismInfo, row: usize) -> Self {
+        let owner = info.joint_of_row(row);
         ConstraintRow {
             row,
             name: info.row_names.get(row).copied().unwrap_or("?"),
-            joint: info.joint_of_row(row).map(|j| j.name).unwrap_or("?"),
+            joint: owner.map(|j| j.name).unwrap_or("?"),
+            owner: match owner.map(|j| (j.kind, j.body1)) {
+                Some((JointKind::Normalization, b)) => RowOwner::UnitQuaternion {
+                    body: b.and_then(|b| info.bodies.get(b)).map_or("?", |b| b.name),
+                },
+                Some((JointKind::Driver, _)) => RowOwner::Driver,
+                Some(_) => RowOwner::Joint,
+                None => RowOwner::Unknown,
+            },
         }
     }
 }
 
 impl fmt::Display for ConstraintRow {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "row {} `{}` (joint `{}`)",
-            self.row, self.name, self.joint
-        )
+        match self.owner {
+            RowOwner::UnitQuaternion { body } => write!(
+                f,
+                "the unit-quaternion condition of body `{body}` (e0² + e1² + e2² + e3² = 1, \
+                 row {})",
+                self.row
+            ),
+            RowOwner::Driver => write!(f, "driver `{}` (row {})", self.joint, self.row),
+            RowOwner::Joint => write!(
+                f,
+                "joint `{}` (row {} `{}`)",
+                self.joint, self.row, self.name
+            ),
+            RowOwner::Unknown => write!(f, "row {} `{}`", self.row, self.name),
+        }
     }
 }
 
@@ -265,5 +301,39 @@ pub(crate) fn check_len(what: &'static str, expected: usize, got: usize) -> Resu
             expected,
             got,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mechanism::Mechanism;
+    use crate::testmodels::{CircleDriver, QuaternionPendulum};
+
+    #[test]
+    fn rows_are_named_by_what_the_file_wrote() {
+        // The quaternion pendulum's rows: pivot.x, pivot.y, pivot.z, then bob.norm, which
+        // the generator adds and no file names.
+        let info = QuaternionPendulum.info();
+        let norm = ConstraintRow::new(info, 3).to_string();
+        assert!(
+            norm.contains("unit-quaternion condition of body `bob`") && !norm.contains(".norm"),
+            "{norm}"
+        );
+        let joint = ConstraintRow::new(info, 1).to_string();
+        assert!(
+            joint.starts_with("joint `pivot`") && joint.contains("pivot.y"),
+            "{joint}"
+        );
+        let driver = ConstraintRow::new(CircleDriver.info(), 5).to_string();
+        assert!(driver.starts_with("driver `lift`"), "{driver}");
+        let error = Error::SingularJacobian {
+            time: 0.5,
+            rows: vec![ConstraintRow::new(info, 3)],
+        }
+        .to_string();
+        assert!(!error.contains("bob.norm"), "{error}");
+        let outside = ConstraintRow::new(info, 99).to_string();
+        assert!(outside.contains("row 99"), "{outside}");
     }
 }

@@ -46,7 +46,7 @@ mod testmodels;
 pub mod watch;
 
 pub use energy::{EnergyMeter, EnergySample};
-pub use error::{ConstraintRow, Error};
+pub use error::{ConstraintRow, Error, RowOwner};
 pub use hht::{HhtBuilder, Integrator, Stats, StepReport};
 pub use kinematic_path::{
     free_motion, FreeMotion, KinematicPath, PathStats, MAX_ACCELERATION_MISMATCH, MAX_OUTPUT_CHANGE,

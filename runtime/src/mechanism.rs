@@ -96,11 +96,12 @@ pub struct JointInfo {
     /// Number of constraint rows.
     pub rows: usize,
     /// The joint point on body 1 (local coordinates; global if body 1 is the ground):
-    /// reaction moments are taken about it.
+    /// reaction moments are taken about it, unless body 1 is the ground.
     pub point1: [f64; 3],
     /// The joint point on body 2 (local; global if body 2 is the ground). For drivers of a
     /// joint coordinate, the driven joint's; for body-coordinate drivers and normalization
-    /// rows, zero.
+    /// rows, zero. When body 1 is the ground, reaction moments are taken about this point as
+    /// it moves with body 2 ([`crate::reactions::joint_wrench`]).
     pub point2: [f64; 3],
     /// Drivers only (0 otherwise): ∂Φ/∂s of the driver's row with respect to the driven
     /// coordinate `s` where Φ = 0, so the driver's effort along `s` (force or torque, on

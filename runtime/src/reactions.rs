@@ -37,9 +37,12 @@ fn joint_info(info: &MechanismInfo, joint: usize) -> Result<&JointInfo, Error> {
 }
 
 /// The wrench joint `joint` exerts on its body 1 (global frame), the moment taken about the
-/// joint point `P = r₁ + A₁·point1` (`point1` itself when body 1 is the ground). When body 1
-/// is the ground it is the wrench on the ground: minus the wrench on body 2, about the same
-/// point.
+/// joint point on the moving body at the current pose: `P = r₁ + A₁·point1` on body 1, or,
+/// when body 1 is the ground, `P = r₂ + A₂·point2` on body 2 and the wrench is the one on the
+/// ground (minus the wrench on body 2, about that point). The two joint points coincide for
+/// joints that hold a point (spherical, revolute, universal, fixed); a sliding joint's
+/// (prismatic, cylindrical) do not, and the point that slides with the body is the one that
+/// keeps meaning as it travels — the ground's is only where the joint was written.
 ///
 /// `q`, `phi_q` and `lambda` must belong to one state. With redundant rows the multipliers
 /// are one valid choice among many, and so are the wrenches of the joints involved.
@@ -122,11 +125,7 @@ pub fn joint_wrench(
         }
     };
     let r = Vector3::new(q[cols.start], q[cols.start + 1], q[cols.start + 2]);
-    let p = if on_ground {
-        Vector3::from(j.point1)
-    } else {
-        pose::point_world(Some(b), q, &j.point1)?
-    };
+    let p = pose::point_world(Some(b), q, if on_ground { &j.point2 } else { &j.point1 })?;
     let moment = torque - (p - r).cross(&force);
     let sign = if on_ground { -1.0 } else { 1.0 };
     Ok(Wrench {
@@ -392,9 +391,13 @@ mod tests {
 
     const S_LOCAL: [f64; 3] = [0.3, -0.2, 0.5];
     const P_GLOBAL: [f64; 3] = [1.0, 2.0, -0.5];
+    /// The ground joint's point on the body: apart from `S_LOCAL` and from `P_GLOBAL`, as a
+    /// slider's point is away from the guide's ground point once it has travelled.
+    const T_LOCAL: [f64; 3] = [-0.4, 0.1, 0.25];
 
     /// One body under an identity "joint" on all its coordinates (`Φq = I`), seen from the
-    /// body (`probe`, point `S_LOCAL`) and from the ground (`probe_ground`, `P_GLOBAL`).
+    /// body (`probe`, point `S_LOCAL`) and from the ground (`probe_ground`, ground point
+    /// `P_GLOBAL`, body point `T_LOCAL`).
     macro_rules! probe_info {
         ($name:ident, $rotation:expr, $n:literal, $rows:expr) => {
             static $name: MechanismInfo = MechanismInfo {
@@ -440,7 +443,7 @@ mod tests {
                         row_start: 0,
                         rows: $n,
                         point1: P_GLOBAL,
-                        point2: [0.0; 3],
+                        point2: T_LOCAL,
                         effort_sign: 0.0,
                         effort_unit: "",
                     },
@@ -523,9 +526,11 @@ mod tests {
                     "{:?} trial {trial}: {w:?} vs {f}, {c}",
                     b.rotation
                 );
-                // From the ground's side: minus the same wrench, about the ground point.
-                let p = pose::point_world(Some(b), &q, &S_LOCAL).unwrap();
-                let c_ground = c + (p - Vector3::from(P_GLOBAL)).cross(&f);
+                // From the ground's side: minus the same wrench, about the joint point that
+                // moves with the body (M_T = M_S + (S − T) × F), not the ground's P_GLOBAL.
+                let s = pose::point_world(Some(b), &q, &S_LOCAL).unwrap();
+                let t = pose::point_world(Some(b), &q, &T_LOCAL).unwrap();
+                let c_ground = c + (s - t).cross(&f);
                 let w = joint_wrench(info, &q, &pq, &lam, 1).unwrap();
                 assert!(
                     (Vector3::from(w.force) + f).norm() < tol

@@ -14,11 +14,32 @@ pub type Error = ScenarioError;
 /// The platform of a registry entry, or an error saying why the entry has none.
 pub fn platform(entry: &'static Entry) -> Result<Platform<'static, dyn Mechanism + Sync>, Error> {
     Platform::new(entry.default_mechanism()).map_err(|e| {
+        // The runtime's "invalid platform index 0" is how the generator's absent
+        // `PlatformInfo` reaches it; the user needs the reason in the mechanism's terms.
+        let why = match e {
+            symbody_runtime::Error::InvalidIndex {
+                what: "platform",
+                reason,
+                ..
+            } => reason.to_string(),
+            other => other.to_string(),
+        };
         ScenarioError::Options(format!(
-            "`{}` has no forward kinematics: {e}. `symbody list` marks the mechanisms that do",
+            "`{}` has no six-leg platform, so forward kinematics does not apply: {why}. \
+             `symbody list` marks the mechanisms that have one (FK column)",
             entry.name
         ))
     })
+}
+
+/// The names of the entries of `registry` that have a six-leg platform (`symbody fk` takes
+/// them).
+pub fn platforms(registry: &symbody_runtime::Registry) -> Vec<&'static str> {
+    registry
+        .iter()
+        .filter(|e| e.default_mechanism().info().platform.is_some())
+        .map(|e| e.name)
+        .collect()
 }
 
 /// A forward-kinematics request; `None` takes the mechanism's own value.
@@ -70,13 +91,47 @@ pub fn solve<M: Mechanism + ?Sized>(p: &Platform<'_, M>, req: &Request) -> Resul
     let l0 = legs.lengths(&start);
     let clock = Instant::now();
     let line = |s: f64| std::array::from_fn(|i| l0[i] + s * (lengths[i] - l0[i]));
-    let tracked = fk::track(legs, line, &start, 0.0, 1.0, TrackSettings::default())?;
+    let tracked = match fk::track(legs, line, &start, 0.0, 1.0, TrackSettings::default()) {
+        Ok(t) => t,
+        Err(e @ symbody_runtime::Error::PlatformSingularity { .. }) => {
+            return Err(unreachable_or(p, &lengths, e))
+        }
+        Err(e) => return Err(e.into()),
+    };
     Ok(Answer {
         lengths,
         start,
         tracked,
         wall: clock.elapsed(),
     })
+}
+
+/// A singularity met on the way to `lengths` is only the answer when some pose has those
+/// lengths: unreachable lengths (longer than the legs can stretch between their joints) also
+/// stop the continuation at a singularity, where the branch folds back, and then the
+/// singularity's time says nothing useful. Every assembly mode (all complex solutions) tells
+/// the two apart.
+fn unreachable_or<M: Mechanism + ?Sized>(
+    p: &Platform<'_, M>,
+    lengths: &[f64; 6],
+    singular: symbody_runtime::Error,
+) -> Error {
+    let at = match singular {
+        symbody_runtime::Error::PlatformSingularity { time, .. } => time,
+        _ => f64::NAN,
+    };
+    match fk::assembly_modes(p.legs(), lengths) {
+        Ok(modes) if modes.real.is_empty() => ScenarioError::Options(format!(
+            "no real pose of the platform has the leg lengths {} m (all {} assembly modes at \
+             these lengths are complex), so continuation from the start pose cannot reach \
+             them: it stopped at t = {at:.6} of the straight leg-length path, at a parallel \
+             singularity where the branch of poses folds back. Give lengths the legs can reach (the \
+             drivers' at some time: --at), and check their unit (metres)",
+            lengths.map(|l| format!("{l}")).join(", "),
+            modes.complex
+        )),
+        _ => singular.into(),
+    }
 }
 
 /// Every assembly mode at `lengths`, the index of the one nearest `current` (the same pose
@@ -100,13 +155,14 @@ pub fn all_modes<M: Mechanism + ?Sized>(
     Ok((modes, index, wall))
 }
 
-/// Columns of `assembly_modes.csv`: the platform frame's origin, its rotation matrix row by
-/// row, the condition number, and 1 on the mode nearest the tracked pose (0 elsewhere).
+/// Columns of [`mode_rows`]: the platform frame's origin, its rotation matrix row by row,
+/// the condition number, and 1 on the mode nearest the tracked pose (0 elsewhere).
+/// `assembly_modes.csv` puts the mode's number first ([`write_modes`]).
 pub const MODE_COLUMNS: [&str; 14] = [
     "x", "y", "z", "r11", "r12", "r13", "r21", "r22", "r23", "r31", "r32", "r33", "cond", "current",
 ];
 
-/// The rows of `assembly_modes.csv` ([`MODE_COLUMNS`]), one per real mode.
+/// One row per real mode ([`MODE_COLUMNS`]).
 pub fn mode_rows(modes: &Modes, current: Option<usize>) -> Vec<Vec<f64>> {
     modes
         .real
@@ -122,14 +178,16 @@ pub fn mode_rows(modes: &Modes, current: Option<usize>) -> Vec<Vec<f64>> {
         .collect()
 }
 
-/// `assembly_modes.csv`: one row per real mode.
+/// `assembly_modes.csv`: one row per real mode, its number (from 1, as the summary's
+/// "current mode k of n" counts) in the `mode` column, then [`MODE_COLUMNS`].
 pub fn write_modes(dir: &Path, modes: &Modes, current: Option<usize>) -> Result<(), String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let path = dir.join("assembly_modes.csv");
+    let rows = mode_rows(modes, current).into_iter().enumerate();
     write(
         &path,
-        &MODE_COLUMNS.join(","),
-        mode_rows(modes, current).into_iter(),
+        &format!("mode,{}", MODE_COLUMNS.join(",")),
+        rows.map(|(k, row)| std::iter::once((k + 1) as f64).chain(row).collect()),
     )
     .map_err(|e| format!("cannot write {}: {e}", path.display()))
 }

@@ -190,6 +190,26 @@ impl Recording {
 pub fn find(registry: &Registry, name: &str) -> Result<&'static Entry, Error> {
     registry.find(name).ok_or_else(|| {
         let known = registry.names();
+        // A path to a mechanism file: the tool runs the code generated from it, so the file
+        // itself (perhaps edited since) is not what would run; its name is.
+        let path = std::path::Path::new(name);
+        if name.ends_with(".toml") || path.components().count() > 1 {
+            let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or(name);
+            return ScenarioError::Options(if registry.find(stem).is_some() {
+                format!(
+                    "`{name}` is a file; give the mechanism's name instead: `{stem}` (the tool \
+                     runs the code generated from mechanisms/{stem}.toml; after editing the \
+                     file, regenerate it with `cargo xtask generate {stem}`)"
+                )
+            } else {
+                format!(
+                    "`{name}` is a file, and no mechanism `{stem}` was generated; put it in \
+                     mechanisms/{stem}.toml, run `cargo xtask generate {stem}`, then give the \
+                     name `{stem}`; known: {}",
+                    known.join(", ")
+                )
+            });
+        }
         let close = closest(name, known.iter().copied())
             .map(|k| format!(" (did you mean `{k}`?)"))
             .unwrap_or_default();
@@ -368,7 +388,11 @@ fn integrate(
 /// at each output time the position from the drivers, the velocity of least kinetic energy,
 /// and the saddle-point accelerations and multipliers. Exact only when the drivers leave no
 /// free direction with momentum (`symbody::scene::choose_path` checks); `opts.step` and
-/// `opts.alpha` do not apply. The work of drivers and loads is integrated over the outputs.
+/// `opts.alpha` do not apply. The work of drivers and loads is integrated by the four-point
+/// Gauss–Lobatto rule over each output interval, the path solved at its two interior nodes
+/// too: sixth order in the output spacing, as accurate as the integrator's step-by-step sum
+/// at the CLI's spacing (the outputs alone gave fourth order: 1.8e-6 of the energy scale on
+/// the four-bar's scene, against 1.5e-10 integrated).
 pub fn run_kinematic(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
     run_kinematic_observed(entry, opts, &mut ()).map_err(|s| s.error)
 }
@@ -390,21 +414,47 @@ fn follow_path(
     rec: &mut Recording,
     obs: &mut dyn Observer,
 ) -> Result<(), Error> {
+    use symbody_runtime::{energy, quadrature};
     let info = mech.info();
     let mut path = KinematicPath::<_>::new(mech, 0.0)?;
     let mut meter: EnergyMeter = EnergyMeter::new(info)?;
     let mut watch = ResidualWatch::new(info);
     let modes = mode_watch(mech, path.q())?;
+    let mut phi_t = vec![0.0; info.n_constraints];
+    let (mut work, mut power_before, mut t_before) = (0.0, 0.0, 0.0);
     for k in 0..=n_out {
+        let mut inside = [0.0; 2];
         if k > 0 {
-            let advanced = path.advance_to((k as f64 * opts.output_step).min(t_end));
+            let t = (k as f64 * opts.output_step).min(t_end);
+            for (p, node) in inside.iter_mut().zip(quadrature::LOBATTO4_NODES) {
+                let advanced = path.advance_to(t_before + node * (t - t_before));
+                rec.kinematic = Some(path.stats());
+                advanced?;
+                *p = energy::power(
+                    &mech,
+                    path.t(),
+                    path.q(),
+                    path.qd(),
+                    path.lambda(),
+                    &mut phi_t,
+                );
+            }
+            let advanced = path.advance_to(t);
             rec.kinematic = Some(path.stats());
             advanced?;
         }
         if let Some(w) = &modes {
             w.check(path.q(), path.t())?;
         }
-        let sample = meter.record(&mech, path.t(), path.q(), path.qd())?;
+        let mut sample = meter.record(&mech, path.t(), path.q(), path.qd())?;
+        if k > 0 {
+            work += quadrature::lobatto4(
+                path.t() - t_before,
+                [power_before, inside[0], inside[1], sample.power],
+            );
+        }
+        (power_before, t_before) = (sample.power, path.t());
+        sample.work = work;
         record(
             rec,
             &meter,
@@ -413,7 +463,12 @@ fn follow_path(
             (path.t(), path.q(), path.qd()),
             sample,
         )?;
-        rec.kinematic = Some(path.stats());
+        // The summary counts output times; the quadrature's interior solves are in the
+        // iteration and factorization counts.
+        rec.kinematic = Some(PathStats {
+            outputs: k + 1,
+            ..path.stats()
+        });
         obs.output(rec)?;
         if obs.progress(path.t()).is_break() {
             return Err(ScenarioError::Interrupted { time: path.t() });

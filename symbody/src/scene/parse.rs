@@ -48,6 +48,9 @@ struct RawSolver {
 /// Reads and checks the scene in `text`; `file` names it in messages.
 pub fn load(registry: &Registry, file: &str, text: &str) -> Result<Scene, Errors> {
     let map = SourceMap { file, text };
+    if let Some(d) = mechanism_file(registry, &map) {
+        return Err(Errors(vec![d]));
+    }
     let raw: RawScene = toml::from_str(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
         let message = e.message().trim().to_string();
@@ -63,6 +66,43 @@ pub fn load(registry: &Registry, file: &str, text: &str) -> Result<Scene, Errors
         Some(s) if errors.is_empty() => Ok(s),
         _ => Err(Errors(errors)),
     }
+}
+
+/// A mechanism file (bodies and joints, no `mechanism` key) given where a scene belongs: the
+/// scene parser alone would only see unknown fields (`name`, with a typo's "did you mean
+/// `time`?"), so say what the file is and which command takes it.
+fn mechanism_file(registry: &Registry, map: &SourceMap<'_>) -> Option<Diagnostic> {
+    let table: toml::Table = toml::from_str(map.text).ok()?;
+    if table.contains_key("mechanism")
+        || !(table.contains_key("body") || table.contains_key("joint"))
+    {
+        return None;
+    }
+    let name = table.get("name").and_then(|n| n.as_str());
+    let help = match name {
+        Some(n) if registry.find(n).is_some() => {
+            let scene = std::path::Path::new(map.file)
+                .parent()
+                .and_then(|d| d.parent())
+                .map(|root| root.join("scenes").join(format!("{n}.toml")))
+                .filter(|p| p.is_file())
+                .map(|p| format!(", or run its scene: `symbody run {}`", p.display()))
+                .unwrap_or_default();
+            format!("simulate it by name: `symbody simulate {n}`{scene}")
+        }
+        Some(n) => format!(
+            "generate it first (`cargo xtask generate {n}`), then `symbody simulate {n}`, or \
+             write a scene with `mechanism = \"{n}\"` (docs/scenes.md)"
+        ),
+        None => "give `run` a scene file (scenes/<name>.toml, docs/scenes.md)".to_string(),
+    };
+    Some(map.diag(
+        0..0,
+        "the file",
+        "this is a mechanism file (bodies and joints), not a scene: `symbody run` takes a \
+         scene, which names a mechanism and says what to compute",
+        help,
+    ))
 }
 
 fn check(
