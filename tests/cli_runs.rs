@@ -4,7 +4,7 @@
 //! runs show progress on a terminal and print nothing extra when not on one.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
+use std::process::{Child, Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
 const BIN: &str = env!("CARGO_BIN_EXE_symbody");
@@ -23,6 +23,25 @@ fn rows(path: &Path) -> Vec<Vec<f64>> {
         .filter(|l| !l.is_empty())
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
         .collect()
+}
+
+/// Sends Ctrl-C (SIGINT) to `child` and waits for it to end, at most `limit`: a run that
+/// ignores it is killed and fails the test instead of hanging it.
+fn interrupt(mut child: Child, limit: Duration) -> Output {
+    let kill = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(kill.success());
+    let clock = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if clock.elapsed() > limit {
+            let _ = child.kill();
+            panic!("still running {limit:?} after Ctrl-C");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
 }
 
 #[test]
@@ -104,12 +123,7 @@ fn ctrl_c_stops_the_run_and_keeps_what_it_computed() {
         std::thread::sleep(Duration::from_millis(50));
     }
     let seen = rows(&bodies).len();
-    let kill = Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(kill.success());
-    let out = child.wait_with_output().unwrap();
+    let out = interrupt(child, Duration::from_secs(30));
     let (stdout, stderr) = (
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr),
@@ -167,4 +181,34 @@ fn progress_shows_on_a_terminal_only() {
     );
     assert!(screen.contains(" left"), "{screen}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn ctrl_c_ends_a_run_that_does_not_stream_at_once() {
+    // The paper scenario records in memory; Ctrl-C must still end it at once (not wait for
+    // a second one).
+    let child = Command::new(BIN)
+        .args([
+            "simulate",
+            "--t-end",
+            "1e4",
+            "--output-step",
+            "1",
+            "--no-plots",
+            "--out",
+        ])
+        .arg(temp_dir("paper-interrupt"))
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Time to install the handler and start; a signal before then ends it just the same.
+    std::thread::sleep(Duration::from_millis(500));
+    let out = interrupt(child, Duration::from_secs(30));
+    // 130: the handler's exit; `None`: the default action, if the signal came first.
+    assert!(
+        matches!(out.status.code(), Some(130) | None),
+        "{:?}",
+        out.status
+    );
 }

@@ -108,6 +108,35 @@ fn simulate_crosses_every_flat_position_at_the_finer_steps() {
 }
 
 #[test]
+fn the_scene_run_is_the_same_run() {
+    // `symbody run scenes/n_four_bar_2.toml` integrates through the same loop as `simulate`
+    // (so the sweep above covers it): the same options give bit-identical outputs.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/n_four_bar_2.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut scene = symbody::scene::load(&REGISTRY, path, &text).unwrap();
+    assert!(scene.cross_singular);
+    let entry = REGISTRY.find(NAME).unwrap();
+    for h in [5e-4, 1e-4] {
+        (scene.t_end, scene.step) = (1.5, h);
+        let (_, outcome) = symbody::scene::run(&scene, entry).unwrap_or_else(|e| panic!("{e}"));
+        let symbody::scene::Outcome::Tables(from_scene) = outcome else {
+            panic!("the scene writes tables")
+        };
+        let opts = Options {
+            t_end: Some(1.5),
+            step: h,
+            alpha: scene.alpha,
+            output_step: scene.output_step,
+            cross_singular: true,
+            ..Options::default()
+        };
+        let direct = generic::run(entry, &opts).unwrap();
+        assert_eq!(from_scene.q, direct.q, "h = {h}");
+        assert_eq!(from_scene.wrenches, direct.wrenches, "h = {h}");
+    }
+}
+
+#[test]
 fn the_session_crosses_every_flat_position_at_every_step() {
     for h in STEPS {
         let settings = Settings {

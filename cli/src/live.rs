@@ -12,26 +12,27 @@ use symbody::generic::{Observer, Recording};
 use symbody::scenario::ScenarioError;
 use symbody::tables::CsvTables;
 
-/// Set by Ctrl-C; a second Ctrl-C while a run is stopping ends the process.
-static INTERRUPTED: OnceLock<&'static AtomicBool> = OnceLock::new();
+/// Set by Ctrl-C while a [`Live`] run listens.
+static INTERRUPTED: AtomicBool = AtomicBool::new(false);
+/// Whether a [`Live`] run is going (and will stop at its next step when interrupted).
+static LISTENING: AtomicBool = AtomicBool::new(false);
 
-/// Makes Ctrl-C stop the run after its current step instead of killing the process (once
-/// per process; later calls do nothing).
+/// Makes Ctrl-C stop a [`Live`] run after its current step, keeping its outputs; with no
+/// such run going (or at a second Ctrl-C) it ends the process as usual. Once per process.
 pub fn catch_interrupts() {
-    INTERRUPTED.get_or_init(|| {
-        let flag: &'static AtomicBool = Box::leak(Box::new(AtomicBool::new(false)));
-        // Without a handler (e.g. in a sandbox that forbids it) Ctrl-C keeps its default.
-        let _ = ctrlc::set_handler(move || {
-            if flag.swap(true, Ordering::SeqCst) {
+    static ONCE: OnceLock<()> = OnceLock::new();
+    ONCE.get_or_init(|| {
+        // Without a handler (e.g. where signals cannot be caught) Ctrl-C keeps its default.
+        let _ = ctrlc::set_handler(|| {
+            if !LISTENING.load(Ordering::SeqCst) || INTERRUPTED.swap(true, Ordering::SeqCst) {
                 std::process::exit(130);
             }
         });
-        flag
     });
 }
 
 fn interrupted() -> bool {
-    INTERRUPTED.get().is_some_and(|f| f.load(Ordering::Relaxed))
+    INTERRUPTED.load(Ordering::Relaxed)
 }
 
 /// Fails with a message naming `dir` unless it can be created and written: checked before a
@@ -69,6 +70,7 @@ impl Live {
     /// For a run to `t_end` (s) writing into `dir`. The bar draws only on a terminal
     /// (stderr), so piped or captured output stays clean.
     pub fn new(dir: &Path, t_end: f64) -> Self {
+        LISTENING.store(true, Ordering::SeqCst);
         let bar = ProgressBar::new(1000);
         bar.set_style(
             ProgressStyle::with_template("{bar:24} {msg}, {eta} left").expect("a valid template"),
@@ -85,6 +87,7 @@ impl Live {
 
     /// Clears the bar and closes the files; returns them.
     pub fn finish(self) -> Result<Vec<PathBuf>, String> {
+        LISTENING.store(false, Ordering::SeqCst);
         self.bar.finish_and_clear();
         match self.tables {
             Some(t) => t.finish().map_err(|e| cannot_write(&self.dir, &e)),
