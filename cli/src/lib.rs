@@ -8,11 +8,13 @@
 //! written here.
 
 mod live;
+mod meta;
 pub mod plot;
 pub mod viewer;
 
 use clap::{Parser, Subcommand, ValueEnum};
-use std::path::PathBuf;
+use serde_json::json;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use symbody::scenario::{self, largest_rotation, Options, Reactions};
 use symbody::{fk, generic, scene};
@@ -58,9 +60,10 @@ enum ReactionsArg {
 /// Where a run writes, and what besides the CSVs.
 #[derive(clap::Args)]
 struct Files {
-    /// Output folder.
-    #[arg(long, default_value = "out")]
-    out: PathBuf,
+    /// Output folder (default: out/<mechanism>/ for `simulate <mechanism>`, out/paper/ for
+    /// the paper scenario, out/<scene file stem>/ for `run <scene>`).
+    #[arg(long)]
+    out: Option<PathBuf>,
     /// Skip the PNG figures.
     #[arg(long)]
     no_plots: bool,
@@ -100,6 +103,10 @@ enum Command {
         /// mechanisms; default: stop with the dependent rows named).
         #[arg(long)]
         cross_singular_positions: bool,
+        /// Add each body's velocities to bodies.csv: <body>.vx,.vy,.vz (centre of mass, m/s)
+        /// and .wx,.wy,.wz (angular velocity, rad/s), global frame (named mechanisms).
+        #[arg(long)]
+        velocities: bool,
         /// Paper scenario only: source of the joint and actuator forces, the saddle-point
         /// solve at each output state (`recovered`) or the integrator's own multipliers
         /// (`integrator`).
@@ -171,9 +178,11 @@ pub fn main(registry: &Registry) -> ExitCode {
             alpha,
             output_step,
             cross_singular_positions,
+            velocities,
             reactions,
             files,
         } => match mechanism {
+            None if velocities => Err("--velocities applies to named mechanisms (it adds columns to bodies.csv); the paper scenario writes platform.csv".to_string()),
             None if cross_singular_positions => Err("--cross-singular-positions applies to named mechanisms; the paper scenario has no singular position to cross".to_string()),
             Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
             Some(name) => {
@@ -186,7 +195,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                     output_step,
                     cross_singular: cross_singular_positions,
                 };
-                simulate_named(registry, &name, &opts, &files.out, !files.no_plots, files.html)
+                simulate_named(registry, &name, &opts, velocities, &files)
             }
             None => {
                 let defaults = Options::default();
@@ -201,12 +210,11 @@ pub fn main(registry: &Registry) -> ExitCode {
                         Some(ReactionsArg::Recovered) | None => Reactions::Recovered,
                     },
                 };
-                simulate(registry, &opts, &files.out, !files.no_plots, files.html)
+                let out = files.out.clone().unwrap_or_else(|| default_out("paper"));
+                simulate(registry, &opts, &out, !files.no_plots, files.html)
             }
         },
-        Command::Run { scene, files } => {
-            run_scene(registry, &scene, &files.out, !files.no_plots, files.html)
-        }
+        Command::Run { scene, files } => run_scene(registry, &scene, &files),
         Command::Fk {
             mechanism,
             lengths,
@@ -254,8 +262,15 @@ impl FormulationArg {
 }
 
 fn list(registry: &Registry) {
-    say!(
-        "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7} {:>3}",
+    for line in list_lines(registry) {
+        say!("{line}");
+    }
+}
+
+/// The lines `symbody list` prints for `registry`: a header, then one line per mechanism,
+/// in columns as wide as their widest entry.
+pub fn list_lines(registry: &Registry) -> Vec<String> {
+    const HEADER: [&str; 9] = [
         "mechanism",
         "formulations",
         "bodies",
@@ -264,37 +279,87 @@ fn list(registry: &Registry) {
         "redundant",
         "DOF",
         "t_end",
-        "FK"
-    );
-    for e in registry.iter() {
-        let info = e.default_mechanism().info();
-        let forms: Vec<&str> = e.formulations.iter().map(|(f, _)| f.name()).collect();
-        say!(
-            "{:<20} {:<13} {:>6} {:>6} {:>5} {:>9} {:>4} {:>7.3} {:>3}",
-            e.name,
-            forms.join(","),
-            info.bodies.len(),
-            info.n_coords,
-            info.n_constraints,
-            info.redundant_rows.len(),
-            info.dof(),
-            e.t_end,
-            if info.platform.is_some() { "yes" } else { "-" }
-        );
-    }
+        "FK",
+    ];
+    let rows: Vec<[String; 9]> = registry
+        .iter()
+        .map(|e| {
+            let info = e.default_mechanism().info();
+            let forms: Vec<&str> = e.formulations.iter().map(|(f, _)| f.name()).collect();
+            [
+                e.name.to_string(),
+                forms.join(","),
+                info.bodies.len().to_string(),
+                info.n_coords.to_string(),
+                info.n_constraints.to_string(),
+                info.redundant_rows.len().to_string(),
+                info.dof().to_string(),
+                format!("{:.3}", e.t_end),
+                if info.platform.is_some() { "yes" } else { "-" }.to_string(),
+            ]
+        })
+        .collect();
+    // Widths from the content: a registry may hold names of any length (the benchmarks'
+    // `n_four_bar_40`, a user's `stewart_platform_with_flexible_legs`).
+    let widths: [usize; 9] = std::array::from_fn(|c| {
+        rows.iter()
+            .map(|r| r[c].chars().count())
+            .chain([HEADER[c].chars().count()])
+            .max()
+            .unwrap_or(0)
+    });
+    let line = |cells: [&str; 9]| -> String {
+        let mut s = String::new();
+        for (c, (cell, w)) in cells.iter().zip(widths).enumerate() {
+            let pad = " ".repeat(w - cell.chars().count());
+            match c {
+                0 => s.push_str(&format!("{cell}{pad}")),
+                1 => s.push_str(&format!(" {cell}{pad}")),
+                _ => s.push_str(&format!(" {pad}{cell}")),
+            }
+        }
+        s.trim_end().to_string()
+    };
+    std::iter::once(line(HEADER))
+        .chain(
+            rows.iter()
+                .map(|r| line(std::array::from_fn(|c| r[c].as_str()))),
+        )
+        .collect()
+}
+
+/// Where a run writes without `--out`: its own folder under `out/`, so that runs of
+/// different mechanisms, scenes and the paper scenario keep each other's files.
+fn default_out(name: &str) -> PathBuf {
+    Path::new("out").join(name)
 }
 
 fn simulate_named(
     registry: &Registry,
     name: &str,
     opts: &generic::Options,
-    out: &std::path::Path,
-    plots: bool,
-    html: bool,
+    velocities: bool,
+    files: &Files,
 ) -> Result<(), String> {
     let entry = generic::find(registry, name).map_err(|e| e.to_string())?;
-    let mut live = live::Live::new(out, opts.t_end.unwrap_or(entry.t_end));
-    let run = generic::run_observed(entry, opts, &mut live);
+    let out = files.out.clone().unwrap_or_else(|| default_out(entry.name));
+    let (out, plots, html) = (out.as_path(), !files.no_plots, files.html);
+    let t_end = opts.t_end.unwrap_or(entry.t_end);
+    let meta = meta::Meta::new(json!({
+        "t_end": t_end,
+        "step": opts.step,
+        "alpha": opts.alpha,
+        "output_step": opts.output_step,
+        "velocities_projected": true,
+        "cross_singular_positions": opts.cross_singular,
+        "velocities": velocities,
+    }));
+    let mut live = live::Live::new(out, t_end, meta);
+    let mut obs = WithVelocities {
+        velocities,
+        inner: &mut live,
+    };
+    let run = generic::run_observed(entry, opts, &mut obs);
     // Every output time is landed on, so no step is longer than the output spacing.
     let method = format!(
         "step {} s, alpha {}, velocities projected",
@@ -302,6 +367,25 @@ fn simulate_named(
         opts.alpha
     );
     report_run(run, live, &method, out, plots, html).map_err(|e| format!("{name}: {e}"))
+}
+
+/// Records the bodies' velocities too when asked, then passes everything on.
+struct WithVelocities<'a> {
+    velocities: bool,
+    inner: &'a mut dyn generic::Observer,
+}
+
+impl generic::Observer for WithVelocities<'_> {
+    fn start(&mut self, rec: &mut generic::Recording) -> Result<(), generic::Error> {
+        rec.velocities = self.velocities;
+        self.inner.start(rec)
+    }
+    fn output(&mut self, rec: &generic::Recording) -> Result<(), generic::Error> {
+        self.inner.output(rec)
+    }
+    fn progress(&mut self, t: f64) -> std::ops::ControlFlow<()> {
+        self.inner.progress(t)
+    }
 }
 
 /// The summary and files of a generic run that went to its end, or of the part a stopped
@@ -428,6 +512,7 @@ fn report_named(
         );
     }
     let mut files = csvs;
+    files.push(out.join(meta::FILE));
     if plots {
         files.extend(plot::write_plots(rec, out)?);
     }
@@ -508,6 +593,22 @@ fn simulate(
     html: bool,
 ) -> Result<(), String> {
     live::check_folder(out)?;
+    meta::Meta::new(json!({
+        "t_end": opts.t_end,
+        "step": opts.step,
+        "alpha": opts.alpha,
+        "output_step": opts.output_step,
+        "reactions": match opts.reactions {
+            Reactions::Recovered => "recovered",
+            Reactions::Integrator => "integrator",
+        },
+    }))
+    .write(
+        out,
+        scenario::MECHANISM,
+        opts.formulation.name(),
+        &paper_columns(),
+    )?;
     let run = scenario::simulate(registry, opts).map_err(|e| match e {
         scenario::ScenarioError::Runtime(symbody_runtime::Error::EulerSingularity {
             time, ..
@@ -522,6 +623,14 @@ fn simulate(
     })?;
     let method = format!("step {} s, alpha {}", opts.step, opts.alpha);
     report_paper(registry, &run, opts.formulation, &method, out, plots, html)
+}
+
+/// The paper scenario's CSVs with their columns' units, for `meta.json`.
+fn paper_columns() -> Vec<(String, Vec<(String, &'static str)>)> {
+    symbody::output::columns()
+        .into_iter()
+        .map(|(f, c)| (f.to_string(), c))
+        .collect()
 }
 
 /// The summary and files of the paper scenario (`simulate` or a scene with the paper's
@@ -574,14 +683,16 @@ fn report_paper(
     symbody::output::write_csvs(run, out)
         .map_err(|e| format!("cannot write CSVs to {}: {e}", out.display()))?;
     say!(
-        "  wrote {}/platform.csv, joint_forces.csv, actuators.csv",
-        out.display()
+        "  wrote {}/: platform.csv, joint_forces.csv, actuators.csv, {}",
+        out.display(),
+        meta::FILE
     );
     if plots {
         let files = plot::paper_figures(run, out)?;
         say!(
-            "  wrote {} figures: {}",
+            "  wrote {} figures to {}/: {}",
             files.len(),
+            out.display(),
             files
                 .iter()
                 .filter_map(|f| f.file_name()?.to_str())
@@ -621,13 +732,8 @@ fn report_paper(
 }
 
 /// `symbody run <scene>`: load and check the scene, choose the path, run, report.
-fn run_scene(
-    registry: &Registry,
-    path: &std::path::Path,
-    out: &std::path::Path,
-    plots: bool,
-    html: bool,
-) -> Result<(), String> {
+fn run_scene(registry: &Registry, path: &Path, files: &Files) -> Result<(), String> {
+    let (plots, html) = (!files.no_plots, files.html);
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read scene file {}: {e}", path.display()))?;
     // The diagnostics carry their own `error:` prefix; `main` adds the first one.
@@ -636,10 +742,57 @@ fn run_scene(
         shown.strip_prefix("error: ").unwrap_or(&shown).to_string()
     })?;
     let entry = generic::find(registry, scene.mechanism).map_err(|e| e.to_string())?;
+    let out = files.out.clone().unwrap_or_else(|| {
+        default_out(
+            &path
+                .file_stem()
+                .map_or_else(|| scene.mechanism.into(), |s| s.to_string_lossy()),
+        )
+    });
+    let out = out.as_path();
     live::check_folder(out)?;
-    let mut live = live::Live::new(out, scene.t_end);
+    let meta = meta::Meta::new(json!({
+        "scene": path.display().to_string(),
+        "t_end": scene.t_end,
+        "step": scene.step,
+        "alpha": scene.alpha,
+        "output_step": scene.output_step,
+        "path": match scene.path {
+            scene::PathRequest::Auto => "auto",
+            scene::PathRequest::Kinematic => "kinematic",
+            scene::PathRequest::Integrate => "integrate",
+        },
+        "cross_singular_positions": scene.cross_singular,
+        "velocities": scene.velocities,
+    }));
+    if scene.files == scene::Files::Paper {
+        // The paper scenario's run does not report its start: described before it, as
+        // `simulate` does.
+        meta.write(
+            out,
+            scene.mechanism,
+            scene.formulation.name(),
+            &paper_columns(),
+        )?;
+    }
+    let mut live = live::Live::new(out, scene.t_end, meta.clone());
     let (choice, outcome) = scene::run_observed(&scene, entry, &mut live)
         .map_err(|e| format!("{}: {e}", path.display()))?;
+    let taken = match choice {
+        scene::PathChoice::Kinematic { .. } => "kinematic",
+        scene::PathChoice::Integrate { .. } => "integrate",
+    };
+    live.note("path_taken", json!(taken))?;
+    if scene.files == scene::Files::Paper {
+        let mut meta = meta;
+        meta.settings.insert("path_taken".into(), json!(taken));
+        meta.write(
+            out,
+            scene.mechanism,
+            scene.formulation.name(),
+            &paper_columns(),
+        )?;
+    }
     let info = generic::mechanism(entry, Some(scene.formulation))
         .map_err(|e| e.to_string())?
         .info();

@@ -12,6 +12,8 @@ use symbody::generic::{Observer, Recording};
 use symbody::scenario::ScenarioError;
 use symbody::tables::CsvTables;
 
+use crate::meta::Meta;
+
 /// Set by Ctrl-C while a [`Live`] run listens.
 static INTERRUPTED: AtomicBool = AtomicBool::new(false);
 /// Whether a [`Live`] run is going (and will stop at its next step when interrupted).
@@ -56,6 +58,9 @@ fn cannot_write(dir: &Path, e: &std::io::Error) -> String {
 pub struct Live {
     dir: PathBuf,
     tables: Option<CsvTables>,
+    meta: Meta,
+    /// What `meta.json` describes once the run has started: mechanism, formulation, files.
+    described: Option<Described>,
     bar: ProgressBar,
     t_end: f64,
     steps: usize,
@@ -63,13 +68,15 @@ pub struct Live {
     drawn: Option<Instant>,
 }
 
+type Described = (String, String, Vec<(String, Vec<(String, &'static str)>)>);
+
 /// Between redraws of the progress message.
 const REDRAW: Duration = Duration::from_millis(100);
 
 impl Live {
-    /// For a run to `t_end` (s) writing into `dir`. The bar draws only on a terminal
-    /// (stderr), so piped or captured output stays clean.
-    pub fn new(dir: &Path, t_end: f64) -> Self {
+    /// For a run to `t_end` (s) writing into `dir`, described in its `meta.json` by `meta`.
+    /// The bar draws only on a terminal (stderr), so piped or captured output stays clean.
+    pub fn new(dir: &Path, t_end: f64, meta: Meta) -> Self {
         LISTENING.store(true, Ordering::SeqCst);
         let bar = ProgressBar::new(1000);
         bar.set_style(
@@ -78,10 +85,25 @@ impl Live {
         Live {
             dir: dir.to_path_buf(),
             tables: None,
+            meta,
+            described: None,
             bar,
             t_end,
             steps: 0,
             drawn: None,
+        }
+    }
+
+    /// Adds a setting known only once the run is under way (a scene's chosen path) to
+    /// `meta.json`, rewriting it if the run has started.
+    pub fn note(&mut self, key: &str, value: serde_json::Value) -> Result<(), String> {
+        self.meta.settings.insert(key.to_string(), value);
+        match &self.described {
+            Some((mechanism, formulation, files)) => self
+                .meta
+                .write(&self.dir, mechanism, formulation, files)
+                .map(drop),
+            None => Ok(()),
         }
     }
 
@@ -101,6 +123,28 @@ impl Observer for Live {
         let tables = CsvTables::create(rec, &self.dir)
             .map_err(|e| ScenarioError::Output(cannot_write(&self.dir, &e)))?;
         self.tables = Some(tables);
+        let files: Vec<(String, Vec<(String, &'static str)>)> = symbody::tables::columns(rec)
+            .into_iter()
+            .map(|(stem, columns)| {
+                let units = columns
+                    .into_iter()
+                    .map(|c| {
+                        let unit = symbody::tables::unit(rec, stem, &c);
+                        (c, unit)
+                    })
+                    .collect();
+                (format!("{stem}.csv"), units)
+            })
+            .collect();
+        let described = (
+            rec.info.name.to_string(),
+            rec.info.formulation.name().to_string(),
+            files,
+        );
+        self.meta
+            .write(&self.dir, &described.0, &described.1, &described.2)
+            .map_err(ScenarioError::Output)?;
+        self.described = Some(described);
         Ok(())
     }
 

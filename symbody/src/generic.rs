@@ -73,6 +73,9 @@ pub struct Recording {
     /// Bodies (indices in `info.bodies`) written to `bodies.csv`: all unless a scene asks
     /// for fewer.
     pub bodies: Vec<usize>,
+    /// Whether `bodies.csv` also has each body's velocities (`.vx,.vy,.vz` of the centre of
+    /// mass, `.wx,.wy,.wz` angular, global frame): opt-in, since most uses want poses only.
+    pub velocities: bool,
     /// Per output, per body (`info.bodies` order, every body): centre of mass (m) and unit quaternion
     /// `[w, x, y, z]` with `w ≥ 0` ([`body_pose`]), whatever the body's coordinates.
     pub poses: Vec<Vec<([f64; 3], [f64; 4])>>,
@@ -505,6 +508,7 @@ impl Recording {
             q: Vec::new(),
             qd: Vec::new(),
             bodies: (0..info.bodies.len()).collect(),
+            velocities: false,
             poses: Vec::new(),
             joints: of_kind(|k| !matches!(k, JointKind::Driver | JointKind::Normalization)),
             wrenches: Vec::new(),

@@ -41,18 +41,57 @@ fn force_rows<'a>(run: &'a Run, f: &'a [[[f64; 3]; LEGS]]) -> impl Iterator<Item
     })
 }
 
+const PLATFORM_HEADER: &str = "t,x,y,z,theta,beta,gamma";
+
+fn joint_forces_header() -> String {
+    format!("{},{}", force_header("upper"), &force_header("lower")[2..])
+}
+
+fn actuators_header() -> String {
+    let mut h = String::from("t");
+    for i in 1..=LEGS {
+        let _ = write!(h, ",act{i}");
+    }
+    h
+}
+
+/// The files [`write_csvs`] writes, each with its columns and their units (the headers
+/// carry names only): the platform's pose in m and rad, the forces in N.
+pub fn columns() -> Vec<(&'static str, Vec<(String, &'static str)>)> {
+    let units = |header: &str, unit: fn(&str) -> &'static str| {
+        header
+            .split(',')
+            .map(|c| (c.to_string(), if c == "t" { "s" } else { unit(c) }))
+            .collect()
+    };
+    vec![
+        (
+            "platform.csv",
+            units(PLATFORM_HEADER, |c| {
+                if ["x", "y", "z"].contains(&c) {
+                    "m"
+                } else {
+                    "rad"
+                }
+            }),
+        ),
+        ("joint_forces.csv", units(&joint_forces_header(), |_| "N")),
+        ("actuators.csv", units(&actuators_header(), |_| "N")),
+    ]
+}
+
 /// Writes `platform.csv`, `joint_forces.csv` and `actuators.csv` into `dir`.
 pub fn write_csvs(run: &Run, dir: &Path) -> io::Result<()> {
     std::fs::create_dir_all(dir)?;
     write(
         &dir.join("platform.csv"),
-        "t,x,y,z,theta,beta,gamma",
+        PLATFORM_HEADER,
         run.t
             .iter()
             .zip(&run.platform)
             .map(|(t, p)| std::iter::once(*t).chain(p.iter().copied()).collect()),
     )?;
-    let header = format!("{},{}", force_header("upper"), &force_header("lower")[2..]);
+    let header = joint_forces_header();
     write(
         &dir.join("joint_forces.csv"),
         &header,
@@ -63,13 +102,9 @@ pub fn write_csvs(run: &Run, dir: &Path) -> io::Result<()> {
                 u
             }),
     )?;
-    let mut h = String::from("t");
-    for i in 1..=LEGS {
-        let _ = write!(h, ",act{i}");
-    }
     write(
         &dir.join("actuators.csv"),
-        &h,
+        &actuators_header(),
         run.t
             .iter()
             .zip(&run.actuators)

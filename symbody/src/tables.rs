@@ -22,6 +22,39 @@ pub struct Table {
 
 const STEMS: [&str; 4] = ["bodies", "joints", "drivers", "energy"];
 
+/// A body's columns in `bodies.csv`: the pose, then (with [`Recording::velocities`]) the
+/// velocity of the centre of mass and the angular velocity.
+const BODY_WITH_VELOCITIES: [&str; 13] = [
+    "x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz",
+];
+
+/// The unit of column `column` (`t`, or `<item>.<part>`) of table `stem`: SI, `1` for the
+/// dimensionless quaternion components; a driver's effort is a force or a torque by the
+/// coordinate it drives.
+pub fn unit(rec: &Recording, stem: &str, column: &str) -> &'static str {
+    if column == "t" {
+        return "s";
+    }
+    let part = column.rsplit_once('.').map_or("", |(_, p)| p);
+    match stem {
+        "bodies" => match part {
+            "x" | "y" | "z" => "m",
+            "vx" | "vy" | "vz" => "m/s",
+            "wx" | "wy" | "wz" => "rad/s",
+            _ => "1",
+        },
+        "joints" if part.starts_with('f') => "N",
+        "joints" => "N·m",
+        "drivers" => rec
+            .drivers
+            .iter()
+            .map(|&j| &rec.info.joints[j])
+            .find(|j| j.name == column)
+            .map_or("", |j| j.effort_unit),
+        _ => "J",
+    }
+}
+
 /// The stems and columns (`t` first) of the tables `rec` records: one column group per
 /// recorded body, joint and driver; a table with nothing recorded is left out.
 pub fn columns(rec: &Recording) -> Vec<(&'static str, Vec<String>)> {
@@ -42,7 +75,11 @@ pub fn columns(rec: &Recording) -> Vec<(&'static str, Vec<String>)> {
                 "bodies" => named(
                     &rec.bodies,
                     &|b| info.bodies[b].name,
-                    &["x", "y", "z", "qw", "qx", "qy", "qz"],
+                    if rec.velocities {
+                        &BODY_WITH_VELOCITIES
+                    } else {
+                        &BODY_WITH_VELOCITIES[..7]
+                    },
                 ),
                 "joints" => named(
                     &rec.joints,
@@ -71,10 +108,15 @@ pub fn columns(rec: &Recording) -> Vec<(&'static str, Vec<String>)> {
 pub fn row(rec: &Recording, stem: &str, k: usize) -> Vec<f64> {
     let mut row = vec![rec.t[k]];
     match stem {
-        "bodies" => row.extend(rec.bodies.iter().flat_map(|&b| {
-            let (r, e) = &rec.poses[k][b];
-            r.iter().chain(e).copied()
-        })),
+        "bodies" => {
+            for &b in &rec.bodies {
+                let (r, e) = &rec.poses[k][b];
+                row.extend(r.iter().chain(e));
+                if rec.velocities {
+                    row.extend(velocities(rec, b, k));
+                }
+            }
+        }
         "joints" => row.extend(
             rec.wrenches[k]
                 .iter()
@@ -87,6 +129,19 @@ pub fn row(rec: &Recording, stem: &str, k: usize) -> Vec<f64> {
         }
     }
     row
+}
+
+/// Body `b`'s centre-of-mass velocity and global angular velocity at output `k`, from the
+/// recorded coordinates and their rates (the first three coordinates of a body are its
+/// centre of mass).
+fn velocities(rec: &Recording, b: usize, k: usize) -> [f64; 6] {
+    let body = &rec.info.bodies[b];
+    let (q, qd) = (&rec.q[k], &rec.qd[k]);
+    let v = &qd[body.coord_offset..body.coord_offset + 3];
+    // The coordinates were recorded from a valid state, so their slices exist.
+    let w = symbody_runtime::pose::angular_velocity(body, q, qd)
+        .map_or([f64::NAN; 3], |w| [w.x, w.y, w.z]);
+    [v[0], v[1], v[2], w[0], w[1], w[2]]
 }
 
 /// The tables of a run, whole ([`columns`], every output's [`row`]).

@@ -12,6 +12,7 @@
 //!
 //! [outputs]
 //! poses = ["platform"]          # body names, or "all" (default) or "none"
+//! velocities = false            # also the bodies' velocities in bodies.csv (default false)
 //! reactions = "all"             # joint names, or "all" (default) or "none"
 //! efforts = true                # driver efforts (default true)
 //! energy = true                 # energy table (default true)
@@ -86,6 +87,8 @@ pub struct Scene {
     pub output_step: f64,
     /// Bodies whose poses are wanted (indices into `info.bodies`).
     pub poses: Selection,
+    /// Whether `bodies.csv` has the selected bodies' velocities too.
+    pub velocities: bool,
     /// Joints whose reactions are wanted (indices into `info.joints`; never drivers or
     /// normalization rows).
     pub reactions: Selection,

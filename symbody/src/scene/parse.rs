@@ -30,6 +30,7 @@ struct RawTime {
 #[serde(deny_unknown_fields)]
 struct RawOutputs {
     poses: Option<Spanned<toml::Value>>,
+    velocities: Option<Spanned<bool>>,
     reactions: Option<Spanned<toml::Value>>,
     efforts: Option<bool>,
     energy: Option<bool>,
@@ -174,6 +175,7 @@ fn check(
 
     let outputs = raw.outputs.unwrap_or(RawOutputs {
         poses: None,
+        velocities: None,
         reactions: None,
         efforts: None,
         energy: None,
@@ -229,6 +231,19 @@ fn check(
                 Files::Tables
             }
         },
+    };
+
+    let velocities = match (&outputs.velocities, files) {
+        (Some(v), Files::Paper) if *v.get_ref() => {
+            errors.push(map.diag(
+                v.span(),
+                "[outputs] `velocities`",
+                "the paper scenario's files have no bodies table to add velocities to",
+                "remove it, or use files = \"tables\" (bodies.csv gets <body>.vx … .wz)",
+            ));
+            false
+        }
+        (v, _) => v.as_ref().is_some_and(|v| *v.get_ref()),
     };
 
     let solver = raw.solver.unwrap_or(RawSolver {
@@ -293,6 +308,7 @@ fn check(
         t_end,
         output_step,
         poses,
+        velocities,
         reactions,
         efforts: outputs.efforts.unwrap_or(true),
         energy: outputs.energy.unwrap_or(true),

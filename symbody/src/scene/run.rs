@@ -255,6 +255,7 @@ impl Observer for Restricted<'_> {
 fn restrict(rec: &mut Recording, scene: &Scene) {
     let info = rec.info;
     rec.bodies = scene.poses.indices(info.bodies.len());
+    rec.velocities = scene.velocities;
     let keep = requested_joints(scene, info);
     rec.joints.retain(|j| keep.contains(j));
     if !scene.efforts {
