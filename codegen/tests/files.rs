@@ -221,3 +221,37 @@ fn a_crate_whose_file_is_gone_is_an_orphan() {
         |t: &str| t.contains("&four_bar::ENTRY") || t.contains("symbody-mechanism-four_bar ");
     assert!(registry_files(&plan).iter().all(|(_, t)| !listed(t)));
 }
+
+/// Renaming a file (and its `name`) and generating the new name lists it under that name,
+/// drops the old one from the registries and removes its crate: what docs/mechanism-files.md
+/// tells a user to do.
+#[test]
+fn a_renamed_file_is_listed_under_its_new_name_and_its_old_crate_removed() {
+    let tree = Tree::new("rename");
+    let old = tree.root.join("mechanisms/four_bar.toml");
+    let text = std::fs::read_to_string(&old).unwrap();
+    assert!(text.contains("name = \"four_bar\""));
+    std::fs::remove_file(&old).unwrap();
+    std::fs::write(
+        tree.root.join("mechanisms/crank_rocker.toml"),
+        text.replacen("name = \"four_bar\"", "name = \"crank_rocker\"", 1),
+    )
+    .unwrap();
+    let plan = tree.plan(&["crank_rocker"]);
+    assert!(plan.failures.is_empty(), "{:?}", plan.failures);
+    assert_eq!(plan.orphans, vec![files::crate_dir("four_bar")]);
+    let module = plan
+        .outputs
+        .iter()
+        .find(|(p, _)| *p == files::module_path("crank_rocker"))
+        .map(|(_, t)| t)
+        .expect("the renamed crate is generated");
+    assert!(module.contains("name: \"crank_rocker\""));
+    let registries = registry_files(&plan);
+    assert!(registries
+        .iter()
+        .any(|(_, t)| t.contains("&crank_rocker::ENTRY")));
+    assert!(registries
+        .iter()
+        .all(|(_, t)| !t.contains("&four_bar::ENTRY") && !t.contains("mechanism-four_bar ")));
+}
