@@ -255,17 +255,17 @@ fn list_keeps_its_columns_aligned_for_long_names() {
     assert!(lines.iter().any(|l| l.starts_with("n_four_bar_40 ")));
 }
 
-/// Central differences of the recorded poses over a 1 ms output step agree with the
-/// velocities written beside them (to their O(h²) error).
-#[test]
-fn velocities_in_bodies_csv_are_the_rates_of_the_poses() {
-    let dir = temp_dir("velocities");
+/// Runs `mechanism` for 0.3 s with outputs every millisecond and its bodies' velocities,
+/// and checks them against central differences of the recorded poses (their O(h²) error);
+/// returns the largest speed and angular speed seen.
+fn velocities_match_the_rates_of_the_poses(mechanism: &str) -> [f64; 2] {
+    let dir = temp_dir(&format!("velocities-{mechanism}"));
     let d = dir.to_str().unwrap();
     let (ok, out, err) = symbody_in(
         &std::env::temp_dir(),
         &[
             "simulate",
-            "spherical_pendulum",
+            mechanism,
             "--velocities",
             "--t-end",
             "0.3",
@@ -291,33 +291,83 @@ fn velocities_in_bodies_csv_are_the_rates_of_the_poses() {
             .position(|c| *c == name)
             .unwrap_or_else(|| panic!("no column {name} in {header:?}"))
     };
-    let body = header[1].rsplit_once('.').unwrap().0;
-    let c = |part: &str| col(&format!("{body}.{part}"));
-    let (x, qw, vx, wx) = (c("x"), c("qw"), c("vx"), c("wx"));
+    let bodies: Vec<&str> = header.iter().filter_map(|c| c.strip_suffix(".x")).collect();
+    assert!(!bodies.is_empty());
     let mut largest = [0.0f64; 2];
-    for k in 1..rows.len() - 1 {
-        let h = rows[k + 1][0] - rows[k - 1][0];
-        let (r, prev, next) = (&rows[k], &rows[k - 1], &rows[k + 1]);
-        for i in 0..3 {
-            let fd = (next[x + i] - prev[x + i]) / h;
-            let err = (fd - r[vx + i]).abs();
-            assert!(err < 1e-4, "t = {}: v{i} {} vs {fd}", r[0], r[vx + i]);
-            largest[0] = largest[0].max(r[vx + i].abs());
-        }
-        // ω = 2 ė ē (global frame), ė by central differences.
-        let e = [r[qw], r[qw + 1], r[qw + 2], r[qw + 3]];
-        let ed: Vec<f64> = (0..4).map(|i| (next[qw + i] - prev[qw + i]) / h).collect();
-        let w = [
-            2.0 * (-ed[0] * e[1] + ed[1] * e[0] - ed[2] * e[3] + ed[3] * e[2]),
-            2.0 * (-ed[0] * e[2] + ed[2] * e[0] - ed[3] * e[1] + ed[1] * e[3]),
-            2.0 * (-ed[0] * e[3] + ed[3] * e[0] - ed[1] * e[2] + ed[2] * e[1]),
-        ];
-        for i in 0..3 {
-            let err = (w[i] - r[wx + i]).abs();
-            assert!(err < 1e-4, "t = {}: w{i} {} vs {}", r[0], r[wx + i], w[i]);
-            largest[1] = largest[1].max(r[wx + i].abs());
+    for body in bodies {
+        let c = |part: &str| col(&format!("{body}.{part}"));
+        let (x, qw, vx, wx) = (c("x"), c("qw"), c("vx"), c("wx"));
+        for k in 1..rows.len() - 1 {
+            let h = rows[k + 1][0] - rows[k - 1][0];
+            let (r, prev, next) = (&rows[k], &rows[k - 1], &rows[k + 1]);
+            for i in 0..3 {
+                let fd = (next[x + i] - prev[x + i]) / h;
+                assert!(
+                    (fd - r[vx + i]).abs() < 1e-4,
+                    "{mechanism} {body}, t = {}: v{i} {} vs {fd}",
+                    r[0],
+                    r[vx + i]
+                );
+                largest[0] = largest[0].max(r[vx + i].abs());
+            }
+            // ω = 2 ė ē (global frame), ė by central differences.
+            let e = [r[qw], r[qw + 1], r[qw + 2], r[qw + 3]];
+            let ed: Vec<f64> = (0..4).map(|i| (next[qw + i] - prev[qw + i]) / h).collect();
+            let w = [
+                2.0 * (-ed[0] * e[1] + ed[1] * e[0] - ed[2] * e[3] + ed[3] * e[2]),
+                2.0 * (-ed[0] * e[2] + ed[2] * e[0] - ed[3] * e[1] + ed[1] * e[3]),
+                2.0 * (-ed[0] * e[3] + ed[3] * e[0] - ed[1] * e[2] + ed[2] * e[1]),
+            ];
+            for i in 0..3 {
+                assert!(
+                    (w[i] - r[wx + i]).abs() < 1e-4,
+                    "{mechanism} {body}, t = {}: w{i} {} vs {}",
+                    r[0],
+                    r[wx + i],
+                    w[i]
+                );
+                largest[1] = largest[1].max(r[wx + i].abs());
+            }
         }
     }
+    largest
+}
+
+/// Quaternion bodies (the conical pendulum) and Euler-angle bodies (the paper's platform and
+/// legs) alike: the columns are the rates of the poses beside them.
+#[test]
+fn velocities_in_bodies_csv_are_the_rates_of_the_poses() {
+    let pendulum = velocities_match_the_rates_of_the_poses("spherical_pendulum");
     // The pendulum moves, so the comparison means something.
-    assert!(largest[0] > 0.1 && largest[1] > 0.1, "{largest:?}");
+    assert!(pendulum[0] > 0.1 && pendulum[1] > 0.1, "{pendulum:?}");
+    let platform = velocities_match_the_rates_of_the_poses("stewart_6_6");
+    assert!(platform[0] > 1e-3 && platform[1] > 1e-3, "{platform:?}");
+}
+
+/// `--velocities` and a scene's `velocities` add to bodies.csv, which the paper scenario's
+/// files do not have: both say so instead of ignoring the request.
+#[test]
+fn velocities_without_a_bodies_table_are_refused() {
+    let dir = temp_dir("velocities-refused");
+    let (ok, _, err) = symbody_in(&dir, &["simulate", "--velocities", "--no-plots"]);
+    assert!(!ok);
+    assert!(
+        err.contains("--velocities applies to named mechanisms"),
+        "{err}"
+    );
+    std::fs::write(
+        dir.join("p.toml"),
+        "mechanism = \"stewart_6_6\"\n[outputs]\nfiles = \"paper\"\nvelocities = true\n",
+    )
+    .unwrap();
+    let (ok, _, err) = symbody_in(&dir, &["run", "p.toml", "--no-plots"]);
+    assert!(!ok);
+    assert!(
+        err.contains("[outputs] `velocities`") && err.contains("p.toml:4"),
+        "{err}"
+    );
+    assert!(
+        !dir.join("out").exists(),
+        "nothing is written for a refused scene"
+    );
 }
