@@ -371,3 +371,46 @@ fn velocities_without_a_bodies_table_are_refused() {
         "nothing is written for a refused scene"
     );
 }
+
+/// What docs/mechanism-files.md says of a driven joint: its wrench in joints.csv is its own
+/// rows' reaction, without the driver's torque, which drivers.csv reports on its own (the
+/// four-bar's motor drives the revolute `a0` about Z).
+#[test]
+fn a_driven_joints_moment_leaves_out_its_drivers_torque() {
+    let dir = temp_dir("driven");
+    let d = dir.to_str().unwrap();
+    let (ok, out, err) = symbody_in(
+        &std::env::temp_dir(),
+        &[
+            "simulate",
+            "four_bar",
+            "--t-end",
+            "0.5",
+            "--no-plots",
+            "--out",
+            d,
+        ],
+    );
+    assert!(ok, "{out}\n{err}");
+    let column = |file: &str, name: &str| -> Vec<f64> {
+        let text = std::fs::read_to_string(dir.join(file)).unwrap();
+        let mut lines = text.lines();
+        let c = lines
+            .next()
+            .unwrap()
+            .split(',')
+            .position(|c| c == name)
+            .unwrap();
+        lines
+            .map(|l| l.split(',').nth(c).unwrap().parse().unwrap())
+            .collect()
+    };
+    let largest = |v: Vec<f64>| v.iter().map(|x| x.abs()).fold(0.0, f64::max);
+    let motor = largest(column("drivers.csv", "motor"));
+    let about_axis = largest(column("joints.csv", "a0.mz"));
+    assert!(motor > 0.1, "{motor}");
+    assert!(
+        about_axis < 1e-9 * motor,
+        "{about_axis} N·m about a0's axis"
+    );
+}
