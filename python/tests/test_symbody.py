@@ -183,7 +183,7 @@ def test_bad_options_and_arguments_are_value_errors():
         symbody.Session("four_bar", formulation="lagrange")
     with pytest.raises(ValueError, match="crank"):
         symbody.Session("four_bar").driver_effort("act9")
-    with pytest.raises(ValueError, match="output-step"):
+    with pytest.raises(ValueError, match="output_step"):
         symbody.simulate("four_bar", output_step=0.0)
     with pytest.raises(ValueError, match="no forward kinematics"):
         symbody.fk("four_bar")
