@@ -1,6 +1,7 @@
 //! CSV outputs of a run: platform pose, joint reactions, actuator forces.
 
 use crate::scenario::{Run, LEGS};
+use crate::tables::Table;
 use std::fmt::Write as _;
 use std::io;
 use std::path::Path;
@@ -23,56 +24,53 @@ pub fn write(path: &Path, header: &str, rows: impl Iterator<Item = Vec<f64>>) ->
     std::fs::write(path, s)
 }
 
-fn force_header(prefix: &str) -> String {
-    let mut h = String::from("t");
-    for i in 1..=LEGS {
-        for c in ["x", "y", "z"] {
-            let _ = write!(h, ",{prefix}{i}_{c}");
-        }
-    }
-    h
+/// `t`, then `names`.
+fn columns(names: impl IntoIterator<Item = String>) -> Vec<String> {
+    std::iter::once("t".to_string()).chain(names).collect()
 }
 
-fn force_rows<'a>(run: &'a Run, f: &'a [[[f64; 3]; LEGS]]) -> impl Iterator<Item = Vec<f64>> + 'a {
-    run.t.iter().zip(f).map(|(t, legs)| {
-        std::iter::once(*t)
-            .chain(legs.iter().flat_map(|v| v.iter().copied()))
-            .collect()
-    })
+/// `{prefix}{leg}_{x,y,z}` for every leg.
+fn force_columns(prefix: &str) -> impl Iterator<Item = String> + '_ {
+    (1..=LEGS).flat_map(move |i| ["x", "y", "z"].map(|c| format!("{prefix}{i}_{c}")))
 }
 
-/// Writes `platform.csv`, `joint_forces.csv` and `actuators.csv` into `dir`.
+/// The paper scenario's tables (`platform`, `joint_forces`, `actuators`): the columns and
+/// rows of its CSV files, whole, for the Python package and [`write_csvs`].
+pub fn tables(run: &Run) -> Vec<Table> {
+    let rows = |row: &dyn Fn(usize) -> Vec<f64>| (0..run.t.len()).map(row).collect();
+    let at = |k: usize, values: &[f64]| {
+        let mut row = vec![run.t[k]];
+        row.extend_from_slice(values);
+        row
+    };
+    vec![
+        Table {
+            stem: "platform",
+            columns: columns(["x", "y", "z", "theta", "beta", "gamma"].map(String::from)),
+            rows: rows(&|k| at(k, &run.platform[k])),
+        },
+        Table {
+            stem: "joint_forces",
+            columns: columns(force_columns("upper").chain(force_columns("lower"))),
+            rows: rows(&|k| at(k, &[run.upper[k].concat(), run.lower[k].concat()].concat())),
+        },
+        Table {
+            stem: "actuators",
+            columns: columns((1..=LEGS).map(|i| format!("act{i}"))),
+            rows: rows(&|k| at(k, &run.actuators[k])),
+        },
+    ]
+}
+
+/// Writes `platform.csv`, `joint_forces.csv` and `actuators.csv` ([`tables`]) into `dir`.
 pub fn write_csvs(run: &Run, dir: &Path) -> io::Result<()> {
     std::fs::create_dir_all(dir)?;
-    write(
-        &dir.join("platform.csv"),
-        "t,x,y,z,theta,beta,gamma",
-        run.t
-            .iter()
-            .zip(&run.platform)
-            .map(|(t, p)| std::iter::once(*t).chain(p.iter().copied()).collect()),
-    )?;
-    let header = format!("{},{}", force_header("upper"), &force_header("lower")[2..]);
-    write(
-        &dir.join("joint_forces.csv"),
-        &header,
-        force_rows(run, &run.upper)
-            .zip(force_rows(run, &run.lower))
-            .map(|(mut u, l)| {
-                u.extend_from_slice(&l[1..]);
-                u
-            }),
-    )?;
-    let mut h = String::from("t");
-    for i in 1..=LEGS {
-        let _ = write!(h, ",act{i}");
+    for table in tables(run) {
+        write(
+            &dir.join(format!("{}.csv", table.stem)),
+            &table.columns.join(","),
+            table.rows.into_iter(),
+        )?;
     }
-    write(
-        &dir.join("actuators.csv"),
-        &h,
-        run.t
-            .iter()
-            .zip(&run.actuators)
-            .map(|(t, a)| std::iter::once(*t).chain(a.iter().copied()).collect()),
-    )
+    Ok(())
 }
