@@ -57,13 +57,14 @@ def test_simulate_writes_the_clis_csvs_and_a_summary(cli, tmp_path):
 
 
 def test_summary_names_the_ill_conditioned_windows():
-    # The N-four-bar lies flat at t = 0.714 s (IFToMM A02).
-    run = symbody.simulate("n_four_bar_2", t_end=1.0, cross_singular_positions=True)
+    # The N-four-bar lies flat near t = 1.23 s (IFToMM A02); `symbody simulate n_four_bar_2
+    # --cross-singular-positions` flags the output there.
+    run = symbody.simulate("n_four_bar_2", t_end=1.5, cross_singular_positions=True)
     windows = run.summary["ill_conditioned"]
-    assert windows, run.summary
-    w = windows[0]
-    assert w["from"] <= 0.72 and w["to"] >= 0.70 and w["outputs"] >= 1
-    assert w["smallest"] < 1e-5 and w["from"] <= w["at"] <= w["to"]
+    assert any(w["from"] - 1e-9 <= 1.23 <= w["to"] + 1e-9 for w in windows), windows
+    for w in windows:
+        assert w["outputs"] >= 1 and w["smallest"] < 1e-5 and w["from"] <= w["at"] <= w["to"]
+    assert symbody.simulate("n_four_bar_2", t_end=0.5).summary["ill_conditioned"] == []
 
 
 def test_run_equals_the_clis_scene_run(cli, tmp_path):
@@ -170,8 +171,9 @@ def test_every_public_name_and_method_has_a_docstring_and_is_in_the_readme():
             for member, value in _public_members(obj):
                 if not (getattr(value, "__doc__", None) or "").strip():
                     missing.append(f"{name}.{member}")
-                # tuple's own methods (Coo is a tuple) need no mention
-                if not hasattr(tuple, member) and not re.search(rf"`\.{member}\b", api):
+                # tuple's and dict's own methods (Coo is a tuple, Results a dict) need no
+                # mention
+                if not any(hasattr(t, member) for t in (tuple, dict)) and not re.search(rf"`\.{member}\b", api):
                     undocumented.append(f"{name}.{member}")
     assert not missing, f"no docstring: {missing}"
     assert not undocumented, f"not in python/README.md's API: {undocumented}"

@@ -1,36 +1,26 @@
-"""symbody from Python: the generated mechanisms simulated, stepped and solved by the same Rust
-code as the ``symbody`` command line and the C library.
-
->>> import symbody
->>> symbody.mechanisms()                      # registered mechanisms
->>> run = symbody.simulate("slider_crank", t_end=1.0)
->>> run["drivers"].columns, run["drivers"].data.shape
->>> s = symbody.Session("stewart_6_6"); s.advance_to(1.0); s.driver_effort("act1")
-
-Errors from Rust arrive as ``ValueError`` (an unknown name, a bad option or argument) or
-``RuntimeError`` (a solver failure), with the Rust message.
-"""
+"""The Python half of ``symbody``: tables, answers and wrappers around ``symbody._native``.
+Everything public is re-exported by ``symbody/__init__.py``; the names here that it does not
+export (NumPy, typing) stay out of the package's namespace."""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Dict, List, Optional, Sequence, Tuple
+import os
+from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _native
-from ._native import Session
 
-__all__ = [
-    "Coo",
-    "FkResult",
-    "Mechanism",
-    "Session",
-    "Table",
-    "fk",
-    "mechanisms",
-    "simulate",
-]
+if TYPE_CHECKING:
+    import pandas
+
+#: A file or folder: a ``str`` or any ``os.PathLike`` such as ``pathlib.Path``.
+PathLike = Union[str, "os.PathLike[str]"]
+
+# `symbody simulate <name>`'s defaults, stated once in Rust (`generic::Options::default`):
+# `simulate` and `Session` both take them from there.
+_DEFAULTS = _native.defaults()
 
 
 @dataclass(frozen=True)
@@ -39,8 +29,8 @@ class Table:
     ``<name>.csv``: ``t`` first, then one group per body, joint or driver.
 
     ``data`` has one row per output time. ``table["column"]`` is that column (a view),
-    ``len(table)`` the number of rows, and ``table.to_dict()`` a ``{column: array}`` dict
-    (``pandas.DataFrame(table.data, columns=table.columns)`` makes a data frame).
+    ``len(table)`` the number of rows, ``table.to_dict()`` a ``{column: array}`` dict and
+    ``table.to_pandas()`` a ``pandas.DataFrame``.
     """
 
     name: str
@@ -59,7 +49,57 @@ class Table:
         return self.data.shape[0]
 
     def to_dict(self) -> Dict[str, np.ndarray]:
+        """``{column: array}``, the columns in order (views of ``data``)."""
         return {c: self.data[:, k] for k, c in enumerate(self.columns)}
+
+    def to_pandas(self) -> "pandas.DataFrame":
+        """A ``pandas.DataFrame`` of ``data`` with the table's columns (``t`` a column, as
+        in the CSV file). pandas is optional: without it this raises ``ImportError``."""
+        try:
+            import pandas
+        except ImportError as e:
+            raise ImportError(
+                "Table.to_pandas() needs pandas, which is not installed: "
+                "pip install pandas (or use table.to_dict() / table.data)"
+            ) from e
+        return pandas.DataFrame(self.data, columns=list(self.columns))
+
+
+class Results(Dict[str, Table]):
+    """What :func:`simulate` and :func:`run` return: a dict of :class:`Table` by name (the
+    CSV file's stem), with the run's ``summary`` and the ``files`` it wrote.
+
+    ``summary`` is a dict: ``path`` (``"integrated"`` or ``"kinematic"``; for a scene also
+    ``path_reason``, why), ``steps`` and ``rejected_steps`` of the integrator (0 on the
+    kinematic path), ``newton_iterations``, ``chord_iterations`` (the kinematic path's
+    simplified-Newton corrections), ``factorizations``, ``wall_time`` (s), ``max_phi`` (the
+    largest |Φ| at the outputs), ``max_velocity_residual``, the energy balance
+    ``energy_drift`` (the largest |ΔT + ΔV − W| since the start, J) on a scale of
+    ``energy_scale`` (the largest |T| + |V|, J), and ``ill_conditioned``: the windows of
+    outputs near a singular position whose reactions amplify the motion's error, each a dict
+    ``from``, ``to`` (s), ``outputs``, ``smallest`` (relative pivot), ``at`` (s),
+    ``dropped`` (outputs at which dependent rows were dropped). The paper scenario's tables
+    (a scene with ``files = "paper"``) record neither: those three are ``None``.
+
+    ``files`` lists the CSV files written (empty without ``out``).
+    """
+
+    def __init__(self, tables: Dict[str, Table], summary: Dict[str, Any], files: List[str]):
+        super().__init__(tables)
+        self.summary: Dict[str, Any] = summary
+        self.files: List[str] = files
+
+    def __repr__(self) -> str:
+        return f"Results({sorted(self)}, files={len(self.files)})"
+
+
+def _results(answer) -> Results:
+    tables, summary, files = answer
+    return Results(
+        {stem: Table(stem, list(columns), data) for stem, columns, data in tables},
+        dict(summary),
+        [os.fspath(f) for f in files],
+    )
 
 
 def mechanisms() -> List[str]:
@@ -70,28 +110,55 @@ def mechanisms() -> List[str]:
 def simulate(
     name: str,
     t_end: Optional[float] = None,
-    step: float = 1e-3,
-    alpha: float = 0.0,
-    output_step: float = 0.01,
+    step: float = _DEFAULTS["step"],
+    alpha: float = _DEFAULTS["alpha"],
+    output_step: float = _DEFAULTS["output_step"],
     formulation: Optional[str] = None,
     cross_singular_positions: bool = False,
-) -> Dict[str, Table]:
+    out: Optional[PathLike] = None,
+) -> Results:
     """Simulates the registered mechanism ``name`` as ``symbody simulate <name>`` does.
 
     ``t_end`` defaults to the mechanism file's; ``step`` is the HHT step (s), ``alpha`` HHT's
-    α in [-1/3, 0] (velocities are projected onto the constraints after each step),
-    ``output_step`` the spacing of the rows (s), ``formulation`` ``"paper"`` or ``"exact"``
-    (default: the mechanism's first). ``cross_singular_positions`` lets the integrator pass
-    positions where constraint rows are dependent for an instant (a linkage lying flat, as
-    the IFToMM A02 N-four-bar); by default it stops there and names the rows.
+    α in [-1/3, 0] (velocities are projected onto the constraints after each step; the
+    defaults are :class:`Session`'s too), ``output_step`` the spacing of the rows (s),
+    ``formulation`` ``"paper"`` or ``"exact"`` (default: the mechanism's first).
+    ``cross_singular_positions`` lets the integrator pass positions where constraint rows
+    are dependent for an instant (a linkage lying flat, as the IFToMM A02 N-four-bar); by
+    default it stops there and names the rows. ``out``: a folder to write
+    ``bodies.csv``, ``joints.csv``, ``drivers.csv`` and ``energy.csv`` into (created if
+    needed), as ``--out`` does.
 
-    Returns ``{"bodies", "joints", "drivers", "energy"}`` → :class:`Table`, each with the
-    columns and values of the CSV of that name.
+    Returns :class:`Results`: ``{"bodies", "joints", "drivers", "energy"}`` → :class:`Table`,
+    each with the columns and values of the CSV of that name, and the run's ``summary``.
     """
-    tables = _native.simulate(
-        name, t_end, step, alpha, output_step, formulation, cross_singular_positions
+    return _results(
+        _native.simulate(
+            name,
+            t_end,
+            step,
+            alpha,
+            output_step,
+            formulation,
+            cross_singular_positions,
+            None if out is None else os.fspath(out),
+        )
     )
-    return {stem: Table(stem, list(columns), data) for stem, columns, data in tables}
+
+
+def run(scene: PathLike, out: Optional[PathLike] = None) -> Results:
+    """Runs the scene file ``scene`` (``scenes/*.toml``: mechanism, time, outputs, solver) as
+    ``symbody run <scene>`` does: kinematic analysis when that is exact for the outputs it
+    asks for, HHT-α integration otherwise (``summary["path"]``, and why in
+    ``summary["path_reason"]``).
+
+    Returns :class:`Results` with the tables the scene asks for (``bodies``, ``joints``,
+    ``drivers``, ``energy``; with ``files = "paper"`` the paper scenario's ``platform``,
+    ``joint_forces`` and ``actuators``), each with its CSV file's columns. ``out``: a
+    folder to write those CSV files into. A missing file is ``FileNotFoundError``; a scene
+    with mistakes a ``ValueError`` naming the file, line and field.
+    """
+    return _results(_native.run(os.fspath(scene), None if out is None else os.fspath(out)))
 
 
 @dataclass(frozen=True)
@@ -131,7 +198,7 @@ class FkResult:
     modes_residual: Optional[float] = None
 
     @property
-    def pose(self):
+    def pose(self) -> Tuple[Optional[np.ndarray], Optional[np.ndarray]]:
         """``(position, rotation)``: also accepted as ``start`` by :func:`fk`."""
         return self.position, self.rotation
 
@@ -139,7 +206,7 @@ class FkResult:
 def fk(
     name: str,
     lengths: Optional[Sequence[float]] = None,
-    start=None,
+    start: Union[Sequence[float], Tuple[Any, Any], None] = None,
     at: float = 0.0,
     all: bool = False,  # noqa: A002 - the command line's --all
 ) -> FkResult:
@@ -173,7 +240,9 @@ class Coo(tuple):
     without SciPy. ``data`` are float64, ``rows`` and ``cols`` int64; the entries are the
     generated structural nonzeros (no duplicates)."""
 
-    def __new__(cls, triplet, shape):
+    shape: Tuple[int, int]
+
+    def __new__(cls, triplet: Tuple[np.ndarray, Tuple[np.ndarray, np.ndarray]], shape: Sequence[int]) -> "Coo":
         data, (rows, cols) = triplet
         self = super().__new__(cls, (data, (rows, cols)))
         self.shape = tuple(shape)
@@ -181,17 +250,21 @@ class Coo(tuple):
 
     @property
     def data(self) -> np.ndarray:
+        """The nonzero values (float64)."""
         return self[0]
 
     @property
     def rows(self) -> np.ndarray:
+        """Row of each value (int64)."""
         return self[1][0]
 
     @property
     def cols(self) -> np.ndarray:
+        """Column of each value (int64)."""
         return self[1][1]
 
     def toarray(self) -> np.ndarray:
+        """The dense ``shape`` array."""
         dense = np.zeros(self.shape)
         np.add.at(dense, (self.rows, self.cols), self.data)
         return dense
@@ -215,19 +288,56 @@ class Mechanism(_native.Mechanism):
     actuators) and ``potential(q)``.
     """
 
-    def phi_q(self, q, t: float = 0.0) -> Coo:
+    def phi_q(self, q: Sequence[float], t: float = 0.0) -> Coo:
+        """Φq(q, t), the constraint Jacobian, shape ``(n_constraints, n_coords)``."""
         return Coo(super().phi_q(q, t), (self.n_constraints, self.n_coords))
 
-    def mass(self, q) -> Coo:
+    def mass(self, q: Sequence[float]) -> Coo:
+        """M(q), the mass matrix (both triangles), shape ``(n_coords, n_coords)``."""
         return Coo(super().mass(q), (self.n_coords, self.n_coords))
 
-    def force_jacobian(self, q, qd, t: float = 0.0) -> Tuple[Coo, Coo]:
+    def force_jacobian(
+        self, q: Sequence[float], qd: Sequence[float], t: float = 0.0
+    ) -> Tuple[Coo, Coo]:
+        """The applied loads' ∂Q/∂q and ∂Q/∂q̇ (springs, dampers, actuators), each shape
+        ``(n_coords, n_coords)``; empty without such loads."""
         shape = (self.n_coords, self.n_coords)
         dq, dqd = super().force_jacobian(q, qd, t)
         return Coo(dq, shape), Coo(dqd, shape)
 
 
+class Session(_native.Session):
+    """One simulation of the registered mechanism ``name`` to drive step by step: HHT-α from
+    the mechanism's consistent start.
+
+    The defaults are :func:`simulate`'s (``alpha``, ``step``, and velocities projected onto
+    the constraints after each step), so a session and a run of the same mechanism report
+    the same numbers. The paper's runs use ``alpha=-0.05, project_velocities=False``.
+    ``formulation`` is ``"paper"`` or ``"exact"`` (default: the mechanism's first);
+    ``cross_singular_positions`` as in :func:`simulate`.
+
+    State: ``t``, ``q``, ``qd``, ``coord_names``. Stepping: ``step()``, ``advance_to(t)``.
+    Forces of the current state: ``driver_effort(name)``, ``driver_efforts()``
+    (``driver_names`` order), ``joint_wrench(name)`` → ``(force, moment)`` on the joint's
+    first body (global frame, moment about the joint point), ``multipliers()``.
+    """
+
+    def __new__(
+        cls,
+        name: str,
+        formulation: Optional[str] = None,
+        alpha: float = _DEFAULTS["alpha"],
+        step: float = _DEFAULTS["step"],
+        project_velocities: bool = _DEFAULTS["project_velocities"],
+        cross_singular_positions: bool = False,
+    ) -> "Session":
+        return super().__new__(
+            cls, name, formulation, alpha, step, project_velocities, cross_singular_positions
+        )
+
+
 def paper_leg1_force_at_1s() -> float:
-    """The paper platform's actuator 1 force (N) at t = 1 s with :class:`Session`'s default
-    settings: the number the Rust example, the C example and this package all print."""
+    """The paper platform's actuator 1 force (N) at t = 1 s with the paper scenario's
+    integrator settings (``Session("stewart_6_6", alpha=-0.05, project_velocities=False)``):
+    the number the Rust example, the C example and this package all print."""
     return _native.paper_leg1_force_at_1s()
