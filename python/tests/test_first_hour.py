@@ -5,8 +5,11 @@ and errors in Python's words."""
 import importlib.metadata
 import importlib.resources
 import inspect
+import os
 import pathlib
 import re
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -200,3 +203,28 @@ def test_errors_name_the_python_arguments():
     with pytest.raises(ValueError) as e:
         s.advance_to(0.05)
     assert "advance_to" in str(e.value) and "t_out" not in str(e.value), str(e.value)
+
+
+def _compare(out, env=None):
+    script = REPO / "python" / "examples" / "compare.py"
+    return subprocess.run([sys.executable, str(script), str(out)], capture_output=True,
+                          text=True, timeout=300, env=env)
+
+
+def test_compare_example_plots_and_compares(tmp_path):
+    pytest.importorskip("matplotlib")
+    p = _compare(tmp_path / "out")
+    assert p.returncode == 0, p.stderr
+    png = tmp_path / "out" / "motor_efforts.png"
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert re.search(r"four_bar .* slider_crank .*x", p.stdout.splitlines()[-1]), p.stdout
+
+
+def test_compare_example_without_matplotlib_says_so(tmp_path):
+    # A `matplotlib` that cannot be imported shadows the installed one.
+    (tmp_path / "matplotlib.py").write_text("raise ImportError('no matplotlib here')\n")
+    p = _compare(tmp_path / "out", env=dict(os.environ, PYTHONPATH=str(tmp_path)))
+    assert p.returncode == 0, p.stderr
+    assert "pip install matplotlib" in p.stdout
+    assert (tmp_path / "out" / "motor_efforts.csv").is_file()
+    assert "peak |motor torque|" in p.stdout.splitlines()[-1]
