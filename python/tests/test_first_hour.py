@@ -183,7 +183,10 @@ def test_every_public_name_and_method_has_a_docstring_and_is_in_the_readme():
 
 
 def test_package_is_typed():
-    assert importlib.resources.files("symbody").joinpath("py.typed").is_file()
+    package = importlib.resources.files("symbody")
+    assert package.joinpath("py.typed").is_file()
+    # The compiled module's types, which Session and Mechanism inherit.
+    assert package.joinpath("_native.pyi").is_file()
     for name in ("simulate", "run", "fk", "mechanisms"):
         hints = inspect.signature(getattr(symbody, name))
         assert hints.return_annotation is not inspect.Signature.empty, name

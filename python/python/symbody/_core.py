@@ -93,7 +93,7 @@ class Results(Dict[str, Table]):
         return f"Results({sorted(self)}, files={len(self.files)})"
 
 
-def _results(answer) -> Results:
+def _results(answer: Tuple[Any, Any, Any]) -> Results:
     tables, summary, files = answer
     return Results(
         {stem: Table(stem, list(columns), data) for stem, columns, data in tables},
@@ -220,18 +220,18 @@ def fk(
     every assembly mode (``--all``). A mechanism that is not such a platform is a
     ``ValueError``; a parallel singularity on the way a ``RuntimeError``.
     """
-    if lengths is not None:
-        lengths = np.asarray(lengths, dtype=float).ravel()
+    legs = None if lengths is None else np.asarray(lengths, dtype=float).ravel()
+    pose: Any = None
     if start is not None:
         if isinstance(start, (tuple, list)) and len(start) == 2:
             position, rotation = start
-            start = (
+            pose = (
                 np.ascontiguousarray(position, dtype=float).ravel(),
                 np.ascontiguousarray(rotation, dtype=float),
             )
         else:
-            start = np.asarray(start, dtype=float).ravel()
-    return FkResult(**_native.fk(name, lengths, start, float(at), bool(all)))
+            pose = np.asarray(start, dtype=float).ravel()
+    return FkResult(**_native.fk(name, legs, pose, float(at), bool(all)))
 
 
 class Coo(tuple):
@@ -240,7 +240,7 @@ class Coo(tuple):
     without SciPy. ``data`` are float64, ``rows`` and ``cols`` int64; the entries are the
     generated structural nonzeros (no duplicates)."""
 
-    shape: Tuple[int, int]
+    shape: Tuple[int, ...]
 
     def __new__(cls, triplet: Tuple[np.ndarray, Tuple[np.ndarray, np.ndarray]], shape: Sequence[int]) -> "Coo":
         data, (rows, cols) = triplet
