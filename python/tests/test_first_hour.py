@@ -57,6 +57,10 @@ def test_simulate_writes_the_clis_csvs_and_a_summary(cli, tmp_path):
     assert s["ill_conditioned"] == []
     # Without `out`, nothing is written.
     assert symbody.simulate("four_bar", t_end=0.01).files == []
+    # A folder that cannot be made fails before the run, naming the argument.
+    (tmp_path / "a_file").write_text("")
+    with pytest.raises(OSError, match="out: cannot write"):
+        symbody.simulate("four_bar", t_end=0.01, out=tmp_path / "a_file" / "sub")
 
 
 def test_summary_names_the_ill_conditioned_windows():
