@@ -607,7 +607,7 @@ fn simulate(
         out,
         scenario::MECHANISM,
         opts.formulation.name(),
-        &paper_columns(),
+        &symbody::output::columns(),
     )?;
     let run = scenario::simulate(registry, opts).map_err(|e| match e {
         scenario::ScenarioError::Runtime(symbody_runtime::Error::EulerSingularity {
@@ -623,14 +623,6 @@ fn simulate(
     })?;
     let method = format!("step {} s, alpha {}", opts.step, opts.alpha);
     report_paper(registry, &run, opts.formulation, &method, out, plots, html)
-}
-
-/// The paper scenario's CSVs with their columns' units, for `meta.json`.
-fn paper_columns() -> Vec<(String, Vec<(String, &'static str)>)> {
-    symbody::output::columns()
-        .into_iter()
-        .map(|(f, c)| (f.to_string(), c))
-        .collect()
 }
 
 /// The summary and files of the paper scenario (`simulate` or a scene with the paper's
@@ -772,7 +764,7 @@ fn run_scene(registry: &Registry, path: &Path, files: &Files) -> Result<(), Stri
             out,
             scene.mechanism,
             scene.formulation.name(),
-            &paper_columns(),
+            &symbody::output::columns(),
         )?;
     }
     let mut live = live::Live::new(out, scene.t_end, meta.clone());
@@ -790,7 +782,7 @@ fn run_scene(registry: &Registry, path: &Path, files: &Files) -> Result<(), Stri
             out,
             scene.mechanism,
             scene.formulation.name(),
-            &paper_columns(),
+            &symbody::output::columns(),
         )?;
     }
     let info = generic::mechanism(entry, Some(scene.formulation))

@@ -12,18 +12,30 @@
 use nalgebra::{Matrix3, Vector3};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
-use pyo3::exceptions::{PyRuntimeError, PyValueError};
+use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
-use symbody::generic;
+use pyo3::types::{PyDict, PyList, PyTuple};
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+use symbody::generic::{self, Recording};
 use symbody::scenario::ScenarioError;
+use symbody::scene::{Outcome, PathChoice};
 use symbody::session::{self, Dyn};
+use symbody::tables::Table;
 use symbody_mechanisms::REGISTRY;
 use symbody_runtime::fk::Pose;
-use symbody_runtime::{Error as RuntimeError, Formulation, JointKind, MechanismInfo};
+use symbody_runtime::{
+    Error as RuntimeError, Formulation, JointKind, MechanismInfo, PathStats, Stats,
+};
 
-/// A Rust error as the Python exception of its kind, with the Rust message.
+/// A Rust error as the Python exception of its kind, with the Rust message in Python's
+/// words.
 fn py_err(e: ScenarioError) -> PyErr {
+    py_err_in("", e)
+}
+
+/// [`py_err`], the message after `context`.
+fn py_err_in(context: &str, e: ScenarioError) -> PyErr {
     let bad_input = match &e {
         ScenarioError::Options(_) | ScenarioError::Layout(_) => true,
         ScenarioError::Interrupted { .. } | ScenarioError::Output(_) => false,
@@ -34,11 +46,41 @@ fn py_err(e: ScenarioError) -> PyErr {
                 | RuntimeError::InvalidIndex { .. }
         ),
     };
+    let message = format!("{context}{}", python_words(&e.to_string()));
     if bad_input {
-        PyValueError::new_err(e.to_string())
+        PyValueError::new_err(message)
     } else {
-        PyRuntimeError::new_err(e.to_string())
+        PyRuntimeError::new_err(message)
     }
+}
+
+/// `message` with the command line's flags (`--t-end`) as the Python arguments that set the
+/// same thing (`t_end`): the library's messages are written for the command line, and a
+/// Python caller never typed a flag.
+fn python_words(message: &str) -> String {
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while let Some(k) = rest.find("--") {
+        out.push_str(&rest[..k]);
+        let after = &rest[k + 2..];
+        let len = after
+            .find(|c: char| !(c.is_ascii_lowercase() || c == '-'))
+            .unwrap_or(after.len());
+        let name = after[..len].trim_end_matches('-');
+        let at_word_start = !out.ends_with(|c: char| c.is_alphanumeric() || c == '-');
+        if at_word_start && name.starts_with(|c: char| c.is_ascii_lowercase()) {
+            match name {
+                "from" => out.push_str("start"),
+                _ => out.push_str(&name.replace('-', "_")),
+            }
+            rest = &after[name.len()..];
+        } else {
+            out.push_str("--");
+            rest = after;
+        }
+    }
+    out.push_str(rest);
+    out
 }
 
 fn formulation(name: Option<&str>) -> PyResult<Option<Formulation>> {
@@ -104,10 +146,136 @@ fn mechanisms() -> Vec<&'static str> {
     REGISTRY.names()
 }
 
-/// One run of `symbody simulate <name>`: `[(stem, columns, data)]` for `bodies`, `joints`,
-/// `drivers` and `energy`, `data` an outputs × columns array.
+/// The defaults of a run (`symbody simulate <name>`'s, [`generic::Options::default`]):
+/// `simulate` and `Session` take theirs from here, so the two cannot drift apart.
 #[pyfunction]
-#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions))]
+fn defaults(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    let d = generic::Options::default();
+    let out = PyDict::new(py);
+    out.set_item("step", d.step)?;
+    out.set_item("alpha", d.alpha)?;
+    out.set_item("output_step", d.output_step)?;
+    // `generic::run` always projects the velocities (see `generic::Options::alpha`).
+    out.set_item("project_velocities", true)?;
+    Ok(out)
+}
+
+/// Tables as `[(stem, columns, data)]`, `data` an outputs × columns array.
+type PyTables<'py> = Vec<(&'static str, Vec<String>, Matrix<'py>)>;
+
+/// A run's answer: its tables, its summary and the files written.
+type Answer<'py> = (PyTables<'py>, Bound<'py, PyDict>, Vec<PathBuf>);
+
+fn py_tables(py: Python<'_>, tables: Vec<Table>) -> PyTables<'_> {
+    tables
+        .into_iter()
+        .map(|t| {
+            let (n, m) = (t.rows.len(), t.columns.len());
+            let data = array2(py, n, m, t.rows.into_iter().flatten().collect());
+            (t.stem, t.columns, data)
+        })
+        .collect()
+}
+
+/// The folder `out` made before the run, so that one that cannot be written fails before the
+/// work rather than after it.
+fn out_folder(out: Option<&Path>) -> PyResult<()> {
+    match out {
+        Some(dir) => std::fs::create_dir_all(dir).map_err(|e| written(dir, e)),
+        None => Ok(()),
+    }
+}
+
+fn written(dir: &Path, e: std::io::Error) -> PyErr {
+    PyOSError::new_err(format!(
+        "out: cannot write the CSV files to {}: {e}",
+        dir.display()
+    ))
+}
+
+/// The summary every run shares: the solver's work, wall time and constraint residuals.
+fn work_summary<'py>(
+    py: Python<'py>,
+    path: &str,
+    stats: &Stats,
+    kinematic: Option<PathStats>,
+    wall: Duration,
+    max_phi: f64,
+    max_velocity_residual: f64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("path", path)?;
+    d.set_item("steps", stats.steps)?;
+    d.set_item("rejected_steps", stats.rejected_steps)?;
+    // On the kinematic path the solves are per output, not per step: its Newton iterations
+    // and factorizations, and the simplified-Newton corrections that stand in for most.
+    let k = kinematic.unwrap_or_default();
+    d.set_item(
+        "newton_iterations",
+        stats.newton_iterations + k.newton_iterations,
+    )?;
+    d.set_item("chord_iterations", k.chord_iterations)?;
+    d.set_item("factorizations", stats.factorizations + k.factorizations)?;
+    d.set_item("wall_time", wall.as_secs_f64())?;
+    d.set_item("max_phi", max_phi)?;
+    d.set_item("max_velocity_residual", max_velocity_residual)?;
+    Ok(d)
+}
+
+fn recording_summary<'py>(
+    py: Python<'py>,
+    rec: &Recording,
+    path: &str,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = work_summary(
+        py,
+        path,
+        &rec.stats,
+        rec.kinematic,
+        rec.wall,
+        rec.max_phi,
+        rec.max_velocity_residual,
+    )?;
+    let (drift, scale) = rec.energy_balance();
+    d.set_item("energy_drift", drift)?;
+    d.set_item("energy_scale", scale)?;
+    let windows = PyList::empty(py);
+    for w in rec.ill_conditioned() {
+        let item = PyDict::new(py);
+        item.set_item("from", w.from)?;
+        item.set_item("to", w.to)?;
+        item.set_item("outputs", w.outputs)?;
+        item.set_item("smallest", w.smallest)?;
+        item.set_item("at", w.at)?;
+        item.set_item("dropped", w.dropped)?;
+        windows.append(item)?;
+    }
+    d.set_item("ill_conditioned", windows)?;
+    Ok(d)
+}
+
+/// A generic run's answer, its CSV files written into `out` if given.
+fn recording_answer<'py>(
+    py: Python<'py>,
+    rec: &Recording,
+    path: &str,
+    out: Option<&Path>,
+) -> PyResult<Answer<'py>> {
+    let files = match out {
+        Some(dir) => symbody::tables::write_csvs(rec, dir).map_err(|e| written(dir, e))?,
+        None => Vec::new(),
+    };
+    Ok((
+        py_tables(py, symbody::tables::tables(rec)),
+        recording_summary(py, rec, path)?,
+        files,
+    ))
+}
+
+/// One run of `symbody simulate <name>`: its tables `bodies`, `joints`, `drivers` and
+/// `energy`, its summary, and the CSV files written into `out` if given.
+#[pyfunction]
+#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions, out))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -118,7 +286,8 @@ fn simulate<'py>(
     output_step: f64,
     formulation: Option<&str>,
     cross_singular_positions: bool,
-) -> PyResult<Vec<(&'static str, Vec<String>, Matrix<'py>)>> {
+    out: Option<PathBuf>,
+) -> PyResult<Answer<'py>> {
     let entry = generic::find(&REGISTRY, name).map_err(py_err)?;
     let opts = generic::Options {
         formulation: self::formulation(formulation)?,
@@ -128,15 +297,75 @@ fn simulate<'py>(
         output_step,
         cross_singular: cross_singular_positions,
     };
+    out_folder(out.as_deref())?;
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;
-    Ok(generic::tables(&rec)
-        .into_iter()
-        .map(|t| {
-            let (n, m) = (t.rows.len(), t.columns.len());
-            let data = array2(py, n, m, t.rows.into_iter().flatten().collect());
-            (t.stem, t.columns, data)
-        })
-        .collect())
+    recording_answer(py, &rec, "integrated", out.as_deref())
+}
+
+/// `symbody run <scene>`: the scene file read, checked and run on the path it chooses; the
+/// tables it asks for (the paper scenario's with `files = "paper"`), a summary with the path
+/// and why, and the CSV files written into `out` if given.
+#[pyfunction]
+#[pyo3(signature = (scene, out))]
+fn run<'py>(py: Python<'py>, scene: PathBuf, out: Option<PathBuf>) -> PyResult<Answer<'py>> {
+    let file = scene.display().to_string();
+    let text = std::fs::read_to_string(&scene).map_err(|e| {
+        let message = format!("cannot read scene file {file}: {e}");
+        match e.kind() {
+            std::io::ErrorKind::NotFound => PyFileNotFoundError::new_err(message),
+            _ => PyOSError::new_err(message),
+        }
+    })?;
+    let parsed = symbody::scene::load(&REGISTRY, &file, &text).map_err(|e| {
+        // Diagnostics begin with `error: `; the exception's type says as much.
+        let shown = e.to_string();
+        PyValueError::new_err(shown.strip_prefix("error: ").unwrap_or(&shown).to_string())
+    })?;
+    let entry = generic::find(&REGISTRY, parsed.mechanism).map_err(py_err)?;
+    out_folder(out.as_deref())?;
+    let (choice, outcome) = py
+        .detach(|| symbody::scene::run(&parsed, entry))
+        .map_err(|e| py_err_in(&format!("{file}: "), e))?;
+    let info = generic::mechanism(entry, Some(parsed.formulation))
+        .map_err(py_err)?
+        .info();
+    let path = match choice {
+        PathChoice::Kinematic { .. } => "kinematic",
+        PathChoice::Integrate { .. } => "integrated",
+    };
+    let (tables, summary, files) = match outcome {
+        Outcome::Tables(rec) => recording_answer(py, &rec, path, out.as_deref())?,
+        Outcome::Paper(run) => {
+            let tables = symbody::output::tables(&run);
+            let files = match out.as_deref() {
+                Some(dir) => {
+                    symbody::output::write_csvs(&run, dir).map_err(|e| written(dir, e))?;
+                    tables
+                        .iter()
+                        .map(|t| dir.join(format!("{}.csv", t.stem)))
+                        .collect()
+                }
+                None => Vec::new(),
+            };
+            let summary = work_summary(
+                py,
+                path,
+                &run.stats,
+                run.kinematic,
+                run.wall,
+                run.max_phi,
+                run.max_velocity_residual,
+            )?;
+            // The paper's run records T + V and the actuators' power at the outputs, not an
+            // energy meter over the steps, nor the pivots that flag singular positions.
+            summary.set_item("energy_drift", py.None())?;
+            summary.set_item("energy_scale", py.None())?;
+            summary.set_item("ill_conditioned", py.None())?;
+            (py_tables(py, tables), summary, files)
+        }
+    };
+    summary.set_item("path_reason", choice.describe(info))?;
+    Ok((tables, summary, files))
 }
 
 /// The pose to continue from: six numbers `x, y, z, θ, β, γ` (as `symbody fk --from`), or a
@@ -246,8 +475,8 @@ fn driver_names(info: &MechanismInfo) -> Vec<&'static str> {
 }
 
 /// One simulation to drive step by step, as `symbody::session::Session`: HHT-α from the
-/// mechanism's consistent start.
-#[pyclass(module = "symbody")]
+/// mechanism's consistent start. `symbody.Session` subclasses it with the defaults.
+#[pyclass(module = "symbody._native", subclass)]
 struct Session {
     inner: session::Session,
 }
@@ -255,7 +484,8 @@ struct Session {
 #[pymethods]
 impl Session {
     #[new]
-    #[pyo3(signature = (name, formulation=None, alpha=-0.05, step=1e-3, project_velocities=false, cross_singular_positions=false))]
+    // No defaults here: `symbody.Session` gives `simulate`'s (`defaults()`).
+    #[pyo3(signature = (name, formulation, alpha, step, project_velocities, cross_singular_positions))]
     fn new(
         name: &str,
         formulation: Option<&str>,
@@ -326,7 +556,18 @@ impl Session {
     /// Steps until exactly `t` (the last step shortened to land on it).
     fn advance_to(&mut self, py: Python<'_>, t: f64) -> PyResult<()> {
         let s = &mut self.inner;
-        py.detach(|| s.advance_to(t)).map_err(py_err)
+        let now = s.t();
+        py.detach(|| s.advance_to(t)).map_err(|e| match e {
+            // The integrator's name for the target is not the caller's.
+            ScenarioError::Runtime(RuntimeError::InvalidSetting {
+                name: "t_out",
+                reason,
+                ..
+            }) => PyValueError::new_err(format!(
+                "advance_to(t): t = {t} {reason} (the session is at t = {now} s)"
+            )),
+            other => py_err(other),
+        })
     }
 
     /// Lagrange multipliers of the current state, one per constraint row.
@@ -397,6 +638,7 @@ impl Mechanism {
         Ok(Mechanism { mech })
     }
 
+    /// The mechanism's name.
     #[getter]
     fn name(&self) -> &'static str {
         self.info().name
@@ -406,10 +648,12 @@ impl Mechanism {
     fn formulation(&self) -> &'static str {
         self.info().formulation.name()
     }
+    /// Number of coordinates (the length of `q`).
     #[getter]
     fn n_coords(&self) -> usize {
         self.info().n_coords
     }
+    /// Number of constraint rows (the length of `phi(q)`).
     #[getter]
     fn n_constraints(&self) -> usize {
         self.info().n_constraints
@@ -424,10 +668,12 @@ impl Mechanism {
     fn qd0<'py>(&self, py: Python<'py>) -> Vector<'py> {
         array1(py, self.info().qd0)
     }
+    /// Name of each coordinate, `q` order.
     #[getter]
     fn coord_names(&self) -> Vec<&'static str> {
         self.info().coord_names.to_vec()
     }
+    /// Name of each constraint row, `phi` order.
     #[getter]
     fn row_names(&self) -> Vec<&'static str> {
         self.info().row_names.to_vec()
@@ -540,7 +786,7 @@ impl Mechanism {
 }
 
 /// The value the Rust example, the C example and this package print: the paper platform's
-/// actuator 1 force (N) at t = 1 s with the session's default settings.
+/// actuator 1 force (N) at t = 1 s with the paper scenario's integrator settings.
 #[pyfunction]
 fn paper_leg1_force_at_1s(py: Python<'_>) -> PyResult<f64> {
     py.detach(|| session::paper_leg1_force_at_1s(&REGISTRY))
@@ -550,10 +796,14 @@ fn paper_leg1_force_at_1s(py: Python<'_>) -> PyResult<f64> {
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(mechanisms, m)?)?;
+    m.add_function(wrap_pyfunction!(defaults, m)?)?;
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(fk, m)?)?;
     m.add_function(wrap_pyfunction!(paper_leg1_force_at_1s, m)?)?;
     m.add_class::<Session>()?;
     m.add_class::<Mechanism>()?;
+    // The wheel's version is this crate's (maturin), so Python reports the same number.
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -1,6 +1,7 @@
 //! CSV outputs of a run: platform pose, joint reactions, actuator forces.
 
 use crate::scenario::{Run, LEGS};
+use crate::tables::Table;
 use std::fmt::Write as _;
 use std::io;
 use std::path::Path;
@@ -23,91 +24,77 @@ pub fn write(path: &Path, header: &str, rows: impl Iterator<Item = Vec<f64>>) ->
     std::fs::write(path, s)
 }
 
-fn force_header(prefix: &str) -> String {
-    let mut h = String::from("t");
-    for i in 1..=LEGS {
-        for c in ["x", "y", "z"] {
-            let _ = write!(h, ",{prefix}{i}_{c}");
-        }
-    }
-    h
+/// `t`, then `names`.
+fn with_t(names: impl IntoIterator<Item = String>) -> Vec<String> {
+    std::iter::once("t".to_string()).chain(names).collect()
 }
 
-fn force_rows<'a>(run: &'a Run, f: &'a [[[f64; 3]; LEGS]]) -> impl Iterator<Item = Vec<f64>> + 'a {
-    run.t.iter().zip(f).map(|(t, legs)| {
-        std::iter::once(*t)
-            .chain(legs.iter().flat_map(|v| v.iter().copied()))
-            .collect()
-    })
+/// `{prefix}{leg}_{x,y,z}` for every leg.
+fn force_columns(prefix: &str) -> impl Iterator<Item = String> + '_ {
+    (1..=LEGS).flat_map(move |i| ["x", "y", "z"].map(|c| format!("{prefix}{i}_{c}")))
 }
 
-const PLATFORM_HEADER: &str = "t,x,y,z,theta,beta,gamma";
-
-fn joint_forces_header() -> String {
-    format!("{},{}", force_header("upper"), &force_header("lower")[2..])
-}
-
-fn actuators_header() -> String {
-    let mut h = String::from("t");
-    for i in 1..=LEGS {
-        let _ = write!(h, ",act{i}");
-    }
-    h
+/// The paper scenario's tables (`platform`, `joint_forces`, `actuators`): the columns and
+/// rows of its CSV files, whole, for the Python package and [`write_csvs`].
+pub fn tables(run: &Run) -> Vec<Table> {
+    let rows = |row: &dyn Fn(usize) -> Vec<f64>| (0..run.t.len()).map(row).collect();
+    let at = |k: usize, values: &[f64]| {
+        let mut row = vec![run.t[k]];
+        row.extend_from_slice(values);
+        row
+    };
+    vec![
+        Table {
+            stem: "platform",
+            columns: with_t(["x", "y", "z", "theta", "beta", "gamma"].map(String::from)),
+            rows: rows(&|k| at(k, &run.platform[k])),
+        },
+        Table {
+            stem: "joint_forces",
+            columns: with_t(force_columns("upper").chain(force_columns("lower"))),
+            rows: rows(&|k| at(k, &[run.upper[k].concat(), run.lower[k].concat()].concat())),
+        },
+        Table {
+            stem: "actuators",
+            columns: with_t((1..=LEGS).map(|i| format!("act{i}"))),
+            rows: rows(&|k| at(k, &run.actuators[k])),
+        },
+    ]
 }
 
 /// The files [`write_csvs`] writes, each with its columns and their units (the headers
 /// carry names only): the platform's pose in m and rad, the forces in N.
-pub fn columns() -> Vec<(&'static str, Vec<(String, &'static str)>)> {
-    let units = |header: &str, unit: fn(&str) -> &'static str| {
-        header
-            .split(',')
-            .map(|c| (c.to_string(), if c == "t" { "s" } else { unit(c) }))
-            .collect()
-    };
-    vec![
-        (
-            "platform.csv",
-            units(PLATFORM_HEADER, |c| {
-                if ["x", "y", "z"].contains(&c) {
-                    "m"
-                } else {
-                    "rad"
-                }
-            }),
-        ),
-        ("joint_forces.csv", units(&joint_forces_header(), |_| "N")),
-        ("actuators.csv", units(&actuators_header(), |_| "N")),
-    ]
+pub fn columns() -> Vec<(String, Vec<(String, &'static str)>)> {
+    tables(&Run::default())
+        .into_iter()
+        .map(|table| {
+            let units = table
+                .columns
+                .into_iter()
+                .map(|c| {
+                    let unit = match c.as_str() {
+                        "t" => "s",
+                        "x" | "y" | "z" => "m",
+                        "theta" | "beta" | "gamma" => "rad",
+                        _ => "N",
+                    };
+                    (c, unit)
+                })
+                .collect();
+            (format!("{}.csv", table.stem), units)
+        })
+        .collect()
 }
 
-/// Writes `platform.csv`, `joint_forces.csv` and `actuators.csv` into `dir`.
+/// Writes `platform.csv`, `joint_forces.csv` and `actuators.csv` ([`tables`]) into `dir`.
 pub fn write_csvs(run: &Run, dir: &Path) -> io::Result<()> {
     std::fs::create_dir_all(dir)?;
-    write(
-        &dir.join("platform.csv"),
-        PLATFORM_HEADER,
-        run.t
-            .iter()
-            .zip(&run.platform)
-            .map(|(t, p)| std::iter::once(*t).chain(p.iter().copied()).collect()),
-    )?;
-    let header = joint_forces_header();
-    write(
-        &dir.join("joint_forces.csv"),
-        &header,
-        force_rows(run, &run.upper)
-            .zip(force_rows(run, &run.lower))
-            .map(|(mut u, l)| {
-                u.extend_from_slice(&l[1..]);
-                u
-            }),
-    )?;
-    write(
-        &dir.join("actuators.csv"),
-        &actuators_header(),
-        run.t
-            .iter()
-            .zip(&run.actuators)
-            .map(|(t, a)| std::iter::once(*t).chain(a.iter().copied()).collect()),
-    )
+    for table in tables(run) {
+        write(
+            &dir.join(format!("{}.csv", table.stem)),
+            &table.columns.join(","),
+            table.rows.into_iter(),
+        )?;
+    }
+    Ok(())
 }

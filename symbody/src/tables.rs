@@ -12,7 +12,8 @@ use std::time::{Duration, Instant};
 /// the Python package returns as `simulate(name)[stem]`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Table {
-    /// File stem: `bodies`, `joints`, `drivers` or `energy`.
+    /// File stem: `bodies`, `joints`, `drivers` or `energy` (the paper scenario's:
+    /// `platform`, `joint_forces`, `actuators`, [`crate::output::tables`]).
     pub stem: &'static str,
     /// Column names, `t` first.
     pub columns: Vec<String>,
