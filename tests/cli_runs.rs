@@ -212,3 +212,31 @@ fn ctrl_c_ends_a_run_that_does_not_stream_at_once() {
         out.status
     );
 }
+
+#[test]
+fn the_readmes_singular_position_example_needs_its_flag() {
+    // README: `simulate n_four_bar_2 --step 5e-4 --cross-singular-positions`, and without
+    // the flag the run stops at a flat position in its 17th second.
+    let dir = temp_dir("flat");
+    let run = |flag: &[&str]| {
+        Command::new(BIN)
+            .args([
+                "simulate",
+                "n_four_bar_2",
+                "--step",
+                "5e-4",
+                "--no-plots",
+                "--out",
+            ])
+            .arg(&dir)
+            .args(flag)
+            .output()
+            .unwrap()
+    };
+    let without = run(&[]);
+    let stderr = String::from_utf8_lossy(&without.stderr);
+    assert!(!without.status.success());
+    assert!(stderr.contains("lost rank at t = 16."), "{stderr}");
+    assert!(run(&["--cross-singular-positions"]).status.success());
+    let _ = std::fs::remove_dir_all(&dir);
+}
