@@ -414,3 +414,77 @@ fn a_driven_joints_moment_leaves_out_its_drivers_torque() {
         "{about_axis} N·m about a0's axis"
     );
 }
+
+/// Runs `mechanism` for 0.3 s with outputs every millisecond and its bodies' velocities and
+/// accelerations, and checks the accelerations against central differences of the velocity
+/// columns (themselves checked against the poses above); returns the largest linear and
+/// angular acceleration seen and the largest mismatch relative to them.
+fn accelerations_match_the_rates_of_the_velocities(mechanism: &str) -> [f64; 3] {
+    let dir = temp_dir(&format!("accelerations-{mechanism}"));
+    let d = dir.to_str().unwrap();
+    let (ok, out, err) = symbody_in(
+        &std::env::temp_dir(),
+        &[
+            "simulate",
+            mechanism,
+            "--velocities",
+            "--accelerations",
+            "--t-end",
+            "0.3",
+            "--output-step",
+            "1e-3",
+            "--no-plots",
+            "--out",
+            d,
+        ],
+    );
+    assert!(ok, "{out}\n{err}");
+    let text = std::fs::read_to_string(dir.join("bodies.csv")).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    let col = |name: &str| header.iter().position(|c| *c == name).unwrap();
+    let meta = std::fs::read_to_string(dir.join("meta.json")).unwrap();
+    assert!(meta.contains("m/s²") && meta.contains("rad/s²"), "{meta}");
+    let bodies: Vec<&str> = header.iter().filter_map(|c| c.strip_suffix(".x")).collect();
+    let (mut largest, mut mismatch) = ([0.0f64; 2], 0.0f64);
+    for body in bodies {
+        let c = |part: &str| col(&format!("{body}.{part}"));
+        for (kind, rate, of) in [(0, c("ax"), c("vx")), (1, c("alphax"), c("wx"))] {
+            for k in 1..rows.len() - 1 {
+                let h = rows[k + 1][0] - rows[k - 1][0];
+                for i in 0..3 {
+                    let fd = (rows[k + 1][of + i] - rows[k - 1][of + i]) / h;
+                    let got = rows[k][rate + i];
+                    largest[kind] = largest[kind].max(got.abs());
+                    mismatch = mismatch.max((fd - got).abs());
+                }
+            }
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+    [largest[0], largest[1], mismatch]
+}
+
+/// Quaternion bodies (the N-four-bar's swinging links; the conical pendulum's ω is constant)
+/// and Euler-angle bodies (the paper's platform and legs): the accelerations are the rates of
+/// the velocities beside them, to the central difference's O(h²) at h = 1 ms.
+#[test]
+fn accelerations_in_bodies_csv_are_the_rates_of_the_velocities() {
+    for mechanism in ["n_four_bar_2", "stewart_6_6"] {
+        let [linear, angular, mismatch] =
+            accelerations_match_the_rates_of_the_velocities(mechanism);
+        eprintln!("{mechanism}: |a| ≤ {linear}, |α| ≤ {angular}, mismatch {mismatch:e}");
+        // The bodies accelerate, so the comparison means something.
+        assert!(
+            linear > 0.01 && angular > 0.1,
+            "{mechanism}: {linear}, {angular}"
+        );
+        assert!(
+            mismatch < 1e-4 * linear.max(angular),
+            "{mechanism}: {mismatch:e}"
+        );
+    }
+}

@@ -107,6 +107,11 @@ enum Command {
         /// and .wx,.wy,.wz (angular velocity, rad/s), global frame (named mechanisms).
         #[arg(long)]
         velocities: bool,
+        /// Add each body's accelerations to bodies.csv: <body>.ax,.ay,.az (centre of mass,
+        /// m/s²) and .alphax,.alphay,.alphaz (angular, rad/s²), global frame (named
+        /// mechanisms).
+        #[arg(long)]
+        accelerations: bool,
         /// Paper scenario only: source of the joint and actuator forces, the saddle-point
         /// solve at each output state (`recovered`) or the integrator's own multipliers
         /// (`integrator`).
@@ -179,10 +184,11 @@ pub fn main(registry: &Registry) -> ExitCode {
             output_step,
             cross_singular_positions,
             velocities,
+            accelerations,
             reactions,
             files,
         } => match mechanism {
-            None if velocities => Err("--velocities applies to named mechanisms (it adds columns to bodies.csv); the paper scenario writes platform.csv".to_string()),
+            None if velocities || accelerations => Err(format!("--{} applies to named mechanisms (it adds columns to bodies.csv); the paper scenario writes platform.csv", if velocities { "velocities" } else { "accelerations" })),
             None if cross_singular_positions => Err("--cross-singular-positions applies to named mechanisms; the paper scenario has no singular position to cross".to_string()),
             Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
             Some(name) => {
@@ -195,7 +201,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                     output_step,
                     cross_singular: cross_singular_positions,
                 };
-                simulate_named(registry, &name, &opts, velocities, &files)
+                simulate_named(registry, &name, &opts, [velocities, accelerations], &files)
             }
             None => {
                 let defaults = Options::default();
@@ -338,7 +344,7 @@ fn simulate_named(
     registry: &Registry,
     name: &str,
     opts: &generic::Options,
-    velocities: bool,
+    [velocities, accelerations]: [bool; 2],
     files: &Files,
 ) -> Result<(), String> {
     let entry = generic::find(registry, name).map_err(|e| e.to_string())?;
@@ -353,10 +359,12 @@ fn simulate_named(
         "velocities_projected": true,
         "cross_singular_positions": opts.cross_singular,
         "velocities": velocities,
+        "accelerations": accelerations,
     }));
     let mut live = live::Live::new(out, t_end, meta);
-    let mut obs = WithVelocities {
+    let mut obs = WithRates {
         velocities,
+        accelerations,
         inner: &mut live,
     };
     let run = generic::run_observed(entry, opts, &mut obs);
@@ -369,15 +377,18 @@ fn simulate_named(
     report_run(run, live, &method, out, plots, html).map_err(|e| format!("{name}: {e}"))
 }
 
-/// Records the bodies' velocities too when asked, then passes everything on.
-struct WithVelocities<'a> {
+/// Records the bodies' velocities and accelerations too when asked, then passes everything
+/// on.
+struct WithRates<'a> {
     velocities: bool,
+    accelerations: bool,
     inner: &'a mut dyn generic::Observer,
 }
 
-impl generic::Observer for WithVelocities<'_> {
+impl generic::Observer for WithRates<'_> {
     fn start(&mut self, rec: &mut generic::Recording) -> Result<(), generic::Error> {
         rec.velocities = self.velocities;
+        rec.accelerations = self.accelerations;
         self.inner.start(rec)
     }
     fn output(&mut self, rec: &generic::Recording) -> Result<(), generic::Error> {
@@ -756,6 +767,7 @@ fn run_scene(registry: &Registry, path: &Path, files: &Files) -> Result<(), Stri
         },
         "cross_singular_positions": scene.cross_singular,
         "velocities": scene.velocities,
+        "accelerations": scene.accelerations,
     }));
     if scene.files == scene::Files::Paper {
         // The paper scenario's run does not report its start: described before it, as

@@ -130,6 +130,33 @@ pub fn angular_velocity(body: &BodyInfo, q: &[f64], qd: &[f64]) -> Result<Vector
     Ok(j.columns(0, k) * nalgebra::DVectorView::from_slice(&v[3..3 + k], k))
 }
 
+/// Global angular acceleration of the body at `(q, q̇, q̈)`: `J·q̈_rot + J̇·q̇_rot`. For a
+/// quaternion `J̇·ė = 2E(ė)ė` vanishes identically; for Euler angles `J̇` follows from `H`'s
+/// dependence on β and γ.
+pub fn angular_acceleration(
+    body: &BodyInfo,
+    q: &[f64],
+    qd: &[f64],
+    qdd: &[f64],
+) -> Result<Vector3<f64>, Error> {
+    let along = angular_velocity(body, q, qdd)?;
+    Ok(match body.rotation {
+        Rotation::Quaternion => along,
+        Rotation::Euler => {
+            let (c, v) = (coords(body, q)?, coords(body, qd)?);
+            let (sb, cb) = c[4].sin_cos();
+            let (sg, cg) = c[5].sin_cos();
+            let (rate_x, rate_b, rate_g) = (v[3], v[4], v[5]);
+            along
+                + Vector3::new(
+                    (-cg * sb * rate_b - sg * cb * rate_g) * rate_x - cg * rate_g * rate_b,
+                    (-sg * sb * rate_b + cg * cb * rate_g) * rate_x - sg * rate_g * rate_b,
+                    -cb * rate_b * rate_x,
+                )
+        }
+    })
+}
+
 /// Global position of a point: `r + A·local` on `body`, or `local` itself on the ground
 /// (`None`).
 pub fn point_world(

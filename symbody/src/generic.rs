@@ -76,6 +76,12 @@ pub struct Recording {
     /// Whether `bodies.csv` also has each body's velocities (`.vx,.vy,.vz` of the centre of
     /// mass, `.wx,.wy,.wz` angular, global frame): opt-in, since most uses want poses only.
     pub velocities: bool,
+    /// Whether `bodies.csv` also has each body's accelerations (`.ax,.ay,.az` of the centre
+    /// of mass, `.alphax,.alphay,.alphaz` angular, global frame); `qdd` is then recorded.
+    pub accelerations: bool,
+    /// Per output, with `accelerations`: all accelerations, from the saddle-point solve at
+    /// the output state (empty otherwise).
+    pub qdd: Vec<Vec<f64>>,
     /// Per output, per body (`info.bodies` order, every body): centre of mass (m) and unit quaternion
     /// `[w, x, y, z]` with `w ≥ 0` ([`body_pose`]), whatever the body's coordinates.
     pub poses: Vec<Vec<([f64; 3], [f64; 4])>>,
@@ -509,6 +515,8 @@ impl Recording {
             qd: Vec::new(),
             bodies: (0..info.bodies.len()).collect(),
             velocities: false,
+            accelerations: false,
+            qdd: Vec::new(),
             poses: Vec::new(),
             joints: of_kind(|k| !matches!(k, JointKind::Driver | JointKind::Normalization)),
             wrenches: Vec::new(),
@@ -605,6 +613,9 @@ fn record<M: Mechanism>(
     rec.t.push(t);
     rec.q.push(q.to_vec());
     rec.qd.push(qd.to_vec());
+    if rec.accelerations {
+        rec.qdd.push(meter.qdd().to_vec());
+    }
     rec.energy.push(sample);
     Ok(())
 }

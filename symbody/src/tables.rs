@@ -24,10 +24,23 @@ pub struct Table {
 const STEMS: [&str; 4] = ["bodies", "joints", "drivers", "energy"];
 
 /// A body's columns in `bodies.csv`: the pose, then (with [`Recording::velocities`]) the
-/// velocity of the centre of mass and the angular velocity.
-const BODY_WITH_VELOCITIES: [&str; 13] = [
-    "x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz",
-];
+/// velocity of the centre of mass and the angular velocity, then (with
+/// [`Recording::accelerations`]) their rates.
+const POSE: [&str; 7] = ["x", "y", "z", "qw", "qx", "qy", "qz"];
+const VELOCITY: [&str; 6] = ["vx", "vy", "vz", "wx", "wy", "wz"];
+const ACCELERATION: [&str; 6] = ["ax", "ay", "az", "alphax", "alphay", "alphaz"];
+
+/// The parts of each body's column group in `rec`'s `bodies.csv`.
+fn body_parts(rec: &Recording) -> Vec<&'static str> {
+    let mut parts = POSE.to_vec();
+    if rec.velocities {
+        parts.extend(VELOCITY);
+    }
+    if rec.accelerations {
+        parts.extend(ACCELERATION);
+    }
+    parts
+}
 
 /// The unit of column `column` (`t`, or `<item>.<part>`) of table `stem`: SI, `1` for the
 /// dimensionless quaternion components; a driver's effort is a force or a torque by the
@@ -42,6 +55,8 @@ pub fn unit(rec: &Recording, stem: &str, column: &str) -> &'static str {
             "x" | "y" | "z" => "m",
             "vx" | "vy" | "vz" => "m/s",
             "wx" | "wy" | "wz" => "rad/s",
+            "ax" | "ay" | "az" => "m/s²",
+            "alphax" | "alphay" | "alphaz" => "rad/s²",
             _ => "1",
         },
         "joints" if part.starts_with('f') => "N",
@@ -73,15 +88,7 @@ pub fn columns(rec: &Recording) -> Vec<(&'static str, Vec<String>)> {
         .into_iter()
         .filter_map(|stem| {
             let values = match stem {
-                "bodies" => named(
-                    &rec.bodies,
-                    &|b| info.bodies[b].name,
-                    if rec.velocities {
-                        &BODY_WITH_VELOCITIES
-                    } else {
-                        &BODY_WITH_VELOCITIES[..7]
-                    },
-                ),
+                "bodies" => named(&rec.bodies, &|b| info.bodies[b].name, &body_parts(rec)),
                 "joints" => named(
                     &rec.joints,
                     &|j| info.joints[j].name,
@@ -116,6 +123,9 @@ pub fn row(rec: &Recording, stem: &str, k: usize) -> Vec<f64> {
                 if rec.velocities {
                     row.extend(velocities(rec, b, k));
                 }
+                if rec.accelerations {
+                    row.extend(accelerations(rec, b, k));
+                }
             }
         }
         "joints" => row.extend(
@@ -143,6 +153,16 @@ fn velocities(rec: &Recording, b: usize, k: usize) -> [f64; 6] {
     let w = symbody_runtime::pose::angular_velocity(body, q, qd)
         .map_or([f64::NAN; 3], |w| [w.x, w.y, w.z]);
     [v[0], v[1], v[2], w[0], w[1], w[2]]
+}
+
+/// Body `b`'s centre-of-mass acceleration and global angular acceleration at output `k`.
+fn accelerations(rec: &Recording, b: usize, k: usize) -> [f64; 6] {
+    let body = &rec.info.bodies[b];
+    let (q, qd, qdd) = (&rec.q[k], &rec.qd[k], &rec.qdd[k]);
+    let a = &qdd[body.coord_offset..body.coord_offset + 3];
+    let w = symbody_runtime::pose::angular_acceleration(body, q, qd, qdd)
+        .map_or([f64::NAN; 3], |w| [w.x, w.y, w.z]);
+    [a[0], a[1], a[2], w[0], w[1], w[2]]
 }
 
 /// The tables of a run, whole ([`columns`], every output's [`row`]).

@@ -13,6 +13,7 @@
 //! [outputs]
 //! poses = ["platform"]          # body names, or "all" (default) or "none"
 //! velocities = false            # also the bodies' velocities in bodies.csv (default false)
+//! accelerations = false         # and their accelerations (default false)
 //! reactions = "all"             # joint names, or "all" (default) or "none"
 //! efforts = true                # driver efforts (default true)
 //! energy = true                 # energy table (default true)
@@ -89,6 +90,8 @@ pub struct Scene {
     pub poses: Selection,
     /// Whether `bodies.csv` has the selected bodies' velocities too.
     pub velocities: bool,
+    /// Whether `bodies.csv` has the selected bodies' accelerations too.
+    pub accelerations: bool,
     /// Joints whose reactions are wanted (indices into `info.joints`; never drivers or
     /// normalization rows).
     pub reactions: Selection,

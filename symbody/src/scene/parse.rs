@@ -31,6 +31,7 @@ struct RawTime {
 struct RawOutputs {
     poses: Option<Spanned<toml::Value>>,
     velocities: Option<Spanned<bool>>,
+    accelerations: Option<Spanned<bool>>,
     reactions: Option<Spanned<toml::Value>>,
     efforts: Option<bool>,
     energy: Option<bool>,
@@ -176,6 +177,7 @@ fn check(
     let outputs = raw.outputs.unwrap_or(RawOutputs {
         poses: None,
         velocities: None,
+        accelerations: None,
         reactions: None,
         efforts: None,
         energy: None,
@@ -233,18 +235,26 @@ fn check(
         },
     };
 
-    let velocities = match (&outputs.velocities, files) {
-        (Some(v), Files::Paper) if *v.get_ref() => {
-            errors.push(map.diag(
-                v.span(),
-                "[outputs] `velocities`",
-                "the paper scenario's files have no bodies table to add velocities to",
-                "remove it, or use files = \"tables\" (bodies.csv gets <body>.vx … .wz)",
-            ));
-            false
-        }
-        (v, _) => v.as_ref().is_some_and(|v| *v.get_ref()),
-    };
+    // Columns of bodies.csv, which the paper scenario's files do not have.
+    let mut bodies_column =
+        |key: &Option<Spanned<bool>>, name: &str, columns: &str| match (key, files) {
+            (Some(v), Files::Paper) if *v.get_ref() => {
+                errors.push(map.diag(
+                    v.span(),
+                    &format!("[outputs] `{name}`"),
+                    &format!("the paper scenario's files have no bodies table to add {name} to"),
+                    &format!("remove it, or use files = \"tables\" (bodies.csv gets {columns})"),
+                ));
+                false
+            }
+            (v, _) => v.as_ref().is_some_and(|v| *v.get_ref()),
+        };
+    let velocities = bodies_column(&outputs.velocities, "velocities", "<body>.vx … .wz");
+    let accelerations = bodies_column(
+        &outputs.accelerations,
+        "accelerations",
+        "<body>.ax … .alphaz",
+    );
 
     let solver = raw.solver.unwrap_or(RawSolver {
         path: None,
@@ -309,6 +319,7 @@ fn check(
         output_step,
         poses,
         velocities,
+        accelerations,
         reactions,
         efforts: outputs.efforts.unwrap_or(true),
         energy: outputs.energy.unwrap_or(true),

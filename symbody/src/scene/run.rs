@@ -256,6 +256,7 @@ fn restrict(rec: &mut Recording, scene: &Scene) {
     let info = rec.info;
     rec.bodies = scene.poses.indices(info.bodies.len());
     rec.velocities = scene.velocities;
+    rec.accelerations = scene.accelerations;
     let keep = requested_joints(scene, info);
     rec.joints.retain(|j| keep.contains(j));
     if !scene.efforts {
