@@ -241,9 +241,9 @@ fn check(
             (Some(v), Files::Paper) if *v.get_ref() => {
                 errors.push(map.diag(
                     v.span(),
-                    &format!("[outputs] `{name}`"),
-                    &format!("the paper scenario's files have no bodies table to add {name} to"),
-                    &format!("remove it, or use files = \"tables\" (bodies.csv gets {columns})"),
+                    format!("[outputs] `{name}`"),
+                    format!("the paper scenario's files have no bodies table to add {name} to"),
+                    format!("remove it, or use files = \"tables\" (bodies.csv gets {columns})"),
                 ));
                 false
             }
