@@ -356,7 +356,7 @@ impl HhtBuilder {
                     return Err(Error::InvalidSetting {
                         name: "drop_dependent_rows",
                         value: drop_dependent,
-                        reason: "the KKT solver cannot drop dependent rows; use SchurKkt",
+                        reason: "the KKT solver cannot drop dependent rows (SchurKkt can, unless a zero principal inertia makes it solve densely: give that body a small inertia)",
                     });
                 }
                 kkt

@@ -158,7 +158,7 @@ impl<K: KktSolver> Kinematics<K> {
                 return Err(Error::InvalidSetting {
                     name: "drop_dependent_rows",
                     value: tolerance,
-                    reason: "must lie in (0, 1), with a KKT solver that can drop rows (SchurKkt)",
+                    reason: "must lie in (0, 1), with a KKT solver that can drop rows (SchurKkt, unless a zero principal inertia makes it solve densely)",
                 });
             }
         }
