@@ -362,9 +362,11 @@ fn simulate_named(
         "accelerations": accelerations,
     }));
     let mut live = live::Live::new(out, t_end, meta);
-    let mut obs = WithRates {
-        velocities,
-        accelerations,
+    let mut obs = generic::Prepared {
+        prepare: |rec: &mut generic::Recording| {
+            rec.velocities = velocities;
+            rec.accelerations = accelerations;
+        },
         inner: &mut live,
     };
     let run = generic::run_observed(entry, opts, &mut obs);
@@ -375,28 +377,6 @@ fn simulate_named(
         opts.alpha
     );
     report_run(run, live, &method, out, plots, html).map_err(|e| format!("{name}: {e}"))
-}
-
-/// Records the bodies' velocities and accelerations too when asked, then passes everything
-/// on.
-struct WithRates<'a> {
-    velocities: bool,
-    accelerations: bool,
-    inner: &'a mut dyn generic::Observer,
-}
-
-impl generic::Observer for WithRates<'_> {
-    fn start(&mut self, rec: &mut generic::Recording) -> Result<(), generic::Error> {
-        rec.velocities = self.velocities;
-        rec.accelerations = self.accelerations;
-        self.inner.start(rec)
-    }
-    fn output(&mut self, rec: &generic::Recording) -> Result<(), generic::Error> {
-        self.inner.output(rec)
-    }
-    fn progress(&mut self, t: f64) -> std::ops::ControlFlow<()> {
-        self.inner.progress(t)
-    }
 }
 
 /// The summary and files of a generic run that went to its end, or of the part a stopped

@@ -58,8 +58,6 @@ pub struct HhtBuilder {
     phi_tol: f64,
     reuse_factorization: bool,
     project_velocities: bool,
-    /// Pivot tolerance below which dependent rows are dropped (0: report rank loss).
-    drop_dependent: f64,
     load_stiffness: bool,
     t0: f64,
     q0: Option<Vec<f64>>,
@@ -81,7 +79,6 @@ impl Default for HhtBuilder {
             phi_tol: 1e-10,
             reuse_factorization: false,
             project_velocities: false,
-            drop_dependent: 0.0,
             load_stiffness: true,
             t0: 0.0,
             q0: None,
@@ -166,9 +163,10 @@ impl HhtBuilder {
     /// threshold [`crate::kkt::DEFAULT_PIVOT_TOLERANCE`] drops only what would fail) are
     /// dropped for that factorization instead of failing the step. A step is still accepted
     /// only when every row, dropped or not, satisfies the constraint tolerance, so an
-    /// unreachable pose still fails. Off by default (0): rank loss is reported.
+    /// unreachable pose still fails. The consistent start drops them too. Off by default (0):
+    /// rank loss is reported. The same setting as [`KinematicSettings::drop_dependent_rows`].
     pub fn drop_dependent_rows(mut self, tolerance: f64) -> Self {
-        self.drop_dependent = tolerance;
+        self.kinematics.drop_dependent_rows = (tolerance > 0.0).then_some(tolerance);
         self
     }
 
@@ -212,8 +210,8 @@ impl HhtBuilder {
     }
 
     /// Settings of the position analysis of the consistent start; their
-    /// `drop_dependent_rows`, when set, applies to the steps too (as
-    /// [`HhtBuilder::drop_dependent_rows`], unless that was given).
+    /// `drop_dependent_rows` applies to the steps too (it is
+    /// [`HhtBuilder::drop_dependent_rows`]'s setting, which a later call replaces).
     pub fn kinematic_settings(mut self, s: KinematicSettings) -> Self {
         self.kinematics = s;
         self
@@ -320,15 +318,7 @@ impl HhtBuilder {
         let mut qdd = vec![0.0; n];
         let mut lambda = vec![0.0; m];
         // A start at a singular position is as legitimate as a step onto one.
-        let drop_dependent = match self.kinematics.drop_dependent_rows {
-            Some(tolerance) if self.drop_dependent == 0.0 => tolerance,
-            _ => self.drop_dependent,
-        };
-        let start_settings = KinematicSettings {
-            drop_dependent_rows: (drop_dependent > 0.0).then_some(drop_dependent),
-            ..self.kinematics
-        };
-        let mut kin = Kinematics::<K>::with_settings(info, start_settings)?;
+        let mut kin = Kinematics::<K>::with_settings(info, self.kinematics)?;
         kin.consistent_start(
             &mech,
             self.t0,
@@ -352,12 +342,16 @@ impl HhtBuilder {
                     None => KktPattern::from_info(info),
                 };
                 let mut kkt = K::new(&pattern)?;
-                if drop_dependent > 0.0 && !kkt.drop_dependent_rows(drop_dependent) {
-                    return Err(Error::InvalidSetting {
+                if let Some(tolerance) = self.kinematics.drop_dependent_rows {
+                    // The start's solver took the same tolerance, so only the solver type
+                    // can refuse it here.
+                    if !kkt.drop_dependent_rows(tolerance) {
+                        return Err(Error::InvalidSetting {
                         name: "drop_dependent_rows",
-                        value: drop_dependent,
+                        value: tolerance,
                         reason: "the KKT solver cannot drop dependent rows (SchurKkt can, unless a zero principal inertia makes it solve densely: give that body a small inertia)",
                     });
+                    }
                 }
                 kkt
             },

@@ -276,6 +276,26 @@ pub trait Observer {
 
 impl Observer for () {}
 
+/// An observer that first narrows or extends what is recorded (`prepare`, on the empty
+/// recording at the start), then passes everything on to `inner`.
+pub struct Prepared<'a, F: FnMut(&mut Recording)> {
+    pub prepare: F,
+    pub inner: &'a mut dyn Observer,
+}
+
+impl<F: FnMut(&mut Recording)> Observer for Prepared<'_, F> {
+    fn start(&mut self, rec: &mut Recording) -> Result<(), Error> {
+        (self.prepare)(rec);
+        self.inner.start(rec)
+    }
+    fn output(&mut self, rec: &Recording) -> Result<(), Error> {
+        self.inner.output(rec)
+    }
+    fn progress(&mut self, t: f64) -> ControlFlow<()> {
+        self.inner.progress(t)
+    }
+}
+
 /// A run that stopped before its end: the outputs it recorded up to its last good state
 /// (`None` if it stopped before it had a mechanism), and why it stopped.
 #[derive(Debug)]
@@ -356,7 +376,8 @@ fn integrate(
 ) -> Result<(), Error> {
     let info = mech.info();
     let mut it = integrator(mech, opts)?;
-    let mut meter: EnergyMeter = EnergyMeter::with_settings(info, solve_settings(opts))?;
+    let mut meter: EnergyMeter =
+        EnergyMeter::with_settings(info, solve_settings(opts.cross_singular))?;
     let mut watch = ResidualWatch::new(info);
     let modes = mode_watch(mech, it.q())?;
     let mut sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
@@ -415,6 +436,26 @@ pub fn run_kinematic_observed(
     observed(entry, opts, obs, follow_path)
 }
 
+/// Moves `path` to `t`, keeping its counters in `rec` whether or not it gets there.
+fn advance<M: Mechanism>(
+    path: &mut KinematicPath<M>,
+    t: f64,
+    rec: &mut Recording,
+) -> Result<(), Error> {
+    let advanced = path.advance_to(t);
+    rec.kinematic = Some(counted(path, rec));
+    Ok(advanced?)
+}
+
+/// The path's counters with `outputs` the outputs recorded: the quadrature's interior
+/// solves count in the iterations and factorizations, not as outputs.
+fn counted<M: Mechanism>(path: &KinematicPath<M>, rec: &Recording) -> PathStats {
+    PathStats {
+        outputs: rec.t.len(),
+        ..path.stats()
+    }
+}
+
 /// The loop of [`run_kinematic_observed`].
 fn follow_path(
     mech: &'static (dyn Mechanism + Sync),
@@ -436,9 +477,7 @@ fn follow_path(
         if k > 0 {
             let t = (k as f64 * opts.output_step).min(t_end);
             for (p, node) in inside.iter_mut().zip(quadrature::LOBATTO4_NODES) {
-                let advanced = path.advance_to(t_before + node * (t - t_before));
-                rec.kinematic = Some(path.stats());
-                advanced?;
+                advance(&mut path, t_before + node * (t - t_before), rec)?;
                 *p = energy::power(
                     &mech,
                     path.t(),
@@ -448,9 +487,7 @@ fn follow_path(
                     &mut phi_t,
                 );
             }
-            let advanced = path.advance_to(t);
-            rec.kinematic = Some(path.stats());
-            advanced?;
+            advance(&mut path, t, rec)?;
         }
         if let Some(w) = &modes {
             w.check(path.q(), path.t())?;
@@ -472,12 +509,7 @@ fn follow_path(
             (path.t(), path.q(), path.qd()),
             sample,
         )?;
-        // The summary counts output times; the quadrature's interior solves are in the
-        // iteration and factorization counts.
-        rec.kinematic = Some(PathStats {
-            outputs: k + 1,
-            ..path.stats()
-        });
+        rec.kinematic = Some(counted(&path, rec));
         obs.output(rec)?;
         if obs.progress(path.t()).is_break() {
             return Err(ScenarioError::Interrupted { time: path.t() });
@@ -550,16 +582,16 @@ fn integrator(
         .min_step((opts.step * 1e-4).min(1e-7))
         .qd0(info.qd0)
         .project_velocities(true)
-        .kinematic_settings(solve_settings(opts));
+        .kinematic_settings(solve_settings(opts.cross_singular));
     Ok(builder.build(mech)?)
 }
 
 /// The settings of every saddle-point solve of a run (the consistent start, the steps, the
 /// multipliers at each output and the energy meter's samples): all must cross a singular
 /// position where one does.
-fn solve_settings(opts: &Options) -> KinematicSettings {
+pub(crate) fn solve_settings(cross_singular: bool) -> KinematicSettings {
     KinematicSettings {
-        drop_dependent_rows: opts.cross_singular.then_some(DEFAULT_PIVOT_TOLERANCE),
+        drop_dependent_rows: cross_singular.then_some(DEFAULT_PIVOT_TOLERANCE),
         ..KinematicSettings::default()
     }
 }

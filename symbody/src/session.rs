@@ -4,10 +4,9 @@
 //! three languages compute the same numbers by the same code.
 
 use crate::scenario::ScenarioError;
-use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
-    driver_effort, joint_wrench, Formulation, HhtBuilder, Integrator, KinematicSettings,
-    Kinematics, Mechanism, MechanismInfo, Registry, Wrench,
+    driver_effort, joint_wrench, Formulation, HhtBuilder, Integrator, Kinematics, Mechanism,
+    MechanismInfo, Registry, Wrench,
 };
 
 pub type Error = ScenarioError;
@@ -70,12 +69,7 @@ impl Session {
             })?,
         };
         let info = mech.info();
-        let solves = KinematicSettings {
-            drop_dependent_rows: s
-                .cross_singular_positions
-                .then_some(DEFAULT_PIVOT_TOLERANCE),
-            ..KinematicSettings::default()
-        };
+        let solves = crate::generic::solve_settings(s.cross_singular_positions);
         let it = HhtBuilder::new()
             .alpha(s.alpha)
             .step(s.step)

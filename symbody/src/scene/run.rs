@@ -9,7 +9,7 @@ use symbody_runtime::{
 };
 
 use super::{Files, PathRequest, Scene};
-use crate::generic::{self, Observer, Recording, Stopped};
+use crate::generic::{self, Observer, Prepared, Recording, Stopped};
 use crate::scenario::{self, Reactions, Run, ScenarioError};
 
 /// How a scene is solved, and why.
@@ -215,7 +215,10 @@ pub fn run_observed(
                 output_step: scene.output_step,
                 cross_singular: scene.cross_singular,
             };
-            let mut obs = Restricted { scene, inner: obs };
+            let mut obs = Prepared {
+                prepare: |rec: &mut Recording| restrict(rec, scene),
+                inner: obs,
+            };
             let rec = if kinematic {
                 generic::run_kinematic_observed(entry, &opts, &mut obs)
             } else {
@@ -228,26 +231,6 @@ pub fn run_observed(
         }
     };
     Ok((choice, outcome))
-}
-
-/// Narrows the recording to the scene's outputs before the first one, then passes
-/// everything on.
-struct Restricted<'a> {
-    scene: &'a Scene,
-    inner: &'a mut dyn Observer,
-}
-
-impl Observer for Restricted<'_> {
-    fn start(&mut self, rec: &mut Recording) -> Result<(), ScenarioError> {
-        restrict(rec, self.scene);
-        self.inner.start(rec)
-    }
-    fn output(&mut self, rec: &Recording) -> Result<(), ScenarioError> {
-        self.inner.output(rec)
-    }
-    fn progress(&mut self, t: f64) -> std::ops::ControlFlow<()> {
-        self.inner.progress(t)
-    }
 }
 
 /// Records only the outputs `scene` asks for (before the first output: nothing is
