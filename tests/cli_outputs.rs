@@ -221,6 +221,7 @@ fn list_keeps_its_columns_aligned_for_long_names() {
         t_end: shipped.t_end,
         formulations: shipped.formulations,
         reduced: None,
+        origin: shipped.origin,
     }));
     let mut entries: Vec<&'static Entry> = symbody_benchmark_mechanisms::REGISTRY.iter().collect();
     entries.push(long);

@@ -76,6 +76,12 @@ struct Files {
 enum Command {
     /// List every generated mechanism: sizes, redundant rows, degrees of freedom.
     List,
+    /// Check a mechanism file without running it: its diagnostics, the assembly of its
+    /// initial pose, rank, mobility, redundant rows and platform detection.
+    Check {
+        /// The mechanism file, e.g. robot.toml.
+        file: PathBuf,
+    },
     /// Simulate a generated mechanism; without a name, the paper's 6-6 Stewart platform
     /// scenario (one period, 2π s) with the paper's figures.
     Simulate {
@@ -175,6 +181,7 @@ pub fn main(registry: &Registry) -> ExitCode {
             list(registry);
             Ok(())
         }
+        Command::Check { file } => check(&file),
         Command::Simulate {
             mechanism,
             formulation,
@@ -334,6 +341,25 @@ pub fn list_lines(registry: &Registry) -> Vec<String> {
         .collect()
 }
 
+/// `symbody check`: what the generator finds out about a file, without running it.
+fn check(file: &Path) -> Result<(), String> {
+    let loaded = symbody::files::load(file).map_err(|e| e.to_string())?;
+    say!("{}", loaded.report.trim_end());
+    let forms: Vec<&str> = loaded
+        .entry
+        .formulations
+        .iter()
+        .map(|(f, _)| f.name())
+        .collect();
+    say!(
+        "{}: valid; formulations {}; run it with `symbody simulate {}`",
+        file.display(),
+        forms.join(", "),
+        file.display()
+    );
+    Ok(())
+}
+
 /// Where a run writes without `--out`: its own folder under `out/`, so that runs of
 /// different mechanisms, scenes and the paper scenario keep each other's files.
 fn default_out(name: &str) -> PathBuf {
@@ -376,7 +402,9 @@ fn simulate_named(
         opts.step.min(opts.output_step),
         opts.alpha
     );
-    report_run(run, live, &method, out, plots, html).map_err(|e| format!("{name}: {e}"))
+    let note = symbody::files::note(entry);
+    report_run(run, live, (&method, note.as_deref()), out, plots, html)
+        .map_err(|e| format!("{name}: {e}"))
 }
 
 /// The summary and files of a generic run that went to its end, or of the part a stopped
@@ -384,7 +412,7 @@ fn simulate_named(
 fn report_run(
     run: Result<generic::Recording, generic::Stopped>,
     live: live::Live,
-    method: &str,
+    method: (&str, Option<&str>),
     out: &std::path::Path,
     plots: bool,
     html: bool,
@@ -412,7 +440,7 @@ fn report_run(
 fn report_named(
     rec: &generic::Recording,
     csvs: Vec<std::path::PathBuf>,
-    method: &str,
+    (method, origin): (&str, Option<&str>),
     out: &std::path::Path,
     plots: bool,
     html: bool,
@@ -428,6 +456,9 @@ fn report_named(
         info.n_constraints,
         info.dof()
     );
+    if let Some(origin) = origin {
+        say!("  equations        {origin}");
+    }
     say!("  time span        0 .. {span:.6} s, {method}");
     print_work(&rec.stats, rec.kinematic, span, rec.wall);
     let norms = if info
@@ -724,7 +755,7 @@ fn run_scene(registry: &Registry, path: &Path, files: &Files) -> Result<(), Stri
         let shown = e.to_string();
         shown.strip_prefix("error: ").unwrap_or(&shown).to_string()
     })?;
-    let entry = generic::find(registry, scene.mechanism).map_err(|e| e.to_string())?;
+    let entry = scene.entry;
     let out = files.out.clone().unwrap_or_else(|| {
         default_out(
             &path
@@ -793,15 +824,24 @@ fn run_scene(registry: &Registry, path: &Path, files: &Files) -> Result<(), Stri
         ),
     };
     let at = |e: String| format!("{}: {e}", path.display());
+    let note = symbody::files::note(entry);
     match outcome {
         Ok(scene::Outcome::Paper(run)) => {
             live.finish()?;
             report_paper(registry, &run, scene.formulation, &method, out, plots, html)
         }
         Ok(scene::Outcome::Tables(rec)) => {
-            report_run(Ok(rec), live, &method, out, plots, html).map_err(at)
+            report_run(Ok(rec), live, (&method, note.as_deref()), out, plots, html).map_err(at)
         }
-        Err(stopped) => report_run(Err(stopped), live, &method, out, plots, html).map_err(at),
+        Err(stopped) => report_run(
+            Err(stopped),
+            live,
+            (&method, note.as_deref()),
+            out,
+            plots,
+            html,
+        )
+        .map_err(at),
     }
 }
 
@@ -837,6 +877,9 @@ fn forward_kinematics(
         p.body().name,
         names.join(", ")
     );
+    if let Some(note) = symbody::files::note(entry) {
+        say!("  equations: {note}");
+    }
     let answer = fk::solve(&p, req).map_err(|e| match e {
         symbody::scenario::ScenarioError::Runtime(_) => format!(
             "{name}: continuing the pose along the straight leg-length path from the start \

@@ -20,6 +20,8 @@ pub mod expr;
 pub mod files;
 pub mod fuzz;
 pub mod geometry;
+pub mod info;
+pub mod interpret;
 pub mod legs;
 pub mod loads;
 pub mod model;
@@ -28,6 +30,7 @@ pub mod primitives;
 pub mod reduce;
 pub mod rust;
 pub mod symbolic;
+pub mod tape;
 
 pub use assembly::Report;
 pub use diag::{Diagnostic, Errors};
@@ -48,7 +51,13 @@ pub fn generate(source: &str, text: &str) -> Result<Generated, Errors> {
     let system = equations::build(&model);
     let assembly = assembly::assemble(&model, &system, source)?;
     Ok(Generated {
-        code: rust::module(&model, &system, &assembly, source),
+        code: rust::module(
+            &model,
+            &system,
+            &assembly,
+            source,
+            symbody_runtime::source_hash(text),
+        ),
         report: assembly.report,
         formulations: model.formulations.clone(),
     })

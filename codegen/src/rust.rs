@@ -5,7 +5,7 @@ use crate::assembly::Assembly;
 use crate::emit::{self, Function, Input, Output};
 use crate::equations::{Dynamics, System};
 use crate::expr::Id;
-use crate::model::{DriverTarget, Formulation, JointKind, Model, Rotation};
+use crate::model::{DriverTarget, Formulation, Model, Rotation};
 use crate::symbolic::Entry;
 use proc_macro2::{Ident, Span, TokenStream};
 use quote::quote;
@@ -504,7 +504,12 @@ fn reduced_module(
 
 /// `pub static ENTRY`: the mechanism in each formulation (the file's order, default first)
 /// and its reduced model, for the registries that link this module.
-fn registry_entry(model: &Model, reduced: Option<&crate::reduce::Reduced>) -> TokenStream {
+fn registry_entry(
+    model: &Model,
+    reduced: Option<&crate::reduce::Reduced>,
+    source: &str,
+    hash: u64,
+) -> TokenStream {
     let list = |prefix: TokenStream| {
         let items = model.formulations.iter().map(|&f| {
             let (_, type_name, form) = formulation_names(f);
@@ -521,6 +526,9 @@ fn registry_entry(model: &Model, reduced: Option<&crate::reduce::Reduced>) -> To
         None => quote!(None),
     };
     let name = &model.name;
+    // The crate sits at `mechanisms/generated/<name>/`, three folders below the root that
+    // `source` is relative to.
+    let file = quote!(concat!(env!("CARGO_MANIFEST_DIR"), "/../../../", #source));
     quote! {
         /// This mechanism in the registries (`symbody_runtime::Registry`).
         pub static ENTRY: Entry = Entry {
@@ -528,11 +536,13 @@ fn registry_entry(model: &Model, reduced: Option<&crate::reduce::Reduced>) -> To
             t_end: T_END,
             formulations: #full,
             reduced: #reduced,
+            origin: Origin::Compiled { file: #file, hash: #hash },
         };
     }
 }
 
-pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
+/// `hash` is the [`symbody_runtime::source_hash`] of the file's text.
+pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u64) -> String {
     let n = sys.n_coords;
     let m = sys.n_constraints;
     let (pq_rows, pq_cols) = pattern(&sys.phi_q);
@@ -559,79 +569,16 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
         Some(i) => quote!(Some(#i)),
         None => quote!(None),
     };
-    let info = |name: &str,
-                kind: TokenStream,
-                (b1, b2): (Option<usize>, Option<usize>),
-                start: usize,
-                rows: usize,
-                (point1, point2): ([f64; 3], [f64; 3]),
-                (sign, unit): (f64, &str)| {
-        let (b1, b2) = (opt(b1), opt(b2));
-        quote!(JointInfo { name: #name, kind: #kind, body1: #b1, body2: #b2, row_start: #start, rows: #rows, point1: [#(#point1),*], point2: [#(#point2),*], effort_sign: #sign, effort_unit: #unit })
-    };
-    let mut joint_infos: Vec<TokenStream> = model
-        .joints
+    let joint_infos: Vec<TokenStream> = crate::info::joints(model, sys)
         .iter()
-        .enumerate()
-        .map(|(k, j)| {
-            let kind = ident(match j.kind {
-                JointKind::Spherical => "Spherical",
-                JointKind::Revolute => "Revolute",
-                JointKind::Universal => "Universal",
-                JointKind::Cylindrical => "Cylindrical",
-                JointKind::Prismatic => "Prismatic",
-                JointKind::Fixed => "Fixed",
-                JointKind::Distance { .. } => "Distance",
-                JointKind::EulerPrismatic { .. } => "EulerPrismatic",
-            });
-            info(
-                &j.name,
-                quote!(JointKind::#kind),
-                j.bodies(),
-                sys.joint_rows[k],
-                j.rows(),
-                (j.f1.point, j.f2.point),
-                (0.0, ""),
-            )
+        .map(|j| {
+            let (name, kind) = (&j.name, ident(&format!("{:?}", j.kind)));
+            let (b1, b2) = (opt(j.body1), opt(j.body2));
+            let (start, rows, p1, p2) = (j.row_start, j.rows, j.point1, j.point2);
+            let (sign, unit) = (j.effort_sign, j.effort_unit);
+            quote!(JointInfo { name: #name, kind: JointKind::#kind, body1: #b1, body2: #b2, row_start: #start, rows: #rows, point1: [#(#p1),*], point2: [#(#p2),*], effort_sign: #sign, effort_unit: #unit })
         })
         .collect();
-    for (k, d) in model.drivers.iter().enumerate() {
-        let (bodies, points) = match &d.target {
-            DriverTarget::JointAngle(j) | DriverTarget::JointSlide(j) => {
-                let j = &model.joints[*j];
-                (j.bodies(), (j.f1.point, j.f2.point))
-            }
-            DriverTarget::BodyCoordinate { body, .. } => {
-                let b = &model.bodies[*body];
-                ((None, Some(*body)), ([b.q0[0], b.q0[1], b.q0[2]], [0.0; 3]))
-            }
-            DriverTarget::PointDistance { f1, f2 } => ((f1.body, f2.body), (f1.point, f2.point)),
-        };
-        let unit = if d.is_angular() { "N·m" } else { "N" };
-        let start = sys.joint_rows[model.joints.len() + k];
-        joint_infos.push(info(
-            &d.name,
-            quote!(JointKind::Driver),
-            bodies,
-            start,
-            1,
-            points,
-            (sys.driver_signs[k], unit),
-        ));
-    }
-    for (k, &b) in sys.normalized_bodies.iter().enumerate() {
-        let start = sys.joint_rows[model.joints.len() + model.drivers.len() + k];
-        let name = format!("{}.norm", model.bodies[b].name);
-        joint_infos.push(info(
-            &name,
-            quote!(JointKind::Normalization),
-            (Some(b), None),
-            start,
-            1,
-            ([0.0; 3], [0.0; 3]),
-            (0.0, ""),
-        ));
-    }
     let nb = model.bodies.len();
     let nj = joint_infos.len();
     let coord_names = &sys.coord_names;
@@ -642,14 +589,11 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
     let n_red = redundant.len();
     let t_end = model.t_end;
     let mech_name = &model.name;
-    let platform = match &asm.platform {
+    let platform = match crate::info::platform(model, sys, asm) {
         None => quote!(None),
-        Some(p) => {
-            let body = p.body;
-            let legs = p.legs.iter().map(|l| {
-                let driver = &model.drivers[l.driver].name;
-                assert_eq!(&sys.row_names[l.row], driver, "legs::detect numbers rows as Φ does");
-                let (base, top, row) = (l.base, l.platform, l.row);
+        Some((body, legs)) => {
+            let legs = legs.iter().map(|l| {
+                let (driver, base, top, row) = (&l.driver, l.base, l.platform, l.row);
                 quote!(LegInfo { driver: #driver, base: [#(#base),*], platform: [#(#top),*], row: #row })
             });
             quote!(Some(PlatformInfo { body: #body, legs: &[#(#legs),*] }))
@@ -736,10 +680,10 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str) -> Stri
         Formulation::Exact => "Exact",
     });
 
-    let entry = registry_entry(model, reduced.as_ref());
+    let entry = registry_entry(model, reduced.as_ref(), source, hash);
     let file = quote! {
         #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]
-        use symbody_runtime::{BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, PlatformInfo, #reduction_import Rotation};
+        use symbody_runtime::{BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, Origin, PlatformInfo, #reduction_import Rotation};
         #(#items)*
         #(#impls)*
         /// The formulation listed first in the mechanism file.

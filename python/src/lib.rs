@@ -321,7 +321,7 @@ fn run<'py>(py: Python<'py>, scene: PathBuf, out: Option<PathBuf>) -> PyResult<A
         let shown = e.to_string();
         PyValueError::new_err(shown.strip_prefix("error: ").unwrap_or(&shown).to_string())
     })?;
-    let entry = generic::find(&REGISTRY, parsed.mechanism).map_err(py_err)?;
+    let entry = parsed.entry;
     out_folder(out.as_deref())?;
     let (choice, outcome) = py
         .detach(|| symbody::scene::run(&parsed, entry))

@@ -11,6 +11,8 @@
 //!   takes the applied loads' stiffness and damping (`load_stiffness`).
 //! - [`reactions`]: joint wrenches and driver efforts from the multipliers.
 //! - [`registry`]: compiled mechanisms by name ([`Registry`] of [`Entry`]).
+//! - [`tape`] and [`interpreted`]: instruction tapes and the interpreter that runs a mechanism
+//!   file never compiled ([`Interpreted`]).
 //! - [`reduction`]: reduced generated mechanisms read back in their full model's terms.
 //! - [`pose`]: rotation matrices, poses, angular velocities and world points of Euler-angle
 //!   and quaternion bodies.
@@ -28,6 +30,7 @@ pub mod energy;
 pub mod error;
 pub mod fk;
 pub mod hht;
+pub mod interpreted;
 pub mod kinematic_path;
 pub mod kinematics;
 pub mod kkt;
@@ -38,6 +41,7 @@ pub mod quadrature;
 pub mod reactions;
 pub mod reduction;
 pub mod registry;
+pub mod tape;
 // Hand-written fixtures for this crate's unit tests; other crates reach them through the
 // dev-only `symbody-testkit`, where the file lives.
 #[cfg(test)]
@@ -48,6 +52,7 @@ pub mod watch;
 pub use energy::{EnergyMeter, EnergySample};
 pub use error::{ConstraintRow, Error, RowOwner};
 pub use hht::{HhtBuilder, Integrator, Stats, StepReport};
+pub use interpreted::Interpreted;
 pub use kinematic_path::{
     free_motion, FreeMotion, KinematicPath, PathStats, MAX_ACCELERATION_MISMATCH, MAX_OUTPUT_CHANGE,
 };
@@ -62,5 +67,5 @@ pub use pose::{
 };
 pub use reactions::{actuator_force, driver_effort, joint_force, joint_wrench, Wrench};
 pub use reduction::{Reduction, Substitution};
-pub use registry::{Entry, Registry};
+pub use registry::{source_hash, Entry, Origin, Registry};
 pub use watch::{EulerLimits, EulerWarning, ResidualWatch, Residuals};

@@ -18,6 +18,28 @@ pub struct Entry {
     pub formulations: Formulations,
     /// The model after the substitution pass, where the generator found rows to substitute.
     pub reduced: Option<Reduced>,
+    pub origin: Origin,
+}
+
+/// Where an entry's equations come from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Origin {
+    /// Rust generated from `file` (its path when this program was built) whose text had
+    /// [`source_hash`] `hash`, compiled into this program.
+    Compiled { file: &'static str, hash: u64 },
+    /// Equations interpreted from `file` ([`crate::Interpreted`]), derived when this
+    /// program ran; `stale`: in place of a compiled entry whose file changed since its code
+    /// was generated.
+    Interpreted { file: &'static str, stale: bool },
+}
+
+/// 64-bit FNV-1a of a mechanism file's text: written into generated code so a program can
+/// tell whether the file changed after its code was generated. (Not `DefaultHasher`, whose
+/// output may change between Rust releases.)
+pub fn source_hash(text: &str) -> u64 {
+    text.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
 }
 
 /// A mechanism reduced by substitution, and the way back to its full model.
@@ -25,6 +47,16 @@ pub struct Reduced {
     /// One per formulation of the full model, in the same order.
     pub formulations: Formulations,
     pub reduction: &'static Reduction,
+}
+
+impl std::fmt::Debug for Entry {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Entry")
+            .field("name", &self.name)
+            .field("t_end", &self.t_end)
+            .field("origin", &self.origin)
+            .finish_non_exhaustive()
+    }
 }
 
 impl Entry {

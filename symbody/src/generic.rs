@@ -194,39 +194,26 @@ impl Recording {
     }
 }
 
-/// The entry of `registry` called `name`, or an error listing the known ones (with the
-/// closest as a suggestion) and how to add a new one.
+/// The mechanism `name`: a path to a mechanism file (ending in `.toml`, or with a folder),
+/// interpreted ([`crate::files`]); else the entry of `registry` called so (interpreted from
+/// its file instead when that changed since its code was generated), or an error listing the
+/// known ones (with the closest as a suggestion).
 pub fn find(registry: &Registry, name: &str) -> Result<&'static Entry, Error> {
-    registry.find(name).ok_or_else(|| {
+    if crate::files::is_path(name) {
+        return crate::files::load(std::path::Path::new(name)).map(|l| l.entry);
+    }
+    let Some(entry) = registry.find(name) else {
         let known = registry.names();
-        // A path to a mechanism file: the tool runs the code generated from it, so the file
-        // itself (perhaps edited since) is not what would run; its name is.
-        let path = std::path::Path::new(name);
-        if name.ends_with(".toml") || path.components().count() > 1 {
-            let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or(name);
-            return ScenarioError::Options(if registry.find(stem).is_some() {
-                format!(
-                    "`{name}` is a file; give the mechanism's name instead: `{stem}` (the tool \
-                     runs the code generated from mechanisms/{stem}.toml; after editing the \
-                     file, regenerate it with `cargo xtask generate {stem}`)"
-                )
-            } else {
-                format!(
-                    "`{name}` is a file, and no mechanism `{stem}` was generated; put it in \
-                     mechanisms/{stem}.toml, run `cargo xtask generate {stem}`, then give the \
-                     name `{stem}`; known: {}",
-                    known.join(", ")
-                )
-            });
-        }
         let close = closest(name, known.iter().copied())
             .map(|k| format!(" (did you mean `{k}`?)"))
             .unwrap_or_default();
-        ScenarioError::Options(format!(
-            "no mechanism `{name}`{close}; known: {}. A new one needs mechanisms/{name}.toml and `cargo xtask generate {name}`",
+        return Err(ScenarioError::Options(format!(
+            "no mechanism `{name}`{close}; known: {}. Or give the path of a mechanism file \
+             (e.g. {name}.toml): it runs interpreted, nothing to build",
             known.join(", ")
-        ))
-    })
+        )));
+    };
+    crate::files::fresh(entry)
 }
 
 /// The mechanism of `entry` in formulation `f` (or its default), with an error naming the

@@ -27,7 +27,7 @@
 )]
 use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo,
-    Mechanism, MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
+    Mechanism, MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -3811,4 +3811,10 @@ pub static ENTRY: Entry = Entry {
     t_end: T_END,
     formulations: &[(Formulation::Exact, &Exact as &(dyn Mechanism + Sync))],
     reduced: None,
+    origin: Origin::Compiled {
+        file: concat!(
+            env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/dietmaier_6_6.toml"
+        ),
+        hash: 11384551771382902092u64,
+    },
 };

@@ -31,7 +31,7 @@
 )]
 use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
-    MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
+    MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -14786,4 +14786,11 @@ pub static ENTRY: Entry = Entry {
     t_end: T_END,
     formulations: &[(Formulation::Exact, &Exact as &(dyn Mechanism + Sync))],
     reduced: None,
+    origin: Origin::Compiled {
+        file: concat!(
+            env!("CARGO_MANIFEST_DIR"), "/../../../",
+            "mechanisms/benchmarks/flyball_governor.toml"
+        ),
+        hash: 2388989300622982092u64,
+    },
 };

@@ -37,7 +37,7 @@
 )]
 use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
-    MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
+    MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -9786,4 +9786,10 @@ pub static ENTRY: Entry = Entry {
     t_end: T_END,
     formulations: &[(Formulation::Exact, &Exact as &(dyn Mechanism + Sync))],
     reduced: None,
+    origin: Origin::Compiled {
+        file: concat!(
+            env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/n_four_bar_2.toml"
+        ),
+        hash: 7314280282859635736u64,
+    },
 };

@@ -25,7 +25,7 @@
 )]
 use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
-    MechanismInfo, NewtonOutputs, PlatformInfo, Reduction, Substitution, Rotation,
+    MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Reduction, Substitution, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -5405,4 +5405,10 @@ pub static ENTRY: Entry = Entry {
         ],
         reduction: &reduced::REDUCTION,
     }),
+    origin: Origin::Compiled {
+        file: concat!(
+            env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/oscillators.toml"
+        ),
+        hash: 4635265543466163833u64,
+    },
 };

@@ -22,7 +22,7 @@
 )]
 use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
-    MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
+    MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -1129,4 +1129,10 @@ pub static ENTRY: Entry = Entry {
     t_end: T_END,
     formulations: &[(Formulation::Exact, &Exact as &(dyn Mechanism + Sync))],
     reduced: None,
+    origin: Origin::Compiled {
+        file: concat!(
+            env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/simple_pendulum.toml"
+        ),
+        hash: 18052815997623647509u64,
+    },
 };

@@ -30,7 +30,7 @@
 )]
 use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
-    MechanismInfo, NewtonOutputs, PlatformInfo, Reduction, Substitution, Rotation,
+    MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Reduction, Substitution, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -9196,4 +9196,10 @@ pub static ENTRY: Entry = Entry {
         ],
         reduction: &reduced::REDUCTION,
     }),
+    origin: Origin::Compiled {
+        file: concat!(
+            env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/slider_crank.toml"
+        ),
+        hash: 7502150094150027739u64,
+    },
 };

@@ -56,8 +56,8 @@
 )]
 use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo,
-    Mechanism, MechanismInfo, NewtonOutputs, PlatformInfo, Reduction, Substitution,
-    Rotation,
+    Mechanism, MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Reduction,
+    Substitution, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -32413,4 +32413,10 @@ pub static ENTRY: Entry = Entry {
         ],
         reduction: &reduced::REDUCTION,
     }),
+    origin: Origin::Compiled {
+        file: concat!(
+            env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/stewart_6_6.toml"
+        ),
+        hash: 10444778954565435692u64,
+    },
 };

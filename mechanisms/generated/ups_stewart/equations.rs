@@ -69,7 +69,7 @@
 )]
 use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo,
-    Mechanism, MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
+    Mechanism, MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Rotation,
 };
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
@@ -37826,4 +37826,10 @@ pub static ENTRY: Entry = Entry {
     t_end: T_END,
     formulations: &[(Formulation::Exact, &Exact as &(dyn Mechanism + Sync))],
     reduced: None,
+    origin: Origin::Compiled {
+        file: concat!(
+            env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/ups_stewart.toml"
+        ),
+        hash: 11971209215141035808u64,
+    },
 };

@@ -3,7 +3,8 @@
 //! [`run`].
 //!
 //! ```toml
-//! mechanism = "stewart_6_6"     # a name from `symbody list`
+//! mechanism = "stewart_6_6"     # a name from `symbody list`, or a mechanism file
+//!                               # ("robot.toml", relative to the scene; interpreted)
 //! formulation = "exact"         # optional: the mechanism's default
 //!
 //! [time]
@@ -32,7 +33,7 @@ pub mod run;
 pub use parse::load;
 pub use run::{choose_path, run, run_observed, Outcome, PathChoice};
 
-use symbody_runtime::Formulation;
+use symbody_runtime::{Entry, Formulation};
 
 /// Which outputs a scene asks for: every one, none, or the named ones (indices into the
 /// mechanism's bodies or joints, checked by [`load`]).
@@ -77,12 +78,14 @@ pub enum PathRequest {
 }
 
 /// A checked scene.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Scene {
     /// The file it was read from, for messages.
     pub file: String,
-    /// Registry name of the mechanism.
+    /// Name of the mechanism.
     pub mechanism: &'static str,
+    /// The mechanism: registered, or interpreted from the file the scene names.
+    pub entry: &'static Entry,
     pub formulation: Formulation,
     pub t_end: f64,
     pub output_step: f64,

@@ -2,6 +2,7 @@
 //! column, the item and what to do (the mechanism files' diagnostics, `symbody_codegen::diag`).
 
 use serde::Deserialize;
+use std::path::Path;
 use symbody_codegen::diag::{Diagnostic, Errors, SourceMap};
 use symbody_runtime::{Formulation, JointKind, Registry};
 use toml::Spanned;
@@ -114,19 +115,41 @@ fn check(
     errors: &mut Vec<Diagnostic>,
 ) -> Option<Scene> {
     let name = raw.mechanism.get_ref();
-    let Some(entry) = registry.find(name) else {
-        let known = registry.names();
-        let help = match closest(name, known.iter().copied()) {
-            Some(s) => format!("did you mean `{s}`?"),
-            None => format!("known mechanisms: {}", known.join(", ")),
-        };
-        errors.push(map.diag(
-            raw.mechanism.span(),
-            "`mechanism`",
-            format!("no mechanism `{name}`"),
-            help,
-        ));
-        return None;
+    let found = if crate::files::is_path(name) {
+        // Relative to the scene file, so a scene and its mechanism move together.
+        let dir = Path::new(map.file).parent().unwrap_or(Path::new(""));
+        Some(crate::files::load(&dir.join(name)).map(|l| l.entry))
+    } else {
+        registry.find(name).map(crate::files::fresh)
+    };
+    let entry = match found {
+        Some(Ok(entry)) => entry,
+        Some(Err(e)) => {
+            errors.push(map.diag(
+                raw.mechanism.span(),
+                "`mechanism`",
+                e.to_string(),
+                "a path is read relative to the scene file",
+            ));
+            return None;
+        }
+        None => {
+            let known = registry.names();
+            let help = match closest(name, known.iter().copied()) {
+                Some(s) => format!("did you mean `{s}`? Or give the path of a mechanism file"),
+                None => format!(
+                    "known mechanisms: {}; or give the path of a mechanism file (e.g. \"{name}.toml\", relative to the scene)",
+                    known.join(", ")
+                ),
+            };
+            errors.push(map.diag(
+                raw.mechanism.span(),
+                "`mechanism`",
+                format!("no mechanism `{name}`"),
+                help,
+            ));
+            return None;
+        }
     };
     let formulation = match &raw.formulation {
         None => None,
@@ -314,6 +337,7 @@ fn check(
     Some(Scene {
         file: map.file.to_string(),
         mechanism: entry.name,
+        entry,
         formulation: info.formulation,
         t_end,
         output_step,

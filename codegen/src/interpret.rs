@@ -1,0 +1,203 @@
+//! The interpreter back end (decision 31): a mechanism file turned, while the program runs,
+//! into a registry [`Entry`] whose mechanisms evaluate instruction tapes
+//! ([`symbody_runtime::Interpreted`]) lowered from the same DAG roots the Rust emitter uses.
+//! Nothing is compiled; the front end (parse, equations, assembly) is the generator's own.
+
+use crate::assembly::Assembly;
+use crate::equations::{self, Dynamics, System};
+use crate::expr::Id;
+use crate::model::{self, Model};
+use crate::symbolic::Entry as Nonzero;
+use crate::tape::lower;
+use crate::{info, Errors, Report};
+use std::sync::Arc;
+use symbody_runtime::interpreted::{DynamicTapes, KinematicTapes};
+use symbody_runtime::registry::Formulations;
+use symbody_runtime::{
+    BodyInfo, Entry, Formulation, Interpreted, JointInfo, LegInfo, Mechanism, MechanismInfo,
+    Origin, PlatformInfo, Rotation,
+};
+
+/// A mechanism file ready to run.
+pub struct Loaded {
+    /// Lives as long as the program: solvers and sessions take `&'static` mechanisms, as
+    /// they do for compiled ones. Load a file once and keep the entry.
+    pub entry: &'static Entry,
+    /// What the generator found out (sizes, rank, mobility, redundant rows, warnings).
+    pub report: Report,
+}
+
+fn leak<T>(v: Vec<T>) -> &'static [T] {
+    Box::leak(v.into_boxed_slice())
+}
+
+fn leak_str(s: &str) -> &'static str {
+    Box::leak(s.to_owned().into_boxed_str())
+}
+
+fn leak_strs(v: &[String]) -> &'static [&'static str] {
+    leak(v.iter().map(|s| leak_str(s)).collect())
+}
+
+fn pattern(entries: &[Nonzero]) -> (&'static [u32], &'static [u32]) {
+    let (rows, cols): (Vec<u32>, Vec<u32>) = entries.iter().map(|e| (e.0, e.1)).unzip();
+    (leak(rows), leak(cols))
+}
+
+fn values(entries: &[Nonzero]) -> Vec<Id> {
+    entries.iter().map(|e| e.2).collect()
+}
+
+/// Parses, checks and assembles the mechanism file `text` (`source` names it in messages and
+/// is kept as the entry's [`Origin`]; `stale`: it replaces a compiled entry whose code is
+/// older than the file), and builds its interpreted mechanisms.
+pub fn load(source: &str, text: &str, stale: bool) -> Result<Loaded, Errors> {
+    let model = model::load(source, text)?;
+    let system = equations::build(&model);
+    let assembly = crate::assembly::assemble(&model, &system, source)?;
+    let entry = entry(&model, &system, &assembly, source, stale);
+    Ok(Loaded {
+        entry,
+        report: assembly.report,
+    })
+}
+
+fn kinematic_tapes(sys: &System) -> KinematicTapes {
+    let n = sys.n_coords;
+    let pq = values(&sys.phi_q);
+    let a = &sys.arena;
+    KinematicTapes {
+        phi: lower(a, n, &[&sys.phi]),
+        phi_q: lower(a, n, &[&pq]),
+        phi_t: lower(a, n, &[&sys.phi_t]),
+        gamma: lower(a, n, &[&sys.gamma]),
+        eval_kinematics: lower(a, n, &[&sys.phi, &pq, &sys.phi_t, &sys.gamma]),
+        potential: lower(a, n, &[&[sys.potential]]),
+        power_nc: lower(a, n, &[&[sys.power_nc]]),
+    }
+}
+
+fn dynamic_tapes(sys: &System, d: &Dynamics) -> DynamicTapes {
+    let n = sys.n_coords;
+    let a = &sys.arena;
+    let (pq, mass) = (values(&sys.phi_q), values(&d.mass));
+    DynamicTapes {
+        force_jacobian: lower(a, n, &[&values(&d.force_q), &values(&d.force_qd)]),
+        mass: lower(a, n, &[&mass]),
+        force: lower(a, n, &[&d.force]),
+        eval_newton: lower(a, n, &[&sys.phi, &pq, &mass, &d.force]),
+    }
+}
+
+fn entry(model: &Model, sys: &System, asm: &Assembly, source: &str, stale: bool) -> &'static Entry {
+    let name = leak_str(&model.name);
+    let bodies = leak(
+        model
+            .bodies
+            .iter()
+            .map(|b| BodyInfo {
+                name: leak_str(&b.name),
+                coord_offset: b.offset,
+                rotation: match b.rotation {
+                    model::Rotation::Euler => Rotation::Euler,
+                    model::Rotation::Quaternion => Rotation::Quaternion,
+                },
+                mass: b.mass,
+                inertia: b.inertia,
+            })
+            .collect(),
+    );
+    let joints = leak(
+        info::joints(model, sys)
+            .into_iter()
+            .map(|j| JointInfo {
+                name: leak_str(&j.name),
+                kind: j.kind,
+                body1: j.body1,
+                body2: j.body2,
+                row_start: j.row_start,
+                rows: j.rows,
+                point1: j.point1,
+                point2: j.point2,
+                effort_sign: j.effort_sign,
+                effort_unit: j.effort_unit,
+            })
+            .collect(),
+    );
+    let platform = info::platform(model, sys, asm).map(|(body, legs)| PlatformInfo {
+        body,
+        legs: leak(
+            legs.into_iter()
+                .map(|l| LegInfo {
+                    driver: leak_str(&l.driver),
+                    base: l.base,
+                    platform: l.platform,
+                    row: l.row,
+                })
+                .collect(),
+        ),
+    });
+    let (phi_q_rows, phi_q_cols) = pattern(&sys.phi_q);
+    let coord_names = leak_strs(&sys.coord_names);
+    let row_names = leak_strs(&sys.row_names);
+    let q0 = leak(asm.q0.clone());
+    let qd0 = leak(model.qd0());
+    let redundant_rows = leak(asm.redundant_rows.clone());
+    let kinematic = Arc::new(kinematic_tapes(sys));
+    let formulations: Vec<(Formulation, &'static (dyn Mechanism + Sync))> = model
+        .formulations
+        .iter()
+        .map(|&f| {
+            let d = sys
+                .dynamics
+                .iter()
+                .find(|d| d.formulation == f)
+                .expect("the equations hold every formulation the model lists");
+            let formulation = match f {
+                model::Formulation::Paper => Formulation::Paper,
+                model::Formulation::Exact => Formulation::Exact,
+            };
+            let (mass_rows, mass_cols) = pattern(&d.mass);
+            let (force_q_rows, force_q_cols) = pattern(&d.force_q);
+            let (force_qd_rows, force_qd_cols) = pattern(&d.force_qd);
+            let info: &'static MechanismInfo = Box::leak(Box::new(MechanismInfo {
+                name,
+                n_coords: sys.n_coords,
+                n_constraints: sys.n_constraints,
+                formulation,
+                gravity: model.gravity,
+                phi_q_rows,
+                phi_q_cols,
+                mass_rows,
+                mass_cols,
+                mass_is_constant: d.mass_is_constant,
+                force_q_rows,
+                force_q_cols,
+                force_qd_rows,
+                force_qd_cols,
+                bodies,
+                joints,
+                coord_names,
+                row_names,
+                q0,
+                qd0,
+                redundant_rows,
+                platform,
+            }));
+            let m = Interpreted::new(info, kinematic.clone(), Arc::new(dynamic_tapes(sys, d)));
+            let m: &'static (dyn Mechanism + Sync) = Box::leak(Box::new(m));
+            (formulation, m)
+        })
+        .collect();
+    let formulations: Formulations = leak(formulations);
+    Box::leak(Box::new(Entry {
+        name,
+        t_end: model.t_end,
+        formulations,
+        reduced: None,
+        origin: Origin::Interpreted {
+            file: leak_str(source),
+            stale,
+        },
+    }))
+}

@@ -1,0 +1,126 @@
+//! A mechanism evaluated by the tape interpreter instead of compiled code: the same
+//! functions, behind the same [`Mechanism`] trait, so every solver runs it unchanged.
+
+use crate::mechanism::{KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs};
+use crate::tape::Tape;
+use std::sync::Arc;
+
+/// The tapes that do not depend on the formulation.
+#[derive(Debug)]
+pub struct KinematicTapes {
+    pub phi: Tape,
+    pub phi_q: Tape,
+    pub phi_t: Tape,
+    pub gamma: Tape,
+    /// Outputs Φ, Φq, Φt, γ.
+    pub eval_kinematics: Tape,
+    pub potential: Tape,
+    pub power_nc: Tape,
+}
+
+/// The tapes of one formulation.
+#[derive(Debug)]
+pub struct DynamicTapes {
+    /// Outputs ∂Q/∂q and ∂Q/∂q̇ nonzeros.
+    pub force_jacobian: Tape,
+    pub mass: Tape,
+    pub force: Tape,
+    /// Outputs Φ, Φq, M, Q.
+    pub eval_newton: Tape,
+}
+
+/// One formulation of an interpreted mechanism.
+#[derive(Debug, Clone)]
+pub struct Interpreted {
+    info: &'static MechanismInfo,
+    kinematic: Arc<KinematicTapes>,
+    dynamic: Arc<DynamicTapes>,
+}
+
+impl Interpreted {
+    /// Panics when a tape's outputs do not have the sizes `info` gives: the generator built
+    /// both from one model, so a mismatch is a bug, not bad input.
+    pub fn new(
+        info: &'static MechanismInfo,
+        kinematic: Arc<KinematicTapes>,
+        dynamic: Arc<DynamicTapes>,
+    ) -> Self {
+        let (n, m) = (info.n_coords, info.n_constraints);
+        let sizes = |t: &Tape| t.output_lens().collect::<Vec<_>>();
+        let k = &kinematic;
+        assert_eq!(sizes(&k.eval_kinematics), [m, info.phi_q_nnz(), m, m]);
+        assert_eq!(sizes(&k.phi), [m]);
+        let d = &dynamic;
+        assert_eq!(
+            sizes(&d.eval_newton),
+            [m, info.phi_q_nnz(), info.mass_nnz(), n]
+        );
+        assert_eq!(
+            sizes(&d.force_jacobian),
+            [info.force_q_rows.len(), info.force_qd_rows.len()]
+        );
+        Interpreted {
+            info,
+            kinematic,
+            dynamic,
+        }
+    }
+
+    /// Instructions evaluated by `eval_newton` and by `eval_kinematics`.
+    pub fn instructions(&self) -> (usize, usize) {
+        (
+            self.dynamic.eval_newton.len(),
+            self.kinematic.eval_kinematics.len(),
+        )
+    }
+}
+
+impl Mechanism for Interpreted {
+    fn info(&self) -> &'static MechanismInfo {
+        self.info
+    }
+    fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        self.kinematic.phi.eval(q, &[], t, &mut [out]);
+    }
+    fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        self.kinematic.phi_q.eval(q, &[], t, &mut [out]);
+    }
+    fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        self.kinematic.phi_t.eval(q, &[], t, &mut [out]);
+    }
+    fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        self.kinematic.gamma.eval(q, qd, t, &mut [out]);
+    }
+    fn mass(&self, q: &[f64], out: &mut [f64]) {
+        self.dynamic.mass.eval(q, &[], 0.0, &mut [out]);
+    }
+    fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        self.dynamic.force.eval(q, qd, t, &mut [out]);
+    }
+    fn force_jacobian(&self, q: &[f64], qd: &[f64], t: f64, dq: &mut [f64], dqd: &mut [f64]) {
+        self.dynamic.force_jacobian.eval(q, qd, t, &mut [dq, dqd]);
+    }
+    fn potential(&self, q: &[f64]) -> f64 {
+        let mut out = [0.0];
+        self.kinematic.potential.eval(q, &[], 0.0, &mut [&mut out]);
+        out[0]
+    }
+    fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
+        let mut out = [0.0];
+        self.kinematic.power_nc.eval(q, qd, t, &mut [&mut out]);
+        out[0]
+    }
+    fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+        self.dynamic
+            .eval_newton
+            .eval(q, qd, t, &mut [out.phi, out.phi_q, out.mass, out.force]);
+    }
+    fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
+        self.kinematic.eval_kinematics.eval(
+            q,
+            qd,
+            t,
+            &mut [out.phi, out.phi_q, out.phi_t, out.gamma],
+        );
+    }
+}

@@ -1,0 +1,150 @@
+//! Mechanisms given as files: any mechanism file runs at once, interpreted (decision 31), and
+//! a compiled mechanism whose file changed after its code was generated runs interpreted from
+//! the file, with a note, never as the stale code.
+//!
+//! Interpreted entries live as long as the program (the solvers take `&'static` mechanisms,
+//! as for compiled ones); each distinct file text is loaded once and then reused.
+
+use crate::scenario::ScenarioError;
+use std::collections::HashMap;
+use std::path::Path;
+use std::sync::{Mutex, OnceLock};
+use symbody_runtime::{source_hash, Entry, Origin};
+
+/// Largest mechanism file read: far above any real one (the 13-body Stewart file is 9 KB),
+/// and small enough that a wrong path (a log, a binary) is refused before it is parsed.
+pub const MAX_FILE_BYTES: u64 = 1 << 20;
+
+/// Whether `name` names a file rather than a registered mechanism.
+pub fn is_path(name: &str) -> bool {
+    name.ends_with(".toml") || Path::new(name).components().count() > 1
+}
+
+/// A loaded file: its entry and what the generator's front end reported.
+#[derive(Clone, Copy)]
+pub struct Loaded {
+    pub entry: &'static Entry,
+    /// Sizes, rank, mobility, redundant rows, platform and warnings, as `cargo xtask
+    /// generate` prints them.
+    pub report: &'static str,
+}
+
+type Cache = Mutex<HashMap<(String, String, bool), Loaded>>;
+
+fn cache() -> &'static Cache {
+    static CACHE: OnceLock<Cache> = OnceLock::new();
+    CACHE.get_or_init(Default::default)
+}
+
+/// Reads a mechanism file's text: a clear error for a missing file, a directory, a file too
+/// large to be one, or text that is not UTF-8 (with the line and column where it stops).
+pub fn read(path: &Path) -> Result<String, ScenarioError> {
+    let shown = path.display();
+    let fail = |what: String| ScenarioError::Options(format!("mechanism file {shown}: {what}"));
+    let meta = std::fs::metadata(path).map_err(|e| {
+        fail(match e.kind() {
+            std::io::ErrorKind::NotFound => {
+                "no such file (give a path to a .toml mechanism file, or a name from `symbody list`)"
+                    .to_string()
+            }
+            _ => format!("cannot read it: {e}"),
+        })
+    })?;
+    if meta.is_dir() {
+        return Err(fail(
+            "is a folder; give one mechanism file in it (a .toml file)".to_string(),
+        ));
+    }
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(fail(format!(
+            "{} bytes, more than the {MAX_FILE_BYTES} a mechanism file may have; is this the \
+             right file?",
+            meta.len()
+        )));
+    }
+    let bytes = std::fs::read(path).map_err(|e| fail(format!("cannot read it: {e}")))?;
+    String::from_utf8(bytes).map_err(|e| {
+        let good = &e.as_bytes()[..e.utf8_error().valid_up_to()];
+        let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
+        let column = good.iter().rev().take_while(|&&b| b != b'\n').count() + 1;
+        fail(format!(
+            "not UTF-8 text: the bytes at line {line}, column {column} are no character; save \
+             the file as UTF-8"
+        ))
+    })
+}
+
+/// The mechanism file at `path`, interpreted (loaded once per distinct text).
+pub fn load(path: &Path) -> Result<Loaded, ScenarioError> {
+    let text = read(path)?;
+    load_text(&path.display().to_string(), &text, false)
+}
+
+fn load_text(source: &str, text: &str, stale: bool) -> Result<Loaded, ScenarioError> {
+    let key = (source.to_string(), text.to_string(), stale);
+    if let Some(&l) = cache().lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
+        return Ok(l);
+    }
+    let loaded = symbody_codegen::interpret::load(source, text, stale).map_err(|e| {
+        let shown = e.to_string();
+        // `main` and the bindings add their own `error:` before the first message.
+        ScenarioError::Options(shown.strip_prefix("error: ").unwrap_or(&shown).to_string())
+    })?;
+    let report = Box::leak(loaded.report.to_string().into_boxed_str());
+    let l = Loaded {
+        entry: loaded.entry,
+        report,
+    };
+    cache()
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .insert(key, l);
+    Ok(l)
+}
+
+/// `entry` itself, or, when it is compiled and its file (still where it was when the program
+/// was built) has changed since its code was generated, the file interpreted. A changed file
+/// that no longer loads is an error with its diagnostics, not a silent run of the old code.
+pub fn fresh(entry: &'static Entry) -> Result<&'static Entry, ScenarioError> {
+    let Origin::Compiled { file, hash } = entry.origin else {
+        return Ok(entry);
+    };
+    // Installed without its source tree (a wheel, a copied binary): nothing to compare.
+    let Ok(text) = std::fs::read_to_string(file) else {
+        return Ok(entry);
+    };
+    if source_hash(&text) == hash {
+        return Ok(entry);
+    }
+    let shown = Path::new(file)
+        .canonicalize()
+        .map_or_else(|_| file.to_string(), |p| p.display().to_string());
+    load_text(&shown, &text, true)
+        .map(|l| l.entry)
+        .map_err(|e| {
+            ScenarioError::Options(format!(
+                "{e}\n(`{}` changed since its code was generated, and the compiled code is not \
+                 run in its place; fix the file, or restore it)",
+                entry.name
+            ))
+        })
+}
+
+/// What a summary says about where `entry`'s equations come from, when they are not the
+/// compiled code of its current file.
+pub fn note(entry: &Entry) -> Option<String> {
+    match entry.origin {
+        Origin::Compiled { .. } => None,
+        Origin::Interpreted { file, stale: false } => Some(format!(
+            "interpreted from {file} (nothing compiled); the compiled route evaluates faster \
+             (BENCHMARKS.md, \"Interpreted and compiled\"): put the file in mechanisms/ and run \
+             `cargo xtask generate {}`",
+            entry.name
+        )),
+        Origin::Interpreted { file, stale: true } => Some(format!(
+            "interpreted from {file}: the compiled `{0}` is stale (the file changed after `cargo \
+             xtask generate {0}`); regenerate it to run compiled again",
+            entry.name
+        )),
+    }
+}
