@@ -148,3 +148,61 @@ pub fn note(entry: &Entry) -> Option<String> {
         )),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::PathBuf;
+    use symbody_mechanisms::REGISTRY;
+
+    /// A compiled entry whose file is a copy in a temporary folder, so the test may edit it.
+    fn entry_with_file(dir: &Path) -> (&'static Entry, PathBuf, String) {
+        let shipped = REGISTRY.find("slider_crank").unwrap();
+        let Origin::Compiled { file, hash } = shipped.origin else {
+            panic!("compiled")
+        };
+        let text = std::fs::read_to_string(file).unwrap();
+        let copy = dir.join("slider_crank.toml");
+        std::fs::write(&copy, &text).unwrap();
+        let leaked: &'static str = Box::leak(copy.display().to_string().into_boxed_str());
+        let entry = Box::leak(Box::new(Entry {
+            name: shipped.name,
+            t_end: shipped.t_end,
+            formulations: shipped.formulations,
+            reduced: None,
+            origin: Origin::Compiled { file: leaked, hash },
+        }));
+        (entry, copy, text)
+    }
+
+    #[test]
+    fn a_changed_file_runs_interpreted_and_a_broken_one_is_an_error() {
+        let dir = std::env::temp_dir().join(format!("symbody-stale-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let (entry, copy, text) = entry_with_file(&dir);
+        // Unchanged: the compiled code itself.
+        assert!(std::ptr::eq(fresh(entry).unwrap(), entry));
+        // The crank made longer: the file's equations, flagged as replacing stale code.
+        let edited = text.replacen("r = 0.1 ", "r = 0.12 ", 1);
+        assert_ne!(edited, text, "the test edits the crank radius");
+        std::fs::write(&copy, &edited).unwrap();
+        let now = fresh(entry).unwrap();
+        assert!(matches!(
+            now.origin,
+            Origin::Interpreted { stale: true, .. }
+        ));
+        let crank = |e: &Entry| e.default_mechanism().info().q0.to_vec();
+        assert_ne!(
+            crank(now),
+            crank(entry),
+            "the edited pose, not the compiled one"
+        );
+        assert!(note(now).unwrap().contains("stale"));
+        // Broken: an error with the file's diagnostics, never the old code.
+        std::fs::write(&copy, "name = \"slider_crank\"\n[[body]]\n").unwrap();
+        let e = fresh(entry).unwrap_err().to_string();
+        assert!(e.contains("changed since its code was generated"), "{e}");
+        assert!(e.contains("slider_crank.toml"), "{e}");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
