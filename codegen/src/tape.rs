@@ -65,9 +65,21 @@ pub fn lower(arena: &Arena, n_coords: usize, outputs: &[&[Id]]) -> Tape {
         stack.push(a);
         stack.extend(b);
     }
-    // Children precede parents in the arena, so ascending ids are an evaluation order.
+    // Children precede parents in the arena, so ascending ids are an evaluation order; the
+    // tape instead runs level by level (a node's level is one more than its operands'), with
+    // the instructions of one level grouped by operation: runs of one operation are what the
+    // interpreter dispatches once (`Tape::eval`), and no result changes, as every node still
+    // reads the same operands.
     needed.sort_unstable();
     leaves.sort_unstable();
+    let mut level: HashMap<Id, u32> = HashMap::new();
+    for &id in &needed {
+        let (_, a, b, _) = instruction(arena, id);
+        let of = |x: Id| level.get(&x).copied().unwrap_or(0);
+        let l = 1 + of(a).max(b.map_or(0, of));
+        level.insert(id, l);
+    }
+    needed.sort_by_key(|&id| (level[&id], instruction(arena, id).0 as u8, id));
 
     let mut consts = Vec::new();
     let mut register: HashMap<Id, u32> = HashMap::new();

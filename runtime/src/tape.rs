@@ -84,6 +84,10 @@ pub struct Tape {
     consts: Vec<f64>,
     n_coords: usize,
     instrs: Vec<Instr>,
+    /// The instructions as runs of one operation `(op, length)`: the interpreter dispatches
+    /// once per run, not once per instruction (an indirect branch per instruction is
+    /// mispredicted most of the time; a run is a tight loop).
+    runs: Vec<(Op, u32)>,
     /// For each output slice, the register of each of its entries.
     outputs: Vec<Vec<u32>>,
 }
@@ -121,10 +125,18 @@ impl Tape {
                 register: r,
             });
         }
+        let mut runs: Vec<(Op, u32)> = Vec::new();
+        for ins in &instrs {
+            match runs.last_mut() {
+                Some((op, len)) if *op == ins.op => *len += 1,
+                _ => runs.push((ins.op, 1)),
+            }
+        }
         Ok(Tape {
             consts,
             n_coords,
             instrs,
+            runs,
             outputs,
         })
     }
@@ -136,6 +148,11 @@ impl Tape {
 
     pub fn is_empty(&self) -> bool {
         self.instrs.is_empty()
+    }
+
+    /// Number of runs of one operation, each dispatched once.
+    pub fn runs(&self) -> usize {
+        self.runs.len()
     }
 
     /// Number of registers an evaluation uses.
@@ -195,7 +212,7 @@ impl Tape {
         }
         regs[c + 2 * n] = t;
         let first = self.first_result();
-        run(&self.instrs, regs, first);
+        run(&self.instrs, &self.runs, regs, first);
         for (out, regs_of) in outs.iter_mut().zip(&self.outputs) {
             assert_eq!(
                 out.len(),
@@ -209,32 +226,67 @@ impl Tape {
     }
 }
 
-/// The interpreter loop: instruction `k` writes register `first + k`.
-fn run(instrs: &[Instr], regs: &mut [f64], first: usize) {
-    for (k, ins) in instrs.iter().enumerate() {
-        let a = regs[ins.a as usize];
-        let b = || regs[ins.b as usize];
-        let v = match ins.op {
-            Op::Add => a + b(),
-            Op::Sub => a - b(),
-            Op::Mul => a * b(),
-            Op::Atan2 => a.atan2(b()),
-            Op::Neg => -a,
-            Op::Recip => 1.0 / a,
-            Op::Square => a * a,
-            Op::Powi => a.powi(ins.b as i32),
-            Op::Sin => a.sin(),
-            Op::Cos => a.cos(),
-            Op::Tan => a.tan(),
-            Op::Exp => a.exp(),
-            Op::Ln => a.ln(),
-            Op::Sqrt => a.sqrt(),
-            Op::Abs => a.abs(),
-            Op::Asin => a.asin(),
-            Op::Acos => a.acos(),
-            Op::Atan => a.atan(),
-        };
-        regs[first + k] = v;
+/// The interpreter loop: instruction `k` writes register `first + k`, one run of equal
+/// operations at a time. `regs` holds at least `first + instrs.len()` registers, and
+/// [`Tape::new`] checked that every operand names a register below its instruction's own.
+fn run(instrs: &[Instr], runs: &[(Op, u32)], regs: &mut [f64], first: usize) {
+    assert!(regs.len() >= first + instrs.len());
+    let regs = regs.as_mut_ptr();
+    let mut k = 0;
+    for &(op, len) in runs {
+        let len = len as usize;
+        let chunk = &instrs[k..k + len];
+        let out = first + k;
+        // SAFETY (every read and write below): operands are below `first + k + j` (checked
+        // by `Tape::new`) and results are below `first + instrs.len()`, so all indices lie
+        // in `regs` (asserted above); reads never alias the write of the same instruction.
+        macro_rules! each {
+            (|$a:ident| $e:expr) => {
+                for (j, ins) in chunk.iter().enumerate() {
+                    unsafe {
+                        let $a = *regs.add(ins.a as usize);
+                        *regs.add(out + j) = $e;
+                    }
+                }
+            };
+            (|$a:ident, $b:ident| $e:expr) => {
+                for (j, ins) in chunk.iter().enumerate() {
+                    unsafe {
+                        let ($a, $b) = (*regs.add(ins.a as usize), *regs.add(ins.b as usize));
+                        *regs.add(out + j) = $e;
+                    }
+                }
+            };
+        }
+        match op {
+            Op::Add => each!(|a, b| a + b),
+            Op::Sub => each!(|a, b| a - b),
+            Op::Mul => each!(|a, b| a * b),
+            Op::Atan2 => each!(|a, b| a.atan2(b)),
+            Op::Neg => each!(|a| -a),
+            Op::Recip => each!(|a| 1.0 / a),
+            Op::Square => each!(|a| a * a),
+            // `b` holds the exponent, not a register: read `a` only.
+            Op::Powi => {
+                for (j, ins) in chunk.iter().enumerate() {
+                    unsafe {
+                        let a = *regs.add(ins.a as usize);
+                        *regs.add(out + j) = a.powi(ins.b as i32);
+                    }
+                }
+            }
+            Op::Sin => each!(|a| a.sin()),
+            Op::Cos => each!(|a| a.cos()),
+            Op::Tan => each!(|a| a.tan()),
+            Op::Exp => each!(|a| a.exp()),
+            Op::Ln => each!(|a| a.ln()),
+            Op::Sqrt => each!(|a| a.sqrt()),
+            Op::Abs => each!(|a| a.abs()),
+            Op::Asin => each!(|a| a.asin()),
+            Op::Acos => each!(|a| a.acos()),
+            Op::Atan => each!(|a| a.atan()),
+        }
+        k += len;
     }
 }
 
