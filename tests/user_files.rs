@@ -149,7 +149,7 @@ fn rsup_slider_crank_has_one_dof_and_its_slider_follows_the_closed_form() {
     let report = check("rsup_slider_crank");
     has_line(
         &report,
-        "rsup_slider_crank: 3 bodies, 21 coordinates, 21 constraint rows (1 drivers), rank 21 \
+        "rsup_slider_crank: 3 bodies, 21 coordinates, 21 constraint rows (1 driver), rank 21 \
          at the initial pose",
     );
     has_line(

@@ -82,10 +82,11 @@ enum Command {
         /// The mechanism file, e.g. robot.toml.
         file: PathBuf,
     },
-    /// Simulate a generated mechanism; without a name, the paper's 6-6 Stewart platform
-    /// scenario (one period, 2π s) with the paper's figures.
+    /// Simulate a mechanism (compiled, or a file run interpreted); without one, the paper's
+    /// 6-6 Stewart platform scenario (one period, 2π s) with the paper's figures.
     Simulate {
-        /// A mechanism from `symbody list` (default: the paper's scenario).
+        /// A mechanism from `symbody list`, or a mechanism file (robot.toml: interpreted, no
+        /// build) (default: the paper's scenario).
         mechanism: Option<String>,
         /// Dynamics formulation (default: the mechanism's first; the paper scenario: exact).
         #[arg(long, value_enum)]
@@ -105,17 +106,17 @@ enum Command {
         output_step: f64,
         /// Let the integrator pass positions where constraint rows are dependent for an
         /// instant (a linkage lying flat, as the IFToMM A02 N-four-bar): a step landing on one
-        /// drops the rows whose pivot vanished, and every row must still hold (named
-        /// mechanisms; default: stop with the dependent rows named).
+        /// drops the rows whose pivot vanished, and every row must still hold (not the paper
+        /// scenario; default: stop with the dependent rows named).
         #[arg(long)]
         cross_singular_positions: bool,
         /// Add each body's velocities to bodies.csv: <body>.vx,.vy,.vz (centre of mass, m/s)
-        /// and .wx,.wy,.wz (angular velocity, rad/s), global frame (named mechanisms).
+        /// and .wx,.wy,.wz (angular velocity, rad/s), global frame (not the paper scenario).
         #[arg(long)]
         velocities: bool,
         /// Add each body's accelerations to bodies.csv: <body>.ax,.ay,.az (centre of mass,
-        /// m/s²) and .alphax,.alphay,.alphaz (angular, rad/s²), global frame (named
-        /// mechanisms).
+        /// m/s²) and .alphax,.alphay,.alphaz (angular, rad/s²), global frame (not the paper
+        /// scenario).
         #[arg(long)]
         accelerations: bool,
         /// Paper scenario only: source of the joint and actuator forces, the saddle-point
@@ -140,7 +141,7 @@ enum Command {
     /// by continuation from a known pose, with its leg-length residual and the condition
     /// number of the platform's Jacobian; with --all every assembly mode.
     Fk {
-        /// A mechanism from `symbody list` whose FK column says yes.
+        /// A mechanism from `symbody list` whose FK column says yes, or a mechanism file.
         mechanism: String,
         /// Six leg lengths l1,…,l6 (m), joint centre to joint centre (default: what the
         /// drivers prescribe at --at).
@@ -195,8 +196,8 @@ pub fn main(registry: &Registry) -> ExitCode {
             reactions,
             files,
         } => match mechanism {
-            None if velocities || accelerations => Err(format!("--{} applies to named mechanisms (it adds columns to bodies.csv); the paper scenario writes platform.csv", if velocities { "velocities" } else { "accelerations" })),
-            None if cross_singular_positions => Err("--cross-singular-positions applies to named mechanisms; the paper scenario has no singular position to cross".to_string()),
+            None if velocities || accelerations => Err(format!("--{} applies to a named mechanism or a file (it adds columns to bodies.csv); the paper scenario writes platform.csv", if velocities { "velocities" } else { "accelerations" })),
+            None if cross_singular_positions => Err("--cross-singular-positions applies to a named mechanism or a file; the paper scenario has no singular position to cross".to_string()),
             Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
             Some(name) => {
                 let defaults = generic::Options::default();

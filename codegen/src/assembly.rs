@@ -62,8 +62,14 @@ impl fmt::Display for Report {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(
             f,
-            "{}: {} bodies, {} coordinates, {} constraint rows ({} drivers), rank {} at the initial pose",
-            self.name, self.n_bodies, self.n_coords, self.n_rows, self.n_drivers, self.rank
+            "{}: {} bodies, {} coordinates, {} constraint rows ({} driver{}), rank {} at the initial pose",
+            self.name,
+            self.n_bodies,
+            self.n_coords,
+            self.n_rows,
+            self.n_drivers,
+            if self.n_drivers == 1 { "" } else { "s" },
+            self.rank
         )?;
         writeln!(
             f,
