@@ -652,7 +652,7 @@ mod tests {
 
     #[test]
     fn unknown_names_list_the_registry_and_suggest_only_near_misses() {
-        let msg = |n: &str| find(&REGISTRY, n).err().expect("unknown").to_string();
+        let msg = |n: &str| find(&REGISTRY, n).expect_err("unknown").to_string();
         assert!(msg("slidercrank").contains("did you mean `slider_crank`"));
         assert!(msg("spherical_pendulm").contains("did you mean `spherical_pendulum`"));
         let far = msg("gearbox");
