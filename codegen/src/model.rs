@@ -12,11 +12,11 @@ mod joints;
 pub mod raw;
 mod values;
 
-use crate::diag::{Diagnostic, Errors, SourceMap};
+use crate::diag::{closest, Diagnostic, Errors, SourceMap};
 use crate::expr::{Arena, Id};
 use crate::geometry::{euler_matrix, quaternion_matrix, v3, M3, V3};
 use raw::RawFile;
-use std::collections::HashMap;
+use std::collections::{BTreeSet, HashMap};
 use std::ops::Range;
 
 /// Dynamics formulation (docs/design.md, decision 7).
@@ -292,6 +292,25 @@ pub struct Model {
     /// Line of each named item (body, joint, driver, force) in the file, for diagnostics
     /// after validation.
     pub lines: HashMap<String, usize>,
+    /// The file's `[parameters]`, in name order, with the values used (overrides applied).
+    pub parameters: Vec<Parameter>,
+}
+
+/// One entry of a file's `[parameters]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Parameter {
+    pub name: String,
+    /// The value this model was built with.
+    pub value: f64,
+    /// The file's expression, for a parameter derived from others (`None`: a number).
+    pub expression: Option<String>,
+    /// Whether the value was set from outside the file ([`load_with`]).
+    pub overridden: bool,
+    /// 1-based line in the file.
+    pub line: usize,
+    /// The items whose values depend on it, directly or through other parameters (e.g.
+    /// ``body `crank` ``, ``joint `pin` ``), in name order.
+    pub affects: Vec<String>,
 }
 
 impl Model {
@@ -311,6 +330,14 @@ impl Model {
 
 /// Reads and validates a mechanism file. `file` is only used in messages.
 pub fn load(file: &str, text: &str) -> Result<Model, Errors> {
+    load_with(file, text, &[])
+}
+
+/// [`load`] with some of the file's parameters set to other values, as if the file said so:
+/// everything that depends on them follows (derived parameters, masses, points, the initial
+/// pose, drivers' and loads' constants). An unknown name or a value that is not finite is an
+/// error naming the parameter.
+pub fn load_with(file: &str, text: &str, overrides: &[(String, f64)]) -> Result<Model, Errors> {
     let map = SourceMap { file, text };
     let raw: RawFile = toml::from_str(text).map_err(|e| {
         let span = e.span().unwrap_or(0..0);
@@ -323,9 +350,10 @@ pub fn load(file: &str, text: &str) -> Result<Model, Errors> {
         errors: Vec::new(),
         params: HashMap::new(),
         values: HashMap::new(),
+        uses: HashMap::new(),
         arena: Arena::new(),
     };
-    let model = v.model(raw);
+    let model = v.model(raw, overrides);
     match model {
         Some(m) if v.errors.is_empty() => Ok(m),
         _ => Err(Errors(v.errors)),
@@ -343,6 +371,8 @@ struct Validator<'a> {
     errors: Vec<Diagnostic>,
     params: HashMap<String, (Range<usize>, raw::Scalar)>,
     values: HashMap<String, ParamState>,
+    /// For each parameter, the items whose fields read it directly.
+    uses: HashMap<String, BTreeSet<String>>,
     arena: Arena,
 }
 
@@ -352,12 +382,13 @@ impl Validator<'_> {
         self.errors.push(d);
     }
 
-    fn model(&mut self, raw: RawFile) -> Option<Model> {
+    fn model(&mut self, raw: RawFile, overrides: &[(String, f64)]) -> Option<Model> {
         let name = self.mechanism_name(&raw)?;
         for (k, val) in &raw.parameters {
             self.params
                 .insert(k.get_ref().clone(), (k.span(), val.get_ref().clone()));
         }
+        self.override_parameters(&raw, overrides);
         // Resolve every parameter up front so errors in unused ones are reported too.
         for k in raw.parameters.keys() {
             self.param_value(k.get_ref());
@@ -440,7 +471,91 @@ impl Validator<'_> {
             drivers: drivers?,
             forces: forces?,
             arena: std::mem::take(&mut self.arena),
+            parameters: self.parameters(&raw, overrides),
         })
+    }
+
+    /// Replaces the values of overridden parameters (before any is resolved).
+    fn override_parameters(&mut self, raw: &RawFile, overrides: &[(String, f64)]) {
+        // Errors point at the file's parameters table (or its start, without one).
+        let table = raw.parameters.keys().next().map_or(0..0, |k| k.span());
+        let mut known: Vec<&str> = raw.parameters.keys().map(|k| k.get_ref().as_str()).collect();
+        known.sort();
+        for (name, value) in overrides {
+            let item = format!("parameter `{name}`");
+            match self.params.get_mut(name) {
+                None => {
+                    let close = closest(name, known.iter().copied())
+                        .map(|c| format!("did you mean `{c}`? "))
+                        .unwrap_or_default();
+                    let list = if known.is_empty() {
+                        "the file has no [parameters]".to_string()
+                    } else {
+                        format!("the file's parameters: {}", known.join(", "))
+                    };
+                    self.err(
+                        table.clone(),
+                        &item,
+                        format!("no parameter `{name}` to set"),
+                        &format!("{close}{list}"),
+                    );
+                }
+                Some((span, _)) if !value.is_finite() => {
+                    let span = span.clone();
+                    self.err(
+                        span,
+                        &item,
+                        format!("parameter `{name}` set to {value}"),
+                        "give a finite number",
+                    );
+                }
+                Some((_, v)) => *v = raw::Scalar::Float(*value),
+            }
+        }
+    }
+
+    /// The parameters as resolved, each with the items it affects through any chain of
+    /// parameters.
+    fn parameters(&self, raw: &RawFile, overrides: &[(String, f64)]) -> Vec<Parameter> {
+        let direct = |name: &str| self.uses.get(name).cloned().unwrap_or_default();
+        raw.parameters
+            .iter()
+            .map(|(k, v)| {
+                let name = k.get_ref().clone();
+                // Items reached through parameters that read this one, transitively.
+                let mut items = BTreeSet::new();
+                let mut todo = vec![name.clone()];
+                let mut seen = BTreeSet::new();
+                while let Some(p) = todo.pop() {
+                    if !seen.insert(p.clone()) {
+                        continue;
+                    }
+                    for item in direct(&p) {
+                        match item.strip_prefix("parameter `").and_then(|s| s.strip_suffix('`')) {
+                            Some(q) => todo.push(q.to_string()),
+                            None => {
+                                items.insert(item);
+                            }
+                        }
+                    }
+                }
+                let value = match self.values.get(&name) {
+                    Some(ParamState::Done(x)) => *x,
+                    _ => f64::NAN,
+                };
+                Parameter {
+                    expression: match v.get_ref() {
+                        raw::Scalar::Expr(e) => Some(e.clone()),
+                        _ => None,
+                    },
+                    overridden: overrides.iter().any(|(o, _)| *o == name),
+                    line: self.map.position(k.span().start).0,
+                    affects: items.into_iter().collect(),
+                    name,
+                    value,
+                }
+            })
+            .collect()
     }
 
     fn mechanism_name(&mut self, raw: &RawFile) -> Option<String> {

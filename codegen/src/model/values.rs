@@ -101,6 +101,7 @@ impl Validator<'_> {
         let mut values: HashMap<String, f64> = HashMap::new();
         for n in names {
             if self.params.contains_key(&n) {
+                self.uses.entry(n.clone()).or_default().insert(item.to_string());
                 if let Some(v) = self.param_value(&n) {
                     values.insert(n, v);
                 } else {
@@ -248,6 +249,11 @@ impl Validator<'_> {
         field: &str,
         initial: Option<f64>,
     ) -> Option<Id> {
+        for n in referenced_names(src.get_ref()) {
+            if self.params.contains_key(&n) {
+                self.uses.entry(n).or_default().insert(item.to_string());
+            }
+        }
         let params: Vec<(String, f64)> = self
             .values
             .iter()
