@@ -78,6 +78,17 @@ typedef enum SymbodyStatus {
    * A bug inside the library was caught at the boundary; the message has the panic's.
    */
   SYMBODY_STATUS_PANIC = 6,
+  /**
+   * No mechanism file can be read at the path: nothing is there, it is a folder, or it
+   * cannot be opened; the message names the path.
+   */
+  SYMBODY_STATUS_FILE_NOT_FOUND = 7,
+  /**
+   * The mechanism file was read but is no mechanism: not UTF-8 text, too large, a TOML
+   * error or a modelling error; the message names the file and gives the diagnostics with
+   * their line:column.
+   */
+  SYMBODY_STATUS_INVALID_FILE = 8,
 } SymbodyStatus;
 
 /**
@@ -108,8 +119,9 @@ typedef struct SymbodyMechanism SymbodyMechanism;
 
 /**
  * A running simulation of one mechanism (opaque): HHT-α from a consistent start at t = 0.
- * Made by `symbody_session_new`, released by `symbody_session_free`. A handle may be
- * moved between threads but used by one at a time; distinct handles are independent.
+ * Made by `symbody_session_new` (or `_new_ex`, `_from_file`), released by
+ * `symbody_session_free`. A handle may be moved between threads but used by one at a time;
+ * distinct handles are independent.
  */
 typedef struct SymbodySession SymbodySession;
 
@@ -133,15 +145,51 @@ const char *symbody_mechanism_name(size_t i);
  * stores a new handle in `*out` (NULL on failure). Release it with
  * `symbody_mechanism_free`.
  *
+ * `name` may also be the path of a mechanism file (one ending in `.toml` or with a folder,
+ * e.g. `"robots/arm.toml"`): the file is read and its equations run interpreted, nothing
+ * compiled (see `symbody_mechanism_from_file`). A registered mechanism whose file changed
+ * since its code was generated runs interpreted from the changed file, never as the stale
+ * code; `symbody_mechanism_source` tells which.
+ *
  * Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the registered names),
  * `SYMBODY_STATUS_INVALID_ARGUMENT` for a bad formulation code or one the mechanism was
- * not generated in.
+ * not generated in, and for a file those of `symbody_mechanism_from_file`.
  *
  * # Safety
  * `name` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
  * for one pointer.
  */
 int symbody_mechanism_new(const char *name, int formulation, struct SymbodyMechanism **out);
+
+/**
+ * Reads the mechanism file at `path` (always a path, whatever its name: `"arm"` is the
+ * file `arm` in the working directory, not a registered mechanism), derives its equations
+ * and stores a handle to them, interpreted in `formulation`, in `*out` (NULL on failure).
+ * Nothing is compiled; the numbers are those the generated code of the same file computes,
+ * to rounding. Each distinct file text is derived once per process and kept until it ends.
+ * Release the handle with `symbody_mechanism_free`.
+ *
+ * Errors: `SYMBODY_STATUS_FILE_NOT_FOUND` (nothing readable at `path`: missing, a folder,
+ * no permission), `SYMBODY_STATUS_INVALID_FILE` (not UTF-8 text, too large, a TOML or
+ * modelling error: the message names the file and gives each diagnostic's line:column),
+ * `SYMBODY_STATUS_INVALID_ARGUMENT` (a bad formulation code, one the file does not list, or
+ * a `path` that is not UTF-8).
+ *
+ * # Safety
+ * `path` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
+ * for one pointer.
+ */
+int symbody_mechanism_from_file(const char *path, int formulation, struct SymbodyMechanism **out);
+
+/**
+ * The file the handle's equations are interpreted from (as given, NUL-terminated, valid
+ * until `m` is freed), or NULL when they are compiled code, or if `m` is NULL (then with an
+ * error message).
+ *
+ * # Safety
+ * `m` is NULL or a live handle.
+ */
+const char *symbody_mechanism_source(const struct SymbodyMechanism *m);
 
 /**
  * Releases a mechanism handle; NULL is ignored.
@@ -407,9 +455,14 @@ int symbody_mechanism_force_jacobian(const struct SymbodyMechanism *m,
  * pose and velocities, and stores it in `*out` (NULL on failure). Release it with
  * `symbody_session_free`. The same as `symbody_session_new_ex` with no flags.
  *
+ * `name` may also be the path of a mechanism file (ending in `.toml` or with a folder): it
+ * runs interpreted, as with `symbody_mechanism_new`; `symbody_session_from_file` takes any
+ * path.
+ *
  * Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the registered names),
  * `SYMBODY_STATUS_INVALID_ARGUMENT` (formulation, alpha, step), `SYMBODY_STATUS_SOLVER`
- * (no consistent start).
+ * (no consistent start), and for a file `SYMBODY_STATUS_FILE_NOT_FOUND` and
+ * `SYMBODY_STATUS_INVALID_FILE` (see `symbody_mechanism_from_file`).
  *
  * # Safety
  * `name` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
@@ -435,6 +488,24 @@ int symbody_session_new_ex(const char *name,
                            double step,
                            uint32_t flags,
                            struct SymbodySession **out);
+
+/**
+ * As `symbody_session_new_ex` for the mechanism file at `path`, always a path whatever its
+ * name (see `symbody_mechanism_from_file`): its equations run interpreted, nothing compiled.
+ *
+ * Errors: those of `symbody_session_new_ex`, with `SYMBODY_STATUS_FILE_NOT_FOUND` and
+ * `SYMBODY_STATUS_INVALID_FILE` for the file.
+ *
+ * # Safety
+ * `path` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
+ * for one pointer.
+ */
+int symbody_session_from_file(const char *path,
+                              int formulation,
+                              double alpha,
+                              double step,
+                              uint32_t flags,
+                              struct SymbodySession **out);
 
 /**
  * Releases a session; NULL is ignored.

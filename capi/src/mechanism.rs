@@ -5,10 +5,12 @@
 use crate::status::{arg, arg_mut, guard, guard_value, input, output, string, Failure};
 use crate::status::{SymbodyFormulation, SymbodyStatus};
 use std::ffi::{c_char, c_int, CString};
+use std::path::Path;
 use std::sync::OnceLock;
+use symbody::files;
 use symbody::session::Dyn;
 use symbody_mechanisms::REGISTRY;
-use symbody_runtime::{Formulation, JointKind, MechanismInfo};
+use symbody_runtime::{Entry, Formulation, JointKind, MechanismInfo, Origin};
 
 /// One generated mechanism in one formulation (opaque). Made by `symbody_mechanism_new` or
 /// `symbody_session_mechanism`, released by `symbody_mechanism_free`. It holds no state:
@@ -17,10 +19,12 @@ pub struct SymbodyMechanism {
     pub(crate) mech: Dyn,
     /// NUL-terminated driver names, in `symbody_session_driver_efforts` order.
     driver_names: Vec<CString>,
+    /// The file the equations are interpreted from; `None` for compiled code.
+    source: Option<CString>,
 }
 
 impl SymbodyMechanism {
-    pub(crate) fn new(mech: Dyn) -> SymbodyMechanism {
+    pub(crate) fn new(mech: Dyn, source: Option<CString>) -> SymbodyMechanism {
         let driver_names = mech
             .info()
             .joints
@@ -28,7 +32,11 @@ impl SymbodyMechanism {
             .filter(|j| j.kind == JointKind::Driver)
             .map(|j| CString::new(j.name).expect("generated names have no NUL"))
             .collect();
-        SymbodyMechanism { mech, driver_names }
+        SymbodyMechanism {
+            mech,
+            driver_names,
+            source,
+        }
     }
 
     fn info(&self) -> &'static MechanismInfo {
@@ -49,19 +57,78 @@ pub(crate) fn formulation(f: c_int) -> Result<Option<Formulation>, Failure> {
     }
 }
 
-/// The registered mechanism `name` in formulation code `f`.
-pub(crate) fn lookup(name: &str, f: c_int) -> Result<Dyn, Failure> {
+/// The mechanism file at `path`, interpreted, with the file statuses: `FileNotFound` when
+/// nothing readable is there (missing, a folder, no permission), `InvalidFile` when its
+/// contents are no mechanism.
+pub(crate) fn load_file(path: &str) -> Result<&'static Entry, Failure> {
+    let p = Path::new(path);
+    if path.is_empty() {
+        return Err(Failure::new(
+            SymbodyStatus::FileNotFound,
+            "mechanism file ``: the path is empty",
+        ));
+    }
+    files::load(p).map(|l| l.entry).map_err(|e| {
+        // The library's messages name the path and say which case it is; the status only
+        // sorts them (the metadata read again, after the failure).
+        let unreadable = std::fs::metadata(p).map_or(true, |m| m.is_dir());
+        let status = if unreadable {
+            SymbodyStatus::FileNotFound
+        } else {
+            SymbodyStatus::InvalidFile
+        };
+        Failure::new(status, e.to_string())
+    })
+}
+
+/// The entry `name` names: a file when it ends in `.toml` or has a folder
+/// (`symbody::files::is_path`), else a registered mechanism (interpreted from its file when
+/// that changed after its code was generated).
+pub(crate) fn find(name: &str) -> Result<&'static Entry, Failure> {
+    if files::is_path(name) {
+        return load_file(name);
+    }
+    // A registered name fails only when its changed file no longer loads.
+    let status = if REGISTRY.find(name).is_some() {
+        SymbodyStatus::InvalidFile
+    } else {
+        SymbodyStatus::UnknownName
+    };
+    symbody::generic::find(&REGISTRY, name).map_err(|e| Failure::from_session(e, status))
+}
+
+/// `entry`'s mechanism in formulation code `f`.
+pub(crate) fn pick(entry: &'static Entry, f: c_int) -> Result<Dyn, Failure> {
     let f = formulation(f)?;
-    let entry = symbody::generic::find(&REGISTRY, name)
-        .map_err(|e| Failure::from_session(e, SymbodyStatus::UnknownName))?;
-    match f {
-        None => Ok(entry.default_mechanism()),
-        Some(f) => entry.mechanism(f).ok_or_else(|| {
-            Failure::new(
-                SymbodyStatus::InvalidArgument,
-                format!("`{name}` was not generated in the {} formulation", f.name()),
-            )
-        }),
+    symbody::generic::mechanism(entry, f)
+        .map_err(|e| Failure::from_session(e, SymbodyStatus::InvalidArgument))
+}
+
+/// An entry and its mechanism in one formulation, or why not.
+pub(crate) type Found = Result<(&'static Entry, Dyn), Failure>;
+
+/// What `name` names (see [`find`]) in formulation code `f`.
+pub(crate) fn lookup(name: &str, f: c_int) -> Found {
+    // The formulation code is checked before anything is read.
+    formulation(f)?;
+    let entry = find(name)?;
+    Ok((entry, pick(entry, f)?))
+}
+
+/// The mechanism file at `path` (whatever its name) in formulation code `f`.
+pub(crate) fn lookup_file(path: &str, f: c_int) -> Found {
+    formulation(f)?;
+    let entry = load_file(path)?;
+    Ok((entry, pick(entry, f)?))
+}
+
+/// The file `entry`'s equations are interpreted from, NUL-terminated; `None` for compiled
+/// code.
+pub(crate) fn source(entry: &Entry) -> Option<CString> {
+    match entry.origin {
+        Origin::Compiled { .. } => None,
+        // A path has no NUL (it came through a C string or the file system).
+        Origin::Interpreted { file, .. } => CString::new(file).ok(),
     }
 }
 
@@ -99,9 +166,15 @@ pub extern "C" fn symbody_mechanism_name(i: usize) -> *const c_char {
 /// stores a new handle in `*out` (NULL on failure). Release it with
 /// `symbody_mechanism_free`.
 ///
+/// `name` may also be the path of a mechanism file (one ending in `.toml` or with a folder,
+/// e.g. `"robots/arm.toml"`): the file is read and its equations run interpreted, nothing
+/// compiled (see `symbody_mechanism_from_file`). A registered mechanism whose file changed
+/// since its code was generated runs interpreted from the changed file, never as the stale
+/// code; `symbody_mechanism_source` tells which.
+///
 /// Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the registered names),
 /// `SYMBODY_STATUS_INVALID_ARGUMENT` for a bad formulation code or one the mechanism was
-/// not generated in.
+/// not generated in, and for a file those of `symbody_mechanism_from_file`.
 ///
 /// # Safety
 /// `name` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
@@ -112,15 +185,71 @@ pub unsafe extern "C" fn symbody_mechanism_new(
     formulation: c_int,
     out: *mut *mut SymbodyMechanism,
 ) -> c_int {
+    // SAFETY: the same contract.
+    unsafe { new_handle(name, "name", formulation, out, lookup) }
+}
+
+/// Reads the mechanism file at `path` (always a path, whatever its name: `"arm"` is the
+/// file `arm` in the working directory, not a registered mechanism), derives its equations
+/// and stores a handle to them, interpreted in `formulation`, in `*out` (NULL on failure).
+/// Nothing is compiled; the numbers are those the generated code of the same file computes,
+/// to rounding. Each distinct file text is derived once per process and kept until it ends.
+/// Release the handle with `symbody_mechanism_free`.
+///
+/// Errors: `SYMBODY_STATUS_FILE_NOT_FOUND` (nothing readable at `path`: missing, a folder,
+/// no permission), `SYMBODY_STATUS_INVALID_FILE` (not UTF-8 text, too large, a TOML or
+/// modelling error: the message names the file and gives each diagnostic's line:column),
+/// `SYMBODY_STATUS_INVALID_ARGUMENT` (a bad formulation code, one the file does not list, or
+/// a `path` that is not UTF-8).
+///
+/// # Safety
+/// `path` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
+/// for one pointer.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_from_file(
+    path: *const c_char,
+    formulation: c_int,
+    out: *mut *mut SymbodyMechanism,
+) -> c_int {
+    // SAFETY: the same contract.
+    unsafe { new_handle(path, "path", formulation, out, lookup_file) }
+}
+
+/// Stores in `*out` a handle to what `what` names, resolved by `find`.
+///
+/// # Safety
+/// As for `symbody_mechanism_new`.
+unsafe fn new_handle(
+    what: *const c_char,
+    arg_name: &str,
+    formulation: c_int,
+    out: *mut *mut SymbodyMechanism,
+    find: fn(&str, c_int) -> Found,
+) -> c_int {
     guard(|| {
         // SAFETY: the caller's contract above.
         let out = unsafe { arg_mut(out, "out")? };
         *out = std::ptr::null_mut();
         // SAFETY: the caller's contract above.
-        let name = unsafe { string(name, "name")? };
-        let mech = lookup(name, formulation)?;
-        *out = Box::into_raw(Box::new(SymbodyMechanism::new(mech)));
+        let what = unsafe { string(what, arg_name)? };
+        let (entry, mech) = find(what, formulation)?;
+        *out = Box::into_raw(Box::new(SymbodyMechanism::new(mech, source(entry))));
         Ok(())
+    })
+}
+
+/// The file the handle's equations are interpreted from (as given, NUL-terminated, valid
+/// until `m` is freed), or NULL when they are compiled code, or if `m` is NULL (then with an
+/// error message).
+///
+/// # Safety
+/// `m` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_source(m: *const SymbodyMechanism) -> *const c_char {
+    guard_value(std::ptr::null(), || {
+        // SAFETY: the caller's contract.
+        let m = unsafe { arg(m, "mechanism")? };
+        Ok(m.source.as_ref().map_or(std::ptr::null(), |s| s.as_ptr()))
     })
 }
 

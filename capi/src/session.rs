@@ -1,16 +1,19 @@
 //! A running simulation for C: `symbody::session::Session` behind an opaque handle (make,
 //! step or advance, read the state, the multipliers, driver efforts and joint wrenches).
 
-use crate::mechanism::{lookup, SymbodyMechanism};
+use crate::mechanism::{lookup, lookup_file, source, Found, SymbodyMechanism};
 use crate::status::{arg, arg_mut, guard, guard_value, output, string, Failure, SymbodyStatus};
-use std::ffi::{c_char, c_int};
+use std::ffi::{c_char, c_int, CString};
 use symbody::session::{Session, Settings};
 
 /// A running simulation of one mechanism (opaque): HHT-α from a consistent start at t = 0.
-/// Made by `symbody_session_new`, released by `symbody_session_free`. A handle may be
-/// moved between threads but used by one at a time; distinct handles are independent.
+/// Made by `symbody_session_new` (or `_new_ex`, `_from_file`), released by
+/// `symbody_session_free`. A handle may be moved between threads but used by one at a time;
+/// distinct handles are independent.
 pub struct SymbodySession {
     session: Session,
+    /// The file the equations are interpreted from; `None` for compiled code.
+    source: Option<CString>,
 }
 
 /// Builds a session of the registered mechanism `name` in `formulation` (a
@@ -19,9 +22,14 @@ pub struct SymbodySession {
 /// pose and velocities, and stores it in `*out` (NULL on failure). Release it with
 /// `symbody_session_free`. The same as `symbody_session_new_ex` with no flags.
 ///
+/// `name` may also be the path of a mechanism file (ending in `.toml` or with a folder): it
+/// runs interpreted, as with `symbody_mechanism_new`; `symbody_session_from_file` takes any
+/// path.
+///
 /// Errors: `SYMBODY_STATUS_UNKNOWN_NAME` (the message lists the registered names),
 /// `SYMBODY_STATUS_INVALID_ARGUMENT` (formulation, alpha, step), `SYMBODY_STATUS_SOLVER`
-/// (no consistent start).
+/// (no consistent start), and for a file `SYMBODY_STATUS_FILE_NOT_FOUND` and
+/// `SYMBODY_STATUS_INVALID_FILE` (see `symbody_mechanism_from_file`).
 ///
 /// # Safety
 /// `name` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
@@ -61,12 +69,64 @@ pub unsafe extern "C" fn symbody_session_new_ex(
     flags: u32,
     out: *mut *mut SymbodySession,
 ) -> c_int {
+    // SAFETY: the same contract.
+    unsafe { new_session(name, "name", formulation, alpha, step, flags, out, lookup) }
+}
+
+/// As `symbody_session_new_ex` for the mechanism file at `path`, always a path whatever its
+/// name (see `symbody_mechanism_from_file`): its equations run interpreted, nothing compiled.
+///
+/// Errors: those of `symbody_session_new_ex`, with `SYMBODY_STATUS_FILE_NOT_FOUND` and
+/// `SYMBODY_STATUS_INVALID_FILE` for the file.
+///
+/// # Safety
+/// `path` is NULL or a NUL-terminated string; `out` is NULL or points to writable storage
+/// for one pointer.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_session_from_file(
+    path: *const c_char,
+    formulation: c_int,
+    alpha: f64,
+    step: f64,
+    flags: u32,
+    out: *mut *mut SymbodySession,
+) -> c_int {
+    // SAFETY: the same contract.
+    unsafe {
+        new_session(
+            path,
+            "path",
+            formulation,
+            alpha,
+            step,
+            flags,
+            out,
+            lookup_file,
+        )
+    }
+}
+
+/// Builds a session of what `what` names, resolved by `find`.
+///
+/// # Safety
+/// As for `symbody_session_new`.
+#[allow(clippy::too_many_arguments)]
+unsafe fn new_session(
+    what: *const c_char,
+    arg_name: &str,
+    formulation: c_int,
+    alpha: f64,
+    step: f64,
+    flags: u32,
+    out: *mut *mut SymbodySession,
+    find: fn(&str, c_int) -> Found,
+) -> c_int {
     guard(|| {
         // SAFETY: the caller's contract above.
         let out = unsafe { arg_mut(out, "out")? };
         *out = std::ptr::null_mut();
         // SAFETY: the caller's contract above.
-        let name = unsafe { string(name, "name")? };
+        let what = unsafe { string(what, arg_name)? };
         let known = SYMBODY_CROSS_SINGULAR_POSITIONS | SYMBODY_PROJECT_VELOCITIES;
         if flags & !known != 0 {
             return Err(Failure::new(
@@ -74,8 +134,8 @@ pub unsafe extern "C" fn symbody_session_new_ex(
                 format!("flags: unknown bits {:#x}; the flags are SYMBODY_CROSS_SINGULAR_POSITIONS (1) and SYMBODY_PROJECT_VELOCITIES (2)", flags & !known),
             ));
         }
-        // Resolves the name and formulation with this API's statuses first.
-        let mech = lookup(name, formulation)?;
+        // Resolves the name or file and the formulation with this API's statuses.
+        let (entry, mech) = find(what, formulation)?;
         let settings = Settings {
             formulation: Some(mech.info().formulation),
             alpha,
@@ -83,9 +143,12 @@ pub unsafe extern "C" fn symbody_session_new_ex(
             cross_singular_positions: flags & SYMBODY_CROSS_SINGULAR_POSITIONS != 0,
             project_velocities: flags & SYMBODY_PROJECT_VELOCITIES != 0,
         };
-        let session = Session::new(&symbody_mechanisms::REGISTRY, name, settings)
+        let session = Session::with_mechanism(mech, settings)
             .map_err(|e| Failure::from_session(e, SymbodyStatus::InvalidArgument))?;
-        *out = Box::into_raw(Box::new(SymbodySession { session }));
+        *out = Box::into_raw(Box::new(SymbodySession {
+            session,
+            source: source(entry),
+        }));
         Ok(())
     })
 }
@@ -123,7 +186,10 @@ pub unsafe extern "C" fn symbody_session_mechanism(
         *out = std::ptr::null_mut();
         // SAFETY: the caller's contract above.
         let s = unsafe { arg(s, "session")? };
-        *out = Box::into_raw(Box::new(SymbodyMechanism::new(s.session.mechanism())));
+        *out = Box::into_raw(Box::new(SymbodyMechanism::new(
+            s.session.mechanism(),
+            s.source.clone(),
+        )));
         Ok(())
     })
 }

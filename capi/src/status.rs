@@ -30,6 +30,13 @@ pub enum SymbodyStatus {
     Solver = 5,
     /// A bug inside the library was caught at the boundary; the message has the panic's.
     Panic = 6,
+    /// No mechanism file can be read at the path: nothing is there, it is a folder, or it
+    /// cannot be opened; the message names the path.
+    FileNotFound = 7,
+    /// The mechanism file was read but is no mechanism: not UTF-8 text, too large, a TOML
+    /// error or a modelling error; the message names the file and gives the diagnostics with
+    /// their line:column.
+    InvalidFile = 8,
 }
 
 /// Which dynamics formulation a mechanism or session uses (the `formulation` arguments

@@ -739,3 +739,251 @@ fn a_session_with_the_flag_crosses_singular_positions() {
         last_error()
     );
 }
+
+/// A fresh folder under the system's temporary one, for this test alone.
+fn temp_folder(test: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("symbody-capi-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn shipped(file: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../mechanisms")
+        .join(file)
+}
+
+fn from_file(path: &str, formulation: c_int) -> Result<*mut SymbodyMechanism, (c_int, String)> {
+    let mut m = null_mut();
+    let path = cstr(path);
+    // SAFETY: valid string and out pointer.
+    match unsafe { symbody_mechanism_from_file(path.as_ptr(), formulation, &mut m) } {
+        OK => Ok(m),
+        rc => {
+            assert!(m.is_null(), "a failed call leaves *out NULL");
+            Err((rc, last_error()))
+        }
+    }
+}
+
+/// The largest difference of `c` from `r`, relative to the larger of each entry and the
+/// largest entry of `r` (so entries that vanish are compared at the vector's scale).
+fn relative(c: &[f64], r: &[f64]) -> f64 {
+    assert_eq!(c.len(), r.len());
+    let scale = r.iter().fold(f64::MIN_POSITIVE, |m, x| m.max(x.abs()));
+    c.iter()
+        .zip(r)
+        .map(|(a, b)| (a - b).abs() / scale.max(b.abs()))
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn a_mechanism_file_runs_interpreted_with_the_compiled_numbers() {
+    let dir = temp_folder("file");
+    // Renamed and without `.toml`: `_from_file` takes any path.
+    let path = dir.join("my_crank");
+    std::fs::copy(shipped("slider_crank.toml"), &path).unwrap();
+    let path = path.to_str().unwrap().to_string();
+    let compiled = mechanism("slider_crank", 0).unwrap();
+    let m = from_file(&path, 0).unwrap_or_else(|(rc, msg)| panic!("{rc}: {msg}"));
+    let rust = symbody_mechanisms::find("slider_crank")
+        .unwrap()
+        .default_mechanism();
+    let info = rust.info();
+    let mut worst = 0.0f64;
+    // SAFETY: live handles; every buffer has the length passed with it.
+    unsafe {
+        assert!(symbody_mechanism_source(compiled).is_null());
+        let source = CStr::from_ptr(symbody_mechanism_source(m))
+            .to_str()
+            .unwrap();
+        assert_eq!(source, path);
+        assert_eq!(
+            symbody_mechanism_formulation(m),
+            symbody_mechanism_formulation(compiled)
+        );
+        let (n, nc) = (
+            symbody_mechanism_n_coords(m),
+            symbody_mechanism_n_constraints(m),
+        );
+        assert_eq!((n, nc), (info.n_coords, info.n_constraints));
+        let (nnz, mnz) = (
+            symbody_mechanism_phi_q_nnz(m),
+            symbody_mechanism_mass_nnz(m),
+        );
+        assert_eq!((nnz, mnz), (info.phi_q_nnz(), info.mass_nnz()));
+        let (mut rows, mut cols) = (vec![0u32; nnz], vec![0u32; nnz]);
+        let rc = symbody_mechanism_phi_q_pattern(m, rows.as_mut_ptr(), cols.as_mut_ptr(), nnz);
+        assert_eq!(rc, OK);
+        assert_eq!((&rows[..], &cols[..]), (info.phi_q_rows, info.phi_q_cols));
+        let (mut rows, mut cols) = (vec![0u32; mnz], vec![0u32; mnz]);
+        let rc = symbody_mechanism_mass_pattern(m, rows.as_mut_ptr(), cols.as_mut_ptr(), mnz);
+        assert_eq!(rc, OK);
+        assert_eq!((&rows[..], &cols[..]), (info.mass_rows, info.mass_cols));
+
+        let mut q0 = vec![0.0; n];
+        assert_eq!(symbody_mechanism_q0(m, q0.as_mut_ptr(), n), OK);
+        assert!(relative(&q0, info.q0) <= 1e-13);
+        for k in 0..4 {
+            // The initial pose and states off it, so nothing is trivially zero.
+            let s = k as f64;
+            let q: Vec<f64> = (0..n)
+                .map(|i| info.q0[i] + 0.05 * s * (i as f64 + s).sin())
+                .collect();
+            let qd: Vec<f64> = (0..n).map(|i| 0.3 * s * (i as f64 - s).cos()).collect();
+            let t = 0.1 * s;
+            let both = |f: &dyn Fn(*const SymbodyMechanism, &mut [f64]) -> c_int, len: usize| {
+                let (mut c, mut r) = (vec![f64::NAN; len], vec![f64::NAN; len]);
+                assert_eq!(f(m, &mut c), OK, "{}", last_error());
+                assert_eq!(f(compiled, &mut r), OK, "{}", last_error());
+                relative(&c, &r)
+            };
+            worst = worst.max(both(
+                &|h, o| symbody_mechanism_phi(h, q.as_ptr(), n, t, o.as_mut_ptr(), o.len()),
+                nc,
+            ));
+            worst = worst.max(both(
+                &|h, o| symbody_mechanism_phi_q(h, q.as_ptr(), n, t, o.as_mut_ptr(), o.len()),
+                nnz,
+            ));
+            worst = worst.max(both(
+                &|h, o| {
+                    let len = o.len();
+                    symbody_mechanism_gamma(
+                        h,
+                        q.as_ptr(),
+                        n,
+                        qd.as_ptr(),
+                        n,
+                        t,
+                        o.as_mut_ptr(),
+                        len,
+                    )
+                },
+                nc,
+            ));
+            worst = worst.max(both(
+                &|h, o| symbody_mechanism_mass(h, q.as_ptr(), n, o.as_mut_ptr(), o.len()),
+                mnz,
+            ));
+            worst = worst.max(both(
+                &|h, o| {
+                    let len = o.len();
+                    symbody_mechanism_force(
+                        h,
+                        q.as_ptr(),
+                        n,
+                        qd.as_ptr(),
+                        n,
+                        t,
+                        o.as_mut_ptr(),
+                        len,
+                    )
+                },
+                n,
+            ));
+        }
+        symbody_mechanism_free(m);
+        symbody_mechanism_free(compiled);
+    }
+    eprintln!("slider_crank from a file vs compiled: largest relative difference {worst:.2e}");
+    assert!(worst <= 1e-13, "{worst:e}");
+
+    // `_from_file` never looks a name up in the registry: `slider_crank` is a file here.
+    let (rc, msg) = from_file("slider_crank", 0).unwrap_err();
+    assert_eq!(rc, status(SymbodyStatus::FileNotFound), "{msg}");
+    assert!(msg.contains("slider_crank"), "{msg}");
+    // A formulation the file does not list (it has `exact` only), and no formulation.
+    let (rc, msg) = from_file(&path, 1).unwrap_err();
+    assert_eq!(rc, status(SymbodyStatus::InvalidArgument), "{msg}");
+    assert!(msg.contains("paper"), "{msg}");
+    let (rc, msg) = from_file(&path, 7).unwrap_err();
+    assert_eq!(rc, status(SymbodyStatus::InvalidArgument), "{msg}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_session_runs_from_a_file() {
+    let dir = temp_folder("session");
+    let path = dir.join("crank_copy.toml");
+    std::fs::copy(shipped("slider_crank.toml"), &path).unwrap();
+    let path = cstr(path.to_str().unwrap());
+    let d = Settings::default();
+    let name = cstr("slider_crank");
+    let (mut compiled, mut by_name, mut by_file) = (null_mut(), null_mut(), null_mut());
+    // SAFETY: valid strings, out pointers and handles; buffers of the lengths passed.
+    unsafe {
+        let rc = symbody_session_new(name.as_ptr(), 0, d.alpha, d.step, &mut compiled);
+        assert_eq!(rc, OK, "{}", last_error());
+        // A `.toml` path given where a name goes is a file too.
+        let rc = symbody_session_new(path.as_ptr(), 0, d.alpha, d.step, &mut by_name);
+        assert_eq!(rc, OK, "{}", last_error());
+        let rc = symbody_session_from_file(path.as_ptr(), 0, d.alpha, d.step, 0, &mut by_file);
+        assert_eq!(rc, OK, "{}", last_error());
+        let mut m = null_mut();
+        assert_eq!(symbody_session_mechanism(by_file, &mut m), OK);
+        let source = CStr::from_ptr(symbody_mechanism_source(m));
+        assert_eq!(source, path.as_c_str());
+        let n = symbody_mechanism_n_coords(m);
+        symbody_mechanism_free(m);
+        let mut worst = 0.0f64;
+        let mut r = vec![0.0; n];
+        assert_eq!(symbody_session_advance_to(compiled, 0.2), OK);
+        assert_eq!(symbody_session_q(compiled, r.as_mut_ptr(), n), OK);
+        for s in [by_name, by_file] {
+            let mut c = vec![0.0; n];
+            assert_eq!(symbody_session_advance_to(s, 0.2), OK, "{}", last_error());
+            assert_eq!(symbody_session_t(s), 0.2);
+            assert_eq!(symbody_session_q(s, c.as_mut_ptr(), n), OK);
+            worst = worst.max(relative(&c, &r));
+            symbody_session_free(s);
+        }
+        symbody_session_free(compiled);
+        eprintln!("slider_crank session from a file vs compiled at 0.2 s: q within {worst:.2e}");
+        assert!(worst <= 1e-10, "{worst:e}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn bad_files_are_statuses_with_messages_naming_them() {
+    let dir = temp_folder("bad");
+    let missing = dir.join("missing.toml");
+    let broken = dir.join("broken.toml");
+    std::fs::write(&broken, "name = \"broken\"\n[bodies.arm\nmass = 1.0\n").unwrap();
+    let binary = dir.join("binary.toml");
+    std::fs::write(&binary, b"name = \"x\"\n# caf\xe9\n").unwrap();
+    let cases = [
+        (&missing, SymbodyStatus::FileNotFound, "no such file"),
+        (&dir, SymbodyStatus::FileNotFound, "folder"),
+        (&broken, SymbodyStatus::InvalidFile, ":2:"),
+        (&binary, SymbodyStatus::InvalidFile, "line 2, column 6"),
+    ];
+    for (path, want, says) in cases {
+        let p = path.to_str().unwrap();
+        let (rc, msg) = from_file(p, 0).unwrap_err();
+        assert_eq!(rc, status(want), "{p}: {msg}");
+        assert!(msg.contains(p), "the message names {p}: {msg}");
+        assert!(msg.contains(says), "{p}: `{says}` in {msg}");
+        // The same through a name that is a path, and through the sessions.
+        let (rc2, msg2) = mechanism(p, 0).unwrap_err();
+        assert_eq!((rc2, &msg2), (rc, &msg));
+        let c = cstr(p);
+        let mut s = null_mut();
+        // SAFETY: valid string and out pointer.
+        unsafe {
+            assert_eq!(
+                symbody_session_from_file(c.as_ptr(), 0, -0.05, 1e-3, 0, &mut s),
+                rc
+            );
+            assert_eq!(last_error(), msg);
+            assert_eq!(symbody_session_new(c.as_ptr(), 0, -0.05, 1e-3, &mut s), rc);
+            assert_eq!(last_error(), msg);
+        }
+        assert!(s.is_null());
+    }
+    let (rc, msg) = from_file("", 0).unwrap_err();
+    assert_eq!(rc, status(SymbodyStatus::FileNotFound), "{msg}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -4,7 +4,8 @@
 //! ([`symbody::generic::find`]), a run and its tables ([`symbody::generic::run`],
 //! [`symbody::generic::tables`]), a [`symbody::session::Session`], forward kinematics
 //! ([`symbody::fk`]) and the generated [`symbody_runtime::Mechanism`] functions — so the
-//! three languages print the same numbers. Vectors and matrices cross as NumPy arrays; Rust
+//! three languages print the same numbers. A mechanism is a registered name or a mechanism
+//! file ([`Target`]), the file's equations interpreted ([`symbody::files`]). Vectors and matrices cross as NumPy arrays; Rust
 //! errors become `ValueError` (a bad name, option or argument) or `RuntimeError` (a solver
 //! failure), with the Rust message. `python/symbody/__init__.py` wraps the tables and the
 //! forward-kinematics answers in small Python classes.
@@ -12,9 +13,11 @@
 use nalgebra::{Matrix3, Vector3};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
-use pyo3::exceptions::{PyFileNotFoundError, PyOSError, PyRuntimeError, PyValueError};
+use pyo3::exceptions::{
+    PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyRuntimeError, PyValueError,
+};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList, PyTuple};
+use pyo3::types::{PyDict, PyList, PyString, PyTuple};
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use symbody::generic::{self, Recording};
@@ -25,7 +28,7 @@ use symbody::tables::Table;
 use symbody_mechanisms::REGISTRY;
 use symbody_runtime::fk::Pose;
 use symbody_runtime::{
-    Error as RuntimeError, Formulation, JointKind, MechanismInfo, PathStats, Stats,
+    Entry, Error as RuntimeError, Formulation, JointKind, MechanismInfo, Origin, PathStats, Stats,
 };
 
 /// A Rust error as the Python exception of its kind, with the Rust message in Python's
@@ -92,6 +95,68 @@ fn formulation(name: Option<&str>) -> PyResult<Option<Formulation>> {
             "formulation must be \"paper\" or \"exact\" \
              (or None for the mechanism's first), got {other:?}"
         ))),
+    }
+}
+
+/// What a `name` argument names: a `str` is a registered mechanism's name, or a mechanism
+/// file's path when it ends in `.toml` or has a folder (as on the command line); any other
+/// `os.PathLike` (`pathlib.Path`) is always a file's path.
+enum Target {
+    Name(String),
+    File(PathBuf),
+}
+
+impl<'py> FromPyObject<'_, 'py> for Target {
+    type Error = PyErr;
+
+    fn extract(ob: Borrowed<'_, 'py, PyAny>) -> PyResult<Self> {
+        if ob.is_instance_of::<PyString>() {
+            return ob.extract::<String>().map(Target::Name);
+        }
+        ob.extract::<PathBuf>().map(Target::File).map_err(|_| {
+            pyo3::exceptions::PyTypeError::new_err(format!(
+                "a mechanism is a name (str) or a mechanism file's path (str or os.PathLike), \
+                 not {}",
+                ob.get_type()
+                    .name()
+                    .map_or_else(|_| "this".to_string(), |n| n.to_string())
+            ))
+        })
+    }
+}
+
+/// The mechanism file at `path`, interpreted: `FileNotFoundError` when nothing is there,
+/// `IsADirectoryError` for a folder, `OSError` when it cannot be opened, `ValueError` when it
+/// is no mechanism (not UTF-8, a TOML or modelling error: the diagnostics with line:column);
+/// each message names the file.
+fn load_file(path: &Path) -> PyResult<&'static Entry> {
+    symbody::files::load(path).map(|l| l.entry).map_err(|e| {
+        let message = python_words(&e.to_string());
+        match std::fs::metadata(path) {
+            Err(io) if io.kind() == std::io::ErrorKind::NotFound => {
+                PyFileNotFoundError::new_err(message)
+            }
+            Err(_) => PyOSError::new_err(message),
+            Ok(m) if m.is_dir() => PyIsADirectoryError::new_err(message),
+            Ok(_) => PyValueError::new_err(message),
+        }
+    })
+}
+
+/// The registry entry `target` names, or its file interpreted.
+fn find(target: &Target) -> PyResult<&'static Entry> {
+    match target {
+        Target::Name(name) if symbody::files::is_path(name) => load_file(Path::new(name)),
+        Target::Name(name) => generic::find(&REGISTRY, name).map_err(py_err),
+        Target::File(path) => load_file(path),
+    }
+}
+
+/// The file `origin`'s equations are interpreted from; `None` for compiled code.
+fn source(origin: Origin) -> Option<&'static str> {
+    match origin {
+        Origin::Compiled { .. } => None,
+        Origin::Interpreted { file, .. } => Some(file),
     }
 }
 
@@ -279,7 +344,7 @@ fn recording_answer<'py>(
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
-    name: &str,
+    name: Target,
     t_end: Option<f64>,
     step: f64,
     alpha: f64,
@@ -288,7 +353,7 @@ fn simulate<'py>(
     cross_singular_positions: bool,
     out: Option<PathBuf>,
 ) -> PyResult<Answer<'py>> {
-    let entry = generic::find(&REGISTRY, name).map_err(py_err)?;
+    let entry = find(&name)?;
     let opts = generic::Options {
         formulation: self::formulation(formulation)?,
         t_end,
@@ -299,7 +364,10 @@ fn simulate<'py>(
     };
     out_folder(out.as_deref())?;
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;
-    recording_answer(py, &rec, "integrated", out.as_deref())
+    let answer = recording_answer(py, &rec, "integrated", out.as_deref())?;
+    answer.1.set_item("source", source(entry.origin))?;
+    answer.1.set_item("note", symbody::files::note(entry))?;
+    Ok(answer)
 }
 
 /// `symbody run <scene>`: the scene file read, checked and run on the path it chooses; the
@@ -398,13 +466,13 @@ fn start_pose(x: &Bound<'_, PyAny>) -> PyResult<Pose> {
 #[pyo3(signature = (name, lengths, start, at, all))]
 fn fk<'py>(
     py: Python<'py>,
-    name: &str,
+    name: Target,
     lengths: Option<Bound<'py, PyAny>>,
     start: Option<Bound<'py, PyAny>>,
     at: f64,
     all: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let entry = generic::find(&REGISTRY, name).map_err(py_err)?;
+    let entry = find(&name)?;
     let p = symbody::fk::platform(entry).map_err(py_err)?;
     let req = symbody::fk::Request {
         lengths: match lengths {
@@ -479,6 +547,7 @@ fn driver_names(info: &MechanismInfo) -> Vec<&'static str> {
 #[pyclass(module = "symbody._native", subclass)]
 struct Session {
     inner: session::Session,
+    origin: Origin,
 }
 
 #[pymethods]
@@ -487,23 +556,37 @@ impl Session {
     // No defaults here: `symbody.Session` gives `simulate`'s (`defaults()`).
     #[pyo3(signature = (name, formulation, alpha, step, project_velocities, cross_singular_positions))]
     fn new(
-        name: &str,
+        name: Target,
         formulation: Option<&str>,
         alpha: f64,
         step: f64,
         project_velocities: bool,
         cross_singular_positions: bool,
     ) -> PyResult<Self> {
+        let entry = find(&name)?;
+        let mech = generic::mechanism(entry, self::formulation(formulation)?).map_err(py_err)?;
         let settings = session::Settings {
-            formulation: self::formulation(formulation)?,
+            formulation: Some(mech.info().formulation),
             alpha,
             step,
             project_velocities,
             cross_singular_positions,
         };
         Ok(Session {
-            inner: session::Session::new(&REGISTRY, name, settings).map_err(py_err)?,
+            inner: session::Session::with_mechanism(mech, settings).map_err(py_err)?,
+            origin: entry.origin,
         })
+    }
+
+    /// Whether the equations are interpreted from a mechanism file rather than compiled.
+    #[getter]
+    fn interpreted(&self) -> bool {
+        source(self.origin).is_some()
+    }
+    /// The mechanism file the equations are interpreted from; `None` for compiled code.
+    #[getter]
+    fn source(&self) -> Option<&'static str> {
+        source(self.origin)
     }
 
     /// The mechanism's name.
@@ -614,6 +697,7 @@ impl Session {
 #[pyclass(module = "symbody._native", frozen, subclass)]
 struct Mechanism {
     mech: Dyn,
+    origin: Origin,
 }
 
 impl Mechanism {
@@ -632,10 +716,24 @@ impl Mechanism {
 impl Mechanism {
     #[new]
     #[pyo3(signature = (name, formulation=None))]
-    fn new(name: &str, formulation: Option<&str>) -> PyResult<Self> {
-        let entry = generic::find(&REGISTRY, name).map_err(py_err)?;
+    fn new(name: Target, formulation: Option<&str>) -> PyResult<Self> {
+        let entry = find(&name)?;
         let mech = generic::mechanism(entry, self::formulation(formulation)?).map_err(py_err)?;
-        Ok(Mechanism { mech })
+        Ok(Mechanism {
+            mech,
+            origin: entry.origin,
+        })
+    }
+
+    /// Whether the equations are interpreted from a mechanism file rather than compiled.
+    #[getter]
+    fn interpreted(&self) -> bool {
+        source(self.origin).is_some()
+    }
+    /// The mechanism file the equations are interpreted from; `None` for compiled code.
+    #[getter]
+    fn source(&self) -> Option<&'static str> {
+        source(self.origin)
     }
 
     /// The mechanism's name.

@@ -68,6 +68,12 @@ impl Session {
                 ))
             })?,
         };
+        Session::with_mechanism(mech, s)
+    }
+
+    /// A consistent start of `mech` (e.g. of an entry from [`crate::files::load`]);
+    /// `s.formulation` is not consulted: `mech` is already one formulation.
+    pub fn with_mechanism(mech: Dyn, s: Settings) -> Result<Session, Error> {
         let info = mech.info();
         let solves = crate::generic::solve_settings(s.cross_singular_positions);
         let it = HhtBuilder::new()

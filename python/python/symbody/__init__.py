@@ -7,9 +7,12 @@ code as the ``symbody`` command line and the C library.
 >>> run["drivers"].columns, run["drivers"].data.shape, run.summary["steps"]
 >>> scene = symbody.run("scenes/slider_crank.toml", out="out")   # a scene, CSVs written
 >>> s = symbody.Session("stewart_6_6"); s.advance_to(1.0); s.driver_effort("act1")
+>>> m = symbody.Mechanism("robots/arm.toml")  # any mechanism file, interpreted at once
+>>> m.interpreted, m.source                     # (True, "robots/arm.toml")
 
 Errors from Rust arrive as ``ValueError`` (an unknown name, a bad option or argument) or
-``RuntimeError`` (a solver failure), with the Rust message.
+``RuntimeError`` (a solver failure), with the Rust message; a mechanism file that is not
+there as ``FileNotFoundError`` (``IsADirectoryError`` for a folder).
 """
 
 from ._core import (

@@ -18,6 +18,14 @@ if TYPE_CHECKING:
 #: A file or folder: a ``str`` or any ``os.PathLike`` such as ``pathlib.Path``.
 PathLike = Union[str, "os.PathLike[str]"]
 
+#: A mechanism: a registered name (``"slider_crank"``) or a mechanism file's path. A ``str``
+#: is a path when it ends in ``.toml`` or has a folder (``"robots/arm.toml"``), as on the
+#: command line; a ``pathlib.Path`` (any other ``os.PathLike``) is always a path. A file's
+#: equations run interpreted, nothing generated or compiled: a missing file is
+#: ``FileNotFoundError``, a folder ``IsADirectoryError``, a file that is no mechanism (TOML
+#: or modelling mistakes, not UTF-8) a ``ValueError`` naming the file, line and column.
+MechanismLike = Union[str, "os.PathLike[str]"]
+
 # `symbody simulate <name>`'s defaults, stated once in Rust (`generic::Options::default`):
 # `simulate` and `Session` both take them from there.
 _DEFAULTS = _native.defaults()
@@ -81,6 +89,9 @@ class Results(Dict[str, Table]):
     ``dropped`` (outputs at which dependent rows were dropped). The paper scenario's tables
     (a scene with ``files = "paper"``) record neither: those three are ``None``.
 
+    For :func:`simulate` also ``source`` (the mechanism file the equations were interpreted
+    from, ``None`` for compiled code) and ``note``.
+
     ``files`` lists the CSV files written (empty without ``out``).
     """
 
@@ -108,7 +119,7 @@ def mechanisms() -> List[str]:
 
 
 def simulate(
-    name: str,
+    name: MechanismLike,
     t_end: Optional[float] = None,
     step: float = _DEFAULTS["step"],
     alpha: float = _DEFAULTS["alpha"],
@@ -117,7 +128,9 @@ def simulate(
     cross_singular_positions: bool = False,
     out: Optional[PathLike] = None,
 ) -> Results:
-    """Simulates the registered mechanism ``name`` as ``symbody simulate <name>`` does.
+    """Simulates the mechanism ``name`` as ``symbody simulate <name>`` does: a registered
+    name, or a mechanism file's path (a ``str`` ending in ``.toml`` or with a folder, or a
+    ``pathlib.Path``), whose equations then run interpreted (see :data:`MechanismLike`).
 
     ``t_end`` defaults to the mechanism file's; ``step`` is the HHT step (s), ``alpha`` HHT's
     α in [-1/3, 0] (velocities are projected onto the constraints after each step; the
@@ -130,7 +143,9 @@ def simulate(
     needed), as ``--out`` does.
 
     Returns :class:`Results`: ``{"bodies", "joints", "drivers", "energy"}`` → :class:`Table`,
-    each with the columns and values of the CSV of that name, and the run's ``summary``.
+    each with the columns and values of the CSV of that name, and the run's ``summary``,
+    whose ``source`` is the file the equations were interpreted from (``None`` when they
+    are compiled code) and ``note`` what the command line prints about that (or ``None``).
     """
     return _results(
         _native.simulate(
@@ -204,13 +219,14 @@ class FkResult:
 
 
 def fk(
-    name: str,
+    name: MechanismLike,
     lengths: Optional[Sequence[float]] = None,
     start: Union[Sequence[float], Tuple[Any, Any], None] = None,
     at: float = 0.0,
     all: bool = False,  # noqa: A002 - the command line's --all
 ) -> FkResult:
-    """Forward kinematics of a six-leg platform, as ``symbody fk <name>``.
+    """Forward kinematics of a six-leg platform, as ``symbody fk <name>``; ``name`` is a
+    registered name or a mechanism file's path (see :data:`MechanismLike`).
 
     Continues the pose from ``start`` along the straight path in leg-length space to
     ``lengths`` (six leg lengths, m; default: what the drivers prescribe at time ``at``), so
@@ -274,8 +290,11 @@ class Coo(tuple):
 
 
 class Mechanism(_native.Mechanism):
-    """The generated functions of the registered mechanism ``name`` (``formulation``
-    ``"paper"`` or ``"exact"``; default: its first), evaluated at any state.
+    """The generated functions of the mechanism ``name`` (``formulation`` ``"paper"`` or
+    ``"exact"``; default: its first), evaluated at any state. ``name`` is a registered name
+    or a mechanism file's path (``Mechanism("robot.toml")``, ``Mechanism(pathlib.Path(...))``;
+    see :data:`MechanismLike`), whose equations are then interpreted, nothing compiled:
+    ``interpreted`` says which, ``source`` is the file (``None`` for compiled code).
 
     Sizes and names: ``n_coords``, ``n_constraints``, ``q0`` (the file's assembled initial
     coordinates), ``qd0``, ``coord_names``, ``row_names``, ``redundant_rows``. Evaluations
@@ -307,8 +326,10 @@ class Mechanism(_native.Mechanism):
 
 
 class Session(_native.Session):
-    """One simulation of the registered mechanism ``name`` to drive step by step: HHT-α from
-    the mechanism's consistent start.
+    """One simulation of the mechanism ``name`` to drive step by step: HHT-α from the
+    mechanism's consistent start. ``name`` is a registered name or a mechanism file's path
+    (see :data:`MechanismLike`); ``interpreted`` and ``source`` say where the equations come
+    from, as for :class:`Mechanism`.
 
     The defaults are :func:`simulate`'s (``alpha``, ``step``, and velocities projected onto
     the constraints after each step), so a session and a run of the same mechanism report
@@ -324,7 +345,7 @@ class Session(_native.Session):
 
     def __new__(
         cls,
-        name: str,
+        name: MechanismLike,
         formulation: Optional[str] = None,
         alpha: float = _DEFAULTS["alpha"],
         step: float = _DEFAULTS["step"],

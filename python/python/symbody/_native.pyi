@@ -1,18 +1,22 @@
 # Types of the compiled module (python/src/lib.rs), for type checkers: the package is typed
 # (py.typed), and `Session` and `Mechanism` inherit these methods.
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Type, TypeVar
+import os
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Type, TypeVar, Union
 
 import numpy as np
 
 __version__: str
 
+# A registered name, or a mechanism file's path (a str ending in .toml or with a folder, or
+# any os.PathLike, always a path).
+_MechanismLike = Union[str, os.PathLike[str]]
 _Coo = Tuple[np.ndarray, Tuple[np.ndarray, np.ndarray]]
 _Answer = Tuple[List[Tuple[str, List[str], np.ndarray]], Dict[str, Any], List[str]]
 
 def mechanisms() -> List[str]: ...
 def defaults() -> Dict[str, Any]: ...
 def simulate(
-    name: str,
+    name: _MechanismLike,
     t_end: Optional[float],
     step: float,
     alpha: float,
@@ -23,7 +27,7 @@ def simulate(
 ) -> _Answer: ...
 def run(scene: str, out: Optional[str]) -> _Answer: ...
 def fk(
-    name: str,
+    name: _MechanismLike,
     lengths: Optional[np.ndarray],
     start: Any,
     at: float,
@@ -36,7 +40,7 @@ _S = TypeVar("_S", bound="Session")
 class Session:
     def __new__(
         cls: Type[_S],
-        name: str,
+        name: _MechanismLike,
         formulation: Optional[str],
         alpha: float,
         step: float,
@@ -47,6 +51,10 @@ class Session:
     def name(self) -> str: ...
     @property
     def formulation(self) -> str: ...
+    @property
+    def interpreted(self) -> bool: ...
+    @property
+    def source(self) -> Optional[str]: ...
     @property
     def t(self) -> float: ...
     @property
@@ -67,11 +75,15 @@ class Session:
     def joint_wrench(self, name: str) -> Tuple[np.ndarray, np.ndarray]: ...
 
 class Mechanism:
-    def __init__(self, name: str, formulation: Optional[str] = None) -> None: ...
+    def __init__(self, name: _MechanismLike, formulation: Optional[str] = None) -> None: ...
     @property
     def name(self) -> str: ...
     @property
     def formulation(self) -> str: ...
+    @property
+    def interpreted(self) -> bool: ...
+    @property
+    def source(self) -> Optional[str]: ...
     @property
     def n_coords(self) -> int: ...
     @property
