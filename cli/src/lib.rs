@@ -72,6 +72,35 @@ struct Files {
     html: bool,
 }
 
+/// Parameters of the mechanism file set to other values.
+#[derive(clap::Args)]
+struct SetParameters {
+    /// Set a parameter of the mechanism file (`[parameters]`, see `symbody params
+    /// <mechanism>`), as if the file said so; repeat for several. The file's equations are
+    /// re-derived and interpreted (nothing to build).
+    #[arg(long = "set", value_name = "NAME=VALUE")]
+    set: Vec<String>,
+}
+
+impl SetParameters {
+    /// The `NAME=VALUE` pairs, or an error naming the one that is not.
+    fn parse(&self) -> Result<Vec<(String, f64)>, String> {
+        self.set
+            .iter()
+            .map(|s| {
+                let (k, v) = s
+                    .split_once('=')
+                    .ok_or_else(|| format!("--set {s}: give NAME=VALUE, e.g. --set r=0.12"))?;
+                let v: f64 = v
+                    .trim()
+                    .parse()
+                    .map_err(|_| format!("--set {s}: `{}` is not a number", v.trim()))?;
+                Ok((k.trim().to_string(), v))
+            })
+            .collect()
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// List every generated mechanism: sizes, redundant rows, degrees of freedom.
@@ -81,6 +110,12 @@ enum Command {
     Check {
         /// The mechanism file, e.g. robot.toml.
         file: PathBuf,
+    },
+    /// The parameters of a mechanism's file: names, values, the expressions of derived ones,
+    /// and the items (bodies, joints, drivers, forces) each one affects.
+    Params {
+        /// A mechanism from `symbody list`, or a mechanism file.
+        mechanism: String,
     },
     /// Simulate a mechanism (compiled, or a file run interpreted); without one, the paper's
     /// 6-6 Stewart platform scenario (one period, 2π s) with the paper's figures.
@@ -126,6 +161,8 @@ enum Command {
         reactions: Option<ReactionsArg>,
         #[command(flatten)]
         files: Files,
+        #[command(flatten)]
+        parameters: SetParameters,
     },
     /// Run a scene file (scenes/<name>.toml): the mechanism, time span and outputs it names,
     /// solved by the cheapest exact path — kinematic (no integration) when the drivers fix
@@ -136,6 +173,9 @@ enum Command {
         scene: PathBuf,
         #[command(flatten)]
         files: Files,
+        // Set on top of the scene's own `[parameters]`.
+        #[command(flatten)]
+        parameters: SetParameters,
     },
     /// Forward kinematics of a platform held by six legs of driven length: the pose reached
     /// by continuation from a known pose, with its leg-length residual and the condition
@@ -169,6 +209,8 @@ enum Command {
         /// Skip the PNG figure.
         #[arg(long)]
         no_plots: bool,
+        #[command(flatten)]
+        parameters: SetParameters,
     },
 }
 
@@ -195,7 +237,9 @@ pub fn main(registry: &Registry) -> ExitCode {
             accelerations,
             reactions,
             files,
+            parameters,
         } => match mechanism {
+            None if !parameters.set.is_empty() => Err("--set applies to a named mechanism or a file; for the paper's scenario with other parameters, run scenes/paper.toml with --set (e.g. `symbody run scenes/paper.toml --set r_platform=0.11`)".to_string()),
             None if velocities || accelerations => Err(format!("--{} applies to a named mechanism or a file (it adds columns to bodies.csv); the paper scenario writes platform.csv", if velocities { "velocities" } else { "accelerations" })),
             None if cross_singular_positions => Err("--cross-singular-positions applies to a named mechanism or a file; the paper scenario has no singular position to cross".to_string()),
             Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
@@ -209,7 +253,9 @@ pub fn main(registry: &Registry) -> ExitCode {
                     output_step,
                     cross_singular: cross_singular_positions,
                 };
-                simulate_named(registry, &name, &opts, [velocities, accelerations], &files)
+                parameters.parse().and_then(|p| {
+                    simulate_named(registry, &name, &p, &opts, [velocities, accelerations], &files)
+                })
             }
             None => {
                 let defaults = Options::default();
@@ -228,7 +274,14 @@ pub fn main(registry: &Registry) -> ExitCode {
                 simulate(registry, &opts, &out, !files.no_plots, files.html)
             }
         },
-        Command::Run { scene, files } => run_scene(registry, &scene, &files),
+        Command::Run {
+            scene,
+            files,
+            parameters,
+        } => parameters
+            .parse()
+            .and_then(|p| run_scene(registry, &scene, &files, &p)),
+        Command::Params { mechanism } => list_parameters(registry, &mechanism),
         Command::Fk {
             mechanism,
             lengths,
@@ -238,7 +291,9 @@ pub fn main(registry: &Registry) -> ExitCode {
             over_time,
             out,
             no_plots,
+            parameters,
         } => {
+            parameters.parse().and_then(|set| {
             six("--lengths", lengths.as_deref())
                 .and_then(|l| {
                     if let Some((i, x)) = l.iter().flatten().enumerate().find(|(_, x)| x.is_nan() || **x <= 0.0) {
@@ -254,7 +309,12 @@ pub fn main(registry: &Registry) -> ExitCode {
                         at,
                     })
                 })
-                .and_then(|req| forward_kinematics(registry, &mechanism, &req, all, over_time, &out, !no_plots))
+                .and_then(|req| {
+                    let entry = symbody::files::with_parameters(registry, &mechanism, &set)
+                        .map_err(|e| e.to_string())?;
+                    forward_kinematics(registry, entry, &mechanism, &req, (all, over_time), &out, !no_plots)
+                })
+            })
         }
     };
     match result {
@@ -342,6 +402,67 @@ pub fn list_lines(registry: &Registry) -> Vec<String> {
         .collect()
 }
 
+/// `v` in at most 10 significant digits, without trailing zeros.
+fn short(v: f64) -> String {
+    if v == 0.0 || (1e-4..1e6).contains(&v.abs()) {
+        let s = format!(
+            "{:.*}",
+            (9 - v.abs().log10().floor().max(-4.0) as i64).max(0) as usize,
+            v
+        );
+        let s = if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.')
+        } else {
+            &s
+        };
+        s.to_string()
+    } else {
+        format!("{v:.9e}")
+    }
+}
+
+/// The parameters set from outside the file, for meta.json.
+fn parameters_json(parameters: &[(String, f64)]) -> serde_json::Value {
+    parameters
+        .iter()
+        .map(|(k, v)| (k.clone(), json!(v)))
+        .collect::<serde_json::Map<_, _>>()
+        .into()
+}
+
+/// `symbody params`: a mechanism file's parameters and what each affects.
+fn list_parameters(registry: &Registry, name: &str) -> Result<(), String> {
+    let loaded = symbody::files::parameters(registry, name).map_err(|e| e.to_string())?;
+    let ps = loaded.parameters;
+    if ps.is_empty() {
+        say!("{}: its file has no [parameters]", loaded.entry.name);
+        return Ok(());
+    }
+    say!(
+        "{}: {} parameters (set with --set NAME=VALUE on simulate, run and fk)",
+        loaded.entry.name,
+        ps.len()
+    );
+    let width = ps.iter().map(|p| p.name.chars().count()).max().unwrap_or(0);
+    for p in ps {
+        let how = match &p.expression {
+            Some(e) => format!(" = {e}"),
+            None => String::new(),
+        };
+        let affects = match p.affects.is_empty() {
+            true => "nothing (unused)".to_string(),
+            false => p.affects.join(", "),
+        };
+        say!(
+            "  {:width$} {:>14}{how}  (line {}) affects: {affects}",
+            p.name,
+            short(p.value),
+            p.line
+        );
+    }
+    Ok(())
+}
+
 /// `symbody check`: what the generator finds out about a file, without running it.
 fn check(file: &Path) -> Result<(), String> {
     let loaded = symbody::files::load(file).map_err(|e| e.to_string())?;
@@ -370,11 +491,13 @@ fn default_out(name: &str) -> PathBuf {
 fn simulate_named(
     registry: &Registry,
     name: &str,
+    parameters: &[(String, f64)],
     opts: &generic::Options,
     [velocities, accelerations]: [bool; 2],
     files: &Files,
 ) -> Result<(), String> {
-    let entry = generic::find(registry, name).map_err(|e| e.to_string())?;
+    let entry =
+        symbody::files::with_parameters(registry, name, parameters).map_err(|e| e.to_string())?;
     let out = files.out.clone().unwrap_or_else(|| default_out(entry.name));
     let (out, plots, html) = (out.as_path(), !files.no_plots, files.html);
     let t_end = opts.t_end.unwrap_or(entry.t_end);
@@ -387,6 +510,7 @@ fn simulate_named(
         "cross_singular_positions": opts.cross_singular,
         "velocities": velocities,
         "accelerations": accelerations,
+        "parameters": parameters_json(parameters),
     }));
     let mut live = live::Live::new(out, t_end, meta);
     let mut obs = generic::Prepared {
@@ -747,7 +871,12 @@ fn report_paper(
 }
 
 /// `symbody run <scene>`: load and check the scene, choose the path, run, report.
-fn run_scene(registry: &Registry, path: &Path, files: &Files) -> Result<(), String> {
+fn run_scene(
+    registry: &Registry,
+    path: &Path,
+    files: &Files,
+    set: &[(String, f64)],
+) -> Result<(), String> {
     let (plots, html) = (!files.no_plots, files.html);
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read scene file {}: {e}", path.display()))?;
@@ -756,7 +885,17 @@ fn run_scene(registry: &Registry, path: &Path, files: &Files) -> Result<(), Stri
         let shown = e.to_string();
         shown.strip_prefix("error: ").unwrap_or(&shown).to_string()
     })?;
-    let entry = scene.entry;
+    // `--set` on top of the scene's own parameters.
+    let mut parameters = scene.parameters.clone();
+    for (k, v) in set {
+        parameters.retain(|(p, _)| p != k);
+        parameters.push((k.clone(), *v));
+    }
+    let entry = match set.is_empty() {
+        true => scene.entry,
+        false => symbody::files::reparametrized(scene.entry, &parameters)
+            .map_err(|e| format!("{}: --set: {e}", path.display()))?,
+    };
     let out = files.out.clone().unwrap_or_else(|| {
         default_out(
             &path
@@ -780,6 +919,7 @@ fn run_scene(registry: &Registry, path: &Path, files: &Files) -> Result<(), Stri
         "cross_singular_positions": scene.cross_singular,
         "velocities": scene.velocities,
         "accelerations": scene.accelerations,
+        "parameters": parameters_json(&parameters),
     }));
     if scene.files == scene::Files::Paper {
         // The paper scenario's run does not report its start: described before it, as
@@ -862,14 +1002,13 @@ fn six(option: &str, v: Option<&[f64]>) -> Result<Option<[f64; 6]>, String> {
 
 fn forward_kinematics(
     registry: &Registry,
+    entry: &'static symbody_runtime::Entry,
     name: &str,
     req: &fk::Request,
-    all: bool,
-    over_time: Option<usize>,
+    (all, over_time): (bool, Option<usize>),
     out: &std::path::Path,
     plots: bool,
 ) -> Result<(), String> {
-    let entry = generic::find(registry, name).map_err(|e| e.to_string())?;
     let p = fk::platform(entry)
         .map_err(|e| format!("{e}; here: {}", fk::platforms(registry).join(", ")))?;
     let names = p.leg_names();

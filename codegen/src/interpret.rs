@@ -25,6 +25,8 @@ pub struct Loaded {
     pub entry: &'static Entry,
     /// What the generator found out (sizes, rank, mobility, redundant rows, warnings).
     pub report: Report,
+    /// The file's parameters with the values used.
+    pub parameters: Vec<model::Parameter>,
 }
 
 fn leak<T>(v: Vec<T>) -> &'static [T] {
@@ -52,13 +54,26 @@ fn values(entries: &[Nonzero]) -> Vec<Id> {
 /// is kept as the entry's [`Origin`]; `stale`: it replaces a compiled entry whose code is
 /// older than the file), and builds its interpreted mechanisms.
 pub fn load(source: &str, text: &str, stale: bool) -> Result<Loaded, Errors> {
-    let model = model::load(source, text)?;
+    load_with(source, text, &[], stale)
+}
+
+/// [`load`] with some of the file's parameters set to other values ([`model::load_with`]):
+/// the whole front end runs again, so the assembly, rank, redundant rows and platform
+/// detection are those of the new values.
+pub fn load_with(
+    source: &str,
+    text: &str,
+    parameters: &[(String, f64)],
+    stale: bool,
+) -> Result<Loaded, Errors> {
+    let model = model::load_with(source, text, parameters)?;
     let system = equations::build(&model);
     let assembly = crate::assembly::assemble(&model, &system, source)?;
-    let entry = entry(&model, &system, &assembly, source, stale);
+    let entry = entry(&model, &system, &assembly, (source, stale, parameters));
     Ok(Loaded {
         entry,
         report: assembly.report,
+        parameters: model.parameters,
     })
 }
 
@@ -89,7 +104,12 @@ fn dynamic_tapes(sys: &System, d: &Dynamics) -> DynamicTapes {
     }
 }
 
-fn entry(model: &Model, sys: &System, asm: &Assembly, source: &str, stale: bool) -> &'static Entry {
+fn entry(
+    model: &Model,
+    sys: &System,
+    asm: &Assembly,
+    (source, stale, parameters): (&str, bool, &[(String, f64)]),
+) -> &'static Entry {
     let name = leak_str(&model.name);
     let bodies = leak(
         model
@@ -198,6 +218,7 @@ fn entry(model: &Model, sys: &System, asm: &Assembly, source: &str, stale: bool)
         origin: Origin::Interpreted {
             file: leak_str(source),
             stale,
+            parameters: leak(parameters.iter().map(|(k, v)| (leak_str(k), *v)).collect()),
         },
     }))
 }

@@ -478,8 +478,17 @@ impl Validator<'_> {
     /// Replaces the values of overridden parameters (before any is resolved).
     fn override_parameters(&mut self, raw: &RawFile, overrides: &[(String, f64)]) {
         // Errors point at the file's parameters table (or its start, without one).
-        let table = raw.parameters.keys().next().map_or(0..0, |k| k.span());
-        let mut known: Vec<&str> = raw.parameters.keys().map(|k| k.get_ref().as_str()).collect();
+        let table = raw
+            .parameters
+            .keys()
+            .map(|k| k.span())
+            .min_by_key(|s| s.start)
+            .unwrap_or(0..0);
+        let mut known: Vec<&str> = raw
+            .parameters
+            .keys()
+            .map(|k| k.get_ref().as_str())
+            .collect();
         known.sort();
         for (name, value) in overrides {
             let item = format!("parameter `{name}`");
@@ -531,7 +540,10 @@ impl Validator<'_> {
                         continue;
                     }
                     for item in direct(&p) {
-                        match item.strip_prefix("parameter `").and_then(|s| s.strip_suffix('`')) {
+                        match item
+                            .strip_prefix("parameter `")
+                            .and_then(|s| s.strip_suffix('`'))
+                        {
                             Some(q) => todo.push(q.to_string()),
                             None => {
                                 items.insert(item);

@@ -22,15 +22,19 @@ pub struct Entry {
 }
 
 /// Where an entry's equations come from.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Origin {
     /// Rust generated from `file` (its path when this program was built) whose text had
     /// [`source_hash`] `hash`, compiled into this program.
     Compiled { file: &'static str, hash: u64 },
     /// Equations interpreted from `file` ([`crate::Interpreted`]), derived when this
     /// program ran; `stale`: in place of a compiled entry whose file changed since its code
-    /// was generated.
-    Interpreted { file: &'static str, stale: bool },
+    /// was generated; `parameters`: the file's parameters given other values than the file's.
+    Interpreted {
+        file: &'static str,
+        stale: bool,
+        parameters: &'static [(&'static str, f64)],
+    },
 }
 
 /// 64-bit FNV-1a of a mechanism file's text: written into generated code so a program can

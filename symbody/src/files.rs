@@ -9,7 +9,8 @@ use crate::scenario::ScenarioError;
 use std::collections::HashMap;
 use std::path::Path;
 use std::sync::{Mutex, OnceLock};
-use symbody_runtime::{source_hash, Entry, Origin};
+use symbody_codegen::model::Parameter;
+use symbody_runtime::{source_hash, Entry, Origin, Registry};
 
 /// Largest mechanism file read: far above any real one (the 13-body Stewart file is 9 KB),
 /// and small enough that a wrong path (a log, a binary) is refused before it is parsed.
@@ -27,9 +28,15 @@ pub struct Loaded {
     /// Sizes, rank, mobility, redundant rows, platform and warnings, as `cargo xtask
     /// generate` prints them.
     pub report: &'static str,
+    /// The file's parameters, with the values used.
+    pub parameters: &'static [Parameter],
 }
 
-type Cache = Mutex<HashMap<(String, String, bool), Loaded>>;
+/// Parameter values set from outside a mechanism file: `(name, value)`.
+pub type Overrides = [(String, f64)];
+
+/// Loaded entries by (file as shown, text, stale, overrides as text).
+type Cache = Mutex<HashMap<(String, String, bool, String), Loaded>>;
 
 fn cache() -> &'static Cache {
     static CACHE: OnceLock<Cache> = OnceLock::new();
@@ -76,24 +83,106 @@ pub fn read(path: &Path) -> Result<String, ScenarioError> {
 
 /// The mechanism file at `path`, interpreted (loaded once per distinct text).
 pub fn load(path: &Path) -> Result<Loaded, ScenarioError> {
-    let text = read(path)?;
-    load_text(&path.display().to_string(), &text, false)
+    load_with(path, &[])
 }
 
-fn load_text(source: &str, text: &str, stale: bool) -> Result<Loaded, ScenarioError> {
-    let key = (source.to_string(), text.to_string(), stale);
+/// [`load`] with some of the file's parameters set to other values.
+pub fn load_with(path: &Path, parameters: &Overrides) -> Result<Loaded, ScenarioError> {
+    let text = read(path)?;
+    load_text(&path.display().to_string(), &text, false, parameters)
+}
+
+/// The mechanism `name` (a registered name or a file path) with `parameters` set: the
+/// registered mechanism's file is interpreted with the new values (its compiled code has the
+/// file's). No parameters: [`crate::generic::find`].
+pub fn with_parameters(
+    registry: &Registry,
+    name: &str,
+    parameters: &Overrides,
+) -> Result<&'static Entry, ScenarioError> {
+    if parameters.is_empty() {
+        return crate::generic::find(registry, name);
+    }
+    if is_path(name) {
+        return load_with(Path::new(name), parameters).map(|l| l.entry);
+    }
+    reparametrized(crate::generic::find(registry, name)?, parameters)
+}
+
+/// The file `entry` comes from, interpreted with `parameters` set (the file's values for the
+/// others, whatever `entry` was built with).
+pub fn reparametrized(
+    entry: &Entry,
+    parameters: &Overrides,
+) -> Result<&'static Entry, ScenarioError> {
+    let file = source_of(entry)?;
+    let text = read(Path::new(&file))?;
+    load_text(&file, &text, false, parameters).map(|l| l.entry)
+}
+
+/// The file `entry` was generated or interpreted from, as it can be opened now.
+pub fn source_of(entry: &Entry) -> Result<String, ScenarioError> {
+    let file = match entry.origin {
+        Origin::Compiled { file, .. } | Origin::Interpreted { file, .. } => file,
+    };
+    match Path::new(file).canonicalize() {
+        Ok(p) => Ok(p.display().to_string()),
+        Err(_) => Err(ScenarioError::Options(format!(
+            "`{}`: its mechanism file {file} is not here (this program was installed without \
+             its source tree); parameters are set on the file, so give the file's path instead",
+            entry.name
+        ))),
+    }
+}
+
+/// The parameters of mechanism `name` (a registered name or a file path): names, values,
+/// derived ones' expressions and the items each affects.
+pub fn parameters(registry: &Registry, name: &str) -> Result<Loaded, ScenarioError> {
+    if is_path(name) {
+        return load(Path::new(name));
+    }
+    let entry = crate::generic::find(registry, name)?;
+    let file = source_of(entry)?;
+    let text = read(Path::new(&file))?;
+    load_text(&file, &text, false, &[])
+}
+
+fn load_text(
+    source: &str,
+    text: &str,
+    stale: bool,
+    parameters: &Overrides,
+) -> Result<Loaded, ScenarioError> {
+    let key = (
+        source.to_string(),
+        text.to_string(),
+        stale,
+        format!("{parameters:?}"),
+    );
     if let Some(&l) = cache().lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
         return Ok(l);
     }
-    let loaded = symbody_codegen::interpret::load(source, text, stale).map_err(|e| {
-        let shown = e.to_string();
-        // `main` and the bindings add their own `error:` before the first message.
-        ScenarioError::Options(shown.strip_prefix("error: ").unwrap_or(&shown).to_string())
-    })?;
+    let loaded =
+        symbody_codegen::interpret::load_with(source, text, parameters, stale).map_err(|e| {
+            let shown = e.to_string();
+            // `main` and the bindings add their own `error:` before the first message.
+            let shown = shown.strip_prefix("error: ").unwrap_or(&shown).to_string();
+            ScenarioError::Options(match parameters.is_empty() {
+                true => shown,
+                false => {
+                    let set: Vec<String> = parameters
+                        .iter()
+                        .map(|(k, v)| format!("{k} = {v}"))
+                        .collect();
+                    format!("with {} set: {shown}", set.join(", "))
+                }
+            })
+        })?;
     let report = Box::leak(loaded.report.to_string().into_boxed_str());
     let l = Loaded {
         entry: loaded.entry,
         report,
+        parameters: Box::leak(loaded.parameters.into_boxed_slice()),
     };
     cache()
         .lock()
@@ -119,7 +208,7 @@ pub fn fresh(entry: &'static Entry) -> Result<&'static Entry, ScenarioError> {
     let shown = Path::new(file)
         .canonicalize()
         .map_or_else(|_| file.to_string(), |p| p.display().to_string());
-    load_text(&shown, &text, true)
+    load_text(&shown, &text, true, &[])
         .map(|l| l.entry)
         .map_err(|e| {
             ScenarioError::Options(format!(
@@ -135,18 +224,77 @@ pub fn fresh(entry: &'static Entry) -> Result<&'static Entry, ScenarioError> {
 pub fn note(entry: &Entry) -> Option<String> {
     match entry.origin {
         Origin::Compiled { .. } => None,
-        Origin::Interpreted { file, stale: false } => Some(format!(
+        Origin::Interpreted {
+            file, parameters, ..
+        } if !parameters.is_empty() => {
+            let set: Vec<String> = parameters
+                .iter()
+                .map(|(k, v)| format!("{k} = {v}"))
+                .collect();
+            let changed = structure_change(file, entry)
+                .map(|c| format!("; with these values {c}"))
+                .unwrap_or_default();
+            Some(format!(
+                "interpreted from {file} with {} (the file's equations re-derived for these \
+                 values; compiled code keeps the file's){changed}",
+                set.join(", ")
+            ))
+        }
+        Origin::Interpreted {
+            file, stale: false, ..
+        } => Some(format!(
             "interpreted from {file} (nothing compiled); the compiled route evaluates faster \
              (BENCHMARKS.md, \"Interpreted and compiled\"): put the file in mechanisms/ and run \
              `cargo xtask generate {}`",
             entry.name
         )),
-        Origin::Interpreted { file, stale: true } => Some(format!(
+        Origin::Interpreted {
+            file, stale: true, ..
+        } => Some(format!(
             "interpreted from {file}: the compiled `{0}` is stale (the file changed after `cargo \
              xtask generate {0}`); regenerate it to run compiled again",
             entry.name
         )),
     }
+}
+
+/// How the structure the generator found (dependent rows, degrees of freedom, a platform for
+/// forward kinematics) differs between `entry` and the file `file` with its own values.
+fn structure_change(file: &str, entry: &Entry) -> Option<String> {
+    let text = read(Path::new(file)).ok()?;
+    let default = load_text(file, &text, false, &[]).ok()?.entry;
+    let (a, b) = (
+        default.default_mechanism().info(),
+        entry.default_mechanism().info(),
+    );
+    let rows = |i: &symbody_runtime::MechanismInfo| -> Vec<&str> {
+        i.redundant_rows
+            .iter()
+            .map(|&r| i.row_names[r as usize])
+            .collect()
+    };
+    let mut changes = Vec::new();
+    if rows(a) != rows(b) {
+        let list = |r: Vec<&str>| match r.is_empty() {
+            true => "none".to_string(),
+            false => r.join(", "),
+        };
+        changes.push(format!(
+            "the dependent rows change from {} to {}",
+            list(rows(a)),
+            list(rows(b))
+        ));
+    }
+    if a.dof() != b.dof() {
+        changes.push(format!("the DOF change from {} to {}", a.dof(), b.dof()));
+    }
+    if a.platform.is_some() != b.platform.is_some() {
+        changes.push(match b.platform {
+            Some(_) => "it becomes a six-leg platform (fk applies)".to_string(),
+            None => "it is no longer a six-leg platform (fk does not apply)".to_string(),
+        });
+    }
+    (!changes.is_empty()).then(|| changes.join("; "))
 }
 
 #[cfg(test)]

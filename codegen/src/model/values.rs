@@ -101,7 +101,10 @@ impl Validator<'_> {
         let mut values: HashMap<String, f64> = HashMap::new();
         for n in names {
             if self.params.contains_key(&n) {
-                self.uses.entry(n.clone()).or_default().insert(item.to_string());
+                self.uses
+                    .entry(n.clone())
+                    .or_default()
+                    .insert(item.to_string());
                 if let Some(v) = self.param_value(&n) {
                     values.insert(n, v);
                 } else {

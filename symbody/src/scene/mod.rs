@@ -25,6 +25,9 @@
 //! step = 1e-3                   # HHT step when integrating (s)
 //! alpha = 0.0                   # HHT α (default: as `symbody simulate`)
 //! cross_singular_positions = false  # pass positions where rows are dependent for an instant
+//!
+//! [parameters]                  # optional: the mechanism file's parameters, other values
+//! r_platform = 0.11             # (the file is re-derived and interpreted: nothing to build)
 //! ```
 
 mod parse;
@@ -84,8 +87,11 @@ pub struct Scene {
     pub file: String,
     /// Name of the mechanism.
     pub mechanism: &'static str,
-    /// The mechanism: registered, or interpreted from the file the scene names.
+    /// The mechanism: registered, or interpreted from the file the scene names (with the
+    /// scene's parameters, if it sets any).
     pub entry: &'static Entry,
+    /// The scene's `[parameters]`: the mechanism file's parameters it sets.
+    pub parameters: Vec<(String, f64)>,
     pub formulation: Formulation,
     pub t_end: f64,
     pub output_step: f64,

@@ -18,6 +18,8 @@ struct RawScene {
     time: Option<RawTime>,
     outputs: Option<RawOutputs>,
     solver: Option<RawSolver>,
+    /// The mechanism file's parameters set to other values (name = number).
+    parameters: Option<Spanned<std::collections::BTreeMap<String, f64>>>,
 }
 
 #[derive(Deserialize)]
@@ -115,22 +117,37 @@ fn check(
     errors: &mut Vec<Diagnostic>,
 ) -> Option<Scene> {
     let name = raw.mechanism.get_ref();
+    let parameters: Vec<(String, f64)> = raw
+        .parameters
+        .as_ref()
+        .map(|p| p.get_ref().iter().map(|(k, v)| (k.clone(), *v)).collect())
+        .unwrap_or_default();
     let found = if crate::files::is_path(name) {
         // Relative to the scene file, so a scene and its mechanism move together.
         let dir = Path::new(map.file).parent().unwrap_or(Path::new(""));
-        Some(crate::files::load(&dir.join(name)).map(|l| l.entry))
+        Some(crate::files::load_with(&dir.join(name), &parameters).map(|l| l.entry))
     } else {
-        registry.find(name).map(crate::files::fresh)
+        registry.find(name).map(|e| match parameters.is_empty() {
+            true => crate::files::fresh(e),
+            false => crate::files::reparametrized(e, &parameters),
+        })
     };
     let entry = match found {
         Some(Ok(entry)) => entry,
         Some(Err(e)) => {
-            errors.push(map.diag(
-                raw.mechanism.span(),
-                "`mechanism`",
-                e.to_string(),
-                "a path is read relative to the scene file",
-            ));
+            let (span, item, help) = match &raw.parameters {
+                Some(p) => (
+                    p.span(),
+                    "`[parameters]`",
+                    "the mechanism with these parameter values could not be built (a path is read relative to the scene file)",
+                ),
+                None => (
+                    raw.mechanism.span(),
+                    "`mechanism`",
+                    "a path is read relative to the scene file",
+                ),
+            };
+            errors.push(map.diag(span, item, e.to_string(), help));
             return None;
         }
         None => {
@@ -338,6 +355,7 @@ fn check(
         file: map.file.to_string(),
         mechanism: entry.name,
         entry,
+        parameters,
         formulation: info.formulation,
         t_end,
         output_step,
