@@ -1,0 +1,149 @@
+//! Parameters set at run time (`--set`, scenes' `[parameters]`, `files::with_parameters`)
+//! against the reference of the issue: the mechanism file edited to that value. The edited
+//! file is written to a temporary folder and loaded as any file; the set parameter goes
+//! through `model::load_with`. Both must give the same run, and differ from the file's values.
+
+use symbody::files::{self, Overrides};
+use symbody::generic::{self, Options, Recording};
+use symbody_mechanisms::REGISTRY;
+use symbody_runtime::{Entry, Origin};
+
+fn temp_dir(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("symbody-params-{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The file of registered `name` with the line `parameter = …` given `value` instead.
+fn edited(name: &str, parameter: &str, value: f64) -> String {
+    let Origin::Compiled { file, .. } = REGISTRY.find(name).unwrap().origin else {
+        panic!("compiled")
+    };
+    let text = std::fs::read_to_string(file).unwrap();
+    let mut hits = 0;
+    let lines: Vec<String> = text
+        .lines()
+        .map(|l| match l.split_once('=') {
+            Some((k, _)) if k.trim() == parameter && !l.trim_start().starts_with('#') => {
+                hits += 1;
+                format!("{parameter} = {value:?}")
+            }
+            _ => l.to_string(),
+        })
+        .collect();
+    assert_eq!(hits, 1, "{name}: one line sets `{parameter}`");
+    lines.join("\n") + "\n"
+}
+
+fn run(entry: &Entry) -> Recording {
+    let opts = Options {
+        t_end: Some(0.3),
+        ..Options::default()
+    };
+    generic::run(entry, &opts).unwrap_or_else(|e| panic!("{}: {e}", entry.name))
+}
+
+/// Largest |a − b| over every recorded quantity, relative to the largest |b| of its kind.
+fn max_rel(a: &Recording, b: &Recording) -> f64 {
+    assert_eq!(a.t, b.t);
+    let rel = |x: &[Vec<f64>], y: &[Vec<f64>]| {
+        let scale = y.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
+        x.iter()
+            .flatten()
+            .zip(y.iter().flatten())
+            .fold(0.0f64, |m, (p, q)| m.max((p - q).abs() / scale))
+    };
+    let flat = |r: &Recording| -> Vec<Vec<f64>> {
+        r.wrenches
+            .iter()
+            .map(|w| w.iter().flat_map(|w| w.force.into_iter().chain(w.moment)).collect())
+            .collect()
+    };
+    rel(&a.q, &b.q)
+        .max(rel(&a.qd, &b.qd))
+        .max(rel(&a.efforts, &b.efforts))
+        .max(rel(&flat(a), &flat(b)))
+}
+
+fn set(name: &str, value: f64) -> Vec<(String, f64)> {
+    vec![(name.to_string(), value)]
+}
+
+#[test]
+fn a_set_parameter_runs_as_the_file_edited_to_that_value() {
+    let dir = temp_dir("edited");
+    let cases = [
+        ("slider_crank", "r", 0.12),
+        ("stewart_6_6", "r_platform", 0.11),
+        ("stewart_6_6", "m_cyl", 0.36),
+        ("oscillators", "k", 65.0),
+        ("four_bar", "b", 0.37),
+    ];
+    for (name, parameter, value) in cases {
+        let with = files::with_parameters(&REGISTRY, name, &set(parameter, value))
+            .unwrap_or_else(|e| panic!("{name} {parameter}: {e}"));
+        let path = dir.join(format!("{name}_{parameter}.toml"));
+        std::fs::write(&path, edited(name, parameter, value)).unwrap();
+        let reference = files::load(&path).unwrap().entry;
+        let (got, want) = (run(with), run(reference));
+        let d = max_rel(&got, &want);
+        assert!(d <= 1e-12, "{name} {parameter} = {value}: {d:e}");
+        // The value took effect: the run differs from the file's own values.
+        let base = run(REGISTRY.find(name).unwrap());
+        let moved = max_rel(&got, &base);
+        assert!(moved > 1e-6, "{name} {parameter}: unchanged ({moved:e})");
+    }
+}
+
+#[test]
+fn the_file_values_set_explicitly_reproduce_the_compiled_run() {
+    for (name, parameter, value) in [("slider_crank", "r", 0.1), ("oscillators", "k", 50.0)] {
+        let with = files::with_parameters(&REGISTRY, name, &set(parameter, value)).unwrap();
+        assert!(matches!(with.origin, Origin::Interpreted { .. }));
+        let d = max_rel(&run(with), &run(REGISTRY.find(name).unwrap()));
+        assert!(d <= 1e-13, "{name}: {d:e}");
+    }
+    // No parameters: the compiled entry itself.
+    let none: &Overrides = &[];
+    let e = files::with_parameters(&REGISTRY, "slider_crank", none).unwrap();
+    assert!(std::ptr::eq(e, REGISTRY.find("slider_crank").unwrap()));
+}
+
+#[test]
+fn bad_values_are_errors_naming_the_parameter() {
+    let err = |name: &str, p: &str, v: f64| {
+        files::with_parameters(&REGISTRY, name, &set(p, v))
+            .expect_err("refused")
+            .to_string()
+    };
+    let e = err("slider_crank", "rr", 0.12);
+    assert!(e.contains("no parameter `rr`") && e.contains("did you mean `r`?"), "{e}");
+    for v in [f64::NAN, f64::INFINITY] {
+        let e = err("slider_crank", "r", v);
+        assert!(e.contains("parameter `r` set to") && e.contains("finite"), "{e}");
+    }
+    let e = err("stewart_6_6", "m_cyl", -1.0);
+    assert!(e.contains("with m_cyl = -1 set") && e.contains("mass"), "{e}");
+    // A coupler too short to close the loop: the derived angle has no value.
+    let e = err("four_bar", "b", 0.1);
+    assert!(e.contains("with b = 0.1 set") && e.contains("kappa"), "{e}");
+}
+
+#[test]
+fn a_scene_sets_parameters_on_its_mechanism() {
+    let text = "mechanism = \"slider_crank\"\n[time]\nend = 0.3\n[parameters]\nr = 0.12\n";
+    let scene = symbody::scene::load(&REGISTRY, "crank.toml", text).unwrap();
+    assert_eq!(scene.parameters, set("r", 0.12));
+    let Origin::Interpreted { parameters, .. } = scene.entry.origin else {
+        panic!("interpreted with the scene's parameters")
+    };
+    assert_eq!(parameters, &[("r", 0.12)]);
+    let direct = files::with_parameters(&REGISTRY, "slider_crank", &set("r", 0.12)).unwrap();
+    assert_eq!(max_rel(&run(scene.entry), &run(direct)), 0.0);
+    // An unknown name is located in the scene.
+    let bad = "mechanism = \"slider_crank\"\n[parameters]\nradius = 0.12\n";
+    let e = symbody::scene::load(&REGISTRY, "crank.toml", bad)
+        .expect_err("unknown parameter")
+        .to_string();
+    assert!(e.contains("crank.toml:2:") && e.contains("no parameter `radius`"), "{e}");
+}
