@@ -18,6 +18,7 @@ use pyo3::exceptions::{
 };
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyString, PyTuple};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::time::Duration;
 use symbody::generic::{self, Recording};
@@ -143,12 +144,20 @@ fn load_file(path: &Path) -> PyResult<&'static Entry> {
     })
 }
 
-/// The registry entry `target` names, or its file interpreted.
-fn find(target: &Target) -> PyResult<&'static Entry> {
-    match target {
+/// The registry entry `target` names, or its file interpreted; with `params`, the file
+/// re-derived with those parameter values (`symbody --set`).
+fn find(target: &Target, params: Option<BTreeMap<String, f64>>) -> PyResult<&'static Entry> {
+    let entry = match target {
         Target::Name(name) if symbody::files::is_path(name) => load_file(Path::new(name)),
         Target::Name(name) => generic::find(&REGISTRY, name).map_err(py_err),
         Target::File(path) => load_file(path),
+    }?;
+    match params {
+        Some(p) if !p.is_empty() => {
+            let p: Vec<(String, f64)> = p.into_iter().collect();
+            symbody::files::reparametrized(entry, &p).map_err(py_err)
+        }
+        _ => Ok(entry),
     }
 }
 
@@ -340,7 +349,7 @@ fn recording_answer<'py>(
 /// One run of `symbody simulate <name>`: its tables `bodies`, `joints`, `drivers` and
 /// `energy`, its summary, and the CSV files written into `out` if given.
 #[pyfunction]
-#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions, out))]
+#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions, out, params))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -352,8 +361,9 @@ fn simulate<'py>(
     formulation: Option<&str>,
     cross_singular_positions: bool,
     out: Option<PathBuf>,
+    params: Option<BTreeMap<String, f64>>,
 ) -> PyResult<Answer<'py>> {
-    let entry = find(&name)?;
+    let entry = find(&name, params)?;
     let opts = generic::Options {
         formulation: self::formulation(formulation)?,
         t_end,
@@ -463,7 +473,7 @@ fn start_pose(x: &Bound<'_, PyAny>) -> PyResult<Pose> {
 /// Forward kinematics of a six-leg platform (`symbody fk`): a dict of the pose reached by
 /// continuation and, with `all`, every real assembly mode.
 #[pyfunction]
-#[pyo3(signature = (name, lengths, start, at, all))]
+#[pyo3(signature = (name, lengths, start, at, all, params))]
 fn fk<'py>(
     py: Python<'py>,
     name: Target,
@@ -471,8 +481,9 @@ fn fk<'py>(
     start: Option<Bound<'py, PyAny>>,
     at: f64,
     all: bool,
+    params: Option<BTreeMap<String, f64>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let entry = find(&name)?;
+    let entry = find(&name, params)?;
     let p = symbody::fk::platform(entry).map_err(py_err)?;
     let req = symbody::fk::Request {
         lengths: match lengths {
@@ -554,7 +565,7 @@ struct Session {
 impl Session {
     #[new]
     // No defaults here: `symbody.Session` gives `simulate`'s (`defaults()`).
-    #[pyo3(signature = (name, formulation, alpha, step, project_velocities, cross_singular_positions))]
+    #[pyo3(signature = (name, formulation, alpha, step, project_velocities, cross_singular_positions, params))]
     fn new(
         name: Target,
         formulation: Option<&str>,
@@ -562,8 +573,9 @@ impl Session {
         step: f64,
         project_velocities: bool,
         cross_singular_positions: bool,
+        params: Option<BTreeMap<String, f64>>,
     ) -> PyResult<Self> {
-        let entry = find(&name)?;
+        let entry = find(&name, params)?;
         let mech = generic::mechanism(entry, self::formulation(formulation)?).map_err(py_err)?;
         let settings = session::Settings {
             formulation: Some(mech.info().formulation),
@@ -715,9 +727,13 @@ impl Mechanism {
 #[pymethods]
 impl Mechanism {
     #[new]
-    #[pyo3(signature = (name, formulation=None))]
-    fn new(name: Target, formulation: Option<&str>) -> PyResult<Self> {
-        let entry = find(&name)?;
+    #[pyo3(signature = (name, formulation=None, params=None))]
+    fn new(
+        name: Target,
+        formulation: Option<&str>,
+        params: Option<BTreeMap<String, f64>>,
+    ) -> PyResult<Self> {
+        let entry = find(&name, params)?;
         let mech = generic::mechanism(entry, self::formulation(formulation)?).map_err(py_err)?;
         Ok(Mechanism {
             mech,

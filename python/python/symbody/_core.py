@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 import os
-from typing import TYPE_CHECKING, Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -118,6 +118,10 @@ def mechanisms() -> List[str]:
     return list(_native.mechanisms())
 
 
+def _params(params: Optional[Mapping[str, float]]) -> Optional[Dict[str, float]]:
+    return None if params is None else {str(k): float(v) for k, v in params.items()}
+
+
 def simulate(
     name: MechanismLike,
     t_end: Optional[float] = None,
@@ -127,6 +131,7 @@ def simulate(
     formulation: Optional[str] = None,
     cross_singular_positions: bool = False,
     out: Optional[PathLike] = None,
+    params: Optional[Mapping[str, float]] = None,
 ) -> Results:
     """Simulates the mechanism ``name`` as ``symbody simulate <name>`` does: a registered
     name, or a mechanism file's path (a ``str`` ending in ``.toml`` or with a folder, or a
@@ -140,7 +145,9 @@ def simulate(
     are dependent for an instant (a linkage lying flat, as the IFToMM A02 N-four-bar); by
     default it stops there and names the rows. ``out``: a folder to write
     ``bodies.csv``, ``joints.csv``, ``drivers.csv`` and ``energy.csv`` into (created if
-    needed), as ``--out`` does.
+    needed), as ``--out`` does. ``params``: parameters of the mechanism file (its
+    ``[parameters]``, e.g. ``{"r": 0.12}``) set to other values, as ``--set`` does: the file's
+    equations are re-derived for them and interpreted (nothing to build).
 
     Returns :class:`Results`: ``{"bodies", "joints", "drivers", "energy"}`` → :class:`Table`,
     each with the columns and values of the CSV of that name, and the run's ``summary``,
@@ -157,6 +164,7 @@ def simulate(
             formulation,
             cross_singular_positions,
             None if out is None else os.fspath(out),
+            _params(params),
         )
     )
 
@@ -224,6 +232,7 @@ def fk(
     start: Union[Sequence[float], Tuple[Any, Any], None] = None,
     at: float = 0.0,
     all: bool = False,  # noqa: A002 - the command line's --all
+    params: Optional[Mapping[str, float]] = None,
 ) -> FkResult:
     """Forward kinematics of a six-leg platform, as ``symbody fk <name>``; ``name`` is a
     registered name or a mechanism file's path (see :data:`MechanismLike`).
@@ -233,7 +242,7 @@ def fk(
     the answer stays on the start's assembly mode. ``start`` is six numbers
     ``x, y, z, θ, β, γ`` (as ``--from``) or a pair ``(position, rotation)`` such as
     ``FkResult.pose``; default: the mechanism file's initial pose. ``all=True`` also finds
-    every assembly mode (``--all``). A mechanism that is not such a platform is a
+    every assembly mode (``--all``). ``params`` as in :func:`simulate`. A mechanism that is not such a platform is a
     ``ValueError``; a parallel singularity on the way a ``RuntimeError``.
     """
     legs = None if lengths is None else np.asarray(lengths, dtype=float).ravel()
@@ -247,7 +256,7 @@ def fk(
             )
         else:
             pose = np.asarray(start, dtype=float).ravel()
-    return FkResult(**_native.fk(name, legs, pose, float(at), bool(all)))
+    return FkResult(**_native.fk(name, legs, pose, float(at), bool(all), _params(params)))
 
 
 class Coo(tuple):
@@ -295,6 +304,8 @@ class Mechanism(_native.Mechanism):
     or a mechanism file's path (``Mechanism("robot.toml")``, ``Mechanism(pathlib.Path(...))``;
     see :data:`MechanismLike`), whose equations are then interpreted, nothing compiled:
     ``interpreted`` says which, ``source`` is the file (``None`` for compiled code).
+    ``params`` (e.g. ``{"r": 0.12}``) sets parameters of the mechanism file, as in
+    :func:`simulate`.
 
     Sizes and names: ``n_coords``, ``n_constraints``, ``q0`` (the file's assembled initial
     coordinates), ``qd0``, ``coord_names``, ``row_names``, ``redundant_rows``. Evaluations
@@ -335,7 +346,7 @@ class Session(_native.Session):
     the constraints after each step), so a session and a run of the same mechanism report
     the same numbers. The paper's runs use ``alpha=-0.05, project_velocities=False``.
     ``formulation`` is ``"paper"`` or ``"exact"`` (default: the mechanism's first);
-    ``cross_singular_positions`` as in :func:`simulate`.
+    ``cross_singular_positions`` and ``params`` as in :func:`simulate`.
 
     State: ``t``, ``q``, ``qd``, ``coord_names``. Stepping: ``step()``, ``advance_to(t)``.
     Forces of the current state: ``driver_effort(name)``, ``driver_efforts()``
@@ -351,9 +362,17 @@ class Session(_native.Session):
         step: float = _DEFAULTS["step"],
         project_velocities: bool = _DEFAULTS["project_velocities"],
         cross_singular_positions: bool = False,
+        params: Optional[Mapping[str, float]] = None,
     ) -> "Session":
         return super().__new__(
-            cls, name, formulation, alpha, step, project_velocities, cross_singular_positions
+            cls,
+            name,
+            formulation,
+            alpha,
+            step,
+            project_velocities,
+            cross_singular_positions,
+            _params(params),
         )
 
 

@@ -24,6 +24,7 @@ def simulate(
     formulation: Optional[str],
     cross_singular_positions: bool,
     out: Optional[str],
+    params: Optional[Dict[str, float]],
 ) -> _Answer: ...
 def run(scene: str, out: Optional[str]) -> _Answer: ...
 def fk(
@@ -32,6 +33,7 @@ def fk(
     start: Any,
     at: float,
     all: bool,
+    params: Optional[Dict[str, float]],
 ) -> Dict[str, Any]: ...
 def paper_leg1_force_at_1s() -> float: ...
 
@@ -46,6 +48,7 @@ class Session:
         step: float,
         project_velocities: bool,
         cross_singular_positions: bool,
+        params: Optional[Dict[str, float]],
     ) -> _S: ...
     @property
     def name(self) -> str: ...
@@ -75,7 +78,12 @@ class Session:
     def joint_wrench(self, name: str) -> Tuple[np.ndarray, np.ndarray]: ...
 
 class Mechanism:
-    def __init__(self, name: _MechanismLike, formulation: Optional[str] = None) -> None: ...
+    def __init__(
+        self,
+        name: _MechanismLike,
+        formulation: Optional[str] = None,
+        params: Optional[Dict[str, float]] = None,
+    ) -> None: ...
     @property
     def name(self) -> str: ...
     @property
