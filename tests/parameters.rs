@@ -47,7 +47,11 @@ fn run(entry: &Entry) -> Recording {
 fn max_rel(a: &Recording, b: &Recording) -> f64 {
     assert_eq!(a.t, b.t);
     let rel = |x: &[Vec<f64>], y: &[Vec<f64>]| {
-        let scale = y.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
+        let scale = y
+            .iter()
+            .flatten()
+            .fold(0.0f64, |m, v| m.max(v.abs()))
+            .max(1e-300);
         x.iter()
             .flatten()
             .zip(y.iter().flatten())
@@ -56,7 +60,11 @@ fn max_rel(a: &Recording, b: &Recording) -> f64 {
     let flat = |r: &Recording| -> Vec<Vec<f64>> {
         r.wrenches
             .iter()
-            .map(|w| w.iter().flat_map(|w| w.force.into_iter().chain(w.moment)).collect())
+            .map(|w| {
+                w.iter()
+                    .flat_map(|w| w.force.into_iter().chain(w.moment))
+                    .collect()
+            })
             .collect()
     };
     rel(&a.q, &b.q)
@@ -117,13 +125,22 @@ fn bad_values_are_errors_naming_the_parameter() {
             .to_string()
     };
     let e = err("slider_crank", "rr", 0.12);
-    assert!(e.contains("no parameter `rr`") && e.contains("did you mean `r`?"), "{e}");
+    assert!(
+        e.contains("no parameter `rr`") && e.contains("did you mean `r`?"),
+        "{e}"
+    );
     for v in [f64::NAN, f64::INFINITY] {
         let e = err("slider_crank", "r", v);
-        assert!(e.contains("parameter `r` set to") && e.contains("finite"), "{e}");
+        assert!(
+            e.contains("parameter `r` set to") && e.contains("finite"),
+            "{e}"
+        );
     }
     let e = err("stewart_6_6", "m_cyl", -1.0);
-    assert!(e.contains("with m_cyl = -1 set") && e.contains("mass"), "{e}");
+    assert!(
+        e.contains("with m_cyl = -1 set") && e.contains("mass"),
+        "{e}"
+    );
     // A coupler too short to close the loop: the derived angle has no value.
     let e = err("four_bar", "b", 0.1);
     assert!(e.contains("with b = 0.1 set") && e.contains("kappa"), "{e}");
@@ -145,5 +162,8 @@ fn a_scene_sets_parameters_on_its_mechanism() {
     let e = symbody::scene::load(&REGISTRY, "crank.toml", bad)
         .expect_err("unknown parameter")
         .to_string();
-    assert!(e.contains("crank.toml:2:") && e.contains("no parameter `radius`"), "{e}");
+    assert!(
+        e.contains("crank.toml:2:") && e.contains("no parameter `radius`"),
+        "{e}"
+    );
 }

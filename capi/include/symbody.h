@@ -130,6 +130,30 @@ extern "C" {
 #endif // __cplusplus
 
 /**
+ * As `symbody_mechanism_new`, with parameters of the mechanism's file (its `[parameters]`)
+ * set before anything is derived: `names[i]` to `values[i]` for `i < count` (`count` 0:
+ * none), as if the file said so, as `symbody simulate --set` does. The file's equations are
+ * re-derived for these values and interpreted (nothing compiled; the compiled code keeps the
+ * file's values); the initial pose is assembled again, and the dependent rows, degrees of
+ * freedom and platform found again.
+ *
+ * Errors: those of `symbody_mechanism_new`, and `SYMBODY_STATUS_INVALID_ARGUMENT` for an
+ * unknown parameter (the message suggests the closest), a value that is not finite, or
+ * values the mechanism cannot be built with (a negative mass, a pose that cannot be
+ * assembled: the message names the parameters and what they broke).
+ *
+ * # Safety
+ * As `symbody_mechanism_new`; when `count > 0`, `names` and `values` point to `count`
+ * readable entries and each name is a NUL-terminated string.
+ */
+int symbody_mechanism_with_parameters(const char *name,
+                                      int formulation,
+                                      const char *const *names,
+                                      const double *values,
+                                      size_t count,
+                                      struct SymbodyMechanism **out);
+
+/**
  * Number of registered mechanisms.
  */
 size_t symbody_mechanism_count(void);
@@ -506,6 +530,27 @@ int symbody_session_from_file(const char *path,
                               double step,
                               uint32_t flags,
                               struct SymbodySession **out);
+
+/**
+ * As `symbody_session_new_ex`, with parameters of the mechanism's file set before the
+ * session starts: `names[i]` to `values[i]` for `i < count`, as
+ * `symbody_mechanism_with_parameters` does (the file re-derived for these values and
+ * interpreted). Errors: those of `symbody_session_new_ex` and of
+ * `symbody_mechanism_with_parameters`.
+ *
+ * # Safety
+ * As `symbody_session_new`; when `count > 0`, `names` and `values` point to `count`
+ * readable entries and each name is a NUL-terminated string.
+ */
+int symbody_session_with_parameters(const char *name,
+                                    int formulation,
+                                    double alpha,
+                                    double step,
+                                    uint32_t flags,
+                                    const char *const *names,
+                                    const double *values,
+                                    size_t count,
+                                    struct SymbodySession **out);
 
 /**
  * Releases a session; NULL is ignored.

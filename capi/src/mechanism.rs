@@ -122,6 +122,84 @@ pub(crate) fn lookup_file(path: &str, f: c_int) -> Found {
     Ok((entry, pick(entry, f)?))
 }
 
+/// `count` parameters of a mechanism file, `names[i]` set to `values[i]`.
+///
+/// # Safety
+/// When `count > 0`, `names` and `values` point to `count` readable entries, each name NULL
+/// or a NUL-terminated string.
+pub(crate) unsafe fn parameters(
+    names: *const *const c_char,
+    values: *const f64,
+    count: usize,
+) -> Result<Vec<(String, f64)>, Failure> {
+    if count == 0 {
+        return Ok(Vec::new());
+    }
+    // SAFETY: the caller's contract.
+    let (names, values) = unsafe {
+        (
+            crate::status::input(names, count, count, "names")?,
+            crate::status::input(values, count, count, "values")?,
+        )
+    };
+    names
+        .iter()
+        .zip(values)
+        .enumerate()
+        .map(|(i, (&n, &v))| {
+            // SAFETY: the caller's contract.
+            let n = unsafe { string(n, &format!("names[{i}]"))? };
+            Ok((n.to_string(), v))
+        })
+        .collect()
+}
+
+/// What `name` names (see [`find`]) with `params` set, in formulation code `f`. A bad name
+/// or value is `InvalidArgument`, with the file's diagnostics.
+pub(crate) fn lookup_with(name: &str, f: c_int, params: &[(String, f64)]) -> Found {
+    formulation(f)?;
+    let entry = find(name)?;
+    let entry = match params.is_empty() {
+        true => entry,
+        false => files::reparametrized(entry, params)
+            .map_err(|e| Failure::from_session(e, SymbodyStatus::InvalidArgument))?,
+    };
+    Ok((entry, pick(entry, f)?))
+}
+
+/// As `symbody_mechanism_new`, with parameters of the mechanism's file (its `[parameters]`)
+/// set before anything is derived: `names[i]` to `values[i]` for `i < count` (`count` 0:
+/// none), as if the file said so, as `symbody simulate --set` does. The file's equations are
+/// re-derived for these values and interpreted (nothing compiled; the compiled code keeps the
+/// file's values); the initial pose is assembled again, and the dependent rows, degrees of
+/// freedom and platform found again.
+///
+/// Errors: those of `symbody_mechanism_new`, and `SYMBODY_STATUS_INVALID_ARGUMENT` for an
+/// unknown parameter (the message suggests the closest), a value that is not finite, or
+/// values the mechanism cannot be built with (a negative mass, a pose that cannot be
+/// assembled: the message names the parameters and what they broke).
+///
+/// # Safety
+/// As `symbody_mechanism_new`; when `count > 0`, `names` and `values` point to `count`
+/// readable entries and each name is a NUL-terminated string.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_mechanism_with_parameters(
+    name: *const c_char,
+    formulation: c_int,
+    names: *const *const c_char,
+    values: *const f64,
+    count: usize,
+    out: *mut *mut SymbodyMechanism,
+) -> c_int {
+    let find = |what: &str, f: c_int| {
+        // SAFETY: the caller's contract.
+        let params = unsafe { parameters(names, values, count)? };
+        lookup_with(what, f, &params)
+    };
+    // SAFETY: the same contract.
+    unsafe { new_handle(name, "name", formulation, out, &find) }
+}
+
 /// The file `entry`'s equations are interpreted from, NUL-terminated; `None` for compiled
 /// code.
 pub(crate) fn source(entry: &Entry) -> Option<CString> {
@@ -186,7 +264,7 @@ pub unsafe extern "C" fn symbody_mechanism_new(
     out: *mut *mut SymbodyMechanism,
 ) -> c_int {
     // SAFETY: the same contract.
-    unsafe { new_handle(name, "name", formulation, out, lookup) }
+    unsafe { new_handle(name, "name", formulation, out, &lookup) }
 }
 
 /// Reads the mechanism file at `path` (always a path, whatever its name: `"arm"` is the
@@ -212,7 +290,7 @@ pub unsafe extern "C" fn symbody_mechanism_from_file(
     out: *mut *mut SymbodyMechanism,
 ) -> c_int {
     // SAFETY: the same contract.
-    unsafe { new_handle(path, "path", formulation, out, lookup_file) }
+    unsafe { new_handle(path, "path", formulation, out, &lookup_file) }
 }
 
 /// Stores in `*out` a handle to what `what` names, resolved by `find`.
@@ -224,7 +302,7 @@ unsafe fn new_handle(
     arg_name: &str,
     formulation: c_int,
     out: *mut *mut SymbodyMechanism,
-    find: fn(&str, c_int) -> Found,
+    find: &dyn Fn(&str, c_int) -> Found,
 ) -> c_int {
     guard(|| {
         // SAFETY: the caller's contract above.

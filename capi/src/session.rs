@@ -1,7 +1,9 @@
 //! A running simulation for C: `symbody::session::Session` behind an opaque handle (make,
 //! step or advance, read the state, the multipliers, driver efforts and joint wrenches).
 
-use crate::mechanism::{lookup, lookup_file, source, Found, SymbodyMechanism};
+use crate::mechanism::{
+    lookup, lookup_file, lookup_with, parameters, source, Found, SymbodyMechanism,
+};
 use crate::status::{arg, arg_mut, guard, guard_value, output, string, Failure, SymbodyStatus};
 use std::ffi::{c_char, c_int, CString};
 use symbody::session::{Session, Settings};
@@ -70,7 +72,7 @@ pub unsafe extern "C" fn symbody_session_new_ex(
     out: *mut *mut SymbodySession,
 ) -> c_int {
     // SAFETY: the same contract.
-    unsafe { new_session(name, "name", formulation, alpha, step, flags, out, lookup) }
+    unsafe { new_session(name, "name", formulation, alpha, step, flags, out, &lookup) }
 }
 
 /// As `symbody_session_new_ex` for the mechanism file at `path`, always a path whatever its
@@ -101,9 +103,40 @@ pub unsafe extern "C" fn symbody_session_from_file(
             step,
             flags,
             out,
-            lookup_file,
+            &lookup_file,
         )
     }
+}
+
+/// As `symbody_session_new_ex`, with parameters of the mechanism's file set before the
+/// session starts: `names[i]` to `values[i]` for `i < count`, as
+/// `symbody_mechanism_with_parameters` does (the file re-derived for these values and
+/// interpreted). Errors: those of `symbody_session_new_ex` and of
+/// `symbody_mechanism_with_parameters`.
+///
+/// # Safety
+/// As `symbody_session_new`; when `count > 0`, `names` and `values` point to `count`
+/// readable entries and each name is a NUL-terminated string.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn symbody_session_with_parameters(
+    name: *const c_char,
+    formulation: c_int,
+    alpha: f64,
+    step: f64,
+    flags: u32,
+    names: *const *const c_char,
+    values: *const f64,
+    count: usize,
+    out: *mut *mut SymbodySession,
+) -> c_int {
+    let find = |what: &str, f: c_int| {
+        // SAFETY: the caller's contract.
+        let params = unsafe { parameters(names, values, count)? };
+        lookup_with(what, f, &params)
+    };
+    // SAFETY: the same contract.
+    unsafe { new_session(name, "name", formulation, alpha, step, flags, out, &find) }
 }
 
 /// Builds a session of what `what` names, resolved by `find`.
@@ -119,7 +152,7 @@ unsafe fn new_session(
     step: f64,
     flags: u32,
     out: *mut *mut SymbodySession,
-    find: fn(&str, c_int) -> Found,
+    find: &dyn Fn(&str, c_int) -> Found,
 ) -> c_int {
     guard(|| {
         // SAFETY: the caller's contract above.

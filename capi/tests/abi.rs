@@ -987,3 +987,97 @@ fn bad_files_are_statuses_with_messages_naming_them() {
     assert_eq!(rc, status(SymbodyStatus::FileNotFound), "{msg}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Parameters set through C before anything is derived: the same mechanism and session as
+/// Rust's `files::with_parameters`, and a wrong name or value is an invalid argument that
+/// names the parameter.
+#[test]
+fn parameters_are_set_before_a_mechanism_or_session_starts() {
+    let name = cstr("slider_crank");
+    let r = cstr("r");
+    let names = [r.as_ptr()];
+    let values = [0.12];
+    let set = vec![("r".to_string(), 0.12)];
+    let rust = symbody::files::with_parameters(&symbody_mechanisms::REGISTRY, "slider_crank", &set)
+        .unwrap()
+        .default_mechanism();
+    let d = Settings::default();
+    // SAFETY: valid strings, arrays of `count` entries, out pointers and buffers.
+    unsafe {
+        let mut m = null_mut();
+        let rc = symbody_mechanism_with_parameters(
+            name.as_ptr(),
+            0,
+            names.as_ptr(),
+            values.as_ptr(),
+            1,
+            &mut m,
+        );
+        assert_eq!(rc, OK, "{}", last_error());
+        let n = symbody_mechanism_n_coords(m);
+        let mut q0 = vec![0.0; n];
+        assert_eq!(symbody_mechanism_q0(m, q0.as_mut_ptr(), n), OK);
+        assert_eq!(q0, rust.info().q0, "the q0 of the re-derived file");
+        assert_ne!(q0, symbody_mechanisms::slider_crank::exact::INFO.q0);
+        symbody_mechanism_free(m);
+
+        let mut s = null_mut();
+        let rc = symbody_session_with_parameters(
+            name.as_ptr(),
+            0,
+            d.alpha,
+            d.step,
+            SYMBODY_PROJECT_VELOCITIES,
+            names.as_ptr(),
+            values.as_ptr(),
+            1,
+            &mut s,
+        );
+        assert_eq!(rc, OK, "{}", last_error());
+        assert_eq!(symbody_session_advance_to(s, 0.1), OK, "{}", last_error());
+        let mut reference = Session::with_mechanism(
+            rust,
+            Settings {
+                project_velocities: true,
+                ..Settings::default()
+            },
+        )
+        .unwrap();
+        reference.advance_to(0.1).unwrap();
+        let mut q = vec![0.0; n];
+        assert_eq!(symbody_session_q(s, q.as_mut_ptr(), n), OK);
+        assert_eq!(q, reference.q());
+        symbody_session_free(s);
+
+        let bad = cstr("rr");
+        let rc = symbody_mechanism_with_parameters(
+            name.as_ptr(),
+            0,
+            [bad.as_ptr()].as_ptr(),
+            values.as_ptr(),
+            1,
+            &mut m,
+        );
+        assert_eq!(rc, status(SymbodyStatus::InvalidArgument));
+        assert!(
+            last_error().contains("did you mean `r`?"),
+            "{}",
+            last_error()
+        );
+        let rc = symbody_mechanism_with_parameters(
+            name.as_ptr(),
+            0,
+            names.as_ptr(),
+            [f64::NAN].as_ptr(),
+            1,
+            &mut m,
+        );
+        assert_eq!(rc, status(SymbodyStatus::InvalidArgument));
+        assert!(
+            last_error().contains("parameter `r` set to NaN"),
+            "{}",
+            last_error()
+        );
+        assert!(m.is_null());
+    }
+}
