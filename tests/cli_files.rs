@@ -165,3 +165,57 @@ fn bad_paths_and_bad_files_are_clear_errors() {
         }
     }
 }
+
+#[test]
+fn set_and_params_change_a_parameter_without_a_build() {
+    let dir = temp_dir("set");
+    let out_dir = dir.join("out");
+    let (out, stdout, stderr) = run(&[
+        "simulate".as_ref(),
+        "slider_crank".as_ref(),
+        "--set".as_ref(),
+        "r=0.12".as_ref(),
+        "--t-end".as_ref(),
+        "0.2".as_ref(),
+        "--no-plots".as_ref(),
+        "--out".as_ref(),
+        out_dir.as_os_str(),
+    ]);
+    assert!(out.status.success(), "{stdout}{stderr}");
+    assert!(stdout.contains("with r = 0.12"), "{stdout}");
+    let meta = std::fs::read_to_string(out_dir.join("meta.json")).unwrap();
+    assert!(meta.contains("\"r\": 0.12"), "{meta}");
+    // The scene route, on top of the scene's own parameters.
+    let (out, stdout, stderr) = run(&[
+        "run".as_ref(),
+        root().join("scenes/slider_crank.toml").as_os_str(),
+        "--set".as_ref(),
+        "r=0.12".as_ref(),
+        "--no-plots".as_ref(),
+        "--out".as_ref(),
+        dir.join("scene").as_os_str(),
+    ]);
+    assert!(out.status.success(), "{stdout}{stderr}");
+    assert!(stdout.contains("with r = 0.12"), "{stdout}");
+    // Listed with what each affects.
+    let (out, stdout, _) = run(&["params".as_ref(), "slider_crank".as_ref()]);
+    assert!(out.status.success());
+    let r = stdout.lines().find(|l| l.trim_start().starts_with("r ")).unwrap();
+    assert!(r.contains("0.1") && r.contains("body `crank`"), "{r}");
+    // Wrong names and values.
+    for (set, says) in [
+        ("rr=0.12", "did you mean `r`?"),
+        ("r=abc", "is not a number"),
+        ("r", "give NAME=VALUE"),
+        ("r=nan", "set to NaN"),
+    ] {
+        let (out, _, stderr) = run(&[
+            "simulate".as_ref(),
+            "slider_crank".as_ref(),
+            "--set".as_ref(),
+            set.as_ref(),
+        ]);
+        assert!(!out.status.success(), "{set}");
+        assert!(stderr.contains(says), "{set}: {stderr}");
+    }
+}
