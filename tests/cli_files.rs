@@ -200,7 +200,10 @@ fn set_and_params_change_a_parameter_without_a_build() {
     // Listed with what each affects.
     let (out, stdout, _) = run(&["params".as_ref(), "slider_crank".as_ref()]);
     assert!(out.status.success());
-    let r = stdout.lines().find(|l| l.trim_start().starts_with("r ")).unwrap();
+    let r = stdout
+        .lines()
+        .find(|l| l.trim_start().starts_with("r "))
+        .unwrap();
     assert!(r.contains("0.1") && r.contains("body `crank`"), "{r}");
     // Wrong names and values.
     for (set, says) in [

@@ -353,7 +353,7 @@ fn velocities_without_a_bodies_table_are_refused() {
     let (ok, _, err) = symbody_in(&dir, &["simulate", "--velocities", "--no-plots"]);
     assert!(!ok);
     assert!(
-        err.contains("--velocities applies to named mechanisms"),
+        err.contains("--velocities applies to a named mechanism or a file"),
         "{err}"
     );
     std::fs::write(
