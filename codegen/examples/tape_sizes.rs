@@ -12,9 +12,13 @@ fn main() {
             let tp = symbody_codegen::tape::lower(&sys.arena, n, o);
             (tp.len(), tp.runs())
         };
-        println!("{name}: newton {:?} kin {:?} mass {:?} force {:?} phi_q {:?}",
+        println!(
+            "{name}: newton {:?} kin {:?} mass {:?} force {:?} phi_q {:?}",
             t(&[&sys.phi, &pq, &mass, &d.force]),
             t(&[&sys.phi, &pq, &sys.phi_t, &sys.gamma]),
-            t(&[&mass]), t(&[&d.force]), t(&[&pq]));
+            t(&[&mass]),
+            t(&[&d.force]),
+            t(&[&pq])
+        );
     }
 }
