@@ -2,8 +2,12 @@
 //! (byte edits, token insertions, line deletions, duplications and swaps, truncations) and
 //! random structured files ([`structured`]: bodies, joints, drivers and loads of random kinds,
 //! names and values, valid TOML) go through [`crate::model::load`], and those that load through
-//! the rest of [`crate::generate`]; any panic is a failure. Used by the `fuzz` binary (10⁶ inputs) and by a seeded test that
-//! runs a small share in CI.
+//! the rest of [`crate::generate`]; any panic is a failure. Those that load also run in the
+//! interpreter ([`interpret_one`]): every [`Mechanism`] function at the file's state and at
+//! NaN, infinite and huge ones, a few HHT steps and position solves, where a panic or a
+//! solver `Ok` holding a non-finite state is a failure and everything else must come back as
+//! a typed [`symbody_runtime::Error`]. Used by the `fuzz` binary (10⁶ inputs) and by a seeded
+//! test that runs a small share in CI.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use symbody_runtime::{KinematicOutputs, Mechanism, NewtonOutputs};
@@ -563,14 +567,14 @@ fn run_position(mech: &(dyn Mechanism + Sync), t: f64, q: &[f64], out: &mut Inte
 /// formulation every [`Mechanism`] function at `q0`/`qd0` and at `states` random perturbed
 /// states (NaN, infinite and huge entries among them, and such times), and when `solve`, a
 /// few HHT steps from the file's state and from a perturbed one and kinematic position
-/// solves. `Err(())` when anything panicked; findings (an `Ok` with a non-finite state) are
+/// solves. `None` when anything panicked; findings (an `Ok` with a non-finite state) are
 /// in the result.
 pub fn interpret_one(
     text: &str,
     rng: &mut Rng,
     states: usize,
     solve: bool,
-) -> Result<Interpretation, ()> {
+) -> Option<Interpretation> {
     let mut out = Interpretation::default();
     catch_unwind(AssertUnwindSafe(|| {
         // SAFETY: the solvers are built and dropped inside the closure, and nothing taken
@@ -581,8 +585,8 @@ pub fn interpret_one(
             })
         };
     }))
-    .map_err(|_| ())?;
-    Ok(out)
+    .ok()?;
+    Some(out)
 }
 
 /// What [`interpret_one`] does with an entry that loaded.

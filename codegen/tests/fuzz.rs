@@ -66,7 +66,7 @@ fn random_structured_files_run_in_the_interpreter() {
         let mut rng = Rng(0x1a7e ^ i);
         let text = structured(&mut rng);
         let r = interpret_one(&text, &mut rng, 4, true)
-            .unwrap_or_else(|()| panic!("input {i} panicked in the interpreter:\n{text}"));
+            .unwrap_or_else(|| panic!("input {i} panicked in the interpreter:\n{text}"));
         assert!(r.findings.is_empty(), "input {i}: {:?}\n{text}", r.findings);
         built += usize::from(r.built);
         steps += r.steps;
@@ -95,7 +95,7 @@ fn kept_fuzz_inputs_never_panic_again() {
             // Through the interpreter too, from several random states.
             for seed in 0..16 {
                 let r = interpret_one(&text, &mut Rng(seed), 4, true)
-                    .unwrap_or_else(|()| panic!("{} panicked in the interpreter", path.display()));
+                    .unwrap_or_else(|| panic!("{} panicked in the interpreter", path.display()));
                 assert!(
                     r.findings.is_empty(),
                     "{}: {:?}",

@@ -157,11 +157,11 @@ fn main() {
                     let mut s = interpreted.lock().unwrap();
                     s.inputs += 1;
                     match result {
-                        Err(()) => {
+                        None => {
                             s.panics += 1;
                             outcome = Outcome::Panicked;
                         }
-                        Ok(r) => {
+                        Some(r) => {
                             s.built += usize::from(r.built);
                             s.formulations += r.formulations;
                             s.solved += usize::from(solve && r.built);
