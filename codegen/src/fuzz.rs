@@ -2,10 +2,15 @@
 //! (byte edits, token insertions, line deletions, duplications and swaps, truncations) and
 //! random structured files ([`structured`]: bodies, joints, drivers and loads of random kinds,
 //! names and values, valid TOML) go through [`crate::model::load`], and those that load through
-//! the rest of [`crate::generate`]; any panic is a failure. Used by the `fuzz` binary (10⁶ inputs) and by a seeded test that
-//! runs a small share in CI.
+//! the rest of [`crate::generate`]; any panic is a failure. Those that load also run in the
+//! interpreter ([`interpret_one`]): every [`Mechanism`] function at the file's state and at
+//! NaN, infinite and huge ones, a few HHT steps and position solves, where a panic or a
+//! solver `Ok` holding a non-finite state is a failure and everything else must come back as
+//! a typed [`symbody_runtime::Error`]. Used by the `fuzz` binary (10⁶ inputs) and by a seeded
+//! test that runs a small share in CI.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use symbody_runtime::{KinematicOutputs, Mechanism, NewtonOutputs};
 
 /// Fragments that stress the parser and the validator: TOML structure, the schema's keys,
 /// numbers at the edges of f64, expression syntax, and non-ASCII text.
@@ -398,4 +403,217 @@ pub fn run_one(text: &str, full: bool) -> Outcome {
         }
     }));
     result.unwrap_or(Outcome::Panicked)
+}
+
+/// What one input did in the interpreter ([`interpret_one`]).
+#[derive(Debug, Default, Clone)]
+pub struct Interpretation {
+    /// [`crate::interpret::load`] built its entry (otherwise it reported errors).
+    pub built: bool,
+    /// Formulations whose every [`Mechanism`] function was evaluated.
+    pub formulations: usize,
+    /// HHT integrators asked to start (from the file's state and from a perturbed one).
+    pub solver_runs: usize,
+    /// HHT steps that returned `Ok`.
+    pub steps: usize,
+    /// Kinematic position solves run.
+    pub position_solves: usize,
+    /// Typed runtime errors returned, by variant name (`NewtonFailed`, `NotFinite`, …).
+    pub errors: Vec<String>,
+    /// Solver results that came back `Ok` with a NaN or infinite state: bugs.
+    pub findings: Vec<String>,
+}
+
+/// The variant name of a runtime error (`NewtonFailed`, `NotFinite`, …).
+fn variant(e: &symbody_runtime::Error) -> String {
+    format!("{e:?}")
+        .chars()
+        .take_while(|c| c.is_ascii_alphanumeric())
+        .collect()
+}
+
+/// `base` with a random perturbation: small noise, or one entry NaN, infinite or huge, or
+/// all entries huge.
+fn perturb(base: &[f64], rng: &mut Rng) -> Vec<f64> {
+    let mut v = base.to_vec();
+    if v.is_empty() {
+        return v;
+    }
+    let k = rng.below(v.len());
+    match rng.below(6) {
+        0 => v[k] = f64::NAN,
+        1 => v[k] = [f64::INFINITY, f64::NEG_INFINITY][rng.below(2)],
+        2 => v[k] = [1e300, -1e300, 1e18, f64::MAX][rng.below(4)],
+        3 => v.iter_mut().for_each(|x| *x = *x * 1e200 + 1e200),
+        _ => {
+            for x in &mut v {
+                *x += (rng.below(2001) as f64 - 1000.0) * 1e-4;
+            }
+        }
+    }
+    v
+}
+
+/// Evaluates every [`Mechanism`] function of `mech` at `(q, qd, t)`, as a solver would (the
+/// outputs are allowed to be NaN: only a panic is wrong here).
+fn evaluate_all(mech: &dyn Mechanism, q: &[f64], qd: &[f64], t: f64) {
+    let info = mech.info();
+    let (n, m) = (info.n_coords, info.n_constraints);
+    let (mut phi, mut phi_q) = (vec![0.0; m], vec![0.0; info.phi_q_nnz()]);
+    let (mut phi_t, mut gamma) = (vec![0.0; m], vec![0.0; m]);
+    let (mut mass, mut force) = (vec![0.0; info.mass_nnz()], vec![0.0; n]);
+    let mut dq = vec![0.0; info.force_q_rows.len()];
+    let mut dqd = vec![0.0; info.force_qd_rows.len()];
+    mech.phi(q, t, &mut phi);
+    mech.phi_q(q, t, &mut phi_q);
+    mech.phi_t(q, t, &mut phi_t);
+    mech.gamma(q, qd, t, &mut gamma);
+    mech.mass(q, &mut mass);
+    mech.force(q, qd, t, &mut force);
+    mech.force_jacobian(q, qd, t, &mut dq, &mut dqd);
+    let _ = mech.potential(q);
+    let _ = mech.power_nc(q, qd, t);
+    mech.eval_newton(
+        q,
+        qd,
+        t,
+        NewtonOutputs {
+            phi: &mut phi,
+            phi_q: &mut phi_q,
+            mass: &mut mass,
+            force: &mut force,
+        },
+    );
+    mech.eval_kinematics(
+        q,
+        qd,
+        t,
+        KinematicOutputs {
+            phi: &mut phi,
+            phi_q: &mut phi_q,
+            phi_t: &mut phi_t,
+            gamma: &mut gamma,
+        },
+    );
+}
+
+fn finite(v: &[f64]) -> bool {
+    v.iter().all(|x| x.is_finite())
+}
+
+/// Starts HHT on `mech` (from the file's state, or from `start` when given) and takes up to
+/// `steps` steps; every `Ok` must leave a finite state.
+fn run_hht(
+    mech: &'static (dyn Mechanism + Sync),
+    start: Option<(&[f64], &[f64])>,
+    steps: usize,
+    what: &str,
+    out: &mut Interpretation,
+) {
+    out.solver_runs += 1;
+    let mut builder = symbody_runtime::HhtBuilder::new().project_velocities(true);
+    builder = match start {
+        Some((q, qd)) => builder.q0(q).qd0(qd),
+        None => builder.qd0(mech.info().qd0),
+    };
+    let mut it = match builder.build(mech) {
+        Ok(it) => it,
+        Err(e) => return out.errors.push(variant(&e)),
+    };
+    let check = |it: &symbody_runtime::Integrator<_>, when: &str, out: &mut Interpretation| {
+        let ok = finite(it.q()) && finite(it.qd()) && it.t().is_finite();
+        if !ok {
+            out.findings.push(format!(
+                "{what}: Ok with a non-finite state {when} (t = {}, q = {:?}, qd = {:?})",
+                it.t(),
+                it.q(),
+                it.qd()
+            ));
+        }
+        ok
+    };
+    if !check(&it, "after the consistent start", out) {
+        return;
+    }
+    for k in 0..steps {
+        match it.step() {
+            Ok(_) => {
+                out.steps += 1;
+                if !check(&it, &format!("after step {}", k + 1), out) {
+                    return;
+                }
+            }
+            Err(e) => return out.errors.push(variant(&e)),
+        }
+    }
+}
+
+/// A kinematic position solve of `mech` at `t` from `q`; an `Ok` must leave `q` finite.
+fn run_position(mech: &(dyn Mechanism + Sync), t: f64, q: &[f64], out: &mut Interpretation) {
+    out.position_solves += 1;
+    let mut q = q.to_vec();
+    let result = symbody_runtime::Kinematics::<symbody_runtime::SchurKkt>::new(mech.info())
+        .and_then(|mut kin| kin.position(&mech, t, &mut q));
+    match result {
+        Err(e) => out.errors.push(variant(&e)),
+        Ok(_) if !finite(&q) => out.findings.push(format!(
+            "position solve at t = {t}: Ok with a non-finite q = {q:?}"
+        )),
+        Ok(_) => {}
+    }
+}
+
+/// Runs one input through the interpreter: [`crate::interpret::load`], then for every
+/// formulation every [`Mechanism`] function at `q0`/`qd0` and at `states` random perturbed
+/// states (NaN, infinite and huge entries among them, and such times), and when `solve`, a
+/// few HHT steps from the file's state and from a perturbed one and kinematic position
+/// solves. `None` when anything panicked; findings (an `Ok` with a non-finite state) are
+/// in the result.
+pub fn interpret_one(
+    text: &str,
+    rng: &mut Rng,
+    states: usize,
+    solve: bool,
+) -> Option<Interpretation> {
+    let mut out = Interpretation::default();
+    catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: the solvers are built and dropped inside the closure, and nothing taken
+        // from the entry leaves it.
+        let _ = unsafe {
+            crate::interpret::load_scoped("fuzz.toml", text, false, |loaded| {
+                exercise(loaded, rng, states, solve, &mut out)
+            })
+        };
+    }))
+    .ok()?;
+    Some(out)
+}
+
+/// What [`interpret_one`] does with an entry that loaded.
+fn exercise(
+    loaded: &crate::interpret::Loaded,
+    rng: &mut Rng,
+    states: usize,
+    solve: bool,
+    out: &mut Interpretation,
+) {
+    out.built = true;
+    for &(_, mech) in loaded.entry.formulations {
+        let info = mech.info();
+        evaluate_all(mech, info.q0, info.qd0, 0.0);
+        for _ in 0..states {
+            let q = perturb(info.q0, rng);
+            let qd = perturb(info.qd0, rng);
+            let t = [0.0, 0.37, 1e300, f64::NAN, f64::INFINITY][rng.below(5)];
+            evaluate_all(mech, &q, &qd, t);
+        }
+        out.formulations += 1;
+        if solve {
+            run_hht(mech, None, 5, "HHT from the file's state", out);
+            let (q, qd) = (perturb(info.q0, rng), perturb(info.qd0, rng));
+            run_hht(mech, Some((&q, &qd)), 2, "HHT from a perturbed state", out);
+            run_position(mech, 0.25, info.q0, out);
+            run_position(mech, 0.0, &perturb(info.q0, rng), out);
+        }
+    }
 }

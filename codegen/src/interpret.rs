@@ -10,6 +10,8 @@ use crate::model::{self, Model};
 use crate::symbolic::Entry as Nonzero;
 use crate::tape::lower;
 use crate::{info, Errors, Report};
+use std::any::Any;
+use std::cell::RefCell;
 use std::sync::Arc;
 use symbody_runtime::interpreted::{DynamicTapes, KinematicTapes};
 use symbody_runtime::registry::Formulations;
@@ -29,12 +31,32 @@ pub struct Loaded {
     pub parameters: Vec<model::Parameter>,
 }
 
-fn leak<T>(v: Vec<T>) -> &'static [T] {
-    Box::leak(v.into_boxed_slice())
+thread_local! {
+    /// While [`load_scoped`] builds an entry: where its allocations are kept instead of
+    /// leaked, to be freed when the caller is done with the entry.
+    static KEPT: RefCell<Option<Vec<Box<dyn Any>>>> = const { RefCell::new(None) };
+}
+
+/// `b` for the rest of the program, or, while [`load_scoped`] builds, until it returns.
+fn keep<T: ?Sized + 'static>(b: Box<T>) -> &'static T {
+    KEPT.with(|kept| match kept.borrow_mut().as_mut() {
+        None => Box::leak(b),
+        Some(kept) => {
+            let p: *const T = &*b;
+            kept.push(Box::new(b));
+            // SAFETY: moving the box does not move its allocation, which `load_scoped` frees
+            // only after its caller's closure, whose contract is not to keep the reference.
+            unsafe { &*p }
+        }
+    })
+}
+
+fn leak<T: 'static>(v: Vec<T>) -> &'static [T] {
+    keep(v.into_boxed_slice())
 }
 
 fn leak_str(s: &str) -> &'static str {
-    Box::leak(s.to_owned().into_boxed_str())
+    keep(s.to_owned().into_boxed_str())
 }
 
 fn leak_strs(v: &[String]) -> &'static [&'static str] {
@@ -75,6 +97,37 @@ pub fn load_with(
         report: assembly.report,
         parameters: model.parameters,
     })
+}
+
+/// As [`load`], but the entry lives only while `f` runs and is freed when it returns (or
+/// panics): for callers that load many files, such as the fuzzer, where [`load`]'s entries
+/// (tens of kB each) would add up.
+///
+/// # Safety
+///
+/// Nothing reached through the entry (its mechanisms, their [`MechanismInfo`], names,
+/// patterns) may be used after `f` returns: every solver built on it must be dropped inside
+/// `f`, and no `&'static` reference taken from it may be stored elsewhere.
+pub unsafe fn load_scoped<R>(
+    source: &str,
+    text: &str,
+    stale: bool,
+    f: impl FnOnce(&Loaded) -> R,
+) -> Result<R, Errors> {
+    /// Frees what the entry kept, also when `load` or `f` panics.
+    struct Freed(Option<Vec<Box<dyn Any>>>);
+    impl Drop for Freed {
+        fn drop(&mut self) {
+            KEPT.with(|kept| kept.borrow_mut().take());
+            drop(self.0.take());
+        }
+    }
+    let previous = KEPT.with(|kept| kept.borrow_mut().replace(Vec::new()));
+    assert!(previous.is_none(), "load_scoped does not nest");
+    let mut freed = Freed(None);
+    let loaded = load(source, text, stale);
+    freed.0 = KEPT.with(|kept| kept.borrow_mut().take());
+    Ok(f(&loaded?))
 }
 
 fn kinematic_tapes(sys: &System) -> KinematicTapes {
@@ -180,7 +233,7 @@ fn entry(
             let (mass_rows, mass_cols) = pattern(&d.mass);
             let (force_q_rows, force_q_cols) = pattern(&d.force_q);
             let (force_qd_rows, force_qd_cols) = pattern(&d.force_qd);
-            let info: &'static MechanismInfo = Box::leak(Box::new(MechanismInfo {
+            let info: &'static MechanismInfo = keep(Box::new(MechanismInfo {
                 name,
                 n_coords: sys.n_coords,
                 n_constraints: sys.n_constraints,
@@ -205,12 +258,12 @@ fn entry(
                 platform,
             }));
             let m = Interpreted::new(info, kinematic.clone(), Arc::new(dynamic_tapes(sys, d)));
-            let m: &'static (dyn Mechanism + Sync) = Box::leak(Box::new(m));
+            let m: &'static (dyn Mechanism + Sync) = keep(Box::new(m));
             (formulation, m)
         })
         .collect();
     let formulations: Formulations = leak(formulations);
-    Box::leak(Box::new(Entry {
+    keep(Box::new(Entry {
         name,
         t_end: model.t_end,
         formulations,

@@ -850,6 +850,10 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 return Err(Failure::NotFinite);
             }
             if iter > 0 && last_err <= 1.0 && residual <= s.phi_tol {
+                // Φ and the increments can be finite while a coordinate no row holds is not.
+                if !inf_norm(&self.q1).is_finite() || !inf_norm(&self.qd1).is_finite() {
+                    return Err(Failure::NotFinite);
+                }
                 return Ok(StepReport {
                     h,
                     iterations: iter,

@@ -500,3 +500,30 @@ fn a_quaternion_body_spins_through_the_euler_singularity() {
     assert!(hht.first_euler_warning().is_none());
     assert!(worst < 1e-6 * scale, "energy drift {}", worst / scale);
 }
+
+#[test]
+fn a_non_finite_start_is_refused_with_a_typed_error() {
+    // Found by the interpreter fuzzer: a NaN in a coordinate or velocity no row holds used
+    // to pass the consistent start and come back `Ok` with a NaN state.
+    for bad in [f64::NAN, f64::INFINITY] {
+        for k in 0..6 {
+            let mut q = planar_q0(0.3);
+            q[k] = bad;
+            let e = HhtBuilder::new()
+                .q0(&q)
+                .build(Pendulum::paper())
+                .err()
+                .unwrap();
+            assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
+            let mut qd = [0.0; 6];
+            qd[k] = bad;
+            let e = HhtBuilder::new()
+                .q0(&planar_q0(0.3))
+                .qd0(&qd)
+                .build(Pendulum::paper())
+                .err()
+                .unwrap();
+            assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
+        }
+    }
+}

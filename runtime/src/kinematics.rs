@@ -229,6 +229,14 @@ impl<K: KktSolver> Kinematics<K> {
         check_len("q", self.info.n_coords, q.len())?;
         let info = self.info;
         let tol = self.settings.position_tolerance;
+        // A NaN or infinite coordinate that no constraint row holds would leave Φ finite
+        // and "converge" with it still in q.
+        if !inf_norm(q).is_finite() {
+            return Err(Error::NotFinite {
+                time: t,
+                what: "coordinates q given to position analysis",
+            });
+        }
         self.f.fill(0.0);
         // The iterate closest to Φ = 0 and its worst row: what to report if Newton fails (a
         // diverged last iterate would name an arbitrary row).
@@ -258,6 +266,13 @@ impl<K: KktSolver> Kinematics<K> {
             }
             if residual <= tol {
                 if redundant <= tol {
+                    // Φ can hold while a correction of a coordinate outside it overflowed.
+                    if !inf_norm(q).is_finite() {
+                        return Err(Error::NotFinite {
+                            time: t,
+                            what: "coordinates q in position analysis",
+                        });
+                    }
                     return Ok(PositionReport {
                         iterations: it,
                         residual: residual.max(redundant),
@@ -415,7 +430,7 @@ impl<K: KktSolver> Kinematics<K> {
         self.kkt
             .solve(&self.f, &self.g, qd, &mut self.mu)
             .map_err(|e| e.to_error(info, t))?;
-        if inf_norm(qd).is_nan() {
+        if !inf_norm(qd).is_finite() {
             return Err(Error::NotFinite {
                 time: t,
                 what: "velocity analysis",
@@ -467,7 +482,7 @@ impl<K: KktSolver> Kinematics<K> {
         self.kkt
             .solve(&self.f, &self.g, qd, &mut self.mu)
             .map_err(|e| e.to_error(info, t))?;
-        if inf_norm(qd).is_nan() {
+        if !inf_norm(qd).is_finite() {
             return Err(Error::NotFinite {
                 time: t,
                 what: "velocity analysis",
@@ -516,7 +531,7 @@ impl<K: KktSolver> Kinematics<K> {
         self.kkt
             .solve(&self.force, &self.gamma, qdd, lambda)
             .map_err(|e| e.to_error(info, t))?;
-        if inf_norm(qdd).is_nan() || inf_norm(lambda).is_nan() {
+        if !inf_norm(qdd).is_finite() || !inf_norm(lambda).is_finite() {
             return Err(Error::NotFinite {
                 time: t,
                 what: "acceleration analysis",
@@ -576,6 +591,22 @@ mod tests {
         assert!(q[4].abs() < 1e-4, "spin β = {}", q[4]);
         assert!(q[3].abs() > 1e-3 && q[5].abs() > 1e-3);
         assert!((q[1] + PENDULUM_LENGTH).abs() < 0.05);
+    }
+
+    #[test]
+    fn position_rejects_non_finite_coordinates() {
+        // A coordinate no row holds (a free body's, found by the interpreter fuzzer) would
+        // leave Φ finite and come back `Ok` still NaN: every start is checked.
+        let mech = Pendulum::paper();
+        let mut kin = Kinematics::<SchurKkt>::new(mech.info()).unwrap();
+        for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            for k in 0..6 {
+                let mut q = [0.05, -0.45, 0.02, 0.0, 0.0, 0.0];
+                q[k] = bad;
+                let e = kin.position(&mech, 0.0, &mut q).unwrap_err();
+                assert!(matches!(e, Error::NotFinite { .. }), "{e:?}");
+            }
+        }
     }
 
     #[test]

@@ -1,14 +1,49 @@
 //! `cargo run --release -p symbody-codegen --bin fuzz -- [--inputs N] [--seed S]
-//! [--generate-every K]`: N inputs (default 10⁶), three in four mutants of the shipped mechanism
-//! files and one in four a random structured file; every input goes through `load`, and one
-//! loaded mutant in K (default 1000) and one loaded structured file in 20 through all of
-//! `generate`; reports throughput and any panic. Inputs that panic are written to
-//! `codegen/tests/fuzz_regressions/`, where `cargo test` replays them.
+//! [--generate-every K] [--interpret-every J] [--solve-every L] [--dump I]`: N inputs (default 10⁶), three
+//! in four mutants of the shipped mechanism files and one in four a random structured file;
+//! every input goes through `load`, and one loaded mutant in K (default 1000) and one loaded
+//! structured file in 20 through all of `generate`. Every loaded structured file and one
+//! loaded mutant in J (default 100) also goes through the interpreter
+//! ([`symbody_codegen::fuzz::interpret_one`]: every mechanism function at the file's state and
+//! at perturbed ones with NaN, infinite and huge entries), one in L of those (default 1) through
+//! a few HHT steps and kinematic position solves too. Reports throughput, the runtime's typed
+//! errors by kind, any panic and any solver `Ok` with a non-finite state (a finding). Inputs
+//! that panic or give a finding are written to `codegen/tests/fuzz_regressions/`, where
+//! `cargo test` replays them.
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 use std::time::Instant;
-use symbody_codegen::fuzz::{mutate, run_one, structured, Outcome, Rng};
+use symbody_codegen::fuzz::{interpret_one, mutate, run_one, structured, Outcome, Rng};
+
+/// What the interpreter share did, summed over the inputs.
+#[derive(Default)]
+struct Interpreted {
+    inputs: usize,
+    built: usize,
+    formulations: usize,
+    solved: usize,
+    solver_runs: usize,
+    steps: usize,
+    position_solves: usize,
+    errors: BTreeMap<String, usize>,
+    findings: usize,
+    panics: usize,
+}
+
+/// Resident memory of this process in MiB (Linux), to see what the leaked entries cost.
+fn resident_mib() -> f64 {
+    std::fs::read_to_string("/proc/self/status")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("VmRSS:"))
+                .and_then(|l| l.split_whitespace().nth(1)?.parse::<f64>().ok())
+        })
+        .map_or(f64::NAN, |kib| kib / 1024.0)
+}
 
 fn arg(args: &[String], name: &str, default: u64) -> u64 {
     args.iter()
@@ -37,14 +72,42 @@ fn corpus(dir: &Path) -> Vec<(String, String)> {
         .collect()
 }
 
+/// Input `i` of `seed`: its origin, its text, the generator that made it (to go on
+/// drawing from) and whether it is a structured file.
+fn input(seed: u64, i: usize, files: &[(String, String)]) -> (&str, String, Rng, bool) {
+    let mut rng = Rng(seed.wrapping_mul(0x1000_0000_01b3) ^ i as u64);
+    let is_structured = i % 4 == 3;
+    if is_structured {
+        let text = structured(&mut rng);
+        ("structured", text, rng, true)
+    } else {
+        let (name, text) = &files[rng.below(files.len())];
+        (name.as_str(), mutate(text, &mut rng), rng, false)
+    }
+}
+
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let inputs = arg(&args, "--inputs", 1_000_000) as usize;
     let seed = arg(&args, "--seed", 1);
     let every = arg(&args, "--generate-every", 1000).max(1) as usize;
+    // 0 turns the interpreter off.
+    let interpret_every = arg(&args, "--interpret-every", 100) as usize;
+    let solve_every = arg(&args, "--solve-every", 1).max(1) as usize;
+    let interpreted = Mutex::new(Interpreted::default());
+    let interpret_seen = AtomicUsize::new(0);
+    let loaded_mutants = AtomicUsize::new(0);
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let files = corpus(&root.join("../mechanisms"));
     let out = root.join("tests/fuzz_regressions");
+    // `--dump I`: print input I of the seed and stop (to look at a reported one).
+    if args.iter().any(|a| a == "--dump") {
+        print!(
+            "{}",
+            input(seed, arg(&args, "--dump", 0) as usize, &files).1
+        );
+        return;
+    }
     // A panic is recorded as a failing input; its message would only flood the terminal.
     std::panic::set_hook(Box::new(|_| {}));
     let counts: [AtomicUsize; 4] = Default::default();
@@ -61,14 +124,7 @@ fn main() {
                 if i >= inputs {
                     break;
                 }
-                let mut rng = Rng(seed.wrapping_mul(0x1000_0000_01b3) ^ i as u64);
-                let is_structured = i % 4 == 3;
-                let (name, mutant) = if is_structured {
-                    ("structured", structured(&mut rng))
-                } else {
-                    let (name, text) = &files[rng.below(files.len())];
-                    (name.as_str(), mutate(text, &mut rng))
-                };
+                let (name, mutant, mut rng, is_structured) = input(seed, i, &files);
                 let mut outcome = run_one(&mutant, false);
                 // Structured files are small and reach generation's checks: generate more.
                 let full = if is_structured {
@@ -84,20 +140,63 @@ fn main() {
                     outcome = run_one(&mutant, true);
                 }
                 counts[outcome as usize].fetch_add(1, Ordering::Relaxed);
+                // The interpreter: every loaded structured file, one loaded mutant in J.
+                let interpret = interpret_every > 0
+                    && outcome != Outcome::Rejected
+                    && outcome != Outcome::Panicked
+                    && (is_structured
+                        || loaded_mutants
+                            .fetch_add(1, Ordering::Relaxed)
+                            .is_multiple_of(interpret_every));
+                let mut finding = false;
+                if interpret {
+                    let solve = interpret_seen
+                        .fetch_add(1, Ordering::Relaxed)
+                        .is_multiple_of(solve_every);
+                    let result = interpret_one(&mutant, &mut rng, 4, solve);
+                    let mut s = interpreted.lock().unwrap();
+                    s.inputs += 1;
+                    match result {
+                        None => {
+                            s.panics += 1;
+                            outcome = Outcome::Panicked;
+                        }
+                        Some(r) => {
+                            s.built += usize::from(r.built);
+                            s.formulations += r.formulations;
+                            s.solved += usize::from(solve && r.built);
+                            s.solver_runs += r.solver_runs;
+                            s.steps += r.steps;
+                            s.position_solves += r.position_solves;
+                            for e in r.errors {
+                                *s.errors.entry(e).or_default() += 1;
+                            }
+                            if !r.findings.is_empty() {
+                                s.findings += 1;
+                                finding = true;
+                                eprintln!("finding on input {i} (from {name}): {}", r.findings[0]);
+                            }
+                        }
+                    }
+                }
                 if is_structured && outcome != Outcome::Rejected {
                     structured_loaded.fetch_add(1, Ordering::Relaxed);
                 }
-                if outcome == Outcome::Panicked {
+                if outcome == Outcome::Panicked || finding {
                     std::fs::create_dir_all(&out).ok();
                     let path = out.join(format!("{name}_{seed}_{i}.toml"));
                     std::fs::write(&path, &mutant).ok();
                     eprintln!(
-                        "panic on input {i} (from {name}): kept as {}",
+                        "panic or finding on input {i} (from {name}): kept as {}",
                         path.display()
                     );
                 }
                 if i > 0 && i.is_multiple_of(100_000) {
-                    eprintln!("{i} inputs, {:.0} s", start.elapsed().as_secs_f64());
+                    eprintln!(
+                        "{i} inputs, {:.0} s, {:.0} MiB resident",
+                        start.elapsed().as_secs_f64(),
+                        resident_mib()
+                    );
                 }
             });
         }
@@ -121,7 +220,22 @@ fn main() {
         inputs / 4,
         structured_loaded.load(Ordering::Relaxed)
     );
-    if c(Outcome::Panicked) > 0 {
+    let s = interpreted.into_inner().unwrap();
+    println!(
+        "  interpreted {} (every loaded structured file, one loaded mutant in {interpret_every}): \
+         {} built, {} formulations evaluated at 5 states each; {} ran the solvers \
+         (one in {solve_every}): {} HHT starts, {} HHT steps Ok, {} position solves",
+        s.inputs, s.built, s.formulations, s.solved, s.solver_runs, s.steps, s.position_solves
+    );
+    let errors: Vec<String> = s.errors.iter().map(|(k, v)| format!("{k} {v}")).collect();
+    println!("  runtime errors: {}", errors.join(", "));
+    println!(
+        "  interpreter panics {}, findings (Ok with a non-finite state) {}; {:.0} MiB resident at the end",
+        s.panics,
+        s.findings,
+        resident_mib()
+    );
+    if c(Outcome::Panicked) > 0 || s.findings > 0 {
         std::process::exit(1);
     }
 }
