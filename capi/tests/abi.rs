@@ -1081,3 +1081,48 @@ fn parameters_are_set_before_a_mechanism_or_session_starts() {
         assert!(m.is_null());
     }
 }
+
+/// The four files a new user wrote from published definitions (examples/mechanisms/) run
+/// through the C ABI with nothing built: a session from each file keeps its constraints.
+#[test]
+fn the_example_files_run_from_c() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../examples/mechanisms");
+    let d = Settings::default();
+    for stem in [
+        "three_rps",
+        "rsup_slider_crank",
+        "parallelogram_four_bar",
+        "bricard_loop",
+    ] {
+        let path = cstr(dir.join(format!("{stem}.toml")).to_str().unwrap());
+        // SAFETY: valid strings, out pointers, handles and buffers of the lengths passed.
+        unsafe {
+            let mut s = null_mut();
+            let rc = symbody_session_from_file(path.as_ptr(), 0, d.alpha, d.step, 0, &mut s);
+            assert_eq!(rc, OK, "{stem}: {}", last_error());
+            assert_eq!(
+                symbody_session_advance_to(s, 0.05),
+                OK,
+                "{stem}: {}",
+                last_error()
+            );
+            let mut m = null_mut();
+            assert_eq!(symbody_session_mechanism(s, &mut m), OK);
+            let (n, rows) = (
+                symbody_mechanism_n_coords(m),
+                symbody_mechanism_n_constraints(m),
+            );
+            let (mut q, mut phi) = (vec![0.0; n], vec![0.0; rows]);
+            assert_eq!(symbody_session_q(s, q.as_mut_ptr(), n), OK);
+            let t = symbody_session_t(s);
+            assert_eq!(
+                symbody_mechanism_phi(m, q.as_ptr(), n, t, phi.as_mut_ptr(), rows),
+                OK
+            );
+            let worst = phi.iter().fold(0.0f64, |w, x| w.max(x.abs()));
+            assert!(worst < 1e-8, "{stem}: |Φ| = {worst:e}");
+            symbody_mechanism_free(m);
+            symbody_session_free(s);
+        }
+    }
+}

@@ -126,3 +126,21 @@ def test_bad_files_are_exceptions_naming_them(tmp_path):
                 assert says in message, message
     with pytest.raises(TypeError, match="os.PathLike"):
         symbody.Mechanism(42)
+
+
+@pytest.mark.parametrize(
+    "stem", ["three_rps", "rsup_slider_crank", "parallelogram_four_bar", "bricard_loop"]
+)
+def test_the_example_files_run_from_python(stem):
+    """The four files a new user wrote from published definitions (examples/mechanisms/) run
+    from Python with nothing built: a short simulation holds the constraints, and a session
+    and the functions work on the same file."""
+    path = REPO / "examples" / "mechanisms" / f"{stem}.toml"
+    run = symbody.simulate(path, t_end=0.2)
+    assert run.summary["source"] == str(path)
+    assert run.summary["max_phi"] < 1e-8
+    session = symbody.Session(path)
+    session.advance_to(0.05)
+    m = symbody.Mechanism(path)
+    assert m.interpreted
+    assert np.abs(m.phi(session.q, 0.05)).max() < 1e-8
