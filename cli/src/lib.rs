@@ -30,6 +30,9 @@ macro_rules! say {
     }};
 }
 
+// After `say!`, which it uses.
+mod study;
+
 #[derive(Parser)]
 #[command(
     name = "symbody",
@@ -110,6 +113,24 @@ enum Command {
     Check {
         /// The mechanism file, e.g. robot.toml.
         file: PathBuf,
+    },
+    /// Run a scene once per row of its `[study]` (its mechanism file's parameters on a grid,
+    /// a list or random samples), on every core: study.csv gets one row of metrics per run
+    /// (largest driver efforts and joint forces and moments, energy balance, status, wall
+    /// time) as each ends.
+    Study {
+        /// The scene file, with a [study] table.
+        scene: PathBuf,
+        /// Runs at a time (default: the number of cores).
+        #[arg(long)]
+        jobs: Option<usize>,
+        /// Output folder (default: out/<scene file stem>/).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Keep the finished rows of an earlier study.csv with the same columns and run only
+        /// the others.
+        #[arg(long)]
+        resume: bool,
     },
     /// The parameters of a mechanism's file: names, values, the expressions of derived ones,
     /// and the items (bodies, joints, drivers, forces) each one affects.
@@ -282,6 +303,24 @@ pub fn main(registry: &Registry) -> ExitCode {
             .parse()
             .and_then(|p| run_scene(registry, &scene, &files, &p)),
         Command::Params { mechanism } => list_parameters(registry, &mechanism),
+        Command::Study {
+            scene,
+            jobs,
+            out,
+            resume,
+        } => {
+            let jobs = jobs.unwrap_or_else(|| {
+                std::thread::available_parallelism().map_or(1, |n| n.get())
+            });
+            let out = out.unwrap_or_else(|| {
+                default_out(&scene.file_stem().map_or("study".into(), |s| s.to_string_lossy()))
+            });
+            if jobs == 0 {
+                Err("--jobs 0: give at least 1".to_string())
+            } else {
+                study::run(registry, &scene, &out, jobs, resume)
+            }
+        }
         Command::Fk {
             mechanism,
             lengths,

@@ -33,6 +33,17 @@ pub fn catch_interrupts() {
     });
 }
 
+/// The Ctrl-C flag, for work that is not a [`Live`] run (a study): while `listen(true)`,
+/// Ctrl-C sets it instead of ending the process.
+pub fn interrupt_flag() -> &'static AtomicBool {
+    &INTERRUPTED
+}
+
+/// Whether Ctrl-C sets [`interrupt_flag`] (true) or ends the process (false).
+pub fn listen(on: bool) {
+    LISTENING.store(on, Ordering::SeqCst);
+}
+
 fn interrupted() -> bool {
     INTERRUPTED.load(Ordering::Relaxed)
 }

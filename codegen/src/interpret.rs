@@ -114,6 +114,23 @@ pub unsafe fn load_scoped<R>(
     stale: bool,
     f: impl FnOnce(&Loaded) -> R,
 ) -> Result<R, Errors> {
+    // SAFETY: the same contract.
+    unsafe { load_scoped_with(source, text, &[], stale, f) }
+}
+
+/// [`load_scoped`] with some of the file's parameters set ([`load_with`]): for studies, which
+/// build one mechanism per parameter set.
+///
+/// # Safety
+///
+/// As [`load_scoped`].
+pub unsafe fn load_scoped_with<R>(
+    source: &str,
+    text: &str,
+    parameters: &[(String, f64)],
+    stale: bool,
+    f: impl FnOnce(&Loaded) -> R,
+) -> Result<R, Errors> {
     /// Frees what the entry kept, also when `load` or `f` panics.
     struct Freed(Option<Vec<Box<dyn Any>>>);
     impl Drop for Freed {
@@ -125,7 +142,7 @@ pub unsafe fn load_scoped<R>(
     let previous = KEPT.with(|kept| kept.borrow_mut().replace(Vec::new()));
     assert!(previous.is_none(), "load_scoped does not nest");
     let mut freed = Freed(None);
-    let loaded = load(source, text, stale);
+    let loaded = load_with(source, text, parameters, stale);
     freed.0 = KEPT.with(|kept| kept.borrow_mut().take());
     Ok(f(&loaded?))
 }

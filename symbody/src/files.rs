@@ -147,6 +147,17 @@ pub fn parameters(registry: &Registry, name: &str) -> Result<Loaded, ScenarioErr
     load_text(&file, &text, false, &[])
 }
 
+/// The names of the parameters of the file `entry` comes from.
+pub fn parameter_names(entry: &Entry) -> Result<Vec<String>, ScenarioError> {
+    let file = source_of(entry)?;
+    let text = read(Path::new(&file))?;
+    Ok(load_text(&file, &text, false, &[])?
+        .parameters
+        .iter()
+        .map(|p| p.name.clone())
+        .collect())
+}
+
 fn load_text(
     source: &str,
     text: &str,

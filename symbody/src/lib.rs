@@ -15,4 +15,5 @@ pub mod output;
 pub mod scenario;
 pub mod scene;
 pub mod session;
+pub mod study;
 pub mod tables;

@@ -34,6 +34,7 @@ mod parse;
 pub mod run;
 
 pub use parse::load;
+pub(crate) use run::requested_joints;
 pub use run::{choose_path, run, run_observed, Outcome, PathChoice};
 
 use symbody_runtime::{Entry, Formulation};
@@ -92,6 +93,8 @@ pub struct Scene {
     pub entry: &'static Entry,
     /// The scene's `[parameters]`: the mechanism file's parameters it sets.
     pub parameters: Vec<(String, f64)>,
+    /// The scene's `[study]`: the parameters `symbody study` varies.
+    pub study: Option<crate::study::Study>,
     pub formulation: Formulation,
     pub t_end: f64,
     pub output_step: f64,

@@ -4,11 +4,12 @@
 use serde::Deserialize;
 use std::path::Path;
 use symbody_codegen::diag::{Diagnostic, Errors, SourceMap};
-use symbody_runtime::{Formulation, JointKind, Registry};
+use symbody_runtime::{Entry, Formulation, JointKind, Registry};
 use toml::Spanned;
 
 use super::{Files, PathRequest, Scene, Selection};
 use crate::generic::{closest, mechanism};
+use crate::study::{Axis, Study};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -20,6 +21,16 @@ struct RawScene {
     solver: Option<RawSolver>,
     /// The mechanism file's parameters set to other values (name = number).
     parameters: Option<Spanned<std::collections::BTreeMap<String, f64>>>,
+    study: Option<Spanned<RawStudy>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawStudy {
+    parameters: Spanned<std::collections::BTreeMap<Spanned<String>, Spanned<toml::Value>>>,
+    samples: Option<Spanned<i64>>,
+    seed: Option<Spanned<i64>>,
+    latin: Option<bool>,
 }
 
 #[derive(Deserialize)]
@@ -351,7 +362,12 @@ fn check(
         }
         (c, _) => c.as_ref().is_some_and(|c| *c.get_ref()),
     };
+    let study = raw
+        .study
+        .as_ref()
+        .and_then(|st| study(map, errors, st, entry));
     Some(Scene {
+        study,
         file: map.file.to_string(),
         mechanism: entry.name,
         entry,
@@ -371,6 +387,173 @@ fn check(
         alpha,
         cross_singular,
     })
+}
+
+/// A scene's `[study]`, checked against the mechanism file's parameters.
+fn study(
+    map: &SourceMap<'_>,
+    errors: &mut Vec<Diagnostic>,
+    raw: &Spanned<RawStudy>,
+    entry: &Entry,
+) -> Option<Study> {
+    let st = raw.get_ref();
+    let known: Vec<String> = match crate::files::parameter_names(entry) {
+        Ok(k) => k,
+        Err(e) => {
+            errors.push(map.diag(
+                raw.span(),
+                "`[study]`",
+                e.to_string(),
+                "a study varies the parameters of the mechanism file",
+            ));
+            return None;
+        }
+    };
+    let before = errors.len();
+    let mut axes = Vec::new();
+    if st.parameters.get_ref().is_empty() {
+        errors.push(map.diag(
+            st.parameters.span(),
+            "[study] `parameters`",
+            "no parameter to vary",
+            "e.g. parameters = { r = { from = 0.08, to = 0.12, n = 5 } }",
+        ));
+    }
+    for (name, value) in st.parameters.get_ref() {
+        let item = format!("[study.parameters] `{}`", name.get_ref());
+        if !known.iter().any(|k| k == name.get_ref()) {
+            let help = match closest(name.get_ref(), known.iter().map(String::as_str)) {
+                Some(c) => format!("did you mean `{c}`? (`symbody params` lists them)"),
+                None => format!("the file's parameters: {}", known.join(", ")),
+            };
+            errors.push(map.diag(
+                name.span(),
+                &item,
+                format!("no parameter `{}` in the mechanism file", name.get_ref()),
+                help,
+            ));
+            continue;
+        }
+        match axis(value.get_ref()) {
+            Ok(a) => axes.push((name.get_ref().clone(), a)),
+            Err((message, help)) => errors.push(map.diag(value.span(), &item, message, help)),
+        }
+    }
+    let random = axes
+        .iter()
+        .any(|(_, a)| matches!(a, Axis::Uniform { .. } | Axis::Normal { .. }));
+    let samples = match (&st.samples, random) {
+        (Some(n), _) if *n.get_ref() < 1 => {
+            errors.push(map.diag(
+                n.span(),
+                "[study] `samples`",
+                format!("samples = {}: no row to run", n.get_ref()),
+                "give at least 1",
+            ));
+            0
+        }
+        (Some(n), _) => *n.get_ref() as usize,
+        (None, true) => {
+            errors.push(map.diag(
+                raw.span(),
+                "`[study]`",
+                "random parameters need `samples`",
+                "e.g. samples = 100 (and seed = 1)",
+            ));
+            0
+        }
+        (None, false) => 0,
+    };
+    let seed = st.seed.as_ref().map_or(1, |s| *s.get_ref() as u64);
+    if errors.len() > before {
+        return None;
+    }
+    Some(Study {
+        parameters: axes,
+        samples,
+        seed,
+        latin: st.latin.unwrap_or(false),
+    })
+}
+
+/// One parameter's variation: `[values…]`, `{ from, to, n }`, `{ uniform = [lo, hi] }` or
+/// `{ normal = [mean, sd] }`; or the message and help of what is wrong with it.
+fn axis(v: &toml::Value) -> Result<Axis, (String, String)> {
+    let num = |v: &toml::Value| v.as_float().or_else(|| v.as_integer().map(|i| i as f64));
+    let finite = |x: Option<f64>, what: &str| -> Result<f64, (String, String)> {
+        match x {
+            Some(x) if x.is_finite() => Ok(x),
+            _ => Err((format!("`{what}` must be a finite number"), String::new())),
+        }
+    };
+    let pair = |v: Option<&toml::Value>, what: &str| -> Result<(f64, f64), (String, String)> {
+        match v.and_then(|v| v.as_array()) {
+            Some(a) if a.len() == 2 => Ok((finite(num(&a[0]), what)?, finite(num(&a[1]), what)?)),
+            _ => Err((
+                format!("`{what}` takes two numbers"),
+                format!("e.g. {what} = [0.5, 1.5]"),
+            )),
+        }
+    };
+    let forms = "a list [a, b, …], { from = a, to = b, n = 5 }, { uniform = [lo, hi] } or { normal = [mean, sd] }".to_string();
+    match v {
+        toml::Value::Array(a) if a.is_empty() => Err((
+            "an empty list of values".into(),
+            "give at least one value".into(),
+        )),
+        toml::Value::Array(a) => a
+            .iter()
+            .map(|x| finite(num(x), "values"))
+            .collect::<Result<Vec<_>, _>>()
+            .map(Axis::List),
+        toml::Value::Table(t) if t.contains_key("uniform") => {
+            let (lo, hi) = pair(t.get("uniform"), "uniform")?;
+            if !(lo < hi) {
+                return Err((
+                    format!("uniform = [{lo}, {hi}] is an empty range"),
+                    "give lo < hi".into(),
+                ));
+            }
+            Ok(Axis::Uniform { lo, hi })
+        }
+        toml::Value::Table(t) if t.contains_key("normal") => {
+            let (mean, sd) = pair(t.get("normal"), "normal")?;
+            if !(sd > 0.0) {
+                return Err((
+                    format!("normal = [{mean}, {sd}]: the standard deviation must be positive"),
+                    "give [mean, sd] with sd > 0".into(),
+                ));
+            }
+            Ok(Axis::Normal { mean, sd })
+        }
+        toml::Value::Table(t)
+            if t.contains_key("from") || t.contains_key("to") || t.contains_key("n") =>
+        {
+            let from = finite(t.get("from").and_then(num), "from")?;
+            let to = finite(t.get("to").and_then(num), "to")?;
+            let n = t.get("n").and_then(|n| n.as_integer()).ok_or_else(|| {
+                (
+                    "`n` (the number of values) is missing".to_string(),
+                    "e.g. { from = 0.1, to = 0.2, n = 5 }".to_string(),
+                )
+            })?;
+            if n < 1 {
+                return Err((format!("n = {n}: no value to run"), "give n ≥ 1".into()));
+            }
+            if n > 1 && from == to {
+                return Err((
+                    format!("from = to = {from} with n = {n} is an empty range"),
+                    "give different ends, or a list".into(),
+                ));
+            }
+            Ok(Axis::Grid {
+                from,
+                to,
+                n: n as usize,
+            })
+        }
+        _ => Err(("not a way to vary a parameter".into(), forms)),
+    }
 }
 
 /// A finite time that is positive (or, with `zero_ok`, zero), or a diagnostic.

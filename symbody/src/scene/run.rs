@@ -141,7 +141,7 @@ pub fn choose_path(
 }
 
 /// Joints whose reactions the scene wants; the paper's files always need the legs' joints.
-fn requested_joints(scene: &Scene, info: &symbody_runtime::MechanismInfo) -> Vec<usize> {
+pub(crate) fn requested_joints(scene: &Scene, info: &symbody_runtime::MechanismInfo) -> Vec<usize> {
     let reacting: Vec<usize> = (0..info.joints.len())
         .filter(|&j| {
             !matches!(
