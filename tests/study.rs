@@ -161,6 +161,10 @@ fn mistakes_in_the_study_are_located_in_the_scene() {
             "need `samples`",
         ),
         ("parameters = { r = [] }", "empty list"),
+        (
+            "parameters = { r = { uniform = [0.1, 0.2] }, len = [0.3] }\nsamples = 5",
+            "fixed values among random",
+        ),
     ];
     for (k, (study_text, says)) in cases.iter().enumerate() {
         let scene = dir.join(format!("s{k}.toml"));

@@ -112,7 +112,8 @@ fn normal_quantile(p: f64) -> f64 {
 
 impl Study {
     /// Every row of parameter values, in a fixed order: the Cartesian product of the grids
-    /// and lists (the first parameter varying slowest), or `samples` random rows.
+    /// and lists (the first parameter varying slowest), or `samples` random rows (then every
+    /// parameter is random).
     pub fn rows(&self) -> Vec<Vec<(String, f64)>> {
         let random = self.parameters.iter().any(|(_, a)| a.is_random());
         if !random {
@@ -172,9 +173,11 @@ impl Study {
                         let v = match axis {
                             Axis::Uniform { lo, hi } => lo + (hi - lo) * p,
                             Axis::Normal { mean, sd } => mean + sd * normal_quantile(p),
-                            // Fixed values among random ones: cycled through the rows.
-                            Axis::List(v) => v[k % v.len()],
-                            Axis::Grid { from, .. } => *from,
+                            Axis::List(_) | Axis::Grid { .. } => {
+                                unreachable!(
+                                    "the scene parser refuses fixed values among random ones"
+                                )
+                            }
                         };
                         (name.clone(), v)
                     })

@@ -442,6 +442,18 @@ fn study(
     let random = axes
         .iter()
         .any(|(_, a)| matches!(a, Axis::Uniform { .. } | Axis::Normal { .. }));
+    if random {
+        for (name, a) in &axes {
+            if !matches!(a, Axis::Uniform { .. } | Axis::Normal { .. }) {
+                errors.push(map.diag(
+                    st.parameters.span(),
+                    "[study] `parameters`",
+                    format!("`{name}` takes fixed values among random parameters"),
+                    "make every parameter random ({ uniform = [lo, hi] } or { normal = [mean, sd] }), or none; run one study per fixed value",
+                ));
+            }
+        }
+    }
     let samples = match (&st.samples, random) {
         (Some(n), _) if *n.get_ref() < 1 => {
             errors.push(map.diag(
