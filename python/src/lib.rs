@@ -470,6 +470,144 @@ fn start_pose(x: &Bound<'_, PyAny>) -> PyResult<Pose> {
     Ok(Pose::from_euler([v[0], v[1], v[2]], [v[3], v[4], v[5]]))
 }
 
+/// A study (`symbody study`): the scene file `target` (one with a top-level `mechanism`), or
+/// a default scene of the mechanism `target` (a name or a file) over `t_end`, run once per
+/// row of `columns` (one list per parameter in `names`, all as long) on `jobs` threads with
+/// the GIL released. A dict of columns: `run`, the parameters, the metrics, `status`,
+/// `error`, `wall_s`, in row order.
+#[pyfunction]
+#[pyo3(signature = (target, names, columns, t_end, jobs))]
+fn study<'py>(
+    py: Python<'py>,
+    target: Target,
+    names: Vec<String>,
+    columns: Vec<Vec<f64>>,
+    t_end: Option<f64>,
+    jobs: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let scene_text = |mechanism: &str| -> PyResult<String> {
+        if mechanism.contains('\'') {
+            return Err(PyValueError::new_err(format!(
+                "{mechanism}: a path with a single quote cannot be named in a scene"
+            )));
+        }
+        let mut text = format!("mechanism = '{mechanism}'\n");
+        if let Some(t) = t_end {
+            text.push_str(&format!("[time]\nend = {t:?}\n"));
+        }
+        Ok(text)
+    };
+    // A scene file names its mechanism at the top level; anything else is a mechanism.
+    let (file, text) = match &target {
+        _ if is_scene(&target) => {
+            let p = match &target {
+                Target::File(p) => p.clone(),
+                Target::Name(n) => PathBuf::from(n),
+            };
+            let text = std::fs::read_to_string(&p)
+                .map_err(|e| PyOSError::new_err(format!("{}: {e}", p.display())))?;
+            (p.display().to_string(), text)
+        }
+        Target::File(p) => {
+            let abs = std::path::absolute(p).unwrap_or_else(|_| p.clone());
+            (
+                "<study>".to_string(),
+                scene_text(&abs.display().to_string())?,
+            )
+        }
+        Target::Name(n) => ("<study>".to_string(), scene_text(n)?),
+    };
+    let scene = symbody::scene::load(&REGISTRY, &file, &text).map_err(|e| {
+        let shown = e.to_string();
+        PyValueError::new_err(shown.strip_prefix("error: ").unwrap_or(&shown).to_string())
+    })?;
+    if names.len() != columns.len() {
+        return Err(PyValueError::new_err(
+            "one column of values per parameter name",
+        ));
+    }
+    let n_rows = columns.first().map_or(0, Vec::len);
+    if columns.iter().any(|c| c.len() != n_rows) {
+        return Err(PyValueError::new_err(
+            "params: every parameter needs as many values",
+        ));
+    }
+    let known = symbody::files::parameter_names(scene.entry).map_err(py_err)?;
+    for n in &names {
+        if !known.contains(n) {
+            let close = symbody::generic::closest(n, known.iter().map(String::as_str))
+                .map(|c| format!(" (did you mean `{c}`?)"))
+                .unwrap_or_default();
+            return Err(PyValueError::new_err(format!(
+                "params: no parameter `{n}` in the mechanism file{close}; its parameters: {}",
+                known.join(", ")
+            )));
+        }
+    }
+    let rows: Vec<Vec<(String, f64)>> = (0..n_rows)
+        .map(|k| {
+            names
+                .iter()
+                .cloned()
+                .zip(columns.iter().map(|c| c[k]))
+                .collect()
+        })
+        .collect();
+    let metric_names = symbody::study::metric_names(&scene);
+    let jobs = jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    let stop = std::sync::atomic::AtomicBool::new(false);
+    let mut results: Vec<Option<symbody::study::RowResult>> = vec![None; n_rows];
+    py.detach(|| {
+        symbody::study::run(&scene, &rows, &Default::default(), jobs, &stop, |row| {
+            let index = row.index;
+            results[index] = Some(row);
+            Ok(())
+        })
+    })
+    .map_err(py_err)?;
+    let d = PyDict::new(py);
+    let results: Vec<symbody::study::RowResult> = results.into_iter().flatten().collect();
+    d.set_item("run", results.iter().map(|r| r.index).collect::<Vec<_>>())?;
+    for (k, n) in names.iter().enumerate() {
+        d.set_item(
+            n,
+            results
+                .iter()
+                .map(|r| r.parameters[k].1)
+                .collect::<Vec<_>>(),
+        )?;
+    }
+    for (k, n) in metric_names.iter().enumerate() {
+        let col: Vec<f64> = results
+            .iter()
+            .map(|r| r.metrics.as_ref().map_or(f64::NAN, |m| m[k]))
+            .collect();
+        d.set_item(n, col)?;
+    }
+    let status: Vec<&str> = results
+        .iter()
+        .map(|r| if r.metrics.is_ok() { "ok" } else { "failed" })
+        .collect();
+    d.set_item("status", status)?;
+    let errors: Vec<String> = results
+        .iter()
+        .map(|r| r.metrics.as_ref().err().cloned().unwrap_or_default())
+        .collect();
+    d.set_item("error", errors)?;
+    d.set_item("wall_s", results.iter().map(|r| r.wall).collect::<Vec<_>>())?;
+    Ok(d)
+}
+
+/// Whether `target` is a scene file (TOML with a top-level `mechanism` key).
+fn is_scene(target: &Target) -> bool {
+    let path = match target {
+        Target::File(p) => p.clone(),
+        Target::Name(n) if symbody::files::is_path(n) => PathBuf::from(n),
+        Target::Name(_) => return false,
+    };
+    std::fs::read_to_string(path).is_ok_and(|t| symbody::scene::is_scene(&t))
+}
+
 /// Forward kinematics of a six-leg platform (`symbody fk`): a dict of the pose reached by
 /// continuation and, with `all`, every real assembly mode.
 #[pyfunction]
@@ -914,6 +1052,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(simulate, m)?)?;
     m.add_function(wrap_pyfunction!(run, m)?)?;
     m.add_function(wrap_pyfunction!(fk, m)?)?;
+    m.add_function(wrap_pyfunction!(study, m)?)?;
     m.add_function(wrap_pyfunction!(paper_leg1_force_at_1s, m)?)?;
     m.add_class::<Session>()?;
     m.add_class::<Mechanism>()?;

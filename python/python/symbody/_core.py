@@ -184,6 +184,55 @@ def run(scene: PathLike, out: Optional[PathLike] = None) -> Results:
     return _results(_native.run(os.fspath(scene), None if out is None else os.fspath(out)))
 
 
+def study(
+    target: MechanismLike,
+    params: Any,
+    t_end: Optional[float] = None,
+    metrics: Optional[Sequence[str]] = None,
+    jobs: Optional[int] = None,
+) -> Any:
+    """Runs ``target`` once per row of ``params``, as ``symbody study`` does, on ``jobs``
+    threads (default: every core) with the GIL released, and returns one row per run.
+
+    ``target`` is a scene file (a ``.toml`` with a top-level ``mechanism``: its time, outputs
+    and solver are used) or a mechanism (a registered name or a mechanism file, run over
+    ``t_end``, default its file's, with a scene's defaults). ``params`` gives the mechanism
+    file's parameters for each run: a dict of equally long arrays, or a pandas DataFrame
+    (one column per parameter). ``metrics`` keeps only those metric columns (default all:
+    ``max|<driver>|``, ``max|F <joint>|``, ``max|M <joint>|``, ``energy_balance``,
+    ``max|Phi|``).
+
+    Returns a pandas DataFrame (a dict of NumPy arrays without pandas) with the columns
+    ``run``, the parameters, the metrics, ``status`` (``"ok"`` or ``"failed"``), ``error``
+    and ``wall_s``, in the order of ``params``' rows. A parameter set that cannot be built or
+    run is a failed row (metrics NaN) with its error, not an exception.
+    """
+    if hasattr(params, "columns") and hasattr(params, "__getitem__"):
+        names = [str(c) for c in params.columns]
+        columns = [np.asarray(params[c], dtype=float).ravel() for c in params.columns]
+    else:
+        names = [str(k) for k in params]
+        columns = [np.atleast_1d(np.asarray(params[k], dtype=float)).ravel() for k in params]
+    if len({len(c) for c in columns}) > 1:
+        raise ValueError("params: every parameter needs as many values")
+    answer = _native.study(
+        target, names, [c.tolist() for c in columns], t_end, None if jobs is None else int(jobs)
+    )
+    table: Dict[str, np.ndarray] = {k: np.asarray(v) for k, v in answer.items()}
+    if metrics is not None:
+        fixed = ["run", *names, "status", "error", "wall_s"]
+        known = [k for k in table if k not in fixed]
+        unknown = [m for m in metrics if m not in known]
+        if unknown:
+            raise ValueError(f"metrics: no {unknown}; the study has {known}")
+        table = {k: v for k, v in table.items() if k in fixed or k in metrics}
+    try:
+        import pandas
+    except ImportError:
+        return table
+    return pandas.DataFrame(table)
+
+
 @dataclass(frozen=True)
 class FkResult:
     """Answer of :func:`fk`.

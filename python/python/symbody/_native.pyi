@@ -35,6 +35,13 @@ def fk(
     all: bool,
     params: Optional[Dict[str, float]],
 ) -> Dict[str, Any]: ...
+def study(
+    target: _MechanismLike,
+    names: List[str],
+    columns: List[List[float]],
+    t_end: Optional[float],
+    jobs: Optional[int],
+) -> Dict[str, Any]: ...
 def paper_leg1_force_at_1s() -> float: ...
 
 _S = TypeVar("_S", bound="Session")

@@ -39,6 +39,12 @@ pub use run::{choose_path, run, run_observed, Outcome, PathChoice};
 
 use symbody_runtime::{Entry, Formulation};
 
+/// Whether `text` is a scene (TOML with a top-level `mechanism`) rather than a mechanism file.
+pub fn is_scene(text: &str) -> bool {
+    text.parse::<toml::Table>()
+        .is_ok_and(|t| t.contains_key("mechanism"))
+}
+
 /// Which outputs a scene asks for: every one, none, or the named ones (indices into the
 /// mechanism's bodies or joints, checked by [`load`]).
 #[derive(Debug, Clone, PartialEq, Eq)]
