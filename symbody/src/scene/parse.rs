@@ -520,7 +520,7 @@ fn axis(v: &toml::Value) -> Result<Axis, (String, String)> {
             .map(Axis::List),
         toml::Value::Table(t) if t.contains_key("uniform") => {
             let (lo, hi) = pair(t.get("uniform"), "uniform")?;
-            if !(lo < hi) {
+            if lo >= hi {
                 return Err((
                     format!("uniform = [{lo}, {hi}] is an empty range"),
                     "give lo < hi".into(),
@@ -530,7 +530,7 @@ fn axis(v: &toml::Value) -> Result<Axis, (String, String)> {
         }
         toml::Value::Table(t) if t.contains_key("normal") => {
             let (mean, sd) = pair(t.get("normal"), "normal")?;
-            if !(sd > 0.0) {
+            if sd <= 0.0 {
                 return Err((
                     format!("normal = [{mean}, {sd}]: the standard deviation must be positive"),
                     "give [mean, sd] with sd > 0".into(),
