@@ -70,6 +70,7 @@ fn rows_do_not_depend_on_threads_or_interruptions() {
     assert_eq!(one.len(), 8);
     assert_eq!(one, rows(&dir.join("two/study.csv")));
     assert!(one.iter().all(|r| r[r.len() - 2] == "ok"), "{one:?}");
+    assert!(dir.join("one/study.png").is_file(), "the grid's plot");
     // Cut after three rows, the fourth half written, as an interruption leaves it.
     let cut = dir.join("cut");
     std::fs::create_dir_all(&cut).unwrap();

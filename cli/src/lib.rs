@@ -131,6 +131,9 @@ enum Command {
         /// the others.
         #[arg(long)]
         resume: bool,
+        /// Skip study.png (the largest driver effort against the first parameter).
+        #[arg(long)]
+        no_plots: bool,
     },
     /// The parameters of a mechanism's file: names, values, the expressions of derived ones,
     /// and the items (bodies, joints, drivers, forces) each one affects.
@@ -308,6 +311,7 @@ pub fn main(registry: &Registry) -> ExitCode {
             jobs,
             out,
             resume,
+            no_plots,
         } => {
             let jobs = jobs.unwrap_or_else(|| {
                 std::thread::available_parallelism().map_or(1, |n| n.get())
@@ -318,7 +322,7 @@ pub fn main(registry: &Registry) -> ExitCode {
             if jobs == 0 {
                 Err("--jobs 0: give at least 1".to_string())
             } else {
-                study::run(registry, &scene, &out, jobs, resume)
+                study::run(registry, &scene, &out, jobs, (resume, !no_plots))
             }
         }
         Command::Fk {

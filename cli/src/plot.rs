@@ -30,10 +30,13 @@ pub struct Panel<'a> {
     pub series: Vec<(&'a str, Vec<f64>)>,
 }
 
-const COLORS: [RGBColor; 3] = [
+const COLORS: [RGBColor; 6] = [
     RGBColor(0, 90, 181),
     RGBColor(220, 50, 32),
     RGBColor(0, 140, 70),
+    RGBColor(230, 150, 0),
+    RGBColor(130, 60, 170),
+    RGBColor(90, 90, 90),
 ];
 
 /// plotters' bitmap backend with its text drawn here. plotters 0.3.7 places each glyph's
@@ -228,6 +231,17 @@ fn png(
 
 /// Draws panels stacked vertically, sharing the time axis.
 pub fn draw(path: &Path, title: &str, t: &[f64], panels: &[Panel<'_>]) -> Result<(), String> {
+    draw_against(path, title, "time t (s)", t, panels)
+}
+
+/// Draws panels stacked vertically, sharing the x axis `x` (labelled `x_label`, ascending).
+pub fn draw_against(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    t: &[f64],
+    panels: &[Panel<'_>],
+) -> Result<(), String> {
     register_font();
     let height = 260 * panels.len() as u32 + 60;
     let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
@@ -268,7 +282,7 @@ pub fn draw(path: &Path, title: &str, t: &[f64], panels: &[Panel<'_>]) -> Result
                 .map_err(|e| err(&e))?;
             chart
                 .configure_mesh()
-                .x_desc("time t (s)")
+                .x_desc(x_label)
                 .y_desc(panel.y_label)
                 .label_style(("sans-serif", 15))
                 .axis_desc_style(("sans-serif", 17))

@@ -18,7 +18,7 @@ pub fn run(
     path: &Path,
     out: &Path,
     jobs: usize,
-    resume: bool,
+    (resume, plots): (bool, bool),
 ) -> Result<(), String> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read scene file {}: {e}", path.display()))?;
@@ -81,6 +81,11 @@ pub fn run(
         (ok + failed) as f64 / wall.max(1e-9)
     );
     say!("  wrote {}", file.display());
+    if plots && !live::interrupt_flag().load(Ordering::SeqCst) {
+        if let Some(png) = plot(&file, &st, &scene)? {
+            say!("  wrote {}", png.display());
+        }
+    }
     if live::interrupt_flag().load(Ordering::SeqCst) {
         let total = done.len() + ok + failed;
         return Err(format!(
@@ -92,4 +97,104 @@ pub fn run(
         ));
     }
     Ok(())
+}
+
+/// `study.png`: the largest driver effort of each run against the study's first parameter;
+/// one curve per driver when it varies alone, else one curve per value of the second
+/// parameter (of the largest over the drivers). Only for grids and lists, with drivers.
+fn plot(
+    file: &Path,
+    st: &study::Study,
+    scene: &symbody::scene::Scene,
+) -> Result<Option<std::path::PathBuf>, String> {
+    let random = st
+        .parameters
+        .iter()
+        .any(|(_, a)| matches!(a, study::Axis::Uniform { .. } | study::Axis::Normal { .. }));
+    let drivers: Vec<String> = study::metric_names(scene)
+        .into_iter()
+        .filter(|m| {
+            !m.starts_with("max|F ")
+                && !m.starts_with("max|M ")
+                && m.starts_with("max|")
+                && m != "max|Phi|"
+        })
+        .collect();
+    if random || drivers.is_empty() || st.parameters.len() > 2 {
+        return Ok(None);
+    }
+    let (columns, rows) = study::read(file).map_err(|e| e.to_string())?;
+    let col = |name: &str| columns.iter().position(|c| c == name);
+    let num = |r: &Vec<String>, k: usize| r[k].parse::<f64>().unwrap_or(f64::NAN);
+    let x_name = &st.parameters[0].0;
+    let xi = col(x_name).expect("the parameter's column");
+    let mut xs: Vec<f64> = rows.iter().map(|r| num(r, xi)).collect();
+    xs.sort_by(f64::total_cmp);
+    xs.dedup();
+    let peak = |r: &Vec<String>, names: &[String]| {
+        names
+            .iter()
+            .filter_map(|n| col(n))
+            .map(|k| num(r, k))
+            .fold(f64::NAN, f64::max)
+    };
+    // The value of `f` at each x for the rows `keep` selects (NaN where a run failed).
+    let series = |keep: &dyn Fn(&Vec<String>) -> bool, f: &dyn Fn(&Vec<String>) -> f64| {
+        xs.iter()
+            .map(|&x| {
+                rows.iter()
+                    .find(|r| num(r, xi) == x && keep(r))
+                    .map_or(f64::NAN, f)
+            })
+            .collect::<Vec<f64>>()
+    };
+    let labels: Vec<String>;
+    let mut curves: Vec<Vec<f64>> = Vec::new();
+    match st.parameters.get(1) {
+        None => {
+            labels = drivers.clone();
+            for d in &drivers {
+                let k = col(d).expect("the metric's column");
+                curves.push(series(&|_| true, &|r| num(r, k)));
+            }
+        }
+        Some((y_name, _)) => {
+            let yi = col(y_name).expect("the parameter's column");
+            let mut ys: Vec<f64> = rows.iter().map(|r| num(r, yi)).collect();
+            ys.sort_by(f64::total_cmp);
+            ys.dedup();
+            // Grid values carry the roundoff of their spacing: shown to 9 digits.
+            labels = ys
+                .iter()
+                .map(|y| {
+                    format!(
+                        "{y_name} = {}",
+                        format!("{y:.9}")
+                            .trim_end_matches('0')
+                            .trim_end_matches('.')
+                    )
+                })
+                .collect();
+            for &y in &ys {
+                curves.push(series(&|r| num(r, yi) == y, &|r| peak(r, &drivers)));
+            }
+        }
+    }
+    let y_label = match st.parameters.len() {
+        1 => "largest |effort| over the run",
+        _ => "largest |effort| of any driver",
+    };
+    let panel = crate::plot::Panel {
+        y_label,
+        series: labels.iter().map(String::as_str).zip(curves).collect(),
+    };
+    let png = file.with_file_name("study.png");
+    crate::plot::draw_against(
+        &png,
+        &format!("study of {}", scene.mechanism),
+        x_name,
+        &xs,
+        &[panel],
+    )?;
+    Ok(Some(png))
 }

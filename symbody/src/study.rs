@@ -415,6 +415,25 @@ impl Table {
     }
 }
 
+/// The columns and rows of a `study.csv`, as text, in file order.
+pub fn read(path: &std::path::Path) -> Result<(Vec<String>, Vec<Vec<String>>), ScenarioError> {
+    let fail =
+        |e: &dyn std::fmt::Display| ScenarioError::Output(format!("{}: {e}", path.display()));
+    let mut reader = csv::Reader::from_path(path).map_err(|e| fail(&e))?;
+    let columns = reader
+        .headers()
+        .map_err(|e| fail(&e))?
+        .iter()
+        .map(String::from)
+        .collect();
+    let rows = reader
+        .records()
+        .map(|r| r.map(|r| r.iter().map(String::from).collect()))
+        .collect::<Result<_, _>>()
+        .map_err(|e| fail(&e))?;
+    Ok((columns, rows))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
