@@ -929,11 +929,7 @@ fn run_scene(
         shown.strip_prefix("error: ").unwrap_or(&shown).to_string()
     })?;
     // `--set` on top of the scene's own parameters.
-    let mut parameters = scene.parameters.clone();
-    for (k, v) in set {
-        parameters.retain(|(p, _)| p != k);
-        parameters.push((k.clone(), *v));
-    }
+    let parameters = symbody::files::merged(&scene.parameters, set);
     let entry = match set.is_empty() {
         true => scene.entry,
         false => symbody::files::reparametrized(scene.entry, &parameters)

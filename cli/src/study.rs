@@ -107,19 +107,8 @@ fn plot(
     st: &study::Study,
     scene: &symbody::scene::Scene,
 ) -> Result<Option<std::path::PathBuf>, String> {
-    let random = st
-        .parameters
-        .iter()
-        .any(|(_, a)| matches!(a, study::Axis::Uniform { .. } | study::Axis::Normal { .. }));
-    let drivers: Vec<String> = study::metric_names(scene)
-        .into_iter()
-        .filter(|m| {
-            !m.starts_with("max|F ")
-                && !m.starts_with("max|M ")
-                && m.starts_with("max|")
-                && m != "max|Phi|"
-        })
-        .collect();
+    let random = st.parameters.iter().any(|(_, a)| a.is_random());
+    let drivers = study::driver_metric_names(scene);
     if random || drivers.is_empty() || st.parameters.len() > 2 {
         return Ok(None);
     }

@@ -498,24 +498,16 @@ fn study<'py>(
         Ok(text)
     };
     // A scene file names its mechanism at the top level; anything else is a mechanism.
-    let (file, text) = match &target {
-        _ if is_scene(&target) => {
-            let p = match &target {
-                Target::File(p) => p.clone(),
-                Target::Name(n) => PathBuf::from(n),
-            };
-            let text = std::fs::read_to_string(&p)
-                .map_err(|e| PyOSError::new_err(format!("{}: {e}", p.display())))?;
-            (p.display().to_string(), text)
-        }
-        Target::File(p) => {
+    let (file, text) = match (scene_file(&target), &target) {
+        (Some((p, text)), _) => (p.display().to_string(), text),
+        (None, Target::File(p)) => {
             let abs = std::path::absolute(p).unwrap_or_else(|_| p.clone());
             (
                 "<study>".to_string(),
                 scene_text(&abs.display().to_string())?,
             )
         }
-        Target::Name(n) => ("<study>".to_string(), scene_text(n)?),
+        (None, Target::Name(n)) => ("<study>".to_string(), scene_text(n)?),
     };
     let scene = symbody::scene::load(&REGISTRY, &file, &text).map_err(|e| {
         let shown = e.to_string();
@@ -598,14 +590,16 @@ fn study<'py>(
     Ok(d)
 }
 
-/// Whether `target` is a scene file (TOML with a top-level `mechanism` key).
-fn is_scene(target: &Target) -> bool {
+/// The path and text of `target` when it is a scene file (TOML with a top-level
+/// `mechanism`); `None` for a mechanism (name or file).
+fn scene_file(target: &Target) -> Option<(PathBuf, String)> {
     let path = match target {
         Target::File(p) => p.clone(),
         Target::Name(n) if symbody::files::is_path(n) => PathBuf::from(n),
-        Target::Name(_) => return false,
+        Target::Name(_) => return None,
     };
-    std::fs::read_to_string(path).is_ok_and(|t| symbody::scene::is_scene(&t))
+    let text = std::fs::read_to_string(&path).ok()?;
+    symbody::scene::is_scene(&text).then_some((path, text))
 }
 
 /// Forward kinematics of a six-leg platform (`symbody fk`): a dict of the pose reached by

@@ -65,14 +65,6 @@ impl Interpreted {
             dynamic,
         }
     }
-
-    /// Instructions evaluated by `eval_newton` and by `eval_kinematics`.
-    pub fn instructions(&self) -> (usize, usize) {
-        (
-            self.dynamic.eval_newton.len(),
-            self.kinematic.eval_kinematics.len(),
-        )
-    }
 }
 
 impl Mechanism for Interpreted {

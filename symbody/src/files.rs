@@ -115,9 +115,24 @@ pub fn reparametrized(
     entry: &Entry,
     parameters: &Overrides,
 ) -> Result<&'static Entry, ScenarioError> {
+    derive(entry, parameters).map(|l| l.entry)
+}
+
+/// The file `entry` comes from, loaded with `parameters` set.
+fn derive(entry: &Entry, parameters: &Overrides) -> Result<Loaded, ScenarioError> {
     let file = source_of(entry)?;
     let text = read(Path::new(&file))?;
-    load_text(&file, &text, false, parameters).map(|l| l.entry)
+    load_text(&file, &text, false, parameters)
+}
+
+/// `base` with the values of `over` set on top (replacing those of the same name).
+pub fn merged(base: &Overrides, over: &Overrides) -> Vec<(String, f64)> {
+    let mut all = base.to_vec();
+    for (k, v) in over {
+        all.retain(|(p, _)| p != k);
+        all.push((k.clone(), *v));
+    }
+    all
 }
 
 /// The file `entry` was generated or interpreted from, as it can be opened now.
@@ -141,17 +156,12 @@ pub fn parameters(registry: &Registry, name: &str) -> Result<Loaded, ScenarioErr
     if is_path(name) {
         return load(Path::new(name));
     }
-    let entry = crate::generic::find(registry, name)?;
-    let file = source_of(entry)?;
-    let text = read(Path::new(&file))?;
-    load_text(&file, &text, false, &[])
+    derive(crate::generic::find(registry, name)?, &[])
 }
 
 /// The names of the parameters of the file `entry` comes from.
 pub fn parameter_names(entry: &Entry) -> Result<Vec<String>, ScenarioError> {
-    let file = source_of(entry)?;
-    let text = read(Path::new(&file))?;
-    Ok(load_text(&file, &text, false, &[])?
+    Ok(derive(entry, &[])?
         .parameters
         .iter()
         .map(|p| p.name.clone())

@@ -27,7 +27,8 @@ pub enum Axis {
 }
 
 impl Axis {
-    fn is_random(&self) -> bool {
+    /// A distribution (sampled) rather than fixed values.
+    pub fn is_random(&self) -> bool {
         matches!(self, Axis::Uniform { .. } | Axis::Normal { .. })
     }
 }
@@ -191,12 +192,7 @@ impl Study {
 /// joint the largest |force| and |moment|, the relative energy balance and the largest |Φ|.
 pub fn metric_names(scene: &Scene) -> Vec<String> {
     let info = scene.entry.default_mechanism().info();
-    let mut names = Vec::new();
-    if scene.efforts {
-        for j in info.joints.iter().filter(|j| j.kind == JointKind::Driver) {
-            names.push(format!("max|{}|", j.name));
-        }
-    }
+    let mut names = driver_metric_names(scene);
     // The joints a table run records, in the recording's (ascending) order.
     let mut tables = scene.clone();
     tables.files = Files::Tables;
@@ -210,6 +206,21 @@ pub fn metric_names(scene: &Scene) -> Vec<String> {
     names.push("energy_balance".to_string());
     names.push("max|Phi|".to_string());
     names
+}
+
+/// The drivers' metric columns (`max|<driver>|`), the first of [`metric_names`]; none when
+/// the scene asks for no efforts.
+pub fn driver_metric_names(scene: &Scene) -> Vec<String> {
+    let info = scene.entry.default_mechanism().info();
+    match scene.efforts {
+        false => Vec::new(),
+        true => info
+            .joints
+            .iter()
+            .filter(|j| j.kind == JointKind::Driver)
+            .map(|j| format!("max|{}|", j.name))
+            .collect(),
+    }
 }
 
 /// One finished run: its row index, its metrics (in [`metric_names`] order) or why it failed,
@@ -247,11 +258,7 @@ pub fn run_row(
     source: &str,
     parameters: &[(String, f64)],
 ) -> Result<Vec<f64>, String> {
-    let mut merged = scene.parameters.clone();
-    for (k, v) in parameters {
-        merged.retain(|(p, _)| p != k);
-        merged.push((k.clone(), *v));
-    }
+    let merged = crate::files::merged(&scene.parameters, parameters);
     // Tables, whatever the scene writes: the metrics are read from the generic recording.
     let mut tables = scene.clone();
     tables.files = Files::Tables;

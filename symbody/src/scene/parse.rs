@@ -439,12 +439,10 @@ fn study(
             Err((message, help)) => errors.push(map.diag(value.span(), &item, message, help)),
         }
     }
-    let random = axes
-        .iter()
-        .any(|(_, a)| matches!(a, Axis::Uniform { .. } | Axis::Normal { .. }));
+    let random = axes.iter().any(|(_, a)| a.is_random());
     if random {
         for (name, a) in &axes {
-            if !matches!(a, Axis::Uniform { .. } | Axis::Normal { .. }) {
+            if !a.is_random() {
                 errors.push(map.diag(
                     st.parameters.span(),
                     "[study] `parameters`",
