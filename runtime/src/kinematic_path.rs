@@ -179,6 +179,22 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
         Ok(())
     }
 
+    /// The state's derivative with respect to one parameter (see
+    /// [`crate::sensitivity::kinematic`]), with this output's factorization.
+    pub fn sensitivity(
+        &mut self,
+        neighbours: &crate::sensitivity::Neighbours<'_>,
+        out: &mut crate::sensitivity::StateSensitivity,
+    ) -> Result<(), Error> {
+        crate::sensitivity::kinematic(
+            &mut self.kin,
+            neighbours,
+            self.t,
+            (&self.q, &self.qd, &self.qdd, &self.lambda),
+            out,
+        )
+    }
+
     pub fn mechanism(&self) -> &M {
         &self.mech
     }
@@ -291,13 +307,7 @@ pub fn free_motion<M: Mechanism>(
     };
     let free = null_space(mech, t, q);
     let dof = free.ncols();
-    let mut moved_bodies = Vec::new();
-    for (i, b) in info.bodies.iter().enumerate() {
-        let rows = b.coord_offset..b.coord_offset + b.n_coords();
-        if free.rows(rows.start, rows.len()).amax() > 1e-8 {
-            moved_bodies.push(i);
-        }
-    }
+    let moved_bodies = moved_by(info, &free);
     let mut result = FreeMotion {
         time: t,
         dof,
@@ -359,6 +369,23 @@ pub fn free_motion<M: Mechanism>(
     }
     result.output_change = change / scale.max(f64::MIN_POSITIVE);
     Ok(result)
+}
+
+/// The bodies (indices into `info.bodies`) that some direction Φq(q, t) leaves free moves:
+/// a kinematic path's velocity along such a direction is the least-energy one, so where those
+/// bodies are is decided by the path taken, not by the drivers at `t`.
+pub fn free_bodies<M: Mechanism>(mech: &M, t: f64, q: &[f64]) -> Vec<usize> {
+    moved_by(mech.info(), &null_space(mech, t, q))
+}
+
+/// The bodies whose coordinates some column of `free` moves.
+fn moved_by(info: &MechanismInfo, free: &DMatrix<f64>) -> Vec<usize> {
+    info.bodies
+        .iter()
+        .enumerate()
+        .filter(|(_, b)| free.rows(b.coord_offset, b.n_coords()).amax() > 1e-8)
+        .map(|(i, _)| i)
+        .collect()
 }
 
 /// Orthonormal basis of the null space of Φq(q, t), one direction per column: the right

@@ -507,6 +507,27 @@ impl<K: KktSolver> Kinematics<K> {
         check_len("lambda", m, lambda.len())
     }
 
+    /// Solves `[M Φqᵀ; Φq 0][x; y] = [f; g]` with the last factorization (at the state of
+    /// the last analysis), for derivatives of that analysis; `t` names the time in errors.
+    pub fn solve(
+        &mut self,
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        t: f64,
+    ) -> Result<(), Error> {
+        let info = self.info;
+        check_len("f", info.n_coords, f.len())?;
+        check_len("g", info.n_constraints, g.len())?;
+        self.kkt.solve(f, g, x, y).map_err(|e| e.to_error(info, t))
+    }
+
+    /// The multipliers ν of the last least-energy velocity, `M q̇ + Φqᵀν = 0`.
+    pub fn velocity_multipliers(&self) -> &[f64] {
+        &self.mu
+    }
+
     /// Factors `[M Φqᵀ; Φq 0]` from the stored M and Φq.
     fn factor(&mut self, t: f64) -> Result<(), Error> {
         let info = self.info;

@@ -41,6 +41,7 @@ pub mod quadrature;
 pub mod reactions;
 pub mod reduction;
 pub mod registry;
+pub mod sensitivity;
 pub mod tape;
 // Hand-written fixtures for this crate's unit tests; other crates reach them through the
 // dev-only `symbody-testkit`, where the file lives.
@@ -54,7 +55,8 @@ pub use error::{ConstraintRow, Error, RowOwner};
 pub use hht::{HhtBuilder, Integrator, Stats, StepReport};
 pub use interpreted::Interpreted;
 pub use kinematic_path::{
-    free_motion, FreeMotion, KinematicPath, PathStats, MAX_ACCELERATION_MISMATCH, MAX_OUTPUT_CHANGE,
+    free_bodies, free_motion, FreeMotion, KinematicPath, PathStats, MAX_ACCELERATION_MISMATCH,
+    MAX_OUTPUT_CHANGE,
 };
 pub use kinematics::{InitialVelocity, KinematicSettings, Kinematics, PositionReport};
 pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, Pivots, SchurKkt};

@@ -119,7 +119,7 @@ pub fn reparametrized(
 }
 
 /// The file `entry` comes from, loaded with `parameters` set.
-fn derive(entry: &Entry, parameters: &Overrides) -> Result<Loaded, ScenarioError> {
+pub fn derive(entry: &Entry, parameters: &Overrides) -> Result<Loaded, ScenarioError> {
     let file = source_of(entry)?;
     let text = read(Path::new(&file))?;
     load_text(&file, &text, false, parameters)

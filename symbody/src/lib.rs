@@ -14,6 +14,7 @@ pub mod generic;
 pub mod output;
 pub mod scenario;
 pub mod scene;
+pub mod sensitivity;
 pub mod session;
 pub mod study;
 pub mod tables;

@@ -32417,6 +32417,6 @@ pub static ENTRY: Entry = Entry {
         file: concat!(
             env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/stewart_6_6.toml"
         ),
-        hash: 10444778954565435692u64,
+        hash: 12542216305686203736u64,
     },
 };

@@ -1,0 +1,257 @@
+//! Derivatives of a run's outputs (body poses, joint wrenches, driver efforts) with respect
+//! to parameters of the mechanism file, at every output time: `sensitivities.csv`.
+//!
+//! Each parameter's derivative is carried along the run by [`symbody_runtime::sensitivity`]
+//! from the mechanism built at four neighbouring values of the parameter (see there for what
+//! is exact and what is differenced). The run itself is the base mechanism's, unchanged.
+
+use std::path::Path;
+
+use symbody_runtime::sensitivity::{self, Neighbours, StateSensitivity};
+use symbody_runtime::{
+    body_pose, driver_effort, free_bodies, joint_wrench, Entry, Formulation, JointKind,
+    KinematicPath, Mechanism,
+};
+
+use crate::files::{self, Overrides};
+use crate::scenario::{output_count, ScenarioError};
+
+/// The derivatives of a run's outputs, one row per output time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sensitivities {
+    /// The parameters, in the order asked.
+    pub parameters: Vec<String>,
+    /// The outputs differentiated, named as in the run's tables (`<body>.x`, `<joint>.fx`,
+    /// `<driver>`).
+    pub outputs: Vec<String>,
+    /// Output times (s).
+    pub t: Vec<f64>,
+    /// Per output time: d(output)/d(parameter), outputs major (`outputs[i]`, then every
+    /// parameter).
+    pub rows: Vec<Vec<f64>>,
+}
+
+impl Sensitivities {
+    /// `t`, then `<output>/<parameter>` for every output and parameter.
+    pub fn columns(&self) -> Vec<String> {
+        std::iter::once("t".to_string())
+            .chain(
+                self.outputs
+                    .iter()
+                    .flat_map(|o| self.parameters.iter().map(move |p| format!("{o}/{p}"))),
+            )
+            .collect()
+    }
+
+    /// The column of d(`output`)/d(`parameter`) over the run, if both were asked for.
+    pub fn series(&self, output: &str, parameter: &str) -> Option<Vec<f64>> {
+        let i = self.outputs.iter().position(|o| o == output)?;
+        let j = self.parameters.iter().position(|p| p == parameter)?;
+        let k = i * self.parameters.len() + j;
+        Some(self.rows.iter().map(|r| r[k]).collect())
+    }
+
+    /// Writes `sensitivities.csv` into `dir`.
+    pub fn write(&self, dir: &Path) -> std::io::Result<std::path::PathBuf> {
+        let path = dir.join("sensitivities.csv");
+        let header = self.columns().join(",");
+        crate::output::write(
+            &path,
+            &header,
+            self.t
+                .iter()
+                .zip(&self.rows)
+                .map(|(t, r)| std::iter::once(*t).chain(r.iter().copied()).collect()),
+        )?;
+        Ok(path)
+    }
+}
+
+/// What is differentiated: the poses of `bodies`, the wrenches of `joints`, the efforts of
+/// `drivers` (indices into the mechanism's info).
+struct Outputs {
+    bodies: Vec<usize>,
+    joints: Vec<usize>,
+    drivers: Vec<usize>,
+}
+
+const POSE: [&str; 7] = ["x", "y", "z", "qw", "qx", "qy", "qz"];
+const WRENCH: [&str; 6] = ["fx", "fy", "fz", "mx", "my", "mz"];
+
+impl Outputs {
+    /// Every body but those in `free`, every joint (drivers and normalization rows aside),
+    /// every driver.
+    fn new(mech: &dyn Mechanism, free: &[usize]) -> Self {
+        let info = mech.info();
+        let of_kind = |want: fn(JointKind) -> bool| -> Vec<usize> {
+            (0..info.joints.len())
+                .filter(|&j| want(info.joints[j].kind))
+                .collect()
+        };
+        Outputs {
+            bodies: (0..info.bodies.len())
+                .filter(|b| !free.contains(b))
+                .collect(),
+            joints: of_kind(|k| !matches!(k, JointKind::Driver | JointKind::Normalization)),
+            drivers: of_kind(|k| k == JointKind::Driver),
+        }
+    }
+
+    fn names(&self, mech: &dyn Mechanism) -> Vec<String> {
+        let info = mech.info();
+        let group = |items: &[usize], name: &dyn Fn(usize) -> &'static str, parts: &[&str]| {
+            items
+                .iter()
+                .flat_map(|&i| parts.iter().map(move |p| format!("{}.{p}", name(i))))
+                .collect::<Vec<_>>()
+        };
+        let mut names = group(&self.bodies, &|b| info.bodies[b].name, &POSE);
+        names.extend(group(&self.joints, &|j| info.joints[j].name, &WRENCH));
+        names.extend(
+            self.drivers
+                .iter()
+                .map(|&j| info.joints[j].name.to_string()),
+        );
+        names
+    }
+
+    /// The outputs of `mech` at `(q, λ)` at time `t`, into `out`.
+    fn values(
+        &self,
+        mech: &dyn Mechanism,
+        t: f64,
+        (q, lambda): (&[f64], &[f64]),
+        phi_q: &mut Vec<f64>,
+        out: &mut [f64],
+    ) -> Result<(), symbody_runtime::Error> {
+        let info = mech.info();
+        phi_q.resize(info.phi_q_nnz(), 0.0);
+        mech.phi_q(q, t, phi_q);
+        let mut k = 0;
+        let mut push = |v: f64| {
+            out[k] = v;
+            k += 1;
+        };
+        for &b in &self.bodies {
+            let (r, e) = body_pose(&info.bodies[b], q)?;
+            r.iter().chain(&e).for_each(|&v| push(v));
+        }
+        for &j in &self.joints {
+            let w = joint_wrench(info, q, phi_q, lambda, j)?;
+            w.force.iter().chain(&w.moment).for_each(|&v| push(v));
+        }
+        for &j in &self.drivers {
+            push(driver_effort(info, lambda, j)?);
+        }
+        Ok(())
+    }
+}
+
+/// The mechanism (formulation `f`) built with parameter `name` at its four neighbouring
+/// values, every other parameter as in `base`.
+fn neighbours(
+    entry: &Entry,
+    f: Formulation,
+    base: &Overrides,
+    name: &str,
+) -> Result<Neighbours<'static>, ScenarioError> {
+    let loaded = files::derive(entry, base)?;
+    let Some(p) = loaded.parameters.iter().find(|p| p.name == name) else {
+        let known: Vec<&str> = loaded.parameters.iter().map(|p| p.name.as_str()).collect();
+        let hint = symbody_codegen::diag::closest(name, known.iter().copied())
+            .map_or(String::new(), |c| format!(" (did you mean `{c}`?)"));
+        return Err(ScenarioError::Options(format!(
+            "--sensitivities: `{}` has no parameter `{name}`{hint}; its parameters: {}",
+            entry.name,
+            if known.is_empty() {
+                "none".to_string()
+            } else {
+                known.join(", ")
+            }
+        )));
+    };
+    let step = sensitivity::relative_step(p.value);
+    let mut mechs = Vec::with_capacity(4);
+    for k in [-2.0, -1.0, 1.0, 2.0] {
+        let set = files::merged(base, &[(name.to_string(), p.value + k * step)]);
+        let e = files::reparametrized(entry, &set).map_err(|e| {
+            ScenarioError::Options(format!(
+                "--sensitivities: `{name}` = {} (a neighbour of {} used to differentiate): {e}",
+                p.value + k * step,
+                p.value
+            ))
+        })?;
+        let mech: &'static dyn Mechanism = crate::generic::mechanism(e, Some(f))?;
+        mechs.push(mech);
+    }
+    let base_mech = crate::generic::mechanism(entry, Some(f))?;
+    Neighbours::new(
+        base_mech.info(),
+        step,
+        [mechs[0], mechs[1], mechs[2], mechs[3]],
+    )
+    .map_err(|e| ScenarioError::Options(format!("--sensitivities: `{name}`: {e}")))
+}
+
+/// The run's settings a sensitivity pass needs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Span {
+    pub formulation: Formulation,
+    pub t_end: f64,
+    pub output_step: f64,
+}
+
+/// The derivatives of the outputs of a kinematic path (`generic::run_kinematic`) with
+/// respect to `parameters`, the file's other parameters as in `base`. Bodies that the
+/// drivers leave free to move (a Stewart leg's spin) are left out: where they are is
+/// decided by the path, not by the parameters.
+pub fn kinematic(
+    entry: &Entry,
+    span: Span,
+    base: &Overrides,
+    parameters: &[String],
+) -> Result<Sensitivities, ScenarioError> {
+    let mech = crate::generic::mechanism(entry, Some(span.formulation))?;
+    let info = mech.info();
+    let all: Vec<Neighbours<'static>> = parameters
+        .iter()
+        .map(|p| neighbours(entry, span.formulation, base, p))
+        .collect::<Result<_, _>>()?;
+    let n_out = output_count(span.t_end, span.output_step)?;
+    let mut path = KinematicPath::<_>::new(mech, 0.0)?;
+    let outputs = Outputs::new(mech, &free_bodies(&mech, 0.0, path.q()));
+    let names = outputs.names(mech);
+    let mut result = Sensitivities {
+        parameters: parameters.to_vec(),
+        outputs: names.clone(),
+        t: Vec::with_capacity(n_out + 1),
+        rows: Vec::with_capacity(n_out + 1),
+    };
+    let mut ds = StateSensitivity::zeros(info);
+    let (mut d, mut tmp) = (vec![0.0; names.len()], vec![0.0; names.len()]);
+    let (mut qa, mut la, mut phi_q) = (Vec::new(), Vec::new(), Vec::new());
+    for k in 0..=n_out {
+        if k > 0 {
+            path.advance_to((k as f64 * span.output_step).min(span.t_end))?;
+        }
+        let t = path.t();
+        let mut row = vec![0.0; names.len() * all.len()];
+        for (j, nb) in all.iter().enumerate() {
+            path.sensitivity(nb, &mut ds)?;
+            let (q, lambda) = (path.q(), path.lambda());
+            nb.derivative(&mut d, &mut tmp, |m, e, v| {
+                qa.clear();
+                qa.extend(q.iter().zip(&ds.dq).map(|(a, b)| a + e * b));
+                la.clear();
+                la.extend(lambda.iter().zip(&ds.dlambda).map(|(a, b)| a + e * b));
+                outputs.values(m, t, (&qa, &la), &mut phi_q, v)
+            })?;
+            for (i, v) in d.iter().enumerate() {
+                row[i * all.len() + j] = *v;
+            }
+        }
+        result.t.push(t);
+        result.rows.push(row);
+    }
+    Ok(result)
+}

@@ -1,0 +1,160 @@
+//! Sensitivities of whole runs with respect to the file's parameters
+//! (`symbody::sensitivity`) against their independent reference: differences of whole runs,
+//! the mechanism rebuilt at p ± δ and p ± 2δ (δ = 1e-3·|p|) and every solve done again, the
+//! central differences at δ and 2δ combined by Richardson extrapolation (fourth order).
+//! Plain central differences were not accurate enough to judge 1e-6: at δ = 1e-3·|p| their
+//! truncation reached 3.7e-5 on the paper scene (δ = 1e-4: 3.9e-7), at δ = 1e-5·|p| the
+//! solves' tolerance over δ reached 7e-6.
+
+use symbody::files;
+use symbody::generic::{self, Options, Recording};
+use symbody::sensitivity::{self, Sensitivities, Span};
+use symbody_mechanisms::REGISTRY;
+use symbody_runtime::{Entry, Formulation};
+
+/// Relative step of the reference differences.
+const DELTA: f64 = 1e-3;
+
+fn entry(name: &str) -> &'static Entry {
+    generic::find(&REGISTRY, name).unwrap()
+}
+
+/// The value of parameter `name` in `entry`'s file.
+fn value(entry: &Entry, name: &str) -> f64 {
+    files::derive(entry, &[])
+        .unwrap()
+        .parameters
+        .iter()
+        .find(|p| p.name == name)
+        .unwrap()
+        .value
+}
+
+/// Each output's series from a recording, by the names `Sensitivities::outputs` uses.
+fn series(rec: &Recording, output: &str) -> Vec<f64> {
+    let info = rec.info;
+    if let Some(d) = rec
+        .drivers
+        .iter()
+        .position(|&j| info.joints[j].name == output)
+    {
+        return rec.efforts.iter().map(|e| e[d]).collect();
+    }
+    let (item, part) = output.rsplit_once('.').unwrap();
+    if let Some(b) = info.bodies.iter().position(|b| b.name == item) {
+        let k = ["x", "y", "z", "qw", "qx", "qy", "qz"]
+            .iter()
+            .position(|p| *p == part)
+            .unwrap();
+        return rec
+            .poses
+            .iter()
+            .map(|p| if k < 3 { p[b].0[k] } else { p[b].1[k - 3] })
+            .collect();
+    }
+    let j = rec
+        .joints
+        .iter()
+        .position(|&j| info.joints[j].name == item)
+        .unwrap();
+    let k = ["fx", "fy", "fz", "mx", "my", "mz"]
+        .iter()
+        .position(|p| *p == part)
+        .unwrap();
+    rec.wrenches
+        .iter()
+        .map(|w| {
+            if k < 3 {
+                w[j].force[k]
+            } else {
+                w[j].moment[k - 3]
+            }
+        })
+        .collect()
+}
+
+/// Per differentiated output: the largest error of its series against the extrapolated
+/// differences of whole runs, relative to the largest |derivative| of the series (a
+/// derivative crossing zero has no relative error of its own). Outputs the parameter does
+/// not move (differences below 1e-9) must not move in ours either, and are left out.
+fn errors(
+    s: &Sensitivities,
+    parameter: &str,
+    run: &dyn Fn(&[(String, f64)]) -> Recording,
+    p: f64,
+) -> Vec<(String, f64)> {
+    let d = DELTA * p.abs();
+    let at = |k: f64| run(&[(parameter.to_string(), p + k * d)]);
+    let runs = [at(-2.0), at(-1.0), at(1.0), at(2.0)];
+    assert_eq!(runs[0].t, s.t, "the same output times");
+    let mut out = Vec::new();
+    for o in &s.outputs {
+        let f: Vec<Vec<f64>> = runs.iter().map(|r| series(r, o)).collect();
+        let fd: Vec<f64> = (0..s.t.len())
+            .map(|k| {
+                let c1 = (f[2][k] - f[1][k]) / (2.0 * d);
+                let c2 = (f[3][k] - f[0][k]) / (4.0 * d);
+                (4.0 * c1 - c2) / 3.0
+            })
+            .collect();
+        let ours = s.series(o, parameter).unwrap();
+        let scale = fd.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        if scale < 1e-9 {
+            assert!(
+                ours.iter().all(|v| v.abs() < 1e-7),
+                "{o}/{parameter}: differences ≈ 0, ours {:e}",
+                ours.iter().fold(0.0f64, |m, v| m.max(v.abs()))
+            );
+            continue;
+        }
+        let err = ours
+            .iter()
+            .zip(&fd)
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+        out.push((o.clone(), err / scale));
+    }
+    out
+}
+
+fn worst<'a>(errors: impl Iterator<Item = &'a (String, f64)>) -> f64 {
+    errors.fold(0.0f64, |m, (_, e)| m.max(*e))
+}
+
+/// The paper's scene on its kinematic path: the six actuator efforts (and the platform's
+/// pose and every joint's wrench) with respect to platform radius, leg mass and payload.
+#[test]
+fn paper_scene_kinematic_path_against_whole_run_differences() {
+    let e = entry("stewart_6_6");
+    let t_end = std::f64::consts::TAU;
+    let span = Span {
+        formulation: Formulation::Exact,
+        t_end,
+        output_step: 0.01,
+    };
+    let names: Vec<String> = ["r_platform", "m_cyl", "m_platform"]
+        .map(String::from)
+        .into();
+    let s = sensitivity::kinematic(e, span, &[], &names).unwrap();
+    assert_eq!(s.t.len(), 630);
+    let run = |set: &[(String, f64)]| {
+        let derived = files::reparametrized(e, set).unwrap();
+        let opts = Options {
+            formulation: Some(Formulation::Exact),
+            t_end: Some(t_end),
+            output_step: 0.01,
+            ..Options::default()
+        };
+        generic::run_kinematic(derived, &opts).unwrap()
+    };
+    for p in &names {
+        let errs = errors(&s, p, &run, value(e, p));
+        let efforts: Vec<_> = errs.iter().filter(|(o, _)| o.starts_with("act")).collect();
+        let (all, acts) = (worst(errs.iter()), worst(efforts.iter().copied()));
+        println!(
+            "{p}: {} series, worst {all:.2e}; efforts {acts:.2e}",
+            errs.len()
+        );
+        assert_eq!(efforts.len(), 6, "{p}: all six efforts move");
+        assert!(all <= 1e-6, "{p}: {all:e}");
+    }
+}
