@@ -276,6 +276,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                     alpha: alpha.unwrap_or(defaults.alpha),
                     output_step,
                     cross_singular: cross_singular_positions,
+                    newton_tolerance: None,
                 };
                 parameters.parse().and_then(|p| {
                     simulate_named(registry, &name, &p, &opts, [velocities, accelerations], &files)

@@ -188,6 +188,11 @@ impl HhtBuilder {
         self
     }
 
+    /// Whether velocities are projected after every step ([`HhtBuilder::project_velocities`]).
+    pub fn projects_velocities(&self) -> bool {
+        self.project_velocities
+    }
+
     /// Initial time (default 0).
     pub fn t0(mut self, t0: f64) -> Self {
         self.t0 = t0;

@@ -507,6 +507,15 @@ impl<K: KktSolver> Kinematics<K> {
         check_len("lambda", m, lambda.len())
     }
 
+    /// Factors `[M Φqᵀ; Φq 0]` at `q` (time `t`), for [`Kinematics::solve`].
+    pub fn factor_at<M: Mechanism>(&mut self, mech: &M, q: &[f64], t: f64) -> Result<(), Error> {
+        self.check_mech(mech)?;
+        check_len("q", self.info.n_coords, q.len())?;
+        mech.phi_q(q, t, &mut self.phi_q);
+        mech.mass(q, &mut self.mass);
+        self.factor(t)
+    }
+
     /// Solves `[M Φqᵀ; Φq 0][x; y] = [f; g]` with the last factorization (at the state of
     /// the last analysis), for derivatives of that analysis; `t` names the time in errors.
     pub fn solve(

@@ -54,19 +54,19 @@ impl<'a> Neighbours<'a> {
             });
         }
         for m in &mechs {
+            // Patterns may differ: an entry that cancels exactly at the file's value (a
+            // difference of equal numbers, folded away by the generator) is structurally
+            // absent there and present beside it, where it is small. Every evaluation here
+            // goes through each mechanism's own pattern into dense vectors.
             let i = m.info();
             let same = i.n_coords == base.n_coords
                 && i.n_constraints == base.n_constraints
-                && i.phi_q_rows == base.phi_q_rows
-                && i.phi_q_cols == base.phi_q_cols
-                && i.mass_rows == base.mass_rows
-                && i.mass_cols == base.mass_cols
                 && i.redundant_rows == base.redundant_rows;
             if !same {
                 return Err(Error::InvalidPattern {
                     reason: format!(
-                        "the mechanism's structure (coordinates, rows, patterns or redundant \
-                         rows) changes within ±{:.3e} of the parameter's value: it has no \
+                        "the mechanism's structure (coordinates, rows or redundant rows) \
+                         changes within ±{:.3e} of the parameter's value: it has no \
                          derivative there",
                         2.0 * step
                     ),
@@ -129,6 +129,12 @@ pub(crate) struct Scratch {
 }
 
 impl Scratch {
+    /// Sizes the sparse buffers for `info`'s patterns (neighbours' may differ from the base's).
+    fn fit(&mut self, info: &MechanismInfo) {
+        self.phi_q.resize(info.phi_q_nnz(), 0.0);
+        self.mass.resize(info.mass_nnz(), 0.0);
+    }
+
     pub(crate) fn new(info: &MechanismInfo) -> Self {
         Scratch {
             phi_q: vec![0.0; info.phi_q_nnz()],
@@ -164,6 +170,7 @@ pub(crate) fn velocity_residual(
 ) {
     let info = mech.info();
     let n = info.n_coords;
+    s.fit(info);
     mech.phi_q(q, t, &mut s.phi_q);
     mech.mass(q, &mut s.mass);
     let (top, bottom) = out.split_at_mut(n);
@@ -189,6 +196,7 @@ pub(crate) fn acceleration_residual(
 ) {
     let info = mech.info();
     let n = info.n_coords;
+    s.fit(info);
     mech.phi_q(q, t, &mut s.phi_q);
     mech.mass(q, &mut s.mass);
     let (top, bottom) = out.split_at_mut(n);
@@ -274,5 +282,416 @@ pub fn kinematic<K: KktSolver>(
 fn negate(v: &mut [f64]) {
     for x in v {
         *x = -*x;
+    }
+}
+
+/// Forward sensitivities of an HHT-α run ([`crate::hht`]) with respect to one parameter:
+/// the derivative of the discrete solution, step by step. The step equations are linear in
+/// the new accelerations and multipliers, so their derivative solves a linear system with the
+/// step's exact Jacobian; it is solved by iterating with `[M/(1+α) Φqᵀ; Φq 0]` (the Newton
+/// matrix without the O(βh²) stiffness terms) on the exact residual, which converges as the
+/// step's own Newton does. Velocity projection (`HhtBuilder::project_velocities`) is
+/// differentiated as the projection of least kinetic energy at the new position.
+///
+/// Feed it the integrator's state after every accepted step ([`HhtSensitivity::step`]).
+pub struct HhtSensitivity<K: KktSolver = crate::kkt::SchurKkt> {
+    kin: Kinematics<K>,
+    alpha: f64,
+    beta: f64,
+    gamma: f64,
+    project: bool,
+    /// The state's derivative at the last accepted step.
+    pub state: StateSensitivity,
+    /// Derivative of `r = Φqᵀλ − Q` at the last step, which the α-term carries forward.
+    dr: Vec<f64>,
+    /// The base state at the last accepted step: t, q, q̇, q̈, λ, and q̇ before projection
+    /// (what `r` was evaluated with).
+    t: f64,
+    q: Vec<f64>,
+    v: Vec<f64>,
+    a: Vec<f64>,
+    lambda: Vec<f64>,
+    v_tilde: Vec<f64>,
+    s: Scratch,
+}
+
+/// Sensitivity iterations of one step before giving up; each gains about the factor the
+/// step's Newton gains per iteration (O(βh²)·stiffness/mass).
+const SENSITIVITY_ITERATIONS: usize = 30;
+/// Stop once an iteration changes the derivative by less than this, relative to it.
+const SENSITIVITY_TOLERANCE: f64 = 1e-11;
+/// Largest relative change at which stagnating iterations are taken as converged.
+const STAGNATION_LIMIT: f64 = 1e-4;
+
+impl<K: KktSolver> HhtSensitivity<K> {
+    /// At the consistent start `(q, q̇, q̈, λ)` at `t0` that `HhtBuilder::build` made from the
+    /// file's pose and velocities (`info.q0`, `info.qd0`, velocities projected): their
+    /// derivatives, from the neighbours' assembled poses and given velocities.
+    #[allow(clippy::too_many_arguments)]
+    pub fn start<M: Mechanism>(
+        mech: &M,
+        nb: &Neighbours<'_>,
+        settings: crate::kinematics::KinematicSettings,
+        (alpha, project): (f64, bool),
+        t0: f64,
+        (q, v, a, lambda): (&[f64], &[f64], &[f64], &[f64]),
+    ) -> Result<Self, Error> {
+        let info = mech.info();
+        let (n, m) = (info.n_coords, info.n_constraints);
+        check_len("q", n, q.len())?;
+        check_len("lambda", m, lambda.len())?;
+        let mut me = HhtSensitivity {
+            kin: Kinematics::with_settings(info, settings)?,
+            alpha,
+            beta: (1.0 - alpha).powi(2) / 4.0,
+            gamma: 0.5 - alpha,
+            project,
+            state: StateSensitivity::zeros(info),
+            dr: vec![0.0; n],
+            t: t0,
+            q: q.to_vec(),
+            v: v.to_vec(),
+            a: a.to_vec(),
+            lambda: lambda.to_vec(),
+            v_tilde: v.to_vec(),
+            s: Scratch::new(info),
+        };
+        me.kin.factor_at(mech, q, t0)?;
+        let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
+        let mut y = vec![0.0; m];
+
+        // The assembled pose moves with p; the start's position solve keeps it on Φ = 0
+        // with the correction of least kinetic energy.
+        let mut dq_given = vec![0.0; n];
+        let mut dn = vec![0.0; n];
+        nb.derivative(&mut dq_given, &mut dn, |mech, _, out| {
+            out.copy_from_slice(mech.info().q0);
+            Ok(())
+        })?;
+        nb.derivative(&mut rhs[n..], &mut tmp[n..], |mech, e, out| {
+            let qa: Vec<f64> = q.iter().zip(&dq_given).map(|(a, b)| a + e * b).collect();
+            mech.phi(&qa, t0, out);
+            Ok(())
+        })?;
+        negate(&mut rhs[n..]);
+        let zero_n = vec![0.0; n];
+        let mut dq = vec![0.0; n];
+        me.kin.solve(&zero_n, &rhs[n..], &mut dq, &mut y, t0)?;
+        for (d, g) in dq.iter_mut().zip(&dq_given) {
+            *d += g;
+        }
+        me.state.dq = dq;
+
+        // The given velocities move with p too, and are projected.
+        let mut dv_given = vec![0.0; n];
+        nb.derivative(&mut dv_given, &mut dn, |mech, _, out| {
+            out.copy_from_slice(mech.info().qd0);
+            Ok(())
+        })?;
+        let given = &mech.info().qd0.to_vec();
+        me.project_derivative(mech, nb, t0, given, &dv_given)?;
+        me.accelerations_derivative(mech, nb, t0)?;
+        let v0 = me.v.clone();
+        me.store_dr(nb, t0, &v0, &me.state.dqd.clone())?;
+        Ok(me)
+    }
+
+    /// `state.dqd` for `v = ṽ + Δ`, Δ the projection of least kinetic energy of `ṽ` (whose
+    /// derivative is `dv_tilde`) onto the velocity constraints at `self.q`; `kin` must be
+    /// factored there. Sets `self.v` to the projected base velocity.
+    fn project_derivative<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        nb: &Neighbours<'_>,
+        t: f64,
+        v_tilde: &[f64],
+        dv_tilde: &[f64],
+    ) -> Result<(), Error> {
+        let info = mech.info();
+        let (n, m) = (info.n_coords, info.n_constraints);
+        let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
+        // The base projection and its multipliers μ: K [Δ; μ] = [0; −(Φq ṽ + Φt)].
+        let mut delta = vec![0.0; n];
+        let mut mu = vec![0.0; m];
+        self.s.fit(info);
+        mech.phi_q(&self.q, t, &mut self.s.phi_q);
+        phi_q_times(info, &self.s.phi_q, v_tilde, &mut rhs[n..]);
+        mech.phi_t(&self.q, t, &mut tmp[n..]);
+        for (r, p) in rhs[n..].iter_mut().zip(&tmp[n..]) {
+            *r = -(*r + p);
+        }
+        let zero_n = vec![0.0; n];
+        self.kin.solve(&zero_n, &rhs[n..], &mut delta, &mut mu, t)?;
+        let v: Vec<f64> = v_tilde.iter().zip(&delta).map(|(a, b)| a + b).collect();
+        // The residual [M (v − ṽ) + Φqᵀμ; Φq v + Φt] stays zero along p.
+        let (q, dq) = (&self.q, &self.state.dq);
+        let s = &mut self.s;
+        let (mut qa, mut va) = (Vec::with_capacity(n), Vec::with_capacity(n));
+        let mut diff = vec![0.0; n];
+        nb.derivative(&mut rhs, &mut tmp, |mech, e, out| {
+            moved(q, e, dq, &mut qa);
+            moved(v_tilde, e, dv_tilde, &mut va);
+            for ((d, a), b) in diff.iter_mut().zip(&v).zip(&va) {
+                *d = a - b;
+            }
+            velocity_residual(mech, t, (&qa, &diff, &mu), s, out);
+            // velocity_residual's lower half is Φq·(v − ṽ) + Φt; the projection's is Φq·v + Φt.
+            let info = mech.info();
+            phi_q_times(info, &s.phi_q, &va, &mut s.vec_m);
+            for (o, x) in out[n..].iter_mut().zip(&s.vec_m) {
+                *o += x;
+            }
+            Ok(())
+        })?;
+        negate(&mut rhs);
+        let (f, g) = rhs.split_at(n);
+        let mut dmu = vec![0.0; m];
+        self.kin.solve(f, g, &mut self.state.dqd, &mut dmu, t)?;
+        self.v = v;
+        Ok(())
+    }
+
+    /// `state.dqdd`, `state.dlambda` of the saddle-point accelerations at `(self.q, self.v)`
+    /// (whose derivatives `state.dq`, `state.dqd` are set), `kin` factored at `self.q`; the
+    /// base accelerations and multipliers are solved too, into `self.a`, `self.lambda`.
+    fn accelerations_derivative<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        nb: &Neighbours<'_>,
+        t: f64,
+    ) -> Result<(), Error> {
+        let info = mech.info();
+        let (n, m) = (info.n_coords, info.n_constraints);
+        let (mut force, mut gamma) = (vec![0.0; n], vec![0.0; m]);
+        mech.force(&self.q, &self.v, t, &mut force);
+        mech.gamma(&self.q, &self.v, t, &mut gamma);
+        self.kin
+            .solve(&force, &gamma, &mut self.a, &mut self.lambda, t)?;
+        let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
+        let (q, v, a, l) = (&self.q, &self.v, &self.a, &self.lambda);
+        let (dq, dv) = (&self.state.dq, &self.state.dqd);
+        let s = &mut self.s;
+        let (mut qa, mut va) = (Vec::with_capacity(n), Vec::with_capacity(n));
+        nb.derivative(&mut rhs, &mut tmp, |mech, e, out| {
+            moved(q, e, dq, &mut qa);
+            moved(v, e, dv, &mut va);
+            acceleration_residual(mech, t, (&qa, &va, a, l), s, out);
+            Ok(())
+        })?;
+        negate(&mut rhs);
+        let (f, g) = rhs.split_at(n);
+        self.kin
+            .solve(f, g, &mut self.state.dqdd, &mut self.state.dlambda, t)
+    }
+
+    /// `dr` = derivative of `Φqᵀλ − Q(q, v_r)` at the current base state, the velocity it
+    /// was evaluated with `v_r` moving by `dv_r`.
+    fn store_dr(
+        &mut self,
+        nb: &Neighbours<'_>,
+        t: f64,
+        v_r: &[f64],
+        dv_r: &[f64],
+    ) -> Result<(), Error> {
+        let n = self.q.len();
+        let (q, l) = (&self.q, &self.lambda);
+        let (dq, dl) = (&self.state.dq, &self.state.dlambda);
+        let s = &mut self.s;
+        let (mut qa, mut va, mut la) = (Vec::new(), Vec::new(), Vec::new());
+        let mut tmp = vec![0.0; n];
+        nb.derivative(&mut self.dr, &mut tmp, |mech, e, out| {
+            moved(q, e, dq, &mut qa);
+            moved(v_r, e, dv_r, &mut va);
+            moved(l, e, dl, &mut la);
+            generalized_reaction(mech, t, (&qa, &va, &la), s, out);
+            Ok(())
+        })?;
+        self.v_tilde = v_r.to_vec();
+        Ok(())
+    }
+
+    /// After the integrator accepted a step to `t1` with the state `(q1, q̇1, q̈1, λ1)`: the
+    /// derivative of that state.
+    pub fn step<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        nb: &Neighbours<'_>,
+        t1: f64,
+        (q1, v1, a1, l1): (&[f64], &[f64], &[f64], &[f64]),
+    ) -> Result<(), Error> {
+        let info = mech.info();
+        let (n, m) = (info.n_coords, info.n_constraints);
+        check_len("q", n, q1.len())?;
+        check_len("lambda", m, l1.len())?;
+        let h = t1 - self.t;
+        let (alpha, beta, gamma) = (self.alpha, self.beta, self.gamma);
+        let c = 1.0 / (1.0 + alpha);
+        let inv_bh2 = 1.0 / (beta * h * h);
+        self.kin.factor_at(mech, q1, t1)?;
+        // The step's residual as a function of (q̈1, λ1) and the previous state.
+        let (q0, v0, a0) = (&self.q, &self.v, &self.a);
+        let mut r0 = vec![0.0; n];
+        generalized_reaction(
+            mech,
+            self.t,
+            (q0, &self.v_tilde, &self.lambda),
+            &mut self.s,
+            &mut r0,
+        );
+        let d = &self.state;
+        let (mut da, mut dl) = (d.dqdd.clone(), d.dlambda.clone());
+        let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
+        let (mut x, mut y) = (vec![0.0; n], vec![0.0; m]);
+        let (mut qa, mut va, mut aa, mut la) =
+            (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; m]);
+        let s = &mut self.s;
+        let mut converged = false;
+        let mut iterations = 0;
+        // The derivative's size, from the first change if the guess was zero.
+        // At least the derivative that would change q̈1 (λ1) by its own size over the
+        // parameter's value: below it, a derivative is zero for every purpose.
+        let natural = |x: &[f64]| x.iter().fold(0.0f64, |s, v| s.max(v.abs())) * 1e-3 / nb.step();
+        let (mut scale_a, mut scale_l) = (natural(a1), natural(l1));
+        let mut last_rel = f64::INFINITY;
+        while iterations < SENSITIVITY_ITERATIONS {
+            iterations += 1;
+            nb.derivative(&mut rhs, &mut tmp, |mech, e, out| {
+                for i in 0..n {
+                    let (qi, vi) = (q0[i] + e * d.dq[i], v0[i] + e * d.dqd[i]);
+                    let (a0i, a1i) = (a0[i] + e * d.dqdd[i], a1[i] + e * da[i]);
+                    qa[i] =
+                        qi + h * vi + 0.5 * h * h * ((1.0 - 2.0 * beta) * a0i + 2.0 * beta * a1i);
+                    va[i] = vi + h * ((1.0 - gamma) * a0i + gamma * a1i);
+                    aa[i] = a1i;
+                }
+                for (j, l) in la.iter_mut().enumerate() {
+                    *l = l1[j] + e * dl[j];
+                }
+                let info = mech.info();
+                let (top, bottom) = out.split_at_mut(n);
+                generalized_reaction(mech, t1, (&qa, &va, &la), s, top);
+                s.fit(info);
+                mech.mass(&qa, &mut s.mass);
+                mass_times(info, &s.mass, &aa, &mut s.vec_n);
+                for i in 0..n {
+                    let r_prev_i = r0[i] + e * self.dr[i];
+                    top[i] += c * s.vec_n[i] - alpha * c * r_prev_i;
+                }
+                mech.phi(&qa, t1, bottom);
+                for b in bottom.iter_mut() {
+                    *b *= inv_bh2;
+                }
+                Ok(())
+            })?;
+            // [cM Φqᵀ; Φq 0][Δa; Δλ] = −D through [M Φqᵀ; Φq 0][Δa; Δλ/c] = [−D₁/c; −D₂].
+            for r in rhs[..n].iter_mut() {
+                *r *= -c.recip();
+            }
+            negate(&mut rhs[n..]);
+            let (f, g) = rhs.split_at(n);
+            self.kin.solve(f, g, &mut x, &mut y, t1)?;
+            let (mut change_a, mut change_l) = (0.0f64, 0.0f64);
+            for (a, dx) in da.iter_mut().zip(&x) {
+                *a += dx;
+                change_a = change_a.max(dx.abs());
+            }
+            for (l, dy) in dl.iter_mut().zip(&y) {
+                *l += c * dy;
+                change_l = change_l.max((c * dy).abs());
+            }
+            if !(change_a.is_finite() && change_l.is_finite()) {
+                break;
+            }
+            scale_a = da.iter().fold(scale_a.max(change_a), |s, v| s.max(v.abs()));
+            scale_l = dl.iter().fold(scale_l.max(change_l), |s, v| s.max(v.abs()));
+            let rel = (change_a / scale_a.max(f64::MIN_POSITIVE))
+                .max(change_l / scale_l.max(f64::MIN_POSITIVE));
+            // Done at the tolerance, or once the changes stop shrinking: they have reached
+            // the noise of the differenced constraint rows, which the 1/(βh²) scaling lifts
+            // to ≈ ε/(δ·βh²) in q̈ (as it lifts the step's own Newton increments; positions
+            // get βh² of it back). Stagnation far above that is a failure.
+            if rel <= SENSITIVITY_TOLERANCE || (rel > 0.5 * last_rel && rel <= STAGNATION_LIMIT) {
+                converged = true;
+                break;
+            }
+            last_rel = rel;
+        }
+        if !converged {
+            return Err(Error::NewtonFailed {
+                analysis: "HHT sensitivity",
+                time: t1,
+                residual: f64::NAN,
+                iterations,
+                row: None,
+            });
+        }
+        // Newmark for the new position and (unprojected) velocity, and their derivatives.
+        let mut v_tilde = vec![0.0; n];
+        let mut dq1 = vec![0.0; n];
+        let mut dv_tilde = vec![0.0; n];
+        for i in 0..n {
+            v_tilde[i] = self.v[i] + h * ((1.0 - gamma) * self.a[i] + gamma * a1[i]);
+            dq1[i] = d.dq[i]
+                + h * d.dqd[i]
+                + 0.5 * h * h * ((1.0 - 2.0 * beta) * d.dqdd[i] + 2.0 * beta * da[i]);
+            dv_tilde[i] = d.dqd[i] + h * ((1.0 - gamma) * d.dqdd[i] + gamma * da[i]);
+        }
+        self.t = t1;
+        self.q.copy_from_slice(q1);
+        self.a.copy_from_slice(a1);
+        self.lambda.copy_from_slice(l1);
+        self.state.dq = dq1;
+        self.state.dqdd = da;
+        self.state.dlambda = dl;
+        if self.project {
+            self.project_derivative(mech, nb, t1, &v_tilde, &dv_tilde)?;
+        } else {
+            self.state.dqd.copy_from_slice(&dv_tilde);
+        }
+        // The integrator's own (projected) velocity is the state; the projection above is
+        // the ideal one of the same constraints, equal to it up to the step's tolerance.
+        self.v.copy_from_slice(v1);
+        self.store_dr(nb, t1, &v_tilde, &dv_tilde)
+    }
+
+    /// At the current state (after [`HhtSensitivity::start`] or a step): the derivative of
+    /// the saddle-point accelerations and multipliers recovered at `(q, q̇)`, as a run's
+    /// outputs are (`EnergyMeter`), into `dqdd`, `dlambda`; `state.dq`, `state.dqd` are the
+    /// position's and velocity's.
+    pub fn recovered<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        nb: &Neighbours<'_>,
+        (qdd, lambda): (&mut [f64], &mut [f64]),
+        (dqdd, dlambda): (&mut [f64], &mut [f64]),
+    ) -> Result<(), Error> {
+        let saved = (self.a.clone(), self.lambda.clone(), self.state.clone());
+        self.kin.factor_at(mech, &self.q.clone(), self.t)?;
+        let t = self.t;
+        self.accelerations_derivative(mech, nb, t)?;
+        qdd.copy_from_slice(&self.a);
+        lambda.copy_from_slice(&self.lambda);
+        dqdd.copy_from_slice(&self.state.dqdd);
+        dlambda.copy_from_slice(&self.state.dlambda);
+        (self.a, self.lambda, self.state) = saved;
+        Ok(())
+    }
+}
+
+/// `out = Φqᵀλ − Q` at `(q, q̇, λ)`.
+fn generalized_reaction(
+    mech: &dyn Mechanism,
+    t: f64,
+    (q, v, lambda): (&[f64], &[f64], &[f64]),
+    s: &mut Scratch,
+    out: &mut [f64],
+) {
+    let info = mech.info();
+    s.fit(info);
+    mech.phi_q(q, t, &mut s.phi_q);
+    phi_q_transpose_times(info, &s.phi_q, lambda, out);
+    mech.force(q, v, t, &mut s.vec_n);
+    for (o, f) in out.iter_mut().zip(&s.vec_n) {
+        *o -= f;
     }
 }

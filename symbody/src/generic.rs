@@ -38,6 +38,10 @@ pub struct Options {
     /// whose pivot vanished instead of failing (`HhtBuilder::drop_dependent_rows`); every
     /// row must still hold. Off by default, so that rank loss is reported.
     pub cross_singular: bool,
+    /// Tolerance of each step's Newton solve: on the increments of q̈ and Φqᵀλ (relative and
+    /// absolute) and on |Φ|∞ (`None`: the integrator's defaults, 1e-6 and 1e-10). Tighter
+    /// makes a run a smooth function of its parameters, as differencing whole runs needs.
+    pub newton_tolerance: Option<f64>,
 }
 
 impl Default for Options {
@@ -54,6 +58,7 @@ impl Default for Options {
             alpha: 0.0,
             output_step: 0.01,
             cross_singular: false,
+            newton_tolerance: None,
         }
     }
 }
@@ -558,7 +563,7 @@ impl Recording {
 /// The integrator of a generic run, at its consistent start: HHT with `opts.alpha` and
 /// velocity projection (see [`Options::default`] for why), from the file's pose and
 /// velocities.
-fn integrator(
+pub(crate) fn integrator(
     mech: &'static (dyn Mechanism + Sync),
     opts: &Options,
 ) -> Result<Integrator<&'static (dyn Mechanism + Sync)>, Error> {
@@ -570,6 +575,14 @@ fn integrator(
         .qd0(info.qd0)
         .project_velocities(true)
         .kinematic_settings(solve_settings(opts.cross_singular));
+    let builder = match opts.newton_tolerance {
+        None => builder,
+        Some(tol) => builder
+            .rel_tol(tol)
+            .abs_tol_acceleration(tol)
+            .abs_tol_lambda(tol)
+            .constraint_tol(tol),
+    };
     Ok(builder.build(mech)?)
 }
 

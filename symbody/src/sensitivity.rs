@@ -7,7 +7,7 @@
 
 use std::path::Path;
 
-use symbody_runtime::sensitivity::{self, Neighbours, StateSensitivity};
+use symbody_runtime::sensitivity::{self, HhtSensitivity, Neighbours, StateSensitivity};
 use symbody_runtime::{
     body_pose, driver_effort, free_bodies, joint_wrench, Entry, Formulation, JointKind,
     KinematicPath, Mechanism,
@@ -244,6 +244,88 @@ pub fn kinematic(
                 qa.extend(q.iter().zip(&ds.dq).map(|(a, b)| a + e * b));
                 la.clear();
                 la.extend(lambda.iter().zip(&ds.dlambda).map(|(a, b)| a + e * b));
+                outputs.values(m, t, (&qa, &la), &mut phi_q, v)
+            })?;
+            for (i, v) in d.iter().enumerate() {
+                row[i * all.len() + j] = *v;
+            }
+        }
+        result.t.push(t);
+        result.rows.push(row);
+    }
+    Ok(result)
+}
+
+/// The derivatives of the outputs of an integrated run (`generic::run` with `opts`) with
+/// respect to `parameters`, the file's other parameters as in `base`: forward sensitivities
+/// of the HHT steps ([`HhtSensitivity`]), then of the saddle-point multipliers recovered at
+/// each output state, from which the run's efforts and wrenches are computed.
+pub fn integrated(
+    entry: &Entry,
+    opts: &crate::generic::Options,
+    base: &Overrides,
+    parameters: &[String],
+) -> Result<Sensitivities, ScenarioError> {
+    let mech = crate::generic::mechanism(entry, opts.formulation)?;
+    let info = mech.info();
+    let f = info.formulation;
+    let all: Vec<Neighbours<'static>> = parameters
+        .iter()
+        .map(|p| neighbours(entry, f, base, p))
+        .collect::<Result<_, _>>()?;
+    let t_end = opts.t_end.unwrap_or(entry.t_end);
+    let n_out = output_count(t_end, opts.output_step)?;
+    let mut it = crate::generic::integrator(mech, opts)?;
+    let settings = crate::generic::solve_settings(opts.cross_singular);
+    let project = it.settings().projects_velocities();
+    let mut sens: Vec<HhtSensitivity> = all
+        .iter()
+        .map(|nb| {
+            HhtSensitivity::start(
+                &mech,
+                nb,
+                settings,
+                (opts.alpha, project),
+                it.t(),
+                (it.q(), it.qd(), it.qdd(), it.lambda()),
+            )
+        })
+        .collect::<Result<_, _>>()?;
+    let outputs = Outputs::new(mech, &[]);
+    let names = outputs.names(mech);
+    let mut result = Sensitivities {
+        parameters: parameters.to_vec(),
+        outputs: names.clone(),
+        t: Vec::with_capacity(n_out + 1),
+        rows: Vec::with_capacity(n_out + 1),
+    };
+    let (n, m) = (info.n_coords, info.n_constraints);
+    let (mut qdd, mut lambda, mut dqdd, mut dlambda) =
+        (vec![0.0; n], vec![0.0; m], vec![0.0; n], vec![0.0; m]);
+    let (mut d, mut tmp) = (vec![0.0; names.len()], vec![0.0; names.len()]);
+    let (mut qa, mut la, mut phi_q) = (Vec::new(), Vec::new(), Vec::new());
+    for k in 0..=n_out {
+        let t_out = (k as f64 * opts.output_step).min(t_end);
+        while it.step_toward(t_out)?.is_some() {
+            for (s, nb) in sens.iter_mut().zip(&all) {
+                s.step(&mech, nb, it.t(), (it.q(), it.qd(), it.qdd(), it.lambda()))?;
+            }
+        }
+        let (t, q) = (it.t(), it.q());
+        let mut row = vec![0.0; names.len() * all.len()];
+        for (j, (s, nb)) in sens.iter_mut().zip(&all).enumerate() {
+            s.recovered(
+                &mech,
+                nb,
+                (&mut qdd, &mut lambda),
+                (&mut dqdd, &mut dlambda),
+            )?;
+            let dq = &s.state.dq;
+            nb.derivative(&mut d, &mut tmp, |m, e, v| {
+                qa.clear();
+                qa.extend(q.iter().zip(dq).map(|(a, b)| a + e * b));
+                la.clear();
+                la.extend(lambda.iter().zip(&dlambda).map(|(a, b)| a + e * b));
                 outputs.values(m, t, (&qa, &la), &mut phi_q, v)
             })?;
             for (i, v) in d.iter().enumerate() {

@@ -207,14 +207,7 @@ pub fn run_observed(
             .map_err(Stopped::from)
         }
         Files::Tables => {
-            let opts = generic::Options {
-                formulation: Some(scene.formulation),
-                t_end: Some(scene.t_end),
-                step: scene.step,
-                alpha: scene.alpha,
-                output_step: scene.output_step,
-                cross_singular: scene.cross_singular,
-            };
+            let opts = options(scene);
             let mut obs = Prepared {
                 prepare: |rec: &mut Recording| restrict(rec, scene),
                 inner: obs,
@@ -246,4 +239,17 @@ fn restrict(rec: &mut Recording, scene: &Scene) {
         rec.drivers.clear();
     }
     rec.energy_table = scene.energy;
+}
+
+/// The options of a generic run of `scene`.
+pub fn options(scene: &Scene) -> generic::Options {
+    generic::Options {
+        formulation: Some(scene.formulation),
+        t_end: Some(scene.t_end),
+        step: scene.step,
+        alpha: scene.alpha,
+        output_step: scene.output_step,
+        cross_singular: scene.cross_singular,
+        newton_tolerance: None,
+    }
 }
