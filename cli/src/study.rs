@@ -37,7 +37,8 @@ pub fn run(
     live::check_folder(out)?;
     let rows = st.rows();
     let columns = study::columns(&st, &scene);
-    let n_metrics = study::metric_names(&scene).len();
+    let metrics = study::metrics(&scene);
+    let n_metrics = metrics.len();
     let file = out.join("study.csv");
     let (mut table, done) = Table::open(&file, &columns, resume).map_err(|e| e.to_string())?;
     let left = rows.len() - done.len().min(rows.len());
@@ -63,15 +64,23 @@ pub fn run(
     let (mut ok, mut failed) = (0usize, 0usize);
     let clock = Instant::now();
     live::listen(true);
-    let result = study::run(&scene, &rows, &done, jobs, live::interrupt_flag(), |row| {
-        match row.metrics {
-            Ok(_) => ok += 1,
-            Err(_) => failed += 1,
-        }
-        bar.inc(1);
-        bar.set_message(format!("{failed} failed"));
-        table.write(&row, n_metrics)
-    });
+    let result = study::run(
+        &scene,
+        &metrics,
+        &rows,
+        &done,
+        jobs,
+        live::interrupt_flag(),
+        |row| {
+            match row.metrics {
+                Ok(_) => ok += 1,
+                Err(_) => failed += 1,
+            }
+            bar.inc(1);
+            bar.set_message(format!("{failed} failed"));
+            table.write(&row, n_metrics)
+        },
+    );
     live::listen(false);
     bar.finish_and_clear();
     result.map_err(|e| e.to_string())?;
