@@ -166,6 +166,19 @@ fn mistakes_in_the_study_are_located_in_the_scene() {
             "parameters = { r = { uniform = [0.1, 0.2] }, len = [0.3] }\nsamples = 5",
             "fixed values among random",
         ),
+        (
+            "parameters = { r = [0.1] }\nmetrics = [\"energy_balance\", \"max|motr|\"]",
+            "did you mean `max|motor|`?",
+        ),
+        (
+            "parameters = { r = [0.1] }\nmetrics = [\"max fk_condition\"]",
+            "no six-leg platform",
+        ),
+        (
+            "parameters = { r = [0.1] }\nmetrics = [\"max crank.z\", \"max crank.z\"]",
+            "listed twice",
+        ),
+        ("parameters = { r = [0.1] }\nmetrics = []", "no metric"),
     ];
     for (k, (study_text, says)) in cases.iter().enumerate() {
         let scene = dir.join(format!("s{k}.toml"));
@@ -179,9 +192,195 @@ fn mistakes_in_the_study_are_located_in_the_scene() {
         assert!(stderr.contains(&format!("s{k}.toml:")), "{stderr}");
         assert!(stderr.contains(says), "{study_text}: {stderr}");
     }
+    // A metric's mistake is located at its name: line 4, the second string from column 30.
+    let scene = dir.join("s8.toml");
+    let (_, _, stderr) = study(&scene, &dir.join("o8"), &[]);
+    assert!(stderr.contains("s8.toml:4:30"), "{stderr}");
     // A scene without a study says how to write one.
     let scene = dir.join("plain.toml");
     std::fs::write(&scene, "mechanism = \"slider_crank\"\n").unwrap();
     let (ok, _, stderr) = study(&scene, &dir.join("plain"), &[]);
     assert!(!ok && stderr.contains("no [study] table"), "{stderr}");
+}
+
+/// The size of `png` and, among its pixels, the share and the number of distinct colours
+/// that are saturated (a heat map's cells and colour bar; curves and text are thin).
+fn colours(png: &Path) -> ((u32, u32), f64, usize) {
+    let decoder = png::Decoder::new(std::fs::File::open(png).unwrap());
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let frame = reader.next_frame(&mut buf).unwrap();
+    assert_eq!(frame.color_type, png::ColorType::Rgb);
+    let pixels: Vec<[u8; 3]> = buf[..frame.buffer_size()]
+        .chunks(3)
+        .map(|c| [c[0], c[1], c[2]])
+        .collect();
+    let saturated: Vec<[u8; 3]> = pixels
+        .iter()
+        .copied()
+        .filter(|p| p.iter().max().unwrap() - p.iter().min().unwrap() > 40)
+        .collect();
+    let share = saturated.len() as f64 / pixels.len() as f64;
+    let mut distinct = saturated;
+    distinct.sort_unstable();
+    distinct.dedup();
+    ((frame.width, frame.height), share, distinct.len())
+}
+
+#[test]
+fn two_parameters_draw_heat_maps_one_draws_curves() {
+    let dir = temp_dir("heat");
+    let scene = dir.join("crank.toml");
+    std::fs::write(&scene, CRANK).unwrap();
+    let (ok, _, stderr) = study(&scene, &dir.join("two"), &[]);
+    assert!(ok, "{stderr}");
+    // One map (the largest driver effort, the default metrics name no other) of the
+    // 4 × 2 grid: its cells and colour bar cover a good part of the picture in many colours.
+    let (size, share, distinct) = colours(&dir.join("two/study.png"));
+    assert_eq!(size, (900, 360 + 60));
+    assert!(share > 0.25 && distinct >= 50, "{share} {distinct}");
+    let one = dir.join("one.toml");
+    std::fs::write(
+        &one,
+        "mechanism = \"slider_crank\"\n[time]\nend = 0.5\n[study]\n\
+         parameters = { r = [0.08, 0.1, 0.12] }\n",
+    )
+    .unwrap();
+    let (ok, _, stderr) = study(&one, &dir.join("one"), &[]);
+    assert!(ok, "{stderr}");
+    let (_, share, _) = colours(&dir.join("one/study.png"));
+    assert!(share < 0.05, "curves, not cells: {share}");
+}
+
+/// The condition number of the platform's leg-length Jacobian at the platform's centre of
+/// mass `p` and rotation `r`, by central differences of the lengths `|p + R b − a|` over moves
+/// `(δp, δθ)` (δθ a rotation vector turning the platform about its centre of mass), the
+/// rotation columns divided by the platform points' RMS radius about their centroid so every
+/// column is in metres.
+fn fk_condition(
+    legs: &[symbody_runtime::LegInfo],
+    p: nalgebra::Vector3<f64>,
+    r: nalgebra::Matrix3<f64>,
+) -> f64 {
+    use nalgebra::{Matrix6, Rotation3, Vector3};
+    let lengths = |d: &[f64; 6]| -> Vec<f64> {
+        let turn = Rotation3::new(Vector3::new(d[3], d[4], d[5]));
+        let (p, r) = (p + Vector3::new(d[0], d[1], d[2]), turn.matrix() * r);
+        legs.iter()
+            .map(|l| (p + r * Vector3::from(l.platform) - Vector3::from(l.base)).norm())
+            .collect()
+    };
+    let tops: Vec<Vector3<f64>> = legs.iter().map(|l| Vector3::from(l.platform)).collect();
+    let centre = tops.iter().sum::<Vector3<f64>>() / tops.len() as f64;
+    let radius = (tops
+        .iter()
+        .map(|b| (b - centre).norm_squared())
+        .sum::<f64>()
+        / tops.len() as f64)
+        .sqrt();
+    let h = 1e-6;
+    let j = Matrix6::from_fn(|i, k| {
+        let (mut plus, mut minus) = ([0.0; 6], [0.0; 6]);
+        plus[k] = h;
+        minus[k] = -h;
+        let slope = (lengths(&plus)[i] - lengths(&minus)[i]) / (2.0 * h);
+        if k >= 3 {
+            slope / radius
+        } else {
+            slope
+        }
+    });
+    let s = j.singular_values();
+    s.max() / s.min()
+}
+
+#[test]
+fn named_metrics_are_those_of_the_scenes_own_run() {
+    let dir = temp_dir("named");
+    let head = "mechanism = \"stewart_6_6\"\nformulation = \"exact\"\n[time]\nend = 0.6\n\
+                output_step = 0.05\n[outputs]\nposes = \"none\"\nreactions = \"none\"\n";
+    let metrics = [
+        "max fk_condition",
+        "max platform.z",
+        "min platform.x",
+        "max|act2|",
+        "min fk_condition",
+    ];
+    let scene = dir.join("platform.toml");
+    std::fs::write(
+        &scene,
+        format!(
+            "{head}[study]\nparameters = {{ r_platform = [0.1, 0.11], m_cyl = [0.2, 0.4] }}\n\
+             metrics = {metrics:?}\n"
+        ),
+    )
+    .unwrap();
+    let (ok, _, stderr) = study(&scene, &dir, &[]);
+    assert!(ok, "{stderr}");
+    let text = std::fs::read_to_string(dir.join("study.csv")).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    assert_eq!(header[..3], ["run", "m_cyl", "r_platform"]);
+    assert_eq!(header[3..8], metrics, "the scene's order");
+    assert_eq!(header[8..], ["status", "error", "wall_s"]);
+    // Four maps, the most a picture takes: the largest actuator force, then the named metrics
+    // other than the drivers' in their order.
+    let (size, share, _) = colours(&dir.join("study.png"));
+    assert_eq!(size, (900, 4 * 360 + 60));
+    assert!(share > 0.25, "{share}");
+    for row in rows(&dir.join("study.csv")) {
+        assert_eq!(row[8], "ok", "{row:?}");
+        let value = |k: usize| row[k].parse::<f64>().unwrap();
+        // The scene's own run with the row's parameters, asking for the platform's pose and
+        // the efforts: its bodies.csv columns and drivers.csv, recomputed here.
+        let own = format!(
+            "{head}[parameters]\nm_cyl = {}\nr_platform = {}\n",
+            row[1], row[2]
+        )
+        .replace("poses = \"none\"", "poses = [\"platform\"]");
+        let parsed = symbody::scene::load(&REGISTRY, "own.toml", &own).unwrap();
+        let rec = match symbody::scene::run(&parsed, parsed.entry).unwrap().1 {
+            symbody::scene::Outcome::Tables(rec) => rec,
+            _ => unreachable!("tables"),
+        };
+        let info = rec.info;
+        let platform = info.platform.expect("a six-leg platform");
+        let b = platform.body;
+        let z = rec.poses.iter().map(|p| p[b].0[2]).fold(f64::MIN, f64::max);
+        let x = rec.poses.iter().map(|p| p[b].0[0]).fold(f64::MAX, f64::min);
+        let act2 = rec.efforts.iter().fold(0.0f64, |m, e| m.max(e[1].abs()));
+        assert_eq!(info.joints[rec.drivers[1]].name, "act2");
+        let conditions: Vec<f64> = rec
+            .poses
+            .iter()
+            .map(|p| {
+                let (c, [w, i, j, k]) = p[b];
+                let turn = nalgebra::UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+                    w, i, j, k,
+                ));
+                fk_condition(
+                    platform.legs,
+                    nalgebra::Vector3::from(c),
+                    *turn.to_rotation_matrix().matrix(),
+                )
+            })
+            .collect();
+        let worst = conditions.iter().copied().fold(0.0, f64::max);
+        let best = conditions.iter().copied().fold(f64::INFINITY, f64::min);
+        let close = |got: f64, want: f64, tol: f64, what: &str| {
+            assert!(
+                (got - want).abs() <= tol * want.abs().max(1e-3),
+                "{row:?} {what}: {got} vs {want}"
+            )
+        };
+        close(value(3), worst, 1e-6, "max fk_condition");
+        close(value(7), best, 1e-6, "min fk_condition");
+        assert!(
+            worst > best,
+            "the platform's conditioning changes over the run"
+        );
+        // Two mechanisms derived alike (the study's and the scene's), both exact to roundoff.
+        close(value(4), z, 1e-9, "max platform.z");
+        close(value(5), x, 1e-9, "min platform.x");
+        close(value(6), act2, 1e-9, "max|act2|");
+    }
 }

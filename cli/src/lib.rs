@@ -116,8 +116,9 @@ enum Command {
     },
     /// Run a scene once per row of its `[study]` (its mechanism file's parameters on a grid,
     /// a list or random samples), on every core: study.csv gets one row of metrics per run
-    /// (largest driver efforts and joint forces and moments, energy balance, status, wall
-    /// time) as each ends.
+    /// (those `[study] metrics` names, e.g. largest driver efforts and joint forces, a
+    /// coordinate's extremes, a platform's FK condition; by default the efforts, forces,
+    /// moments and energy balance), status and wall time as each ends.
     Study {
         /// The scene file, with a [study] table.
         scene: PathBuf,
@@ -131,7 +132,7 @@ enum Command {
         /// the others.
         #[arg(long)]
         resume: bool,
-        /// Skip study.png (the largest driver effort against the first parameter).
+        /// Skip study.png (the metrics against one parameter, or heat maps over two).
         #[arg(long)]
         no_plots: bool,
     },

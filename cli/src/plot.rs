@@ -315,6 +315,158 @@ pub fn draw_against(
     })
 }
 
+/// One heat map: a colour-bar label and a value per grid point, `values[iy][ix]` (NaN where
+/// there is none, drawn grey).
+pub struct HeatMap<'a> {
+    pub label: &'a str,
+    pub values: Vec<Vec<f64>>,
+}
+
+/// The viridis colour map's anchors (perceptually uniform, readable in grey and by most
+/// colour-blind readers), interpolated linearly between.
+const VIRIDIS: [(f64, f64, f64); 5] = [
+    (68.0, 1.0, 84.0),
+    (59.0, 82.0, 139.0),
+    (33.0, 145.0, 140.0),
+    (94.0, 201.0, 98.0),
+    (253.0, 231.0, 37.0),
+];
+
+/// The colour of `s` in [0, 1] (clamped) on [`VIRIDIS`].
+fn viridis(s: f64) -> RGBColor {
+    let s = s.clamp(0.0, 1.0) * (VIRIDIS.len() - 1) as f64;
+    let k = (s.floor() as usize).min(VIRIDIS.len() - 2);
+    let f = s - k as f64;
+    let (a, b) = (VIRIDIS[k], VIRIDIS[k + 1]);
+    let mix = |x: f64, y: f64| (x + (y - x) * f).round() as u8;
+    RGBColor(mix(a.0, b.0), mix(a.1, b.1), mix(a.2, b.2))
+}
+
+/// The cell edges around ascending values: halfway between neighbours, the ends as far
+/// out as their neighbour's half spacing (a lone value gets a cell of its size's tenth).
+fn cell_edges(v: &[f64]) -> Vec<f64> {
+    match v {
+        [] => vec![0.0, 1.0],
+        [x] => {
+            let h = 0.05 * x.abs().max(1e-9);
+            vec![x - h, x + h]
+        }
+        _ => {
+            let n = v.len();
+            let mut e = Vec::with_capacity(n + 1);
+            e.push(v[0] - (v[1] - v[0]) / 2.0);
+            e.extend(v.windows(2).map(|w| (w[0] + w[1]) / 2.0));
+            e.push(v[n - 1] + (v[n - 1] - v[n - 2]) / 2.0);
+            e
+        }
+    }
+}
+
+/// Draws heat maps stacked vertically over the grid `xs` × `ys` (ascending), each with its
+/// colour bar.
+pub fn draw_heat_maps(
+    path: &Path,
+    title: &str,
+    (x_label, xs): (&str, &[f64]),
+    (y_label, ys): (&str, &[f64]),
+    maps: &[HeatMap<'_>],
+) -> Result<(), String> {
+    register_font();
+    let size = heat_map_size(maps.len());
+    let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
+    let (xe, ye) = (cell_edges(xs), cell_edges(ys));
+    png(path, size, |root| {
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let root = root
+            .titled(title, ("sans-serif", 24))
+            .map_err(|e| err(&e))?;
+        for (area, map) in root.split_evenly((maps.len().max(1), 1)).iter().zip(maps) {
+            let (mut lo, mut hi) = map
+                .values
+                .iter()
+                .flatten()
+                .copied()
+                .filter(|v| v.is_finite())
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                    (a.min(v), b.max(v))
+                });
+            if !lo.is_finite() {
+                (lo, hi) = (0.0, 1.0);
+            }
+            // A map flat to roundoff gets a readable range around its value, as the curves do.
+            let scale = 1.0 + hi.abs().max(lo.abs());
+            if hi - lo <= 1e-9 * scale {
+                (lo, hi) = (lo - 0.05 * scale, hi + 0.05 * scale);
+            }
+            let (cells, bar) = area.split_horizontally(size.0 as i32 - 170);
+            let mut chart = ChartBuilder::on(&cells)
+                .margin(12)
+                .x_label_area_size(40)
+                .y_label_area_size(80)
+                .build_cartesian_2d(xe[0]..xe[xe.len() - 1], ye[0]..ye[ye.len() - 1])
+                .map_err(|e| err(&e))?;
+            chart
+                .configure_mesh()
+                .disable_mesh()
+                .x_desc(x_label)
+                .y_desc(y_label)
+                .label_style(("sans-serif", 15))
+                .axis_desc_style(("sans-serif", 17))
+                .draw()
+                .map_err(|e| err(&e))?;
+            let grey = RGBColor(200, 200, 200);
+            let colour = |v: f64| match v.is_finite() {
+                true => viridis((v - lo) / (hi - lo)),
+                false => grey,
+            };
+            chart
+                .draw_series(map.values.iter().enumerate().flat_map(|(iy, row)| {
+                    let (xe, ye) = (&xe, &ye);
+                    row.iter().enumerate().map(move |(ix, &v)| {
+                        Rectangle::new(
+                            [(xe[ix], ye[iy]), (xe[ix + 1], ye[iy + 1])],
+                            colour(v).filled(),
+                        )
+                    })
+                }))
+                .map_err(|e| err(&e))?;
+            // The colour bar: the map's range top to bottom, in 100 bands.
+            let mut scale_chart = ChartBuilder::on(&bar)
+                .margin(12)
+                .margin_left(4)
+                .x_label_area_size(40)
+                .y_label_area_size(110)
+                .build_cartesian_2d(0.0..1.0, lo..hi)
+                .map_err(|e| err(&e))?;
+            scale_chart
+                .configure_mesh()
+                .disable_mesh()
+                .x_labels(0)
+                .y_desc(map.label)
+                .label_style(("sans-serif", 15))
+                .axis_desc_style(("sans-serif", 17))
+                .draw()
+                .map_err(|e| err(&e))?;
+            const BANDS: usize = 100;
+            scale_chart
+                .draw_series((0..BANDS).map(|k| {
+                    let (a, b) = (k as f64 / BANDS as f64, (k + 1) as f64 / BANDS as f64);
+                    Rectangle::new(
+                        [(0.0, lo + (hi - lo) * a), (1.0, lo + (hi - lo) * b)],
+                        viridis((a + b) / 2.0).filled(),
+                    )
+                }))
+                .map_err(|e| err(&e))?;
+        }
+        Ok(())
+    })
+}
+
+/// The size of a PNG of `n` heat maps ([`draw_heat_maps`]).
+pub fn heat_map_size(n: usize) -> (u32, u32) {
+    (900, 360 * n.max(1) as u32 + 60)
+}
+
 /// Writes the paper's figures 2–6 into `dir`; returns the files written.
 pub fn paper_figures(run: &Run, dir: &Path) -> Result<Vec<PathBuf>, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;

@@ -37,7 +37,8 @@ pub fn run(
     live::check_folder(out)?;
     let rows = st.rows();
     let columns = study::columns(&st, &scene);
-    let n_metrics = study::metric_names(&scene).len();
+    let metrics = study::metrics(&scene);
+    let n_metrics = metrics.len();
     let file = out.join("study.csv");
     let (mut table, done) = Table::open(&file, &columns, resume).map_err(|e| e.to_string())?;
     let left = rows.len() - done.len().min(rows.len());
@@ -63,15 +64,23 @@ pub fn run(
     let (mut ok, mut failed) = (0usize, 0usize);
     let clock = Instant::now();
     live::listen(true);
-    let result = study::run(&scene, &rows, &done, jobs, live::interrupt_flag(), |row| {
-        match row.metrics {
-            Ok(_) => ok += 1,
-            Err(_) => failed += 1,
-        }
-        bar.inc(1);
-        bar.set_message(format!("{failed} failed"));
-        table.write(&row, n_metrics)
-    });
+    let result = study::run(
+        &scene,
+        &metrics,
+        &rows,
+        &done,
+        jobs,
+        live::interrupt_flag(),
+        |row| {
+            match row.metrics {
+                Ok(_) => ok += 1,
+                Err(_) => failed += 1,
+            }
+            bar.inc(1);
+            bar.set_message(format!("{failed} failed"));
+            table.write(&row, n_metrics)
+        },
+    );
     live::listen(false);
     bar.finish_and_clear();
     result.map_err(|e| e.to_string())?;
@@ -99,91 +108,118 @@ pub fn run(
     Ok(())
 }
 
-/// `study.png`: the largest driver effort of each run against the study's first parameter;
-/// one curve per driver when it varies alone, else one curve per value of the second
-/// parameter (of the largest over the drivers). Only for grids and lists, with drivers.
+/// `study.png`, for grids and lists of one or two parameters: the largest driver effort
+/// (the study's main quantity, when it has drivers) and each other metric the scene's
+/// `metrics` names (without drivers or named metrics: the first metric), at most four
+/// panels. Against one parameter, curves (one per driver for the efforts); over two, a heat
+/// map of each with its colour bar.
 fn plot(
     file: &Path,
     st: &study::Study,
     scene: &symbody::scene::Scene,
 ) -> Result<Option<std::path::PathBuf>, String> {
+    const MOST: usize = 4;
     let random = st.parameters.iter().any(|(_, a)| a.is_random());
-    let drivers = study::driver_metric_names(scene);
-    if random || drivers.is_empty() || st.parameters.len() > 2 {
+    if random || st.parameters.is_empty() || st.parameters.len() > 2 {
         return Ok(None);
     }
+    let drivers = study::driver_metric_names(scene);
+    let names = study::metric_names(scene);
+    let others: Vec<String> = match (&st.metrics, drivers.is_empty()) {
+        (Some(_), _) => names
+            .iter()
+            .filter(|n| !drivers.contains(n))
+            .cloned()
+            .collect(),
+        (None, true) => names.first().cloned().into_iter().collect(),
+        (None, false) => Vec::new(),
+    };
+    let others = &others[..others.len().min(MOST - usize::from(!drivers.is_empty()))];
     let (columns, rows) = study::read(file).map_err(|e| e.to_string())?;
     let col = |name: &str| columns.iter().position(|c| c == name);
     let num = |r: &Vec<String>, k: usize| r[k].parse::<f64>().unwrap_or(f64::NAN);
-    let x_name = &st.parameters[0].0;
-    let xi = col(x_name).expect("the parameter's column");
-    let mut xs: Vec<f64> = rows.iter().map(|r| num(r, xi)).collect();
-    xs.sort_by(f64::total_cmp);
-    xs.dedup();
-    let peak = |r: &Vec<String>, names: &[String]| {
-        names
+    // The ascending distinct values of a parameter's column.
+    let values = |k: usize| {
+        let mut v: Vec<f64> = rows.iter().map(|r| num(r, k)).collect();
+        v.sort_by(f64::total_cmp);
+        v.dedup();
+        v
+    };
+    let peak = |r: &Vec<String>| {
+        drivers
             .iter()
             .filter_map(|n| col(n))
             .map(|k| num(r, k))
             .fold(f64::NAN, f64::max)
     };
-    // The value of `f` at each x for the rows `keep` selects (NaN where a run failed).
-    let series = |keep: &dyn Fn(&Vec<String>) -> bool, f: &dyn Fn(&Vec<String>) -> f64| {
-        xs.iter()
-            .map(|&x| {
-                rows.iter()
-                    .find(|r| num(r, xi) == x && keep(r))
-                    .map_or(f64::NAN, f)
-            })
-            .collect::<Vec<f64>>()
+    let metric = |name: &str| {
+        let k = col(name);
+        move |r: &Vec<String>| k.map_or(f64::NAN, |k| num(r, k))
     };
-    let labels: Vec<String>;
-    let mut curves: Vec<Vec<f64>> = Vec::new();
+    let x_name = &st.parameters[0].0;
+    let xi = col(x_name).ok_or_else(|| format!("{}: no column `{x_name}`", file.display()))?;
+    let xs = values(xi);
+    let png = file.with_file_name("study.png");
+    let title = format!("study of {}", scene.mechanism);
     match st.parameters.get(1) {
         None => {
-            labels = drivers.clone();
-            for d in &drivers {
-                let k = col(d).expect("the metric's column");
-                curves.push(series(&|_| true, &|r| num(r, k)));
+            // The value of `f` at each x (NaN where a run failed).
+            let series = |f: &dyn Fn(&Vec<String>) -> f64| {
+                xs.iter()
+                    .map(|&x| rows.iter().find(|r| num(r, xi) == x).map_or(f64::NAN, f))
+                    .collect::<Vec<f64>>()
+            };
+            let mut panels = Vec::new();
+            if !drivers.is_empty() {
+                panels.push(crate::plot::Panel {
+                    y_label: "largest |effort| over the run",
+                    series: drivers
+                        .iter()
+                        .map(|d| (d.as_str(), series(&metric(d))))
+                        .collect(),
+                });
             }
+            for o in others {
+                panels.push(crate::plot::Panel {
+                    y_label: o,
+                    series: vec![(o.as_str(), series(&metric(o)))],
+                });
+            }
+            crate::plot::draw_against(&png, &title, x_name, &xs, &panels)?;
         }
         Some((y_name, _)) => {
-            let yi = col(y_name).expect("the parameter's column");
-            let mut ys: Vec<f64> = rows.iter().map(|r| num(r, yi)).collect();
-            ys.sort_by(f64::total_cmp);
-            ys.dedup();
-            // Grid values carry the roundoff of their spacing: shown to 9 digits.
-            labels = ys
-                .iter()
-                .map(|y| {
-                    format!(
-                        "{y_name} = {}",
-                        format!("{y:.9}")
-                            .trim_end_matches('0')
-                            .trim_end_matches('.')
-                    )
-                })
-                .collect();
-            for &y in &ys {
-                curves.push(series(&|r| num(r, yi) == y, &|r| peak(r, &drivers)));
+            let yi =
+                col(y_name).ok_or_else(|| format!("{}: no column `{y_name}`", file.display()))?;
+            let ys = values(yi);
+            // The value of `f` at each grid point, rows of y (NaN where a run failed).
+            let grid = |f: &dyn Fn(&Vec<String>) -> f64| {
+                ys.iter()
+                    .map(|&y| {
+                        xs.iter()
+                            .map(|&x| {
+                                rows.iter()
+                                    .find(|r| num(r, xi) == x && num(r, yi) == y)
+                                    .map_or(f64::NAN, f)
+                            })
+                            .collect()
+                    })
+                    .collect::<Vec<Vec<f64>>>()
+            };
+            let mut maps = Vec::new();
+            if !drivers.is_empty() {
+                maps.push(crate::plot::HeatMap {
+                    label: "largest |effort| of any driver",
+                    values: grid(&peak),
+                });
             }
+            for o in others {
+                maps.push(crate::plot::HeatMap {
+                    label: o,
+                    values: grid(&metric(o)),
+                });
+            }
+            crate::plot::draw_heat_maps(&png, &title, (x_name, &xs), (y_name, &ys), &maps)?;
         }
     }
-    let y_label = match st.parameters.len() {
-        1 => "largest |effort| over the run",
-        _ => "largest |effort| of any driver",
-    };
-    let panel = crate::plot::Panel {
-        y_label,
-        series: labels.iter().map(String::as_str).zip(curves).collect(),
-    };
-    let png = file.with_file_name("study.png");
-    crate::plot::draw_against(
-        &png,
-        &format!("study of {}", scene.mechanism),
-        x_name,
-        &xs,
-        &[panel],
-    )?;
     Ok(Some(png))
 }

@@ -474,16 +474,18 @@ fn start_pose(x: &Bound<'_, PyAny>) -> PyResult<Pose> {
 /// A study (`symbody study`): the scene file `target` (one with a top-level `mechanism`), or
 /// a default scene of the mechanism `target` (a name or a file) over `t_end`, run once per
 /// row of `columns` (one list per parameter in `names`, all as long) on `jobs` threads with
-/// the GIL released. A dict of columns: `run`, the parameters, the metrics, `status`,
-/// `error`, `wall_s`, in row order.
+/// the GIL released, each run reduced to `metrics` (names as in a scene's `[study]`; `None`:
+/// the scene's own, else the default set). A dict of columns: `run`, the parameters, the
+/// metrics, `status`, `error`, `wall_s`, in row order.
 #[pyfunction]
-#[pyo3(signature = (target, names, columns, t_end, jobs))]
+#[pyo3(signature = (target, names, columns, t_end, metrics, jobs))]
 fn study<'py>(
     py: Python<'py>,
     target: Target,
     names: Vec<String>,
     columns: Vec<Vec<f64>>,
     t_end: Option<f64>,
+    metrics: Option<Vec<String>>,
     jobs: Option<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let scene_text = |mechanism: &str| -> PyResult<String> {
@@ -546,16 +548,48 @@ fn study<'py>(
                 .collect()
         })
         .collect();
-    let metric_names = symbody::study::metric_names(&scene);
+    let metrics = match metrics {
+        None => symbody::study::metrics(&scene),
+        Some(list) => {
+            let info = scene.entry.default_mechanism().info();
+            let mut chosen: Vec<symbody::study::Metric> = Vec::new();
+            for name in &list {
+                let m = symbody::study::Metric::parse(name, info).map_err(|(message, help)| {
+                    PyValueError::new_err(format!("metrics: {message}; {help}"))
+                })?;
+                if chosen.contains(&m) {
+                    return Err(PyValueError::new_err(format!(
+                        "metrics: `{name}` is listed twice"
+                    )));
+                }
+                chosen.push(m);
+            }
+            if chosen.is_empty() {
+                return Err(PyValueError::new_err(
+                    "metrics: none given; name some, or pass None for the default set",
+                ));
+            }
+            chosen
+        }
+    };
+    let metric_names: Vec<String> = metrics.iter().map(|m| m.name()).collect();
     let jobs = jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
     let stop = std::sync::atomic::AtomicBool::new(false);
     let mut results: Vec<Option<symbody::study::RowResult>> = vec![None; n_rows];
     py.detach(|| {
-        symbody::study::run(&scene, &rows, &Default::default(), jobs, &stop, |row| {
-            let index = row.index;
-            results[index] = Some(row);
-            Ok(())
-        })
+        symbody::study::run(
+            &scene,
+            &metrics,
+            &rows,
+            &Default::default(),
+            jobs,
+            &stop,
+            |row| {
+                let index = row.index;
+                results[index] = Some(row);
+                Ok(())
+            },
+        )
     })
     .map_err(py_err)?;
     let d = PyDict::new(py);

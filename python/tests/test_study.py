@@ -3,6 +3,7 @@ scene, the order of `params` is kept, threads change nothing, a set that cannot 
 failed row, and wrong names are ValueErrors."""
 
 import csv
+import re
 import subprocess
 
 import numpy as np
@@ -53,3 +54,21 @@ def test_failed_rows_and_wrong_names():
         symbody.study("slider_crank", {"rr": [0.1]})
     with pytest.raises(ValueError, match="metrics"):
         symbody.study("slider_crank", {"r": [0.1]}, t_end=0.1, metrics=["nothing"])
+
+
+def test_metrics_are_chosen_and_ordered_as_in_a_scene():
+    rows = symbody.study(
+        "stewart_6_6",
+        {"r_platform": [0.1, 0.11]},
+        t_end=0.3,
+        metrics=["max fk_condition", "max platform.z", "max|act1|"],
+    )
+    metrics = [c for c in rows if c not in ("run", "r_platform", "status", "error", "wall_s")]
+    assert metrics == ["max fk_condition", "max platform.z", "max|act1|"]
+    assert all(s == "ok" for s in rows["status"])
+    # A wider platform is better conditioned (the command line's example study shows it).
+    assert 1 < rows["max fk_condition"][1] < rows["max fk_condition"][0]
+    with pytest.raises(ValueError, match="no six-leg platform"):
+        symbody.study("slider_crank", {"r": [0.1]}, t_end=0.1, metrics=["max fk_condition"])
+    with pytest.raises(ValueError, match=re.escape("did you mean `max|motor|`")):
+        symbody.study("slider_crank", {"r": [0.1]}, t_end=0.1, metrics=["max|motr|"])

@@ -8,10 +8,12 @@
 
 use crate::generic::Recording;
 use crate::scenario::ScenarioError;
-use crate::scene::{self, Files, Outcome, Scene};
+use crate::scene::{self, Files, Outcome, Scene, Selection};
+use nalgebra::Vector3;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::time::Instant;
-use symbody_runtime::{Entry, JointKind};
+use symbody_runtime::fk::{Legs, Pose};
+use symbody_runtime::{Entry, JointKind, MechanismInfo};
 
 /// How one parameter varies.
 #[derive(Debug, Clone, PartialEq)]
@@ -44,6 +46,126 @@ pub struct Study {
     /// Random parameters: a Latin hypercube (each parameter's range cut into `samples`
     /// equally likely strata, each stratum used once) instead of independent draws.
     pub latin: bool,
+    /// The metrics the scene asks for, in its order; `None`: the default set
+    /// ([`default_metrics`]).
+    pub metrics: Option<Vec<Metric>>,
+}
+
+/// One number each run is reduced to (a column of `study.csv`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Metric {
+    /// `max|<driver>|`: the driver's largest |effort|.
+    Driver(String),
+    /// `max|F <joint>|`: the largest |force| of the joint's reaction.
+    Force(String),
+    /// `max|M <joint>|`: the largest |moment| of the joint's reaction.
+    Moment(String),
+    /// `energy_balance`: the energy drift relative to its scale.
+    EnergyBalance,
+    /// `max|Phi|`: the largest constraint violation at the outputs.
+    MaxPhi,
+    /// `min <coordinate>` or `max <coordinate>` (a name of `MechanismInfo::coord_names`, e.g.
+    /// `platform.z`) over the outputs.
+    Coordinate { name: String, max: bool },
+    /// `min fk_condition` or `max fk_condition`: the 2-norm condition number of the six-leg
+    /// platform's forward-kinematics Jacobian (pose → leg lengths, its rotation columns
+    /// divided by the platform's radius so every column is in metres:
+    /// `fk::Legs::condition`), smallest or largest over the outputs. The largest is the
+    /// worst: how near the run comes to a parallel singularity.
+    FkCondition { max: bool },
+}
+
+impl Metric {
+    /// The metric's column name.
+    pub fn name(&self) -> String {
+        let extreme = |max: bool| if max { "max" } else { "min" };
+        match self {
+            Metric::Driver(d) => format!("max|{d}|"),
+            Metric::Force(j) => format!("max|F {j}|"),
+            Metric::Moment(j) => format!("max|M {j}|"),
+            Metric::EnergyBalance => "energy_balance".to_string(),
+            Metric::MaxPhi => "max|Phi|".to_string(),
+            Metric::Coordinate { name, max } => format!("{} {name}", extreme(*max)),
+            Metric::FkCondition { max } => format!("{} fk_condition", extreme(*max)),
+        }
+    }
+
+    /// The metric called `name` for the mechanism of `info`; else the message and the help
+    /// (the closest name) of a diagnostic.
+    pub fn parse(name: &str, info: &MechanismInfo) -> Result<Metric, (String, String)> {
+        let catalogue = catalogue(info);
+        if let Some(m) = catalogue.iter().find(|m| m.name() == name) {
+            return Ok(m.clone());
+        }
+        if info.platform.is_none() && matches!(name, "min fk_condition" | "max fk_condition") {
+            return Err((
+                format!(
+                    "`{name}`: `{}` has no six-leg platform, so it has no forward-kinematics \
+                     condition",
+                    info.name
+                ),
+                "`symbody list` marks the mechanisms that have one (FK column)".to_string(),
+            ));
+        }
+        let names: Vec<String> = catalogue.iter().map(Metric::name).collect();
+        // A coordinate of a known body with a name too far from any: list that body's.
+        let body = name
+            .strip_prefix("min ")
+            .or_else(|| name.strip_prefix("max "))
+            .and_then(|c| c.split_once('.'))
+            .and_then(|(b, _)| info.bodies.iter().find(|x| x.name == b));
+        let help = match (
+            crate::generic::closest(name, names.iter().map(String::as_str)),
+            body,
+        ) {
+            (Some(c), _) => format!("did you mean `{c}`?"),
+            (None, Some(b)) => format!(
+                "the coordinates of `{}`: {}",
+                b.name,
+                info.coord_names
+                    .get(b.coord_offset..b.coord_offset + b.n_coords())
+                    .unwrap_or_default()
+                    .join(", ")
+            ),
+            (None, None) => "the metrics: max|<driver>|, max|F <joint>|, max|M <joint>|, \
+                             energy_balance, max|Phi|, min <body>.<coordinate> and max \
+                             <body>.<coordinate> (e.g. `max platform.z`), min fk_condition \
+                             and max fk_condition (six-leg platforms)"
+                .to_string(),
+        };
+        Err((format!("no metric `{name}` for `{}`", info.name), help))
+    }
+}
+
+/// Every metric the mechanism of `info` offers: the drivers' efforts, the reacting joints'
+/// forces and moments, the energy balance, |Φ|, each coordinate's extremes and, for a
+/// six-leg platform, the FK condition's.
+pub fn catalogue(info: &MechanismInfo) -> Vec<Metric> {
+    let mut all: Vec<Metric> = info
+        .joints
+        .iter()
+        .filter(|j| j.kind == JointKind::Driver)
+        .map(|j| Metric::Driver(j.name.to_string()))
+        .collect();
+    for j in info.joints {
+        if !matches!(j.kind, JointKind::Driver | JointKind::Normalization) {
+            all.push(Metric::Force(j.name.to_string()));
+            all.push(Metric::Moment(j.name.to_string()));
+        }
+    }
+    all.extend([Metric::EnergyBalance, Metric::MaxPhi]);
+    for c in info.coord_names {
+        for max in [false, true] {
+            all.push(Metric::Coordinate {
+                name: c.to_string(),
+                max,
+            });
+        }
+    }
+    if info.platform.is_some() {
+        all.extend([false, true].map(|max| Metric::FkCondition { max }));
+    }
+    all
 }
 
 /// A small, seeded generator (SplitMix64): the same seed gives the same rows everywhere.
@@ -188,39 +310,96 @@ impl Study {
     }
 }
 
-/// The metric columns of a study of `scene`: for each driver the largest |effort|, for each
-/// joint the largest |force| and |moment|, the relative energy balance and the largest |Φ|.
-pub fn metric_names(scene: &Scene) -> Vec<String> {
+/// The metrics of a study of `scene` when its `[study]` names none: for each driver the
+/// largest |effort| (when the scene asks for efforts), for each joint it asks reactions of
+/// the largest |force| and |moment|, the relative energy balance and the largest |Φ|.
+pub fn default_metrics(scene: &Scene) -> Vec<Metric> {
     let info = scene.entry.default_mechanism().info();
-    let mut names = driver_metric_names(scene);
+    let mut metrics: Vec<Metric> = match scene.efforts {
+        false => Vec::new(),
+        true => info
+            .joints
+            .iter()
+            .filter(|j| j.kind == JointKind::Driver)
+            .map(|j| Metric::Driver(j.name.to_string()))
+            .collect(),
+    };
     // The joints a table run records, in the recording's (ascending) order.
     let mut tables = scene.clone();
     tables.files = Files::Tables;
     let mut joints = scene::requested_joints(&tables, info);
     joints.sort_unstable();
     for k in joints {
-        let j = &info.joints[k];
-        names.push(format!("max|F {}|", j.name));
-        names.push(format!("max|M {}|", j.name));
+        let name = info.joints[k].name.to_string();
+        metrics.push(Metric::Force(name.clone()));
+        metrics.push(Metric::Moment(name));
     }
-    names.push("energy_balance".to_string());
-    names.push("max|Phi|".to_string());
-    names
+    metrics.extend([Metric::EnergyBalance, Metric::MaxPhi]);
+    metrics
 }
 
-/// The drivers' metric columns (`max|<driver>|`), the first of [`metric_names`]; none when
-/// the scene asks for no efforts.
-pub fn driver_metric_names(scene: &Scene) -> Vec<String> {
-    let info = scene.entry.default_mechanism().info();
-    match scene.efforts {
-        false => Vec::new(),
-        true => info
-            .joints
-            .iter()
-            .filter(|j| j.kind == JointKind::Driver)
-            .map(|j| format!("max|{}|", j.name))
-            .collect(),
+/// The metrics of a study of `scene`: those its `[study]` names, else [`default_metrics`].
+pub fn metrics(scene: &Scene) -> Vec<Metric> {
+    match scene.study.as_ref().and_then(|s| s.metrics.clone()) {
+        Some(m) => m,
+        None => default_metrics(scene),
     }
+}
+
+/// The metric columns of a study of `scene`, in [`metrics`] order.
+pub fn metric_names(scene: &Scene) -> Vec<String> {
+    metrics(scene).iter().map(Metric::name).collect()
+}
+
+/// The drivers' metric columns (`max|<driver>|`) among [`metric_names`].
+pub fn driver_metric_names(scene: &Scene) -> Vec<String> {
+    metrics(scene)
+        .iter()
+        .filter(|m| matches!(m, Metric::Driver(_)))
+        .map(Metric::name)
+        .collect()
+}
+
+/// `scene` as a study runs it: tables, with the outputs it asks for plus those `metrics`
+/// are read from (a driver's efforts, a joint's reaction, the body owning a coordinate or
+/// the platform), so the path is chosen exact for them too.
+fn recorded(scene: &Scene, metrics: &[Metric]) -> Scene {
+    let info = scene.entry.default_mechanism().info();
+    let mut tables = scene.clone();
+    tables.files = Files::Tables;
+    let mut bodies = Vec::new();
+    let mut joints = Vec::new();
+    for m in metrics {
+        match m {
+            Metric::Driver(_) => tables.efforts = true,
+            Metric::Force(j) | Metric::Moment(j) => joints.extend(info.joint_index(j)),
+            Metric::Coordinate { name, .. } => {
+                let k = info.coord_names.iter().position(|c| c == name);
+                bodies.extend(k.and_then(|k| {
+                    info.bodies
+                        .iter()
+                        .position(|b| (b.coord_offset..b.coord_offset + b.n_coords()).contains(&k))
+                }));
+            }
+            Metric::FkCondition { .. } => bodies.extend(info.platform.map(|p| p.body)),
+            Metric::EnergyBalance | Metric::MaxPhi => {}
+        }
+    }
+    let widen = |selection: &Selection, extra: &[usize]| match selection {
+        Selection::All => Selection::All,
+        _ if extra.is_empty() => selection.clone(),
+        Selection::None => Selection::Only(sorted(extra.to_vec())),
+        Selection::Only(v) => Selection::Only(sorted(v.iter().chain(extra).copied().collect())),
+    };
+    tables.poses = widen(&tables.poses, &bodies);
+    tables.reactions = widen(&tables.reactions, &joints);
+    tables
+}
+
+fn sorted(mut v: Vec<usize>) -> Vec<usize> {
+    v.sort_unstable();
+    v.dedup();
+    v
 }
 
 /// One finished run: its row index, its metrics (in [`metric_names`] order) or why it failed,
@@ -233,41 +412,112 @@ pub struct RowResult {
     pub wall: f64,
 }
 
-fn metrics_of(rec: &Recording) -> Vec<f64> {
-    let max = |it: &mut dyn Iterator<Item = f64>| it.fold(0.0f64, |m, x| m.max(x.abs()));
-    let mut out = Vec::new();
-    for d in 0..rec.drivers.len() {
-        out.push(max(&mut rec.efforts.iter().map(|e| e[d])));
+/// `metrics` of a recording, in their order; an error when the recording lacks what one is
+/// read from (its run's mechanism, derived for the row's parameters, has other names).
+fn metrics_of(rec: &Recording, metrics: &[Metric]) -> Result<Vec<f64>, String> {
+    let info = rec.info;
+    let max_abs = |it: &mut dyn Iterator<Item = f64>| it.fold(0.0f64, |m, x| m.max(x.abs()));
+    let extreme = |it: &mut dyn Iterator<Item = f64>, max: bool| match max {
+        true => it.fold(f64::NEG_INFINITY, f64::max),
+        false => it.fold(f64::INFINITY, f64::min),
+    };
+    let norm = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    let joint = |name: &str| {
+        rec.joints
+            .iter()
+            .position(|&j| info.joints[j].name == name)
+            .ok_or_else(|| format!("no reaction of `{name}` recorded"))
+    };
+    let mut out = Vec::with_capacity(metrics.len());
+    for m in metrics {
+        out.push(match m {
+            Metric::Driver(name) => {
+                let d = rec
+                    .drivers
+                    .iter()
+                    .position(|&j| info.joints[j].name == name)
+                    .ok_or_else(|| format!("no effort of `{name}` recorded"))?;
+                max_abs(&mut rec.efforts.iter().map(|e| e[d]))
+            }
+            Metric::Force(name) => {
+                let j = joint(name)?;
+                max_abs(&mut rec.wrenches.iter().map(|w| norm(w[j].force)))
+            }
+            Metric::Moment(name) => {
+                let j = joint(name)?;
+                max_abs(&mut rec.wrenches.iter().map(|w| norm(w[j].moment)))
+            }
+            Metric::EnergyBalance => {
+                let (drift, scale) = rec.energy_balance();
+                if scale > 0.0 {
+                    drift / scale
+                } else {
+                    drift
+                }
+            }
+            Metric::MaxPhi => rec.max_phi,
+            Metric::Coordinate { name, max } => {
+                let k = info
+                    .coord_names
+                    .iter()
+                    .position(|c| c == name)
+                    .ok_or_else(|| format!("no coordinate `{name}`"))?;
+                extreme(&mut rec.q.iter().map(|q| q[k]), *max)
+            }
+            Metric::FkCondition { max } => {
+                let conditions = fk_conditions(info, &rec.q)?;
+                extreme(&mut conditions.into_iter(), *max)
+            }
+        });
     }
-    for j in 0..rec.joints.len() {
-        let norm = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-        out.push(max(&mut rec.wrenches.iter().map(|w| norm(w[j].force))));
-        out.push(max(&mut rec.wrenches.iter().map(|w| norm(w[j].moment))));
-    }
-    let (drift, scale) = rec.energy_balance();
-    out.push(if scale > 0.0 { drift / scale } else { drift });
-    out.push(rec.max_phi);
-    out
+    Ok(out)
+}
+
+/// The condition number of the six-leg platform's forward-kinematics Jacobian
+/// (`fk::Legs::condition`) at each of the coordinates `qs`.
+pub fn fk_conditions(info: &MechanismInfo, qs: &[Vec<f64>]) -> Result<Vec<f64>, String> {
+    let platform = info
+        .platform
+        .filter(|p| p.legs.len() == 6 && p.body < info.bodies.len())
+        .ok_or_else(|| format!("`{}` has no six-leg platform", info.name))?;
+    let legs = Legs {
+        base: std::array::from_fn(|i| Vector3::from(platform.legs[i].base)),
+        top: std::array::from_fn(|i| Vector3::from(platform.legs[i].platform)),
+    };
+    let body = &info.bodies[platform.body];
+    qs.iter()
+        .map(|q| {
+            let r = q
+                .get(body.coord_offset..body.coord_offset + 3)
+                .ok_or_else(|| "the platform's coordinates lie outside q".to_string())?;
+            let rotation = symbody_runtime::rotation_matrix(body, q).map_err(|e| e.to_string())?;
+            let pose = Pose {
+                position: Vector3::new(r[0], r[1], r[2]),
+                rotation,
+            };
+            Ok(legs.condition(&pose))
+        })
+        .collect()
 }
 
 /// Runs `scene` with `parameters` (on top of its own) on a mechanism derived for them and
-/// freed afterwards.
+/// freed afterwards, and reduces the run to `metrics`.
 pub fn run_row(
     scene: &Scene,
+    metrics: &[Metric],
     text: &str,
     source: &str,
     parameters: &[(String, f64)],
 ) -> Result<Vec<f64>, String> {
     let merged = crate::files::merged(&scene.parameters, parameters);
     // Tables, whatever the scene writes: the metrics are read from the generic recording.
-    let mut tables = scene.clone();
-    tables.files = Files::Tables;
+    let tables = recorded(scene, metrics);
     let run = |loaded: &symbody_codegen::interpret::Loaded| -> Result<Vec<f64>, String> {
         let entry: &Entry = loaded.entry;
         match scene::run_observed(&tables, entry, &mut ()) {
             Err(e) => Err(e.to_string()),
             Ok((_, Err(stopped))) => Err(stopped.error.to_string()),
-            Ok((_, Ok(Outcome::Tables(rec)))) => Ok(metrics_of(&rec)),
+            Ok((_, Ok(Outcome::Tables(rec)))) => metrics_of(&rec, metrics),
             Ok((_, Ok(Outcome::Paper(_)))) => unreachable!("the study runs tables"),
         }
     };
@@ -282,10 +532,12 @@ pub fn run_row(
     }
 }
 
-/// Runs the rows of `rows` whose index is not in `done` on `jobs` threads, calling `sink`
-/// (on this thread) with each as it finishes; stops taking new rows once `stop` is set.
+/// Runs the rows of `rows` whose index is not in `done` on `jobs` threads, each reduced to
+/// `metrics`, calling `sink` (on this thread) with each as it finishes; stops taking new
+/// rows once `stop` is set.
 pub fn run(
     scene: &Scene,
+    metrics: &[Metric],
     rows: &[Vec<(String, f64)>],
     done: &std::collections::HashSet<usize>,
     jobs: usize,
@@ -308,11 +560,11 @@ pub fn run(
                 let k = next.fetch_add(1, Ordering::Relaxed);
                 let Some(&index) = pending.get(k) else { break };
                 let clock = Instant::now();
-                let metrics = run_row(scene, text, source, &rows[index]);
+                let values = run_row(scene, metrics, text, source, &rows[index]);
                 let row = RowResult {
                     index,
                     parameters: rows[index].clone(),
-                    metrics,
+                    metrics: values,
                     wall: clock.elapsed().as_secs_f64(),
                 };
                 if send.send(row).is_err() {
@@ -444,6 +696,147 @@ pub fn read(path: &std::path::Path) -> Result<(Vec<String>, Vec<Vec<String>>), S
 #[cfg(test)]
 mod tests {
     use super::*;
+    use symbody_mechanisms::REGISTRY;
+
+    fn info(name: &str) -> &'static MechanismInfo {
+        REGISTRY.find(name).unwrap().default_mechanism().info()
+    }
+
+    #[test]
+    fn every_metric_name_reads_back_as_its_metric() {
+        for mechanism in ["slider_crank", "stewart_6_6"] {
+            let info = info(mechanism);
+            let all = catalogue(info);
+            assert!(all.contains(&Metric::Coordinate {
+                name: info.coord_names[0].to_string(),
+                max: true
+            }));
+            assert_eq!(
+                all.contains(&Metric::FkCondition { max: true }),
+                mechanism == "stewart_6_6"
+            );
+            for m in all {
+                assert_eq!(
+                    Metric::parse(&m.name(), info),
+                    Ok(m.clone()),
+                    "{}",
+                    m.name()
+                );
+            }
+        }
+        let parsed = Metric::parse("max platform.z", info("stewart_6_6"));
+        assert_eq!(
+            parsed,
+            Ok(Metric::Coordinate {
+                name: "platform.z".into(),
+                max: true
+            })
+        );
+    }
+
+    #[test]
+    fn unknown_metrics_say_what_is_close_or_what_there_is() {
+        let crank = info("slider_crank");
+        let (message, help) = Metric::parse("max|motr|", crank).unwrap_err();
+        assert!(message.contains("no metric `max|motr|`"), "{message}");
+        assert_eq!(help, "did you mean `max|motor|`?");
+        let (message, _) = Metric::parse("max fk_condition", crank).unwrap_err();
+        assert!(message.contains("no six-leg platform"), "{message}");
+        let body = crank.bodies[0];
+        let (_, help) =
+            Metric::parse(&format!("min {}.nothing_like_it", body.name), crank).unwrap_err();
+        assert!(
+            help.contains(crank.coord_names[body.coord_offset]),
+            "{help}"
+        );
+        let (_, help) = Metric::parse("largest of all", crank).unwrap_err();
+        assert!(help.contains("fk_condition"), "{help}");
+    }
+
+    /// The coordinate extremes are those of the recorded coordinates; the FK condition at the
+    /// platform's symmetric home pose is that of the legs' Jacobian, differentiated here by
+    /// central differences of the leg lengths.
+    #[test]
+    fn coordinate_and_fk_metrics_of_a_recording() {
+        let entry = REGISTRY.find("stewart_6_6").unwrap();
+        let opts = crate::generic::Options {
+            t_end: Some(0.3),
+            ..Default::default()
+        };
+        let rec = crate::generic::run_kinematic(entry, &opts).unwrap();
+        let info = rec.info;
+        let z = info
+            .coord_names
+            .iter()
+            .position(|c| *c == "platform.z")
+            .unwrap();
+        let metrics = [
+            Metric::Coordinate {
+                name: "platform.z".into(),
+                max: false,
+            },
+            Metric::Coordinate {
+                name: "platform.z".into(),
+                max: true,
+            },
+            Metric::FkCondition { max: true },
+        ];
+        let got = metrics_of(&rec, &metrics).unwrap();
+        let zs: Vec<f64> = rec.q.iter().map(|q| q[z]).collect();
+        assert!(zs.contains(&got[0]) && zs.iter().all(|&v| v >= got[0]));
+        assert!(zs.contains(&got[1]) && zs.iter().all(|&v| v <= got[1]));
+        assert!(got[1] > got[0], "the platform moves: {got:?}");
+        let conditions = fk_conditions(info, &rec.q).unwrap();
+        assert_eq!(got[2], conditions.iter().copied().fold(0.0, f64::max));
+        // At the first output (the home pose), by differences of the lengths |p + R b − a| for small moves
+        // (δp, δθ) of the platform, δθ a rotation vector applied on the left.
+        let platform = info.platform.unwrap();
+        let body = &info.bodies[platform.body];
+        let q0 = &rec.q[0][..];
+        let p0 = Vector3::from_column_slice(&q0[body.coord_offset..body.coord_offset + 3]);
+        let r0 = symbody_runtime::rotation_matrix(body, q0).unwrap();
+        let lengths = |d: &[f64; 6]| -> [f64; 6] {
+            let turn = nalgebra::Rotation3::new(Vector3::new(d[3], d[4], d[5]));
+            let (p, r) = (p0 + Vector3::new(d[0], d[1], d[2]), turn.matrix() * r0);
+            std::array::from_fn(|i| {
+                let leg = &platform.legs[i];
+                (p + r * Vector3::from(leg.platform) - Vector3::from(leg.base)).norm()
+            })
+        };
+        let tops: Vec<Vector3<f64>> = platform
+            .legs
+            .iter()
+            .map(|l| Vector3::from(l.platform))
+            .collect();
+        let centre = tops.iter().sum::<Vector3<f64>>() / 6.0;
+        let radius = (tops
+            .iter()
+            .map(|b| (b - centre).norm_squared())
+            .sum::<f64>()
+            / 6.0)
+            .sqrt();
+        let h = 1e-6;
+        let jacobian = nalgebra::Matrix6::from_fn(|i, k| {
+            let mut plus = [0.0; 6];
+            let mut minus = [0.0; 6];
+            plus[k] = h;
+            minus[k] = -h;
+            let slope = (lengths(&plus)[i] - lengths(&minus)[i]) / (2.0 * h);
+            // Rotation columns per radian times the radius: metres, like the others.
+            if k >= 3 {
+                slope / radius
+            } else {
+                slope
+            }
+        });
+        let s = jacobian.singular_values();
+        let want = s.max() / s.min();
+        assert!(
+            (conditions[0] - want).abs() < 1e-7 * want,
+            "{} vs {want}",
+            conditions[0]
+        );
+    }
 
     #[test]
     fn the_normal_quantile_inverts_the_cdf() {
@@ -478,6 +871,7 @@ mod tests {
             samples: 0,
             seed: 1,
             latin: false,
+            metrics: None,
         };
         let rows = grid.rows();
         assert_eq!(rows.len(), 6);
@@ -488,6 +882,7 @@ mod tests {
             samples: 10,
             seed: 7,
             latin: true,
+            metrics: None,
         };
         let mut strata: Vec<usize> = latin.rows().iter().map(|r| r[0].1 as usize).collect();
         strata.sort_unstable();

@@ -198,9 +198,13 @@ def study(
     and solver are used) or a mechanism (a registered name or a mechanism file, run over
     ``t_end``, default its file's, with a scene's defaults). ``params`` gives the mechanism
     file's parameters for each run: a dict of equally long arrays, or a pandas DataFrame
-    (one column per parameter). ``metrics`` keeps only those metric columns (default all:
-    ``max|<driver>|``, ``max|F <joint>|``, ``max|M <joint>|``, ``energy_balance``,
-    ``max|Phi|``).
+    (one column per parameter). ``metrics`` names the metric columns, in their order, as a
+    scene's ``[study] metrics`` does: ``max|<driver>|``, ``max|F <joint>|``,
+    ``max|M <joint>|``, ``energy_balance``, ``max|Phi|``, ``min <body>.<coordinate>`` /
+    ``max <body>.<coordinate>`` (e.g. ``max platform.z``) and, for a six-leg platform,
+    ``min fk_condition`` / ``max fk_condition`` (the condition number of its forward-kinematics
+    Jacobian). Default: the scene's ``metrics``, else every driver's and joint's, the energy
+    balance and ``max|Phi|``. An unknown name is a ValueError naming the closest.
 
     Returns a pandas DataFrame (a dict of NumPy arrays without pandas) with the columns
     ``run``, the parameters, the metrics, ``status`` (``"ok"`` or ``"failed"``), ``error``
@@ -216,16 +220,14 @@ def study(
     if len({len(c) for c in columns}) > 1:
         raise ValueError("params: every parameter needs as many values")
     answer = _native.study(
-        target, names, [c.tolist() for c in columns], t_end, None if jobs is None else int(jobs)
+        target,
+        names,
+        [c.tolist() for c in columns],
+        t_end,
+        None if metrics is None else [str(m) for m in metrics],
+        None if jobs is None else int(jobs),
     )
     table: Dict[str, np.ndarray] = {k: np.asarray(v) for k, v in answer.items()}
-    if metrics is not None:
-        fixed = ["run", *names, "status", "error", "wall_s"]
-        known = [k for k in table if k not in fixed]
-        unknown = [m for m in metrics if m not in known]
-        if unknown:
-            raise ValueError(f"metrics: no {unknown}; the study has {known}")
-        table = {k: v for k, v in table.items() if k in fixed or k in metrics}
     try:
         import pandas
     except ImportError:

@@ -9,7 +9,7 @@ use toml::Spanned;
 
 use super::{Files, PathRequest, Scene, Selection};
 use crate::generic::{closest, mechanism};
-use crate::study::{Axis, Study};
+use crate::study::{Axis, Metric, Study};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -31,6 +31,7 @@ struct RawStudy {
     samples: Option<Spanned<i64>>,
     seed: Option<Spanned<i64>>,
     latin: Option<bool>,
+    metrics: Option<Spanned<Vec<Spanned<String>>>>,
 }
 
 #[derive(Deserialize)]
@@ -475,6 +476,10 @@ fn study(
         (None, false) => 0,
     };
     let seed = st.seed.as_ref().map_or(1, |s| *s.get_ref() as u64);
+    let metrics = st
+        .metrics
+        .as_ref()
+        .map(|list| metrics(map, errors, list, entry));
     if errors.len() > before {
         return None;
     }
@@ -483,7 +488,43 @@ fn study(
         samples,
         seed,
         latin: st.latin.unwrap_or(false),
+        metrics,
     })
+}
+
+/// A `[study]`'s `metrics`, each checked against the mechanism (unknown or repeated names
+/// are located at the name).
+fn metrics(
+    map: &SourceMap<'_>,
+    errors: &mut Vec<Diagnostic>,
+    list: &Spanned<Vec<Spanned<String>>>,
+    entry: &Entry,
+) -> Vec<Metric> {
+    let item = "[study] `metrics`";
+    if list.get_ref().is_empty() {
+        errors.push(map.diag(
+            list.span(),
+            item,
+            "no metric to report",
+            "name some, e.g. metrics = [\"max|act1|\", \"max platform.z\"], or remove the key for \
+             the default set",
+        ));
+    }
+    let info = entry.default_mechanism().info();
+    let mut metrics: Vec<Metric> = Vec::new();
+    for name in list.get_ref() {
+        match Metric::parse(name.get_ref(), info) {
+            Ok(m) if metrics.contains(&m) => errors.push(map.diag(
+                name.span(),
+                item,
+                format!("`{}` is listed twice", name.get_ref()),
+                "each metric is one column: list it once",
+            )),
+            Ok(m) => metrics.push(m),
+            Err((message, help)) => errors.push(map.diag(name.span(), item, message, help)),
+        }
+    }
+    metrics
 }
 
 /// One parameter's variation: `[values…]`, `{ from, to, n }`, `{ uniform = [lo, hi] }` or
