@@ -2,7 +2,7 @@
 ``symbody.study`` on a worker, the answers put back in row order.
 
 >>> from dask.distributed import Client
->>> import symbody.dask
+>>> import numpy as np, symbody.dask
 >>> client = Client("tcp://scheduler:8786")          # or LocalCluster(), SLURMCluster(), ...
 >>> rows = symbody.dask.study(client, "slider_crank", {"r": np.linspace(0.08, 0.12, 1000)})
 
