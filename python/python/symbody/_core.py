@@ -184,6 +184,20 @@ def run(scene: PathLike, out: Optional[PathLike] = None) -> Results:
     return _results(_native.run(os.fspath(scene), None if out is None else os.fspath(out)))
 
 
+def _study_columns(params: Any) -> Tuple[List[str], List[np.ndarray]]:
+    """The parameter names and one float column each of ``params`` (a dict of equally long
+    arrays or a pandas DataFrame), as :func:`study` and ``symbody.dask.study`` take them."""
+    if hasattr(params, "columns") and hasattr(params, "__getitem__"):
+        names = [str(c) for c in params.columns]
+        columns = [np.asarray(params[c], dtype=float).ravel() for c in params.columns]
+    else:
+        names = [str(k) for k in params]
+        columns = [np.atleast_1d(np.asarray(params[k], dtype=float)).ravel() for k in params]
+    if len({len(c) for c in columns}) > 1:
+        raise ValueError("params: every parameter needs as many values")
+    return names, columns
+
+
 def study(
     target: MechanismLike,
     params: Any,
@@ -211,14 +225,7 @@ def study(
     and ``wall_s``, in the order of ``params``' rows. A parameter set that cannot be built or
     run is a failed row (metrics NaN) with its error, not an exception.
     """
-    if hasattr(params, "columns") and hasattr(params, "__getitem__"):
-        names = [str(c) for c in params.columns]
-        columns = [np.asarray(params[c], dtype=float).ravel() for c in params.columns]
-    else:
-        names = [str(k) for k in params]
-        columns = [np.atleast_1d(np.asarray(params[k], dtype=float)).ravel() for k in params]
-    if len({len(c) for c in columns}) > 1:
-        raise ValueError("params: every parameter needs as many values")
+    names, columns = _study_columns(params)
     answer = _native.study(
         target,
         names,
