@@ -221,3 +221,70 @@ fn bricard_over_two_seconds_against_whole_run_differences() {
         assert!(err <= 1e-6, "{p}: {err:e}");
     }
 }
+
+/// `--sensitivities` on the command line: the table's columns, the values of the library's
+/// pass, and an unknown name refused before anything runs.
+#[test]
+fn command_line_writes_sensitivities_csv_and_refuses_unknown_names() {
+    const BIN: &str = env!("CARGO_BIN_EXE_symbody");
+    let dir = std::env::temp_dir().join(format!("symbody-sens-cli-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = std::process::Command::new(BIN)
+        .args([
+            "simulate",
+            "spherical_pendulum",
+            "--t-end",
+            "0.2",
+            "--no-plots",
+        ])
+        .args(["--sensitivities", "l,m", "--out"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(dir.join("sensitivities.csv")).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    assert_eq!(&header[..3], ["t", "bob.x/l", "bob.x/m"]);
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 21);
+    let opts = Options {
+        t_end: Some(0.2),
+        ..Options::default()
+    };
+    let names = ["l", "m"].map(String::from);
+    let s = sensitivity::integrated(entry("spherical_pendulum"), &opts, &[], &names).unwrap();
+    for (row, (t, ours)) in rows.iter().zip(s.t.iter().zip(&s.rows)) {
+        assert_eq!(row[0], *t);
+        for (a, b) in row[1..].iter().zip(ours) {
+            assert!((a - b).abs() <= 1e-12 * b.abs().max(1.0), "{a} vs {b}");
+        }
+    }
+
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = std::process::Command::new(BIN)
+        .args([
+            "simulate",
+            "spherical_pendulum",
+            "--no-plots",
+            "--sensitivities",
+            "ll",
+        ])
+        .arg("--out")
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("no parameter `ll` (did you mean `l`?)"),
+        "{err}"
+    );
+    assert!(!dir.join("bodies.csv").exists(), "refused before the run");
+}

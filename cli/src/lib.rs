@@ -104,6 +104,16 @@ impl SetParameters {
     }
 }
 
+/// Parameters to differentiate the run's outputs with respect to.
+#[derive(clap::Args)]
+struct Sensitivities {
+    /// Also write sensitivities.csv: the derivative of every output (body poses, joint
+    /// wrenches, driver efforts) with respect to each of these parameters of the mechanism
+    /// file, at every output time (`t`, then `<output>/<parameter>` columns).
+    #[arg(long, value_delimiter = ',', value_name = "NAME,...")]
+    sensitivities: Vec<String>,
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// List every generated mechanism: sizes, redundant rows, degrees of freedom.
@@ -188,6 +198,8 @@ enum Command {
         files: Files,
         #[command(flatten)]
         parameters: SetParameters,
+        #[command(flatten)]
+        sensitivities: Sensitivities,
     },
     /// Run a scene file (scenes/<name>.toml): the mechanism, time span and outputs it names,
     /// solved by the cheapest exact path — kinematic (no integration) when the drivers fix
@@ -201,6 +213,8 @@ enum Command {
         // Set on top of the scene's own `[parameters]`.
         #[command(flatten)]
         parameters: SetParameters,
+        #[command(flatten)]
+        sensitivities: Sensitivities,
     },
     /// Forward kinematics of a platform held by six legs of driven length: the pose reached
     /// by continuation from a known pose, with its leg-length residual and the condition
@@ -263,7 +277,9 @@ pub fn main(registry: &Registry) -> ExitCode {
             reactions,
             files,
             parameters,
+            sensitivities,
         } => match mechanism {
+            None if !sensitivities.sensitivities.is_empty() => Err("--sensitivities applies to a named mechanism or a file; for the paper's scenario, run scenes/paper.toml with it (e.g. `symbody run scenes/paper.toml --sensitivities r_platform,m_platform`)".to_string()),
             None if !parameters.set.is_empty() => Err("--set applies to a named mechanism or a file; for the paper's scenario with other parameters, run scenes/paper.toml with --set (e.g. `symbody run scenes/paper.toml --set r_platform=0.11`)".to_string()),
             None if velocities || accelerations => Err(format!("--{} applies to a named mechanism or a file (it adds columns to bodies.csv); the paper scenario writes platform.csv", if velocities { "velocities" } else { "accelerations" })),
             None if cross_singular_positions => Err("--cross-singular-positions applies to a named mechanism or a file; the paper scenario has no singular position to cross".to_string()),
@@ -280,7 +296,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                     newton_tolerance: None,
                 };
                 parameters.parse().and_then(|p| {
-                    simulate_named(registry, &name, &p, &opts, [velocities, accelerations], &files)
+                    simulate_named(registry, &name, &p, &opts, [velocities, accelerations], &files, &sensitivities.sensitivities)
                 })
             }
             None => {
@@ -304,9 +320,10 @@ pub fn main(registry: &Registry) -> ExitCode {
             scene,
             files,
             parameters,
-        } => parameters
-            .parse()
-            .and_then(|p| run_scene(registry, &scene, &files, &p)),
+            sensitivities,
+        } => parameters.parse().and_then(|p| {
+            run_scene(registry, &scene, &files, &p, &sensitivities.sensitivities)
+        }),
         Command::Params { mechanism } => list_parameters(registry, &mechanism),
         Command::Study {
             scene,
@@ -540,9 +557,11 @@ fn simulate_named(
     opts: &generic::Options,
     [velocities, accelerations]: [bool; 2],
     files: &Files,
+    sensitivities: &[String],
 ) -> Result<(), String> {
     let entry =
         symbody::files::with_parameters(registry, name, parameters).map_err(|e| e.to_string())?;
+    symbody::sensitivity::values(entry, parameters, sensitivities).map_err(|e| e.to_string())?;
     let out = files.out.clone().unwrap_or_else(|| default_out(entry.name));
     let (out, plots, html) = (out.as_path(), !files.no_plots, files.html);
     let t_end = opts.t_end.unwrap_or(entry.t_end);
@@ -574,7 +593,46 @@ fn simulate_named(
     );
     let note = symbody::files::note(entry);
     report_run(run, live, (&method, note.as_deref()), out, plots, html)
-        .map_err(|e| format!("{name}: {e}"))
+        .map_err(|e| format!("{name}: {e}"))?;
+    differentiate(sensitivities, out, || {
+        symbody::sensitivity::integrated(entry, opts, parameters, sensitivities)
+    })
+    .map_err(|e| format!("{name}: {e}"))
+}
+
+/// With parameters to differentiate with respect to: `sensitivities.csv` in `out` from
+/// `compute`, and its line of the summary.
+fn differentiate(
+    names: &[String],
+    out: &std::path::Path,
+    compute: impl FnOnce() -> Result<
+        symbody::sensitivity::Sensitivities,
+        symbody::scenario::ScenarioError,
+    >,
+) -> Result<(), String> {
+    if names.is_empty() {
+        return Ok(());
+    }
+    let start = std::time::Instant::now();
+    let s = compute().map_err(|e| e.to_string())?;
+    let wall = start.elapsed().as_secs_f64();
+    let path = s.write(out).map_err(|e| {
+        format!(
+            "cannot write {}: {e}",
+            out.join("sensitivities.csv").display()
+        )
+    })?;
+    say!(
+        "  sensitivities    {} outputs × {} parameter{} ({}) at {} times in {:.3} s → {}",
+        s.outputs.len(),
+        s.parameters.len(),
+        if s.parameters.len() == 1 { "" } else { "s" },
+        s.parameters.join(", "),
+        s.t.len(),
+        wall,
+        path.display()
+    );
+    Ok(())
 }
 
 /// The summary and files of a generic run that went to its end, or of the part a stopped
@@ -921,6 +979,7 @@ fn run_scene(
     path: &Path,
     files: &Files,
     set: &[(String, f64)],
+    sensitivities: &[String],
 ) -> Result<(), String> {
     let (plots, html) = (!files.no_plots, files.html);
     let text = std::fs::read_to_string(path)
@@ -937,6 +996,8 @@ fn run_scene(
         false => symbody::files::reparametrized(scene.entry, &parameters)
             .map_err(|e| format!("{}: --set: {e}", path.display()))?,
     };
+    symbody::sensitivity::values(entry, &parameters, sensitivities)
+        .map_err(|e| format!("{}: {e}", path.display()))?;
     let out = files.out.clone().unwrap_or_else(|| {
         default_out(
             &path
@@ -1010,21 +1071,42 @@ fn run_scene(
     match outcome {
         Ok(scene::Outcome::Paper(run)) => {
             live.finish()?;
-            report_paper(registry, &run, scene.formulation, &method, out, plots, html)
+            report_paper(registry, &run, scene.formulation, &method, out, plots, html)?
         }
         Ok(scene::Outcome::Tables(rec)) => {
-            report_run(Ok(rec), live, (&method, note.as_deref()), out, plots, html).map_err(at)
+            report_run(Ok(rec), live, (&method, note.as_deref()), out, plots, html).map_err(at)?
         }
-        Err(stopped) => report_run(
-            Err(stopped),
-            live,
-            (&method, note.as_deref()),
-            out,
-            plots,
-            html,
-        )
-        .map_err(at),
+        Err(stopped) => {
+            return report_run(
+                Err(stopped),
+                live,
+                (&method, note.as_deref()),
+                out,
+                plots,
+                html,
+            )
+            .map_err(at)
+        }
     }
+    differentiate(sensitivities, out, || match choice {
+        scene::PathChoice::Kinematic { .. } => symbody::sensitivity::kinematic(
+            entry,
+            symbody::sensitivity::Span {
+                formulation: scene.formulation,
+                t_end: scene.t_end,
+                output_step: scene.output_step,
+            },
+            &parameters,
+            sensitivities,
+        ),
+        scene::PathChoice::Integrate { .. } => symbody::sensitivity::integrated(
+            entry,
+            &scene::options(&scene),
+            &parameters,
+            sensitivities,
+        ),
+    })
+    .map_err(at)
 }
 
 /// Six comma-separated numbers, or an error naming the option.

@@ -147,6 +147,39 @@ impl Outputs {
     }
 }
 
+/// The value of each of `names` among `entry`'s parameters (as set by `base`), or an error
+/// naming the first unknown one with the closest known name: to check before a run.
+pub fn values(
+    entry: &Entry,
+    base: &Overrides,
+    names: &[String],
+) -> Result<Vec<f64>, ScenarioError> {
+    let loaded = files::derive(entry, base)?;
+    names
+        .iter()
+        .map(
+            |name| match loaded.parameters.iter().find(|p| &p.name == name) {
+                Some(p) => Ok(p.value),
+                None => {
+                    let known: Vec<&str> =
+                        loaded.parameters.iter().map(|p| p.name.as_str()).collect();
+                    let hint = symbody_codegen::diag::closest(name, known.iter().copied())
+                        .map_or(String::new(), |c| format!(" (did you mean `{c}`?)"));
+                    Err(ScenarioError::Options(format!(
+                        "--sensitivities: `{}` has no parameter `{name}`{hint}; its parameters: {}",
+                        entry.name,
+                        if known.is_empty() {
+                            "none".to_string()
+                        } else {
+                            known.join(", ")
+                        }
+                    )))
+                }
+            },
+        )
+        .collect()
+}
+
 /// The mechanism (formulation `f`) built with parameter `name` at its four neighbouring
 /// values, every other parameter as in `base`.
 fn neighbours(
@@ -155,30 +188,16 @@ fn neighbours(
     base: &Overrides,
     name: &str,
 ) -> Result<Neighbours<'static>, ScenarioError> {
-    let loaded = files::derive(entry, base)?;
-    let Some(p) = loaded.parameters.iter().find(|p| p.name == name) else {
-        let known: Vec<&str> = loaded.parameters.iter().map(|p| p.name.as_str()).collect();
-        let hint = symbody_codegen::diag::closest(name, known.iter().copied())
-            .map_or(String::new(), |c| format!(" (did you mean `{c}`?)"));
-        return Err(ScenarioError::Options(format!(
-            "--sensitivities: `{}` has no parameter `{name}`{hint}; its parameters: {}",
-            entry.name,
-            if known.is_empty() {
-                "none".to_string()
-            } else {
-                known.join(", ")
-            }
-        )));
-    };
-    let step = sensitivity::relative_step(p.value);
+    let value = values(entry, base, &[name.to_string()])?[0];
+    let step = sensitivity::relative_step(value);
     let mut mechs = Vec::with_capacity(4);
     for k in [-2.0, -1.0, 1.0, 2.0] {
-        let set = files::merged(base, &[(name.to_string(), p.value + k * step)]);
+        let set = files::merged(base, &[(name.to_string(), value + k * step)]);
         let e = files::reparametrized(entry, &set).map_err(|e| {
             ScenarioError::Options(format!(
                 "--sensitivities: `{name}` = {} (a neighbour of {} used to differentiate): {e}",
-                p.value + k * step,
-                p.value
+                value + k * step,
+                value
             ))
         })?;
         let mech: &'static dyn Mechanism = crate::generic::mechanism(e, Some(f))?;

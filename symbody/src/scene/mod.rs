@@ -35,7 +35,7 @@ pub mod run;
 
 pub use parse::load;
 pub(crate) use run::requested_joints;
-pub use run::{choose_path, run, run_observed, Outcome, PathChoice};
+pub use run::{choose_path, options, run, run_observed, Outcome, PathChoice};
 
 use symbody_runtime::{Entry, Formulation};
 
