@@ -1088,23 +1088,9 @@ fn run_scene(
             .map_err(at)
         }
     }
-    differentiate(sensitivities, out, || match choice {
-        scene::PathChoice::Kinematic { .. } => symbody::sensitivity::kinematic(
-            entry,
-            symbody::sensitivity::Span {
-                formulation: scene.formulation,
-                t_end: scene.t_end,
-                output_step: scene.output_step,
-            },
-            &parameters,
-            sensitivities,
-        ),
-        scene::PathChoice::Integrate { .. } => symbody::sensitivity::integrated(
-            entry,
-            &scene::options(&scene),
-            &parameters,
-            sensitivities,
-        ),
+    let kinematic = matches!(choice, scene::PathChoice::Kinematic { .. });
+    differentiate(sensitivities, out, || {
+        symbody::sensitivity::of_scene(&scene, entry, kinematic, &parameters, sensitivities)
     })
     .map_err(at)
 }

@@ -349,7 +349,7 @@ fn recording_answer<'py>(
 /// One run of `symbody simulate <name>`: its tables `bodies`, `joints`, `drivers` and
 /// `energy`, its summary, and the CSV files written into `out` if given.
 #[pyfunction]
-#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions, out, params))]
+#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions, out, params, sensitivities))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -362,8 +362,11 @@ fn simulate<'py>(
     cross_singular_positions: bool,
     out: Option<PathBuf>,
     params: Option<BTreeMap<String, f64>>,
+    sensitivities: Vec<String>,
 ) -> PyResult<Answer<'py>> {
+    let base: Vec<(String, f64)> = params.clone().unwrap_or_default().into_iter().collect();
     let entry = find(&name, params)?;
+    symbody::sensitivity::values(entry, &base, &sensitivities).map_err(py_err)?;
     let opts = generic::Options {
         formulation: self::formulation(formulation)?,
         t_end,
@@ -375,18 +378,47 @@ fn simulate<'py>(
     };
     out_folder(out.as_deref())?;
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;
-    let answer = recording_answer(py, &rec, "integrated", out.as_deref())?;
+    let mut answer = recording_answer(py, &rec, "integrated", out.as_deref())?;
     answer.1.set_item("source", source(entry.origin))?;
     answer.1.set_item("note", symbody::files::note(entry))?;
+    with_sensitivities(py, &mut answer, out.as_deref(), &sensitivities, || {
+        symbody::sensitivity::integrated(entry, &opts, &base, &sensitivities)
+    })?;
     Ok(answer)
+}
+
+/// With parameters to differentiate with respect to: the `sensitivities` table added to
+/// `answer` (and its CSV written into `out`, if given).
+fn with_sensitivities<'py>(
+    py: Python<'py>,
+    answer: &mut Answer<'py>,
+    out: Option<&Path>,
+    names: &[String],
+    compute: impl FnOnce() -> Result<symbody::sensitivity::Sensitivities, ScenarioError> + Send,
+) -> PyResult<()> {
+    if names.is_empty() {
+        return Ok(());
+    }
+    let s = py.detach(compute).map_err(py_err)?;
+    if let Some(dir) = out {
+        answer.2.push(s.write(dir).map_err(|e| written(dir, e))?);
+    }
+    answer.0.extend(py_tables(py, vec![s.table()]));
+    Ok(())
 }
 
 /// `symbody run <scene>`: the scene file read, checked and run on the path it chooses; the
 /// tables it asks for (the paper scenario's with `files = "paper"`), a summary with the path
 /// and why, and the CSV files written into `out` if given.
 #[pyfunction]
-#[pyo3(signature = (scene, out))]
-fn run<'py>(py: Python<'py>, scene: PathBuf, out: Option<PathBuf>) -> PyResult<Answer<'py>> {
+#[pyo3(signature = (scene, out, sensitivities, params))]
+fn run<'py>(
+    py: Python<'py>,
+    scene: PathBuf,
+    out: Option<PathBuf>,
+    sensitivities: Vec<String>,
+    params: Option<BTreeMap<String, f64>>,
+) -> PyResult<Answer<'py>> {
     let file = scene.display().to_string();
     let text = std::fs::read_to_string(&scene).map_err(|e| {
         let message = format!("cannot read scene file {file}: {e}");
@@ -400,7 +432,15 @@ fn run<'py>(py: Python<'py>, scene: PathBuf, out: Option<PathBuf>) -> PyResult<A
         let shown = e.to_string();
         PyValueError::new_err(shown.strip_prefix("error: ").unwrap_or(&shown).to_string())
     })?;
-    let entry = parsed.entry;
+    // `params` on top of the scene's own parameters, as `symbody run --set` does.
+    let set: Vec<(String, f64)> = params.unwrap_or_default().into_iter().collect();
+    let base = symbody::files::merged(&parsed.parameters, &set);
+    let entry = match set.is_empty() {
+        true => parsed.entry,
+        false => symbody::files::reparametrized(parsed.entry, &base)
+            .map_err(|e| py_err_in(&format!("{file}: "), e))?,
+    };
+    symbody::sensitivity::values(entry, &base, &sensitivities).map_err(py_err)?;
     out_folder(out.as_deref())?;
     let (choice, outcome) = py
         .detach(|| symbody::scene::run(&parsed, entry))
@@ -444,7 +484,12 @@ fn run<'py>(py: Python<'py>, scene: PathBuf, out: Option<PathBuf>) -> PyResult<A
         }
     };
     summary.set_item("path_reason", choice.describe(info))?;
-    Ok((tables, summary, files))
+    let mut answer = (tables, summary, files);
+    let kinematic = matches!(choice, PathChoice::Kinematic { .. });
+    with_sensitivities(py, &mut answer, out.as_deref(), &sensitivities, || {
+        symbody::sensitivity::of_scene(&parsed, entry, kinematic, &base, &sensitivities)
+    })?;
+    Ok(answer)
 }
 
 /// The pose to continue from: six numbers `x, y, z, θ, β, γ` (as `symbody fk --from`), or a

@@ -51,18 +51,25 @@ impl Sensitivities {
         Some(self.rows.iter().map(|r| r[k]).collect())
     }
 
+    /// As a table (`sensitivities`): `t`, then the [`Sensitivities::columns`].
+    pub fn table(&self) -> crate::tables::Table {
+        crate::tables::Table {
+            stem: "sensitivities",
+            columns: self.columns(),
+            rows: self
+                .t
+                .iter()
+                .zip(&self.rows)
+                .map(|(t, r)| std::iter::once(*t).chain(r.iter().copied()).collect())
+                .collect(),
+        }
+    }
+
     /// Writes `sensitivities.csv` into `dir`.
     pub fn write(&self, dir: &Path) -> std::io::Result<std::path::PathBuf> {
         let path = dir.join("sensitivities.csv");
         let header = self.columns().join(",");
-        crate::output::write(
-            &path,
-            &header,
-            self.t
-                .iter()
-                .zip(&self.rows)
-                .map(|(t, r)| std::iter::once(*t).chain(r.iter().copied()).collect()),
-        )?;
+        crate::output::write(&path, &header, self.table().rows.into_iter())?;
         Ok(path)
     }
 }
@@ -355,4 +362,28 @@ pub fn integrated(
         result.rows.push(row);
     }
     Ok(result)
+}
+
+/// The sensitivities of a run of `scene` on `entry` (the scene's mechanism with the
+/// parameters `base`), on the path the run took (`kinematic` or integrated).
+pub fn of_scene(
+    scene: &crate::scene::Scene,
+    entry: &Entry,
+    kinematic: bool,
+    base: &Overrides,
+    parameters: &[String],
+) -> Result<Sensitivities, ScenarioError> {
+    match kinematic {
+        true => self::kinematic(
+            entry,
+            Span {
+                formulation: scene.formulation,
+                t_end: scene.t_end,
+                output_step: scene.output_step,
+            },
+            base,
+            parameters,
+        ),
+        false => integrated(entry, &crate::scene::options(scene), base, parameters),
+    }
 }

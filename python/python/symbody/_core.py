@@ -132,6 +132,7 @@ def simulate(
     cross_singular_positions: bool = False,
     out: Optional[PathLike] = None,
     params: Optional[Mapping[str, float]] = None,
+    sensitivities: Optional[Sequence[str]] = None,
 ) -> Results:
     """Simulates the mechanism ``name`` as ``symbody simulate <name>`` does: a registered
     name, or a mechanism file's path (a ``str`` ending in ``.toml`` or with a folder, or a
@@ -153,6 +154,9 @@ def simulate(
     each with the columns and values of the CSV of that name, and the run's ``summary``,
     whose ``source`` is the file the equations were interpreted from (``None`` when they
     are compiled code) and ``note`` what the command line prints about that (or ``None``).
+    ``sensitivities``: names of the file's parameters; the results then also have the table
+    ``sensitivities`` (as ``--sensitivities`` writes it): ``t``, then ``<output>/<parameter>``,
+    the derivative of each body pose, joint wrench and driver effort with respect to each.
     """
     return _results(
         _native.simulate(
@@ -165,11 +169,23 @@ def simulate(
             cross_singular_positions,
             None if out is None else os.fspath(out),
             _params(params),
+            _names(sensitivities),
         )
     )
 
 
-def run(scene: PathLike, out: Optional[PathLike] = None) -> Results:
+def _names(names: Optional[Sequence[str]]) -> List[str]:
+    if isinstance(names, str):
+        raise TypeError("sensitivities: give a list of parameter names, e.g. ['r']")
+    return [] if names is None else [str(n) for n in names]
+
+
+def run(
+    scene: PathLike,
+    out: Optional[PathLike] = None,
+    sensitivities: Optional[Sequence[str]] = None,
+    params: Optional[Mapping[str, float]] = None,
+) -> Results:
     """Runs the scene file ``scene`` (``scenes/*.toml``: mechanism, time, outputs, solver) as
     ``symbody run <scene>`` does: kinematic analysis when that is exact for the outputs it
     asks for, HHT-α integration otherwise (``summary["path"]``, and why in
@@ -179,9 +195,18 @@ def run(scene: PathLike, out: Optional[PathLike] = None) -> Results:
     ``drivers``, ``energy``; with ``files = "paper"`` the paper scenario's ``platform``,
     ``joint_forces`` and ``actuators``), each with its CSV file's columns. ``out``: a
     folder to write those CSV files into. A missing file is ``FileNotFoundError``; a scene
-    with mistakes a ``ValueError`` naming the file, line and field.
+    with mistakes a ``ValueError`` naming the file, line and field. ``sensitivities``: as for
+    :func:`simulate`, on the path the scene took. ``params``: parameters of the mechanism file
+    set on top of the scene's ``[parameters]``, as ``symbody run --set`` does.
     """
-    return _results(_native.run(os.fspath(scene), None if out is None else os.fspath(out)))
+    return _results(
+        _native.run(
+            os.fspath(scene),
+            None if out is None else os.fspath(out),
+            _names(sensitivities),
+            _params(params),
+        )
+    )
 
 
 def _study_columns(params: Any) -> Tuple[List[str], List[np.ndarray]]:

@@ -1,0 +1,54 @@
+"""Sensitivities from Python (`sensitivities=` on `simulate` and `run`, as `--sensitivities`):
+the table's columns, its values against differences of whole runs at p ± δ, p ± 2δ
+(Richardson-extrapolated central differences, δ = 1e-3·p, every solve done again), and bad
+names refused."""
+
+import numpy as np
+import pytest
+
+import symbody
+from conftest import REPO
+
+
+def extrapolated(column, parameter, value, **kwargs):
+    """d(column)/d(parameter) of `simulate` runs, from whole runs around `value`."""
+    d = 1e-3 * value
+    runs = [
+        symbody.simulate(params={parameter: value + k * d}, **kwargs)["bodies"][column]
+        for k in (-2, -1, 1, 2)
+    ]
+    c1 = (runs[2] - runs[1]) / (2 * d)
+    c2 = (runs[3] - runs[0]) / (4 * d)
+    return (4 * c1 - c2) / 3
+
+
+def test_simulate_returns_the_derivatives_of_an_integrated_run():
+    kwargs = dict(name="spherical_pendulum", t_end=1.0)
+    run = symbody.simulate(sensitivities=["l", "m"], **kwargs)
+    s = run["sensitivities"]
+    assert s.columns[:3] == ["t", "bob.x/l", "bob.x/m"]
+    assert np.array_equal(s["t"], run["bodies"]["t"])
+    for column in ("bob.x", "bob.z"):
+        reference = extrapolated(column, "l", 1.0, **kwargs)
+        ours = s[f"{column}/l"]
+        scale = np.abs(reference).max()
+        assert scale > 0.1
+        assert np.abs(ours - reference).max() <= 1e-6 * scale
+
+
+def test_run_differentiates_the_paper_scene_on_its_kinematic_path(tmp_path):
+    run = symbody.run(REPO / "scenes" / "paper.toml", out=tmp_path, sensitivities=["m_platform"])
+    assert run.summary["path"] == "kinematic"
+    s = run["sensitivities"]
+    efforts = [c for c in s.columns if c.startswith("act")]
+    assert efforts == [f"act{i}/m_platform" for i in range(1, 7)]
+    # A heavier payload needs more force from the legs that hold it up.
+    assert all(np.abs(s[c]).max() > 1.0 for c in efforts)
+    assert (tmp_path / "sensitivities.csv").exists()
+
+
+def test_unknown_names_are_refused_with_the_closest():
+    with pytest.raises(ValueError, match=r"no parameter `ll` \(did you mean `l`\?\)"):
+        symbody.simulate("spherical_pendulum", t_end=0.1, sensitivities=["ll"])
+    with pytest.raises(TypeError, match="list of parameter names"):
+        symbody.simulate("spherical_pendulum", t_end=0.1, sensitivities="l")
