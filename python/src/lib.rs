@@ -371,6 +371,7 @@ fn simulate<'py>(
         alpha,
         output_step,
         cross_singular: cross_singular_positions,
+        tolerances: None,
     };
     out_folder(out.as_deref())?;
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;

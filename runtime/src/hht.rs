@@ -430,6 +430,7 @@ impl HhtBuilder {
             mech,
         };
         it.stats.euler_warnings = usize::from(first_warning.is_some());
+        it.stats.controlled = it.settings.tolerances.is_some();
         // (Φqᵀλ − Q)ₙ at the start, evaluated rather than inferred from the start's solve.
         it.evaluate_current();
         it.phi_q_state.copy_from_slice(&it.phi_q);
@@ -454,6 +455,9 @@ pub struct Stats {
     /// Attempts that converged but that the step-size control's error test rejected (a
     /// part of `rejected_steps`; 0 with a fixed step).
     pub error_test_failures: usize,
+    /// Whether step-size control chose the steps ([`HhtBuilder::tolerances`]), so that a
+    /// report can say so beside the step sizes.
+    pub controlled: bool,
     /// Smallest and largest accepted step (s; 0 before the first). Steps shortened to land
     /// on an output time count too.
     pub smallest_step: f64,
@@ -776,15 +780,18 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                          request output times at least min_step apart",
             });
         }
-        let report = if remaining <= self.h * (1.0 + 1e-9) {
-            self.step_to(t_out, remaining)?
-        } else if remaining < 2.0 * self.h {
-            let h = 0.5 * remaining;
-            self.step_to(self.t + h, h)?
-        } else {
-            let h = self.h;
-            self.step_to(self.t + h, h)?
-        };
+        // Evening out must not leave a step below the minimum, which the next call would
+        // refuse as an output time too close (a controlled step can be near the minimum).
+        let report =
+            if remaining <= self.h * (1.0 + 1e-9) || remaining < 2.0 * self.settings.min_step {
+                self.step_to(t_out, remaining)?
+            } else if remaining < 2.0 * self.h {
+                let h = 0.5 * remaining;
+                self.step_to(self.t + h, h)?
+            } else {
+                let h = self.h;
+                self.step_to(self.t + h, h)?
+            };
         Ok(Some(report))
     }
 
