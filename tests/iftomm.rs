@@ -108,8 +108,8 @@ fn a03_a04_a05_with_step_control_meet_their_tolerances() {
         let o = (p.run)(p.spec.short_t_end, settings).unwrap_or_else(|e| panic!("{id}: {e}"));
         let s = o.stats;
         eprintln!(
-            "{id}: error {:.3e} (tolerance {:.0e}), {} steps of {:.2e} .. {:.2e} s, {} rejected",
-            o.error, p.spec.tolerance, s.steps, s.smallest_step, s.largest_step, s.rejected_steps
+            "{id}: error {:.3e} (tolerance {:.0e}), {} steps of {:.2e} .. {:.2e} s, {} rejected ({} by the error test)",
+            o.error, p.spec.tolerance, s.steps, s.smallest_step, s.largest_step, s.rejected_steps, s.error_test_failures
         );
         assert_eq!(o.t_end, p.spec.short_t_end);
         assert!(o.passed(&p.spec), "{id}: error {:e}", o.error);

@@ -407,6 +407,7 @@ impl HhtBuilder {
             qdd_prev: vec![0.0; n],
             lambda_prev: vec![0.0; m],
             h_prev: 0.0,
+            ratio_prev: 0.0,
             phi_q_state: vec![0.0; info.phi_q_nnz()],
             mass_state: vec![0.0; info.mass_nnz()],
             q1: vec![0.0; n],
@@ -520,6 +521,9 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     qdd_prev: Vec<f64>,
     lambda_prev: Vec<f64>,
     h_prev: f64,
+    /// `LocalError::ratio` of the last accepted step (0: none yet), for the predictive
+    /// controller.
+    ratio_prev: f64,
     phi_q_state: Vec<f64>,
     mass_state: Vec<f64>,
     // Iterates and evaluations of the step in progress.
@@ -565,17 +569,20 @@ impl LocalError {
         }
     }
 
-    /// Step factor that brings each estimate to `SAFETY` times the tolerance, by its order
-    /// in h (positions 3, velocities 2); the smaller wins.
+    /// The error as the step factor it asks for: each estimate to the power 1/its order
+    /// in h (positions 3, velocities 2), the larger; the step would be right at 1.
+    fn ratio(&self) -> f64 {
+        self.position.powf(1.0 / 3.0).max(self.velocity.sqrt())
+    }
+
+    /// Step factor that brings each estimate to `SAFETY` times the tolerance.
     fn factor(&self) -> f64 {
-        let f = |e: f64, order: f64| {
-            if e > 0.0 {
-                SAFETY * e.powf(-1.0 / order)
-            } else {
-                FAC_MAX
-            }
-        };
-        f(self.position, 3.0).min(f(self.velocity, 2.0))
+        let r = self.ratio();
+        if r > 0.0 {
+            SAFETY / r
+        } else {
+            FAC_MAX
+        }
     }
 }
 
@@ -822,9 +829,10 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                     };
                     let e = self.local_error(h, tol);
                     if e.norm() <= 1.0 {
-                        let next = self.next_step(h, e.factor(), shortened, cut, h_before);
+                        let next = self.next_step(h, e, shortened, cut, h_before);
                         let accepted = self.commit(report, h, t1)?;
                         self.h = next;
+                        self.ratio_prev = e.ratio();
                         return Ok(accepted);
                     }
                     self.stats.rejected_steps += 1;
@@ -1180,7 +1188,18 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     /// The step the control proposes after accepting one of size `h` whose error gave
     /// `factor`: growth at most `FAC_MAX`, none right after a rejection (`cut`); a step the
     /// caller `shortened` (from `proposed`) for an output never lowers the proposal.
-    fn next_step(&self, h: f64, factor: f64, shortened: bool, cut: bool, proposed: f64) -> f64 {
+    ///
+    /// The factor is the smaller of the error's own and Gustafsson's predictive one (as
+    /// RADAU5), which also follows the error's trend over the last two steps: where the
+    /// estimate does not shrink like h^order (stiff components far beyond their time scale,
+    /// A05's damper) the plain factor alternates growth and rejection (measured on A05 at
+    /// rtol 1e-4: 1 071 rejections in 1 085 steps).
+    fn next_step(&self, h: f64, e: LocalError, shortened: bool, cut: bool, proposed: f64) -> f64 {
+        let mut factor = e.factor();
+        if self.ratio_prev > 0.0 && self.h_prev > 0.0 && e.ratio() > 0.0 {
+            let r = e.ratio();
+            factor = factor.min(SAFETY * (h / self.h_prev) * (self.ratio_prev / (r * r)));
+        }
         let next = if cut {
             (h * factor).clamp(FAC_MIN * h, h)
         } else if shortened {
