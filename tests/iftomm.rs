@@ -96,7 +96,7 @@ fn a05_stiff_damper_does_not_limit_the_step() {
 /// With step-size control instead of each problem's hand-picked step, the stiff problems
 /// (A03's spring, ~1 ms time scale; A05's damper, c/m ≈ 8000 s⁻¹) and A04 run to their
 /// shortened ends within the published tolerance at rtol = atol = 1e-5 (measured errors
-/// 4.3e-5, 6.0e-5 and 3.3e-6 against 1e-4, 1e-3 and 1e-5), the steps varying with the motion.
+/// 4.0e-5, 5.9e-5 and 3.2e-6 against 1e-4, 1e-3 and 1e-5), the steps varying with the motion.
 #[test]
 fn a03_a04_a05_with_step_control_meet_their_tolerances() {
     for id in ["A03", "A04", "A05"] {
