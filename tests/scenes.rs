@@ -227,3 +227,74 @@ fn run_writes_the_same_files_as_simulate_and_says_how_it_solved() {
         "{stderr}"
     );
 }
+
+#[test]
+fn tolerances_in_a_scene_or_on_the_command_line_control_the_step() {
+    let dir = std::env::temp_dir().join(format!("symbody-stepctl-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("pendulum.toml");
+    std::fs::write(
+        &scene,
+        "mechanism = \"spherical_pendulum\"\n[time]\nend = 2.0\n[solver]\nstep = 1e-4\nrtol = 1e-5\natol = 1e-6\n",
+    )
+    .unwrap();
+    let text = std::fs::read_to_string(&scene).unwrap();
+    let loaded = scene::load(
+        &symbody_benchmark_mechanisms::REGISTRY,
+        "pendulum.toml",
+        &text,
+    )
+    .unwrap();
+    assert_eq!(loaded.tolerances, Some((1e-5, 1e-6)));
+    assert_eq!(
+        loaded.step, 1e-4,
+        "a step beside tolerances is the first step"
+    );
+    let out = dir.join("run");
+    let (ok, stdout, stderr) = symbody(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--no-plots",
+    ]);
+    assert!(ok, "{stdout}{stderr}");
+    assert!(
+        stdout.contains("step-size control rtol 1e-5, atol 1e-6"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("step sizes"), "{stdout}");
+    let meta = std::fs::read_to_string(out.join("meta.json")).unwrap();
+    assert!(meta.contains("\"rtol\": 0.00001"), "{meta}");
+    let out = dir.join("simulate");
+    let (ok, stdout, stderr) = symbody(&[
+        "simulate",
+        "spherical_pendulum",
+        "--t-end",
+        "1",
+        "--rtol",
+        "1e-6",
+        "--out",
+        out.to_str().unwrap(),
+        "--no-plots",
+    ]);
+    assert!(ok, "{stdout}{stderr}");
+    assert!(stdout.contains("step sizes"), "{stdout}");
+    let (ok, _, stderr) = symbody(&["simulate", "spherical_pendulum", "--rtol", "0"]);
+    assert!(
+        !ok && stderr.contains("--rtol 0: a tolerance must be positive"),
+        "{stderr}"
+    );
+    // Without tolerances the summary is as before: no step-size line.
+    let (ok, stdout, _) = symbody(&[
+        "simulate",
+        "spherical_pendulum",
+        "--t-end",
+        "0.1",
+        "--out",
+        dir.join("fixed").to_str().unwrap(),
+        "--no-plots",
+    ]);
+    assert!(ok && !stdout.contains("step sizes"), "{stdout}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -164,9 +164,17 @@ enum Command {
         /// End time (s) (default: the mechanism file's `t_end`; the paper scenario: 2π).
         #[arg(long, allow_hyphen_values = true)]
         t_end: Option<f64>,
-        /// HHT step (s).
+        /// HHT step (s); with --rtol/--atol, the first step the control tries.
         #[arg(long, default_value_t = Options::default().step, allow_hyphen_values = true)]
         step: f64,
+        /// Step-size control: relative tolerance on the local error of positions and
+        /// velocities (default: off, the fixed --step). Either of --rtol/--atol alone sets
+        /// both.
+        #[arg(long, allow_hyphen_values = true)]
+        rtol: Option<f64>,
+        /// Step-size control: absolute tolerance (m, rad, m/s, rad/s as the coordinates).
+        #[arg(long, allow_hyphen_values = true)]
+        atol: Option<f64>,
         /// HHT α in [−1/3, 0] (0: trapezoidal, no numerical damping) (default: 0 for a named
         /// mechanism, with velocity projection; −0.05 for the paper scenario).
         #[arg(long, allow_hyphen_values = true)]
@@ -269,6 +277,8 @@ pub fn main(registry: &Registry) -> ExitCode {
             formulation,
             t_end,
             step,
+            rtol,
+            atol,
             alpha,
             output_step,
             cross_singular_positions,
@@ -278,7 +288,9 @@ pub fn main(registry: &Registry) -> ExitCode {
             files,
             parameters,
             sensitivities,
-        } => match mechanism {
+        } => match (mechanism, tolerances(rtol, atol)) {
+            (_, Err(e)) => Err(e),
+            (mechanism, Ok(tolerances)) => match mechanism {
             None if !sensitivities.sensitivities.is_empty() => Err("--sensitivities applies to a named mechanism or a file; for the paper's scenario, run scenes/paper.toml with it (e.g. `symbody run scenes/paper.toml --sensitivities r_platform,m_platform`)".to_string()),
             None if !parameters.set.is_empty() => Err("--set applies to a named mechanism or a file; for the paper's scenario with other parameters, run scenes/paper.toml with --set (e.g. `symbody run scenes/paper.toml --set r_platform=0.11`)".to_string()),
             None if velocities || accelerations => Err(format!("--{} applies to a named mechanism or a file (it adds columns to bodies.csv); the paper scenario writes platform.csv", if velocities { "velocities" } else { "accelerations" })),
@@ -290,6 +302,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                     formulation: formulation.map(FormulationArg::formulation),
                     t_end,
                     step,
+                    tolerances,
                     alpha: alpha.unwrap_or(defaults.alpha),
                     output_step,
                     cross_singular: cross_singular_positions,
@@ -305,6 +318,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                     formulation: formulation.map_or(defaults.formulation, FormulationArg::formulation),
                     t_end: t_end.unwrap_or(defaults.t_end),
                     step,
+                    tolerances,
                     alpha: alpha.unwrap_or(defaults.alpha),
                     output_step,
                     reactions: match reactions {
@@ -315,6 +329,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                 let out = files.out.clone().unwrap_or_else(|| default_out("paper"));
                 simulate(registry, &opts, &out, !files.no_plots, files.html)
             }
+            },
         },
         Command::Run {
             scene,
@@ -568,6 +583,8 @@ fn simulate_named(
     let meta = meta::Meta::new(json!({
         "t_end": t_end,
         "step": opts.step,
+        "rtol": opts.tolerances.map(|t| t.0),
+        "atol": opts.tolerances.map(|t| t.1),
         "alpha": opts.alpha,
         "output_step": opts.output_step,
         "velocities_projected": true,
@@ -585,10 +602,9 @@ fn simulate_named(
         inner: &mut live,
     };
     let run = generic::run_observed(entry, opts, &mut obs);
-    // Every output time is landed on, so no step is longer than the output spacing.
     let method = format!(
-        "step {} s, alpha {}, velocities projected",
-        opts.step.min(opts.output_step),
+        "{}, alpha {}, velocities projected",
+        stepping(opts.step, opts.tolerances, opts.output_step),
         opts.alpha
     );
     let note = symbody::files::note(entry);
@@ -815,6 +831,34 @@ fn print_work(
     );
 }
 
+/// `--rtol`/`--atol`: step-size control when either is given (the other then takes its
+/// value), each positive and finite.
+fn tolerances(rtol: Option<f64>, atol: Option<f64>) -> Result<Option<(f64, f64)>, String> {
+    for (flag, v) in [("--rtol", rtol), ("--atol", atol)] {
+        if let Some(v) = v {
+            if !(v > 0.0 && v.is_finite()) {
+                return Err(format!(
+                    "{flag} {v}: a tolerance must be positive and finite (e.g. {flag} 1e-6)"
+                ));
+            }
+        }
+    }
+    Ok(match (rtol, atol) {
+        (Some(r), Some(a)) => Some((r, a)),
+        (Some(t), None) | (None, Some(t)) => Some((t, t)),
+        (None, None) => None,
+    })
+}
+
+/// How the steps were chosen, for a summary's time-span line. Every output time is landed
+/// on, so a fixed step is never longer than the output spacing.
+fn stepping(step: f64, tolerances: Option<(f64, f64)>, output_step: f64) -> String {
+    match tolerances {
+        Some((rtol, atol)) => format!("step-size control rtol {rtol:e}, atol {atol:e}"),
+        None => format!("step {} s", step.min(output_step)),
+    }
+}
+
 fn print_steps(s: &symbody_runtime::Stats) {
     say!(
         "  steps            {} accepted, {} rejected; {} Newton iterations ({:.2}/step), {} factorizations",
@@ -824,6 +868,14 @@ fn print_steps(s: &symbody_runtime::Stats) {
         s.newton_iterations as f64 / s.steps.max(1) as f64,
         s.factorizations
     );
+    if s.controlled {
+        say!(
+            "  step sizes       {:.3e} .. {:.3e} s (step-size control; {} steps rejected by the error test)",
+            s.smallest_step,
+            s.largest_step,
+            s.error_test_failures
+        );
+    }
 }
 
 /// "123x faster than" or "0.06x", readable at any ratio.
@@ -846,6 +898,8 @@ fn simulate(
     meta::Meta::new(json!({
         "t_end": opts.t_end,
         "step": opts.step,
+        "rtol": opts.tolerances.map(|t| t.0),
+        "atol": opts.tolerances.map(|t| t.1),
         "alpha": opts.alpha,
         "output_step": opts.output_step,
         "reactions": match opts.reactions {
@@ -871,7 +925,11 @@ fn simulate(
         }
         other => other.to_string(),
     })?;
-    let method = format!("step {} s, alpha {}", opts.step, opts.alpha);
+    let method = format!(
+        "{}, alpha {}",
+        stepping(opts.step, opts.tolerances, f64::INFINITY),
+        opts.alpha
+    );
     report_paper(registry, &run, opts.formulation, &method, out, plots, html)
 }
 
@@ -1011,6 +1069,8 @@ fn run_scene(
         "scene": path.display().to_string(),
         "t_end": scene.t_end,
         "step": scene.step,
+        "rtol": scene.tolerances.map(|t| t.0),
+        "atol": scene.tolerances.map(|t| t.1),
         "alpha": scene.alpha,
         "output_step": scene.output_step,
         "path": match scene.path {
@@ -1061,8 +1121,8 @@ fn run_scene(
             format!("outputs every {} s, no integration", scene.output_step)
         }
         scene::PathChoice::Integrate { .. } => format!(
-            "step {} s, alpha {}",
-            scene.step.min(scene.output_step),
+            "{}, alpha {}",
+            stepping(scene.step, scene.tolerances, scene.output_step),
             scene.alpha
         ),
     };

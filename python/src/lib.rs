@@ -375,6 +375,7 @@ fn simulate<'py>(
         output_step,
         cross_singular: cross_singular_positions,
         newton_tolerance: None,
+        tolerances: None,
     };
     out_folder(out.as_deref())?;
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;

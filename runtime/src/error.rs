@@ -100,6 +100,19 @@ pub enum Error {
         /// attempt got far enough to evaluate Φ.
         row: Option<ConstraintRow>,
     },
+    /// Step-size control cut the step below the minimum without meeting the tolerances:
+    /// the local error estimate (weighted RMS, 1 = the tolerance) stayed above 1.
+    ToleranceNotMet {
+        time: f64,
+        step: f64,
+        /// The weighted local error estimate of the last attempt (> 1).
+        error: f64,
+        /// The coordinate whose weighted error was largest, and whether in its velocity.
+        coord: &'static str,
+        velocity: bool,
+        /// Unscaled constraint residual |Φ|∞ of the last attempt (it converged).
+        residual: f64,
+    },
     /// The constraint Jacobian lost rank: these rows are (numerically) dependent on others.
     SingularJacobian { time: f64, rows: Vec<ConstraintRow> },
     /// The independent constraint rows are satisfied but these redundant rows
@@ -198,6 +211,21 @@ impl fmt::Display for Error {
                     None => Ok(()),
                 }
             }
+            Error::ToleranceNotMet {
+                time,
+                step,
+                error,
+                coord,
+                velocity,
+                residual,
+            } => write!(
+                f,
+                "HHT step size {step:e} s at t = {time:.6} s is below the minimum and the local \
+                 error estimate is still {error:.3e} times the tolerance (largest in the {} of \
+                 `{coord}`; constraint residual |Φ|∞ = {residual:e}): loosen rtol/atol or lower \
+                 min_step",
+                if *velocity { "velocity" } else { "position" }
+            ),
             Error::SingularJacobian { time, rows } => {
                 write!(
                     f,

@@ -527,3 +527,141 @@ fn a_non_finite_start_is_refused_with_a_typed_error() {
         }
     }
 }
+
+/// A controlled run of the planar pendulum swung to `phi0` (large: slow near the turning
+/// points, fast at the bottom, so steps should vary) up to `t_end`: (error of φ against
+/// RK4, stats).
+fn controlled_swing(rtol: f64, alpha: f64, t_end: f64, reference: f64) -> (f64, Stats) {
+    let mut hht = HhtBuilder::new()
+        .alpha(alpha)
+        .tolerances(rtol, rtol)
+        .q0(&planar_q0(2.5))
+        .build(Pendulum::paper())
+        .unwrap();
+    hht.advance_to(t_end).unwrap();
+    assert_eq!(hht.t(), t_end);
+    ((hht.q()[5] - reference).abs(), hht.stats())
+}
+
+#[test]
+fn step_control_error_follows_the_tolerance_with_fewer_steps_than_a_fixed_step() {
+    let t_end = 3.0;
+    let reference = rk4_planar(2.5, t_end);
+    for alpha in [-0.05, 0.0] {
+        let mut last = f64::INFINITY;
+        for rtol in [1e-3, 1e-5, 1e-7] {
+            let (err, s) = controlled_swing(rtol, alpha, t_end, reference);
+            // Measured 2–3× rtol at every tolerance (error per unit step keeps the global
+            // error proportional to the tolerance); 10× leaves room, not chance: the run is
+            // deterministic.
+            assert!(
+                err < 10.0 * rtol,
+                "α {alpha} rtol {rtol:e}: error {err:e}, {s:?}"
+            );
+            assert!(
+                err < 0.1 * last,
+                "α {alpha} rtol {rtol:e}: {err:e} after {last:e}"
+            );
+            last = err;
+            // The steps vary with the motion, and few attempts are wasted.
+            assert!(s.largest_step > 5.0 * s.smallest_step, "{s:?}");
+            assert!(s.rejected_steps < 20, "{s:?}");
+            assert_eq!(s.rejected_steps, s.error_test_failures, "{s:?}");
+            // A fixed step taking as many steps is less accurate; the error of a fixed step
+            // grows with it (second order), so every fixed step at least as cheap is too.
+            let h = t_end / s.steps as f64;
+            let mut fixed = HhtBuilder::new()
+                .alpha(alpha)
+                .step(h)
+                .q0(&planar_q0(2.5))
+                .build(Pendulum::paper())
+                .unwrap();
+            fixed.advance_to(t_end).unwrap();
+            let fixed_err = (fixed.q()[5] - reference).abs();
+            assert!(
+                fixed_err > 2.0 * err,
+                "α {alpha} rtol {rtol:e}: fixed h {h:e} error {fixed_err:e} vs {err:e}"
+            );
+        }
+    }
+}
+
+#[test]
+fn step_control_lands_on_output_times_and_keeps_its_step_across_them() {
+    let build = || {
+        HhtBuilder::new()
+            .tolerances(1e-4, 1e-4)
+            .q0(&planar_q0(2.5))
+            .build(Pendulum::paper())
+            .unwrap()
+    };
+    let mut free = build();
+    free.advance_to(2.0).unwrap();
+    let mut out = build();
+    // Output times that fit no step pattern: every 0.137 s.
+    let mut n_out = 0;
+    for k in 1.. {
+        let t = (k as f64 * 0.137).min(2.0);
+        out.advance_to(t).unwrap();
+        assert_eq!(out.t(), t);
+        n_out += 1;
+        if t == 2.0 {
+            break;
+        }
+    }
+    // Landing on an output costs at most the one or two steps that even out the
+    // remainder; it does not make the steps after it smaller.
+    let (a, b) = (free.stats(), out.stats());
+    assert!(b.steps <= a.steps + 2 * n_out, "{a:?} vs {b:?}");
+    // A sliver of a step to an output close ahead leaves the proposed step as it was.
+    let h = out.step_size();
+    out.advance_to(2.0 + 1e-3 * h).unwrap();
+    assert_eq!(out.t(), 2.0 + 1e-3 * h);
+    assert!(out.step_size() >= h, "{} < {h}", out.step_size());
+}
+
+#[test]
+fn step_control_settings_are_checked_and_an_unmet_tolerance_is_reported() {
+    let b = || HhtBuilder::new().q0(&planar_q0(2.5));
+    for (rtol, atol) in [
+        (0.0, 1e-6),
+        (1e-6, -1.0),
+        (f64::NAN, 1e-6),
+        (1e-6, f64::INFINITY),
+    ] {
+        match b().tolerances(rtol, atol).build(Pendulum::paper()) {
+            Err(Error::InvalidSetting { name, .. }) => assert!(name == "rtol" || name == "atol"),
+            other => panic!("({rtol}, {atol}) accepted: {other:?}"),
+        }
+    }
+    assert!(b()
+        .step(1e-2)
+        .max_step(1e-3)
+        .build(Pendulum::paper())
+        .is_err());
+    // A tolerance the minimum step cannot meet is an error with the time, the step and
+    // the coordinate, and the integrator keeps its last accepted state.
+    let mut hht = b()
+        .tolerances(1e-14, 1e-14)
+        .min_step(1e-4)
+        .build(Pendulum::paper())
+        .unwrap();
+    let q = hht.q().to_vec();
+    match hht.advance_to(0.1) {
+        Err(e @ Error::ToleranceNotMet { .. }) => {
+            let Error::ToleranceNotMet {
+                time, step, error, ..
+            } = e
+            else {
+                unreachable!()
+            };
+            assert!(time >= 0.0 && step < 1e-4 && error > 1.0, "{e}");
+            assert!(e.to_string().contains("t = "), "{e}");
+        }
+        other => panic!("expected ToleranceNotMet, got {other:?}"),
+    }
+    assert!(hht.t() < 0.1);
+    if hht.t() == 0.0 {
+        assert_eq!(hht.q(), &q[..]);
+    }
+}

@@ -14,8 +14,10 @@ pub struct Options {
     pub formulation: Formulation,
     /// End time (s); the motion repeats every 2π s.
     pub t_end: f64,
-    /// Nominal HHT step (s).
+    /// Nominal HHT step (s); with `tolerances`, the first step the control tries.
     pub step: f64,
+    /// Step-size control `(rtol, atol)` (`HhtBuilder::tolerances`); `None`: fixed `step`.
+    pub tolerances: Option<(f64, f64)>,
     /// HHT α in [−1/3, 0].
     pub alpha: f64,
     /// Spacing of recorded outputs (s); the integrator lands exactly on each.
@@ -43,10 +45,24 @@ impl Default for Options {
             formulation: Formulation::Exact,
             t_end: 2.0 * std::f64::consts::PI,
             step: 1e-3,
+            tolerances: None,
             alpha: -0.05,
             output_step: 0.01,
             reactions: Reactions::Recovered,
         }
+    }
+}
+
+/// The integrator settings of `opts`.
+fn hht(opts: &Options) -> HhtBuilder {
+    let builder = HhtBuilder::new()
+        .alpha(opts.alpha)
+        .step(opts.step)
+        // Allow step cuts well below a step chosen smaller than the default minimum.
+        .min_step((opts.step * 1e-4).min(1e-7));
+    match opts.tolerances {
+        Some((rtol, atol)) => builder.tolerances(rtol, atol),
+        None => builder,
     }
 }
 
@@ -193,12 +209,7 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
-    let mut it = HhtBuilder::new()
-        .alpha(opts.alpha)
-        .step(opts.step)
-        // Allow step cuts well below a step chosen smaller than the default minimum.
-        .min_step((opts.step * 1e-4).min(1e-7))
-        .build(mech)?;
+    let mut it = hht(opts).build(mech)?;
     let mut run = Run::default();
     let mut recorder = Recorder::new(info, layout)?;
     // The platform's determinant sign is watched at the outputs: a pose that crossed a
@@ -291,11 +302,7 @@ pub fn simulate_reduced(registry: &Registry, opts: &Options) -> Result<Run, Scen
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
-    let mut it = HhtBuilder::new()
-        .alpha(opts.alpha)
-        .step(opts.step)
-        .min_step((opts.step * 1e-4).min(1e-7))
-        .build(red)?;
+    let mut it = hht(opts).build(red)?;
     let mut run = Run::default();
     let mut recorder = Recorder::new(info, layout)?;
     let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);

@@ -84,6 +84,7 @@ fn options(f: Formulation, step: f64, alpha: f64, reactions: Reactions) -> Optio
         step,
         alpha,
         output_step: OUTPUT_STEP,
+        tolerances: None,
     }
 }
 

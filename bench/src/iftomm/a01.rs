@@ -41,6 +41,7 @@ const SETTINGS: Settings = Settings {
     step: 1.25e-4,
     // α < 0 damps the swing: over 845 periods even α = −0.01 costs more than the tolerance.
     alpha: 0.0,
+    tolerances: None,
 };
 
 fn run(t_end: f64, settings: Settings) -> Result<Outcome, Error> {

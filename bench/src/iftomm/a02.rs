@@ -12,7 +12,6 @@ use super::{
     integrate_with, point, point_velocity, rk4_step, Outcome, Problem, Published, Settings, Spec,
 };
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
-use symbody_runtime::HhtBuilder;
 
 const G: f64 = 9.81;
 const L: f64 = 1.0;
@@ -75,6 +74,7 @@ pub static PROBLEM_40: Problem = Problem {
 const SETTINGS: Settings = Settings {
     step: 4e-4,
     alpha: 0.0,
+    tolerances: None,
 };
 
 fn run_2(t_end: f64, settings: Settings) -> Result<Outcome, Error> {
@@ -89,10 +89,8 @@ fn run(n: usize, t_end: f64, settings: Settings) -> Result<Outcome, Error> {
     let name = format!("n_four_bar_{n}");
     let outputs = (t_end / OUTPUT_STEP).round().max(1.0) as usize;
     let mut samples = Vec::with_capacity(outputs + 1);
-    let builder = HhtBuilder::new()
-        .step(settings.step)
-        .alpha(settings.alpha)
-        .project_velocities(true)
+    let builder = settings
+        .builder()
         // At a flat position the rows of each loop are dependent for an instant; a step that
         // lands there drops the rows whose pivot is below the rank-loss threshold (they must
         // still hold). Steps near it are accepted at the roundoff floor (`Stats::noise_limited`).

@@ -49,6 +49,7 @@ const SAMPLE: f64 = 1e-4;
 const SETTINGS: Settings = Settings {
     step: 2.5e-6,
     alpha: 0.0,
+    tolerances: None,
 };
 
 /// The motor torque (N·m), for the energy balance.

@@ -39,6 +39,7 @@ pub static PROBLEM: Problem = Problem {
 const SETTINGS: Settings = Settings {
     step: 1e-3,
     alpha: 0.0,
+    tolerances: None,
 };
 
 fn run(t_end: f64, settings: Settings) -> Result<Outcome, Error> {

@@ -35,6 +35,7 @@ const OUTPUTS_PER_SECOND: f64 = 100.0;
 const SETTINGS: Settings = Settings {
     step: 4.0e-4,
     alpha: 0.0,
+    tolerances: None,
 };
 
 /// RK4 step of the reference. The slider's damped mode has |λ| ≈ 2C(∂d/∂s)²/m_s ≈ 7e3 1/s,

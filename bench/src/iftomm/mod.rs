@@ -109,8 +109,27 @@ pub fn problems() -> [&'static Problem; 6] {
 /// Integration settings of one run.
 #[derive(Debug, Clone, Copy)]
 pub struct Settings {
+    /// The step; with `tolerances`, the first step tried.
     pub step: f64,
     pub alpha: f64,
+    /// Step-size control `(rtol, atol)` (`HhtBuilder::tolerances`); `None`: fixed step.
+    pub tolerances: Option<(f64, f64)>,
+}
+
+impl Settings {
+    /// The integrator settings every problem shares: these, with velocities projected
+    /// onto the constraints after every step (as `symbody simulate <name>` does), which
+    /// keeps α = 0 stable.
+    pub fn builder(&self) -> HhtBuilder {
+        let builder = HhtBuilder::new()
+            .step(self.step)
+            .alpha(self.alpha)
+            .project_velocities(true);
+        match self.tolerances {
+            Some((rtol, atol)) => builder.tolerances(rtol, atol),
+            None => builder,
+        }
+    }
 }
 
 /// Integrates the registered mechanism `name` with HHT from its file's initial state to
@@ -126,11 +145,7 @@ pub fn integrate(
     outputs: usize,
     sample: impl FnMut(f64, &[f64], &[f64]) -> Result<(), Error>,
 ) -> Result<(Duration, Stats), Error> {
-    let builder = HhtBuilder::new()
-        .step(settings.step)
-        .alpha(settings.alpha)
-        .project_velocities(true);
-    integrate_with(name, builder, t_end, outputs, sample)
+    integrate_with(name, settings.builder(), t_end, outputs, sample)
 }
 
 /// As [`integrate`], with every integrator setting given.

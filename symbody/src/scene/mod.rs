@@ -22,7 +22,11 @@
 //!
 //! [solver]
 //! path = "auto"                 # "auto" (default), "kinematic" or "integrate"
-//! step = 1e-3                   # HHT step when integrating (s)
+//! step = 1e-3                   # HHT step when integrating (s); with rtol/atol the first
+//!                               # step tried
+//! rtol = 1e-6                   # step-size control (default off: the fixed step):
+//! atol = 1e-6                   # relative and absolute local error on q and q̇; either
+//!                               # alone sets both
 //! alpha = 0.0                   # HHT α (default: as `symbody simulate`)
 //! cross_singular_positions = false  # pass positions where rows are dependent for an instant
 //!
@@ -117,8 +121,11 @@ pub struct Scene {
     pub energy: bool,
     pub files: Files,
     pub path: PathRequest,
-    /// HHT step when integrating (s).
+    /// HHT step when integrating (s); with `tolerances`, the first step tried.
     pub step: f64,
+    /// Step-size control `(rtol, atol)` when integrating (`[solver] rtol`, `atol`; either
+    /// alone sets both); `None`: the fixed `step`.
+    pub tolerances: Option<(f64, f64)>,
     /// HHT α when integrating.
     pub alpha: f64,
     /// Let the integrator pass singular positions ([`crate::generic::Options::cross_singular`]).

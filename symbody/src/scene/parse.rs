@@ -58,6 +58,8 @@ struct RawOutputs {
 struct RawSolver {
     path: Option<Spanned<String>>,
     step: Option<Spanned<f64>>,
+    rtol: Option<Spanned<f64>>,
+    atol: Option<Spanned<f64>>,
     alpha: Option<Spanned<f64>>,
     cross_singular_positions: Option<Spanned<bool>>,
 }
@@ -311,6 +313,8 @@ fn check(
     let solver = raw.solver.unwrap_or(RawSolver {
         path: None,
         step: None,
+        rtol: None,
+        atol: None,
         alpha: None,
         cross_singular_positions: None,
     });
@@ -333,6 +337,15 @@ fn check(
     };
     let step =
         positive(map, errors, solver.step.as_ref(), "[solver] `step`", false).unwrap_or(1e-3);
+    // Either tolerance turns step-size control on, the other then taking its value; a
+    // `step` beside them is the first step tried (not ambiguous, so not refused).
+    let rtol = tolerance(map, errors, solver.rtol.as_ref(), "[solver] `rtol`");
+    let atol = tolerance(map, errors, solver.atol.as_ref(), "[solver] `atol`");
+    let tolerances = match (rtol, atol) {
+        (Some(r), Some(a)) => Some((r, a)),
+        (Some(t), None) | (None, Some(t)) => Some((t, t)),
+        (None, None) => None,
+    };
     let alpha = match &solver.alpha {
         None => match files {
             Files::Paper => crate::scenario::Options::default().alpha,
@@ -385,6 +398,7 @@ fn check(
         files,
         path,
         step,
+        tolerances,
         alpha,
         cross_singular,
     })
@@ -628,6 +642,28 @@ fn positive(
                 if zero_ok { "non-negative" } else { "positive" }
             ),
             "give the time in seconds, e.g. 0.01",
+        ));
+        None
+    }
+}
+
+/// A step-size control tolerance: positive and finite.
+fn tolerance(
+    map: &SourceMap<'_>,
+    errors: &mut Vec<Diagnostic>,
+    v: Option<&Spanned<f64>>,
+    item: &str,
+) -> Option<f64> {
+    let v = v?;
+    let x = *v.get_ref();
+    if x.is_finite() && x > 0.0 {
+        Some(x)
+    } else {
+        errors.push(map.diag(
+            v.span(),
+            item,
+            format!("a tolerance must be positive and finite, got {x}"),
+            "e.g. rtol = 1e-6 (relative) and atol = 1e-6 (absolute, in the coordinates' units: m, rad, m/s, rad/s)",
         ));
         None
     }
