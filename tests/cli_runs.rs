@@ -15,10 +15,13 @@ fn temp_dir(name: &str) -> PathBuf {
     dir
 }
 
-/// The data rows of a CSV (header aside), each as numbers.
+/// The complete data rows of a CSV (header aside), each as numbers: a file read while its
+/// run still writes it may end in part of a line, which is left out.
 fn rows(path: &Path) -> Vec<Vec<f64>> {
     let text = std::fs::read_to_string(path).unwrap_or_default();
-    text.lines()
+    let complete = text.rfind('\n').map_or("", |end| &text[..end]);
+    complete
+        .lines()
         .skip(1)
         .filter(|l| !l.is_empty())
         .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
