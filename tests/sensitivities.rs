@@ -12,6 +12,9 @@ use symbody::sensitivity::{self, Sensitivities, Span};
 use symbody_mechanisms::REGISTRY;
 use symbody_runtime::{Entry, Formulation};
 
+/// A whole run with some of the file's parameters set.
+type Runs<'a> = dyn Fn(&[(String, f64)]) -> Recording + 'a;
+
 /// Relative step of the reference differences.
 const DELTA: f64 = 1e-3;
 
@@ -82,12 +85,7 @@ fn series(rec: &Recording, output: &str) -> Vec<f64> {
 /// Quaternion components are not compared at outputs where a run's `qw` is within 0.05 of
 /// zero: the recorded quaternion is the one with `qw ≥ 0`, which changes sign there, so
 /// runs on either side of the flip do not difference.
-fn errors(
-    s: &Sensitivities,
-    parameter: &str,
-    run: &dyn Fn(&[(String, f64)]) -> Recording,
-    p: f64,
-) -> Vec<(String, f64)> {
+fn errors(s: &Sensitivities, parameter: &str, run: &Runs<'_>, p: f64) -> Vec<(String, f64)> {
     let d = DELTA * p.abs();
     let at = |k: f64| run(&[(parameter.to_string(), p + k * d)]);
     let runs = [at(-2.0), at(-1.0), at(1.0), at(2.0)];
