@@ -188,35 +188,54 @@ pub fn values(
 }
 
 /// The mechanism (formulation `f`) built with parameter `name` at its four neighbouring
-/// values, every other parameter as in `base`.
+/// values around `value`, every other parameter as in `base`; re-derived on as many threads
+/// (each is a whole load of the file).
 fn neighbours(
     entry: &Entry,
     f: Formulation,
     base: &Overrides,
-    name: &str,
+    (name, value): (&str, f64),
 ) -> Result<Neighbours<'static>, ScenarioError> {
-    let value = values(entry, base, &[name.to_string()])?[0];
     let step = sensitivity::relative_step(value);
-    let mut mechs = Vec::with_capacity(4);
-    for k in [-2.0, -1.0, 1.0, 2.0] {
+    let load = |k: f64| -> Result<&'static (dyn Mechanism + Sync), ScenarioError> {
         let set = files::merged(base, &[(name.to_string(), value + k * step)]);
         let e = files::reparametrized(entry, &set).map_err(|e| {
             ScenarioError::Options(format!(
-                "--sensitivities: `{name}` = {} (a neighbour of {} used to differentiate): {e}",
+                "--sensitivities: `{name}` = {} (a neighbour of {value} used to differentiate): {e}",
                 value + k * step,
-                value
             ))
         })?;
-        let mech: &'static dyn Mechanism = crate::generic::mechanism(e, Some(f))?;
-        mechs.push(mech);
-    }
+        Ok(crate::generic::mechanism(e, Some(f))?)
+    };
+    let loaded: Vec<Result<&'static (dyn Mechanism + Sync), ScenarioError>> = std::thread::scope(|s| {
+        let handles: Vec<_> = [-2.0, -1.0, 1.0, 2.0]
+            .map(|k| s.spawn(move || load(k)))
+            .into();
+        handles
+            .into_iter()
+            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+            .collect()
+    });
+    let mechs = loaded.into_iter().collect::<Result<Vec<_>, _>>()?;
     let base_mech = crate::generic::mechanism(entry, Some(f))?;
-    Neighbours::new(
-        base_mech.info(),
-        step,
-        [mechs[0], mechs[1], mechs[2], mechs[3]],
-    )
-    .map_err(|e| ScenarioError::Options(format!("--sensitivities: `{name}`: {e}")))
+    let mechs: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[2], mechs[3]];
+    Neighbours::new(base_mech.info(), step, mechs)
+        .map_err(|e| ScenarioError::Options(format!("--sensitivities: `{name}`: {e}")))
+}
+
+/// Every parameter's [`neighbours`].
+fn all_neighbours(
+    entry: &Entry,
+    f: Formulation,
+    base: &Overrides,
+    parameters: &[String],
+) -> Result<Vec<Neighbours<'static>>, ScenarioError> {
+    let vals = values(entry, base, parameters)?;
+    parameters
+        .iter()
+        .zip(vals)
+        .map(|(p, v)| neighbours(entry, f, base, (p, v)))
+        .collect()
 }
 
 /// The run's settings a sensitivity pass needs.
@@ -239,10 +258,7 @@ pub fn kinematic(
 ) -> Result<Sensitivities, ScenarioError> {
     let mech = crate::generic::mechanism(entry, Some(span.formulation))?;
     let info = mech.info();
-    let all: Vec<Neighbours<'static>> = parameters
-        .iter()
-        .map(|p| neighbours(entry, span.formulation, base, p))
-        .collect::<Result<_, _>>()?;
+    let all = all_neighbours(entry, span.formulation, base, parameters)?;
     let n_out = output_count(span.t_end, span.output_step)?;
     let mut path = KinematicPath::<_>::new(mech, 0.0)?;
     let outputs = Outputs::new(mech, &free_bodies(&mech, 0.0, path.q()));
@@ -295,10 +311,7 @@ pub fn integrated(
     let mech = crate::generic::mechanism(entry, opts.formulation)?;
     let info = mech.info();
     let f = info.formulation;
-    let all: Vec<Neighbours<'static>> = parameters
-        .iter()
-        .map(|p| neighbours(entry, f, base, p))
-        .collect::<Result<_, _>>()?;
+    let all = all_neighbours(entry, f, base, parameters)?;
     let t_end = opts.t_end.unwrap_or(entry.t_end);
     let n_out = output_count(t_end, opts.output_step)?;
     let mut it = crate::generic::integrator(mech, opts)?;
