@@ -159,6 +159,28 @@ fn moved(x: &[f64], s: f64, dx: &[f64], out: &mut Vec<f64>) {
     out.extend(x.iter().zip(dx).map(|(a, b)| a + s * b));
 }
 
+/// `out = [M x + Φqᵀy; Φq x]` at `q`: the saddle-point matrix of the analyses times `(x, y)`.
+fn saddle_product(
+    mech: &dyn Mechanism,
+    t: f64,
+    q: &[f64],
+    (x, y): (&[f64], &[f64]),
+    s: &mut Scratch,
+    out: &mut [f64],
+) {
+    let info = mech.info();
+    s.fit(info);
+    mech.phi_q(q, t, &mut s.phi_q);
+    mech.mass(q, &mut s.mass);
+    let (top, bottom) = out.split_at_mut(info.n_coords);
+    mass_times(info, &s.mass, x, top);
+    phi_q_transpose_times(info, &s.phi_q, y, &mut s.vec_n);
+    for (a, b) in top.iter_mut().zip(&s.vec_n) {
+        *a += b;
+    }
+    phi_q_times(info, &s.phi_q, x, bottom);
+}
+
 /// The residuals of the saddle-point systems a kinematic analysis solves, at one state:
 /// `[M q̇ + Φqᵀν; Φq q̇ + Φt]` (least-energy velocity) and `[M q̈ + Φqᵀλ − Q; Φq q̈ − γ]`.
 pub(crate) fn velocity_residual(
@@ -168,20 +190,9 @@ pub(crate) fn velocity_residual(
     s: &mut Scratch,
     out: &mut [f64],
 ) {
-    let info = mech.info();
-    let n = info.n_coords;
-    s.fit(info);
-    mech.phi_q(q, t, &mut s.phi_q);
-    mech.mass(q, &mut s.mass);
-    let (top, bottom) = out.split_at_mut(n);
-    mass_times(info, &s.mass, qd, top);
-    phi_q_transpose_times(info, &s.phi_q, nu, &mut s.vec_n);
-    for (a, b) in top.iter_mut().zip(&s.vec_n) {
-        *a += b;
-    }
-    phi_q_times(info, &s.phi_q, qd, bottom);
+    saddle_product(mech, t, q, (qd, nu), s, out);
     mech.phi_t(q, t, &mut s.vec_m);
-    for (a, b) in bottom.iter_mut().zip(&s.vec_m) {
+    for (a, b) in out[mech.info().n_coords..].iter_mut().zip(&s.vec_m) {
         *a += b;
     }
 }
@@ -194,22 +205,12 @@ pub(crate) fn acceleration_residual(
     s: &mut Scratch,
     out: &mut [f64],
 ) {
-    let info = mech.info();
-    let n = info.n_coords;
-    s.fit(info);
-    mech.phi_q(q, t, &mut s.phi_q);
-    mech.mass(q, &mut s.mass);
-    let (top, bottom) = out.split_at_mut(n);
-    mass_times(info, &s.mass, qdd, top);
-    phi_q_transpose_times(info, &s.phi_q, lambda, &mut s.vec_n);
-    for (a, b) in top.iter_mut().zip(&s.vec_n) {
-        *a += b;
-    }
+    saddle_product(mech, t, q, (qdd, lambda), s, out);
+    let (top, bottom) = out.split_at_mut(mech.info().n_coords);
     mech.force(q, qd, t, &mut s.vec_n);
     for (a, b) in top.iter_mut().zip(&s.vec_n) {
         *a -= b;
     }
-    phi_q_times(info, &s.phi_q, qdd, bottom);
     mech.gamma(q, qd, t, &mut s.vec_m);
     for (a, b) in bottom.iter_mut().zip(&s.vec_m) {
         *a -= b;

@@ -154,6 +154,60 @@ impl Outputs {
     }
 }
 
+/// Work space of the outputs' derivatives at one output time.
+struct OutputRow {
+    d: Vec<f64>,
+    tmp: Vec<f64>,
+    q: Vec<f64>,
+    lambda: Vec<f64>,
+    phi_q: Vec<f64>,
+}
+
+impl OutputRow {
+    fn new(n_outputs: usize) -> Self {
+        OutputRow {
+            d: vec![0.0; n_outputs],
+            tmp: vec![0.0; n_outputs],
+            q: Vec::new(),
+            lambda: Vec::new(),
+            phi_q: Vec::new(),
+        }
+    }
+
+    /// The derivatives of `outputs` at `(q, λ)` moving by `(dq, dλ)` with the parameter of
+    /// `nb`, into `row` at every `stride`-th place from `first` (outputs major).
+    #[allow(clippy::too_many_arguments)]
+    fn fill(
+        &mut self,
+        outputs: &Outputs,
+        nb: &Neighbours<'_>,
+        t: f64,
+        (q, dq): (&[f64], &[f64]),
+        (lambda, dlambda): (&[f64], &[f64]),
+        row: &mut [f64],
+        (first, stride): (usize, usize),
+    ) -> Result<(), ScenarioError> {
+        let OutputRow {
+            d,
+            tmp,
+            q: qa,
+            lambda: la,
+            phi_q,
+        } = self;
+        nb.derivative(d, tmp, |m, e, v| {
+            qa.clear();
+            qa.extend(q.iter().zip(dq).map(|(a, b)| a + e * b));
+            la.clear();
+            la.extend(lambda.iter().zip(dlambda).map(|(a, b)| a + e * b));
+            outputs.values(m, t, (qa, la), phi_q, v)
+        })?;
+        for (i, v) in d.iter().enumerate() {
+            row[i * stride + first] = *v;
+        }
+        Ok(())
+    }
+}
+
 /// The value of each of `names` among `entry`'s parameters (as set by `base`), or an error
 /// naming the first unknown one with the closest known name: to check before a run.
 pub fn values(
@@ -205,17 +259,18 @@ fn neighbours(
                 value + k * step,
             ))
         })?;
-        Ok(crate::generic::mechanism(e, Some(f))?)
+        crate::generic::mechanism(e, Some(f))
     };
-    let loaded: Vec<Result<&'static (dyn Mechanism + Sync), ScenarioError>> = std::thread::scope(|s| {
-        let handles: Vec<_> = [-2.0, -1.0, 1.0, 2.0]
-            .map(|k| s.spawn(move || load(k)))
-            .into();
-        handles
-            .into_iter()
-            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-            .collect()
-    });
+    let loaded: Vec<Result<&'static (dyn Mechanism + Sync), ScenarioError>> =
+        std::thread::scope(|s| {
+            let handles: Vec<_> = [-2.0, -1.0, 1.0, 2.0]
+                .map(|k| s.spawn(move || load(k)))
+                .into();
+            handles
+                .into_iter()
+                .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+                .collect()
+        });
     let mechs = loaded.into_iter().collect::<Result<Vec<_>, _>>()?;
     let base_mech = crate::generic::mechanism(entry, Some(f))?;
     let mechs: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[2], mechs[3]];
@@ -270,8 +325,7 @@ pub fn kinematic(
         rows: Vec::with_capacity(n_out + 1),
     };
     let mut ds = StateSensitivity::zeros(info);
-    let (mut d, mut tmp) = (vec![0.0; names.len()], vec![0.0; names.len()]);
-    let (mut qa, mut la, mut phi_q) = (Vec::new(), Vec::new(), Vec::new());
+    let mut work = OutputRow::new(names.len());
     for k in 0..=n_out {
         if k > 0 {
             path.advance_to((k as f64 * span.output_step).min(span.t_end))?;
@@ -280,17 +334,15 @@ pub fn kinematic(
         let mut row = vec![0.0; names.len() * all.len()];
         for (j, nb) in all.iter().enumerate() {
             path.sensitivity(nb, &mut ds)?;
-            let (q, lambda) = (path.q(), path.lambda());
-            nb.derivative(&mut d, &mut tmp, |m, e, v| {
-                qa.clear();
-                qa.extend(q.iter().zip(&ds.dq).map(|(a, b)| a + e * b));
-                la.clear();
-                la.extend(lambda.iter().zip(&ds.dlambda).map(|(a, b)| a + e * b));
-                outputs.values(m, t, (&qa, &la), &mut phi_q, v)
-            })?;
-            for (i, v) in d.iter().enumerate() {
-                row[i * all.len() + j] = *v;
-            }
+            work.fill(
+                &outputs,
+                nb,
+                t,
+                (path.q(), &ds.dq),
+                (path.lambda(), &ds.dlambda),
+                &mut row,
+                (j, all.len()),
+            )?;
         }
         result.t.push(t);
         result.rows.push(row);
@@ -341,8 +393,7 @@ pub fn integrated(
     let (n, m) = (info.n_coords, info.n_constraints);
     let (mut qdd, mut lambda, mut dqdd, mut dlambda) =
         (vec![0.0; n], vec![0.0; m], vec![0.0; n], vec![0.0; m]);
-    let (mut d, mut tmp) = (vec![0.0; names.len()], vec![0.0; names.len()]);
-    let (mut qa, mut la, mut phi_q) = (Vec::new(), Vec::new(), Vec::new());
+    let mut work = OutputRow::new(names.len());
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(t_end);
         while it.step_toward(t_out)?.is_some() {
@@ -359,17 +410,15 @@ pub fn integrated(
                 (&mut qdd, &mut lambda),
                 (&mut dqdd, &mut dlambda),
             )?;
-            let dq = &s.state.dq;
-            nb.derivative(&mut d, &mut tmp, |m, e, v| {
-                qa.clear();
-                qa.extend(q.iter().zip(dq).map(|(a, b)| a + e * b));
-                la.clear();
-                la.extend(lambda.iter().zip(&dlambda).map(|(a, b)| a + e * b));
-                outputs.values(m, t, (&qa, &la), &mut phi_q, v)
-            })?;
-            for (i, v) in d.iter().enumerate() {
-                row[i * all.len() + j] = *v;
-            }
+            work.fill(
+                &outputs,
+                nb,
+                t,
+                (q, &s.state.dq),
+                (&lambda, &dlambda),
+                &mut row,
+                (j, all.len()),
+            )?;
         }
         result.t.push(t);
         result.rows.push(row);
