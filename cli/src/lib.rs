@@ -288,7 +288,7 @@ pub fn main(registry: &Registry) -> ExitCode {
             files,
             parameters,
             sensitivities,
-        } => match (mechanism, tolerances(rtol, atol)) {
+        } => match (mechanism, generic::tolerances(rtol, atol, "--")) {
             (_, Err(e)) => Err(e),
             (mechanism, Ok(tolerances)) => match mechanism {
             None if !sensitivities.sensitivities.is_empty() => Err("--sensitivities applies to a named mechanism or a file; for the paper's scenario, run scenes/paper.toml with it (e.g. `symbody run scenes/paper.toml --sensitivities r_platform,m_platform`)".to_string()),
@@ -829,25 +829,6 @@ fn print_work(
         wall.as_secs_f64() * 1e3,
         speed(span / wall.as_secs_f64())
     );
-}
-
-/// `--rtol`/`--atol`: step-size control when either is given (the other then takes its
-/// value), each positive and finite.
-fn tolerances(rtol: Option<f64>, atol: Option<f64>) -> Result<Option<(f64, f64)>, String> {
-    for (flag, v) in [("--rtol", rtol), ("--atol", atol)] {
-        if let Some(v) = v {
-            if !(v > 0.0 && v.is_finite()) {
-                return Err(format!(
-                    "{flag} {v}: a tolerance must be positive and finite (e.g. {flag} 1e-6)"
-                ));
-            }
-        }
-    }
-    Ok(match (rtol, atol) {
-        (Some(r), Some(a)) => Some((r, a)),
-        (Some(t), None) | (None, Some(t)) => Some((t, t)),
-        (None, None) => None,
-    })
 }
 
 /// How the steps were chosen, for a summary's time-span line. Every output time is landed

@@ -281,6 +281,13 @@ fn work_summary<'py>(
     d.set_item("path", path)?;
     d.set_item("steps", stats.steps)?;
     d.set_item("rejected_steps", stats.rejected_steps)?;
+    // With step-size control (`rtol`, `atol`), the range of the steps it took.
+    let (smallest, largest) = match stats.controlled {
+        true => (Some(stats.smallest_step), Some(stats.largest_step)),
+        false => (None, None),
+    };
+    d.set_item("smallest_step", smallest)?;
+    d.set_item("largest_step", largest)?;
     // On the kinematic path the solves are per output, not per step: its Newton iterations
     // and factorizations, and the simplified-Newton corrections that stand in for most.
     let k = kinematic.unwrap_or_default();
@@ -349,7 +356,7 @@ fn recording_answer<'py>(
 /// One run of `symbody simulate <name>`: its tables `bodies`, `joints`, `drivers` and
 /// `energy`, its summary, and the CSV files written into `out` if given.
 #[pyfunction]
-#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions, out, params, sensitivities))]
+#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions, out, params, sensitivities, rtol, atol))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -363,7 +370,10 @@ fn simulate<'py>(
     out: Option<PathBuf>,
     params: Option<BTreeMap<String, f64>>,
     sensitivities: Vec<String>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
 ) -> PyResult<Answer<'py>> {
+    let tolerances = generic::tolerances(rtol, atol, "").map_err(PyValueError::new_err)?;
     let base: Vec<(String, f64)> = params.clone().unwrap_or_default().into_iter().collect();
     let entry = find(&name, params)?;
     symbody::sensitivity::values(entry, &base, &sensitivities).map_err(py_err)?;
@@ -375,7 +385,7 @@ fn simulate<'py>(
         output_step,
         cross_singular: cross_singular_positions,
         newton_tolerance: None,
-        tolerances: None,
+        tolerances,
     };
     out_folder(out.as_deref())?;
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;

@@ -1,7 +1,7 @@
 """Sensitivities from Python (`sensitivities=` on `simulate` and `run`, as `--sensitivities`):
 the table's columns, its values against differences of whole runs at p ± δ, p ± 2δ
 (Richardson-extrapolated central differences, δ = 1e-3·p, every solve done again), and bad
-names refused."""
+names refused; and step-size control (`rtol`, `atol` on `simulate`)."""
 
 import numpy as np
 import pytest
@@ -52,3 +52,18 @@ def test_unknown_names_are_refused_with_the_closest():
         symbody.simulate("spherical_pendulum", t_end=0.1, sensitivities=["ll"])
     with pytest.raises(TypeError, match="list of parameter names"):
         symbody.simulate("spherical_pendulum", t_end=0.1, sensitivities="l")
+
+
+def test_step_size_control_from_python():
+    """`rtol`/`atol` as `--rtol`/`--atol`: the error against a tight run shrinks with the
+    tolerance, and the summary reports the range of the steps taken."""
+    reference = symbody.simulate("spherical_pendulum", t_end=1.0, step=1e-5)["bodies"]["bob.x"]
+    errors = []
+    for rtol in (1e-4, 1e-6):
+        run = symbody.simulate("spherical_pendulum", t_end=1.0, rtol=rtol)
+        assert 0 < run.summary["smallest_step"] <= run.summary["largest_step"]
+        errors.append(np.abs(run["bodies"]["bob.x"] - reference).max())
+    assert errors[1] < errors[0] / 10, errors
+    assert symbody.simulate("spherical_pendulum", t_end=0.1).summary["smallest_step"] is None
+    with pytest.raises(ValueError, match="rtol 0: a tolerance must be positive"):
+        symbody.simulate("spherical_pendulum", t_end=0.1, rtol=0.0)

@@ -235,7 +235,12 @@ impl fmt::Display for Error {
                 for (i, r) in rows.iter().enumerate() {
                     write!(f, "{} {r}", if i == 0 { "" } else { "," })?;
                 }
-                Ok(())
+                write!(
+                    f,
+                    ". If the mechanism passes this position by design (a linkage lying flat), \
+                     let the solver drop the dependent rows there: `--cross-singular-positions` \
+                     (scenes: `[solver] cross_singular_positions = true`)"
+                )
             }
             Error::InconsistentConstraints {
                 time,

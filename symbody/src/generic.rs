@@ -592,6 +592,30 @@ pub(crate) fn integrator(
     Ok(builder.build(mech)?)
 }
 
+/// Step-size control's `(rtol, atol)` from the two optional tolerances (either alone sets
+/// both; neither: a fixed step), or an error naming the one that is not positive and
+/// finite, written as `{prefix}rtol` (`--` on the command line).
+pub fn tolerances(
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    prefix: &str,
+) -> Result<Option<(f64, f64)>, String> {
+    for (name, v) in [("rtol", rtol), ("atol", atol)] {
+        if let Some(v) = v {
+            if !(v > 0.0 && v.is_finite()) {
+                return Err(format!(
+                    "{prefix}{name} {v}: a tolerance must be positive and finite (e.g. {prefix}{name} 1e-6)"
+                ));
+            }
+        }
+    }
+    Ok(match (rtol, atol) {
+        (Some(r), Some(a)) => Some((r, a)),
+        (Some(t), None) | (None, Some(t)) => Some((t, t)),
+        (None, None) => None,
+    })
+}
+
 /// The settings of every saddle-point solve of a run (the consistent start, the steps, the
 /// multipliers at each output and the energy meter's samples): all must cross a singular
 /// position where one does.

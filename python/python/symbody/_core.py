@@ -133,6 +133,8 @@ def simulate(
     out: Optional[PathLike] = None,
     params: Optional[Mapping[str, float]] = None,
     sensitivities: Optional[Sequence[str]] = None,
+    rtol: Optional[float] = None,
+    atol: Optional[float] = None,
 ) -> Results:
     """Simulates the mechanism ``name`` as ``symbody simulate <name>`` does: a registered
     name, or a mechanism file's path (a ``str`` ending in ``.toml`` or with a folder, or a
@@ -157,6 +159,9 @@ def simulate(
     ``sensitivities``: names of the file's parameters; the results then also have the table
     ``sensitivities`` (as ``--sensitivities`` writes it): ``t``, then ``<output>/<parameter>``,
     the derivative of each body pose, joint wrench and driver effort with respect to each.
+    ``rtol``, ``atol``: step-size control on positions and velocities instead of the fixed
+    ``step`` (which becomes the first step tried), as ``--rtol``/``--atol``; either alone sets
+    both. The summary's ``steps`` counts the steps taken.
     """
     return _results(
         _native.simulate(
@@ -170,6 +175,8 @@ def simulate(
             None if out is None else os.fspath(out),
             _params(params),
             _names(sensitivities),
+            rtol,
+            atol,
         )
     )
 
