@@ -65,11 +65,17 @@ impl Sensitivities {
         }
     }
 
-    /// Writes `sensitivities.csv` into `dir`.
+    /// Writes `sensitivities.csv` into `dir` (quoted where CSV needs it, as the run's
+    /// tables; shortest round-trip numbers).
     pub fn write(&self, dir: &Path) -> std::io::Result<std::path::PathBuf> {
         let path = dir.join("sensitivities.csv");
-        let header = self.columns().join(",");
-        crate::output::write(&path, &header, self.table().rows.into_iter())?;
+        let mut w = csv::Writer::from_path(&path)?;
+        let table = self.table();
+        w.write_record(&table.columns)?;
+        for row in &table.rows {
+            w.write_record(row.iter().map(|v| format!("{v:?}")))?;
+        }
+        w.flush()?;
         Ok(path)
     }
 }
