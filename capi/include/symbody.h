@@ -514,6 +514,28 @@ int symbody_session_new_ex(const char *name,
                            struct SymbodySession **out);
 
 /**
+ * As `symbody_session_new_ex`, with step-size control instead of the fixed step: every
+ * step's local error estimate in positions and velocities is kept within `rtol` (relative)
+ * and `atol` (absolute), `step` is the first step tried, and every time asked of
+ * `symbody_session_advance_to` is landed on exactly. Velocities are projected after every
+ * step (the control needs it), whatever the flags say.
+ *
+ * Errors: those of `symbody_session_new_ex`, and `SYMBODY_STATUS_INVALID_ARGUMENT` for a
+ * tolerance that is not positive and finite.
+ *
+ * # Safety
+ * As `symbody_session_new`.
+ */
+int symbody_session_new_controlled(const char *name,
+                                   int formulation,
+                                   double alpha,
+                                   double step,
+                                   double rtol,
+                                   double atol,
+                                   uint32_t flags,
+                                   struct SymbodySession **out);
+
+/**
  * As `symbody_session_new_ex` for the mechanism file at `path`, always a path whatever its
  * name (see `symbody_mechanism_from_file`): its equations run interpreted, nothing compiled.
  *

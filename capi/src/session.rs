@@ -72,7 +72,54 @@ pub unsafe extern "C" fn symbody_session_new_ex(
     out: *mut *mut SymbodySession,
 ) -> c_int {
     // SAFETY: the same contract.
-    unsafe { new_session(name, "name", formulation, alpha, step, flags, out, &lookup) }
+    unsafe {
+        new_session(
+            name,
+            "name",
+            formulation,
+            (alpha, step, None),
+            flags,
+            out,
+            &lookup,
+        )
+    }
+}
+
+/// As `symbody_session_new_ex`, with step-size control instead of the fixed step: every
+/// step's local error estimate in positions and velocities is kept within `rtol` (relative)
+/// and `atol` (absolute), `step` is the first step tried, and every time asked of
+/// `symbody_session_advance_to` is landed on exactly. Velocities are projected after every
+/// step (the control needs it), whatever the flags say.
+///
+/// Errors: those of `symbody_session_new_ex`, and `SYMBODY_STATUS_INVALID_ARGUMENT` for a
+/// tolerance that is not positive and finite.
+///
+/// # Safety
+/// As `symbody_session_new`.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn symbody_session_new_controlled(
+    name: *const c_char,
+    formulation: c_int,
+    alpha: f64,
+    step: f64,
+    rtol: f64,
+    atol: f64,
+    flags: u32,
+    out: *mut *mut SymbodySession,
+) -> c_int {
+    // SAFETY: the same contract.
+    unsafe {
+        new_session(
+            name,
+            "name",
+            formulation,
+            (alpha, step, Some((rtol, atol))),
+            flags,
+            out,
+            &lookup,
+        )
+    }
 }
 
 /// As `symbody_session_new_ex` for the mechanism file at `path`, always a path whatever its
@@ -99,8 +146,7 @@ pub unsafe extern "C" fn symbody_session_from_file(
             path,
             "path",
             formulation,
-            alpha,
-            step,
+            (alpha, step, None),
             flags,
             out,
             &lookup_file,
@@ -136,7 +182,17 @@ pub unsafe extern "C" fn symbody_session_with_parameters(
         lookup_with(what, f, &params)
     };
     // SAFETY: the same contract.
-    unsafe { new_session(name, "name", formulation, alpha, step, flags, out, &find) }
+    unsafe {
+        new_session(
+            name,
+            "name",
+            formulation,
+            (alpha, step, None),
+            flags,
+            out,
+            &find,
+        )
+    }
 }
 
 /// Builds a session of what `what` names, resolved by `find`.
@@ -148,8 +204,7 @@ unsafe fn new_session(
     what: *const c_char,
     arg_name: &str,
     formulation: c_int,
-    alpha: f64,
-    step: f64,
+    (alpha, step, tolerances): (f64, f64, Option<(f64, f64)>),
     flags: u32,
     out: *mut *mut SymbodySession,
     find: &dyn Fn(&str, c_int) -> Found,
@@ -167,6 +222,10 @@ unsafe fn new_session(
                 format!("flags: unknown bits {:#x}; the flags are SYMBODY_CROSS_SINGULAR_POSITIONS (1) and SYMBODY_PROJECT_VELOCITIES (2)", flags & !known),
             ));
         }
+        if let Some((rtol, atol)) = tolerances {
+            symbody::generic::tolerances(Some(rtol), Some(atol), "")
+                .map_err(|m| Failure::new(SymbodyStatus::InvalidArgument, m))?;
+        }
         // Resolves the name or file and the formulation with this API's statuses.
         let (entry, mech) = find(what, formulation)?;
         let settings = Settings {
@@ -175,6 +234,7 @@ unsafe fn new_session(
             step,
             cross_singular_positions: flags & SYMBODY_CROSS_SINGULAR_POSITIONS != 0,
             project_velocities: flags & SYMBODY_PROJECT_VELOCITIES != 0,
+            tolerances,
         };
         let session = Session::with_mechanism(mech, settings)
             .map_err(|e| Failure::from_session(e, SymbodyStatus::InvalidArgument))?;

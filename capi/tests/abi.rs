@@ -1126,3 +1126,61 @@ fn the_example_files_run_from_c() {
         }
     }
 }
+
+#[test]
+fn a_controlled_session_is_the_rust_sessions_and_refuses_bad_tolerances() {
+    let name = cstr("spherical_pendulum");
+    let d = Settings::default();
+    // SAFETY: a valid string, out pointers and buffers of the stated sizes.
+    unsafe {
+        let mut s = null_mut();
+        let rc = symbody_session_new_controlled(
+            name.as_ptr(),
+            0,
+            d.alpha,
+            d.step,
+            1e-6,
+            1e-8,
+            0,
+            &mut s,
+        );
+        assert_eq!(rc, OK, "{}", last_error());
+        assert_eq!(symbody_session_advance_to(s, 0.37), OK, "{}", last_error());
+        assert_eq!(symbody_session_t(s), 0.37, "the time asked is landed on");
+        let mut reference = Session::new(
+            &symbody_mechanisms::REGISTRY,
+            "spherical_pendulum",
+            Settings {
+                tolerances: Some((1e-6, 1e-8)),
+                ..Settings::default()
+            },
+        )
+        .unwrap();
+        reference.advance_to(0.37).unwrap();
+        let n = reference.q().len();
+        let mut q = vec![0.0; n];
+        assert_eq!(symbody_session_q(s, q.as_mut_ptr(), n), OK);
+        assert_eq!(q, reference.q());
+        symbody_session_free(s);
+
+        for (rtol, atol) in [(0.0, 1e-8), (1e-6, f64::NAN), (-1.0, 1.0)] {
+            let rc = symbody_session_new_controlled(
+                name.as_ptr(),
+                0,
+                d.alpha,
+                d.step,
+                rtol,
+                atol,
+                0,
+                &mut s,
+            );
+            assert_eq!(rc, status(SymbodyStatus::InvalidArgument));
+            assert!(s.is_null());
+            assert!(
+                last_error().contains("a tolerance must be positive"),
+                "{}",
+                last_error()
+            );
+        }
+    }
+}

@@ -788,7 +788,8 @@ struct Session {
 impl Session {
     #[new]
     // No defaults here: `symbody.Session` gives `simulate`'s (`defaults()`).
-    #[pyo3(signature = (name, formulation, alpha, step, project_velocities, cross_singular_positions, params))]
+    #[pyo3(signature = (name, formulation, alpha, step, project_velocities, cross_singular_positions, params, rtol, atol))]
+    #[allow(clippy::too_many_arguments)]
     fn new(
         name: Target,
         formulation: Option<&str>,
@@ -797,7 +798,10 @@ impl Session {
         project_velocities: bool,
         cross_singular_positions: bool,
         params: Option<BTreeMap<String, f64>>,
+        rtol: Option<f64>,
+        atol: Option<f64>,
     ) -> PyResult<Self> {
+        let tolerances = generic::tolerances(rtol, atol, "").map_err(PyValueError::new_err)?;
         let entry = find(&name, params)?;
         let mech = generic::mechanism(entry, self::formulation(formulation)?).map_err(py_err)?;
         let settings = session::Settings {
@@ -806,6 +810,7 @@ impl Session {
             step,
             project_velocities,
             cross_singular_positions,
+            tolerances,
         };
         Ok(Session {
             inner: session::Session::with_mechanism(mech, settings).map_err(py_err)?,

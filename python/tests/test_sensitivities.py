@@ -67,3 +67,13 @@ def test_step_size_control_from_python():
     assert symbody.simulate("spherical_pendulum", t_end=0.1).summary["smallest_step"] is None
     with pytest.raises(ValueError, match="rtol 0: a tolerance must be positive"):
         symbody.simulate("spherical_pendulum", t_end=0.1, rtol=0.0)
+
+
+def test_a_session_with_step_size_control_lands_on_the_times_asked():
+    s = symbody.Session("spherical_pendulum", rtol=1e-6, atol=1e-8)
+    s.advance_to(0.37)
+    assert s.t == 0.37
+    run = symbody.simulate("spherical_pendulum", t_end=0.37, output_step=0.37, rtol=1e-6, atol=1e-8)
+    assert np.allclose(s.q[:3], [run["bodies"][c][-1] for c in ("bob.x", "bob.y", "bob.z")], atol=1e-6)
+    with pytest.raises(ValueError, match="atol -1: a tolerance must be positive"):
+        symbody.Session("spherical_pendulum", rtol=1e-6, atol=-1.0)

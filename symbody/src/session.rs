@@ -28,6 +28,9 @@ pub struct Settings {
     /// Pass singular positions (`generic::Options::cross_singular`): the step and the
     /// multipliers drop rows that are dependent at the state.
     pub cross_singular_positions: bool,
+    /// Step-size control's `(rtol, atol)` (`HhtBuilder::tolerances`; `step` is then the
+    /// first step tried); `None`: the fixed `step`.
+    pub tolerances: Option<(f64, f64)>,
 }
 
 impl Default for Settings {
@@ -38,6 +41,7 @@ impl Default for Settings {
             step: 1e-3,
             project_velocities: false,
             cross_singular_positions: false,
+            tolerances: None,
         }
     }
 }
@@ -76,13 +80,16 @@ impl Session {
     pub fn with_mechanism(mech: Dyn, s: Settings) -> Result<Session, Error> {
         let info = mech.info();
         let solves = crate::generic::solve_settings(s.cross_singular_positions);
-        let it = HhtBuilder::new()
+        let mut builder = HhtBuilder::new()
             .alpha(s.alpha)
             .step(s.step)
             .qd0(info.qd0)
             .project_velocities(s.project_velocities)
-            .kinematic_settings(solves)
-            .build(mech)?;
+            .kinematic_settings(solves);
+        if let Some((rtol, atol)) = s.tolerances {
+            builder = builder.tolerances(rtol, atol);
+        }
+        let it = builder.build(mech)?;
         Ok(Session {
             it,
             kinematics: Kinematics::with_settings(info, solves)?,

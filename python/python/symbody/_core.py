@@ -436,7 +436,8 @@ class Session(_native.Session):
     the constraints after each step), so a session and a run of the same mechanism report
     the same numbers. The paper's runs use ``alpha=-0.05, project_velocities=False``.
     ``formulation`` is ``"paper"`` or ``"exact"`` (default: the mechanism's first);
-    ``cross_singular_positions`` and ``params`` as in :func:`simulate`.
+    ``cross_singular_positions``, ``params``, ``rtol`` and ``atol`` (step-size control; every
+    time given to ``advance_to`` is landed on exactly) as in :func:`simulate`.
 
     State: ``t``, ``q``, ``qd``, ``coord_names``. Stepping: ``step()``, ``advance_to(t)``.
     Forces of the current state: ``driver_effort(name)``, ``driver_efforts()``
@@ -453,6 +454,8 @@ class Session(_native.Session):
         project_velocities: bool = _DEFAULTS["project_velocities"],
         cross_singular_positions: bool = False,
         params: Optional[Mapping[str, float]] = None,
+        rtol: Optional[float] = None,
+        atol: Optional[float] = None,
     ) -> "Session":
         return super().__new__(
             cls,
@@ -463,6 +466,8 @@ class Session(_native.Session):
             project_velocities,
             cross_singular_positions,
             _params(params),
+            rtol,
+            atol,
         )
 
 
