@@ -223,3 +223,30 @@ fn random_and_degenerate_parameter_values_never_panic() {
     eprintln!("parameter sets: {built} built ({ran} ran 0.02 s), {refused} refused");
     assert!(built > 0 && refused > 0, "both outcomes are exercised");
 }
+
+/// A set that changes the structure the generator found is reported with what changed:
+/// the 3-RPS platform with its second base joint put on the first one's (φ2 = φ1 = 90°) has
+/// two legs on one line, so their rows depend on each other and the platform gains freedom.
+#[test]
+fn a_set_that_changes_the_structure_says_what_changed() {
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/examples/mechanisms/three_rps.toml"
+    );
+    let base = files::load(std::path::Path::new(file)).unwrap().entry;
+    assert_eq!(
+        files::note(base).map(|n| n.contains("with these values")),
+        Some(false)
+    );
+    let moved = files::reparametrized(base, &set("phi2", std::f64::consts::FRAC_PI_2)).unwrap();
+    let note = files::note(moved).unwrap();
+    assert!(
+        note.contains("the dependent rows change from none to"),
+        "{note}"
+    );
+    assert!(note.contains("leg2"), "{note}");
+    assert!(note.contains("the DOF change from 0 to"), "{note}");
+    // Set to the file's own value, nothing changes and nothing is said about structure.
+    let same = files::reparametrized(base, &set("phi2", 210f64.to_radians())).unwrap();
+    assert!(!files::note(same).unwrap().contains("with these values"));
+}
