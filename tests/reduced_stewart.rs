@@ -134,3 +134,64 @@ fn the_paper_scenario_on_the_reduced_model_records_the_same_series() {
     );
     assert!(pose <= 1e-12, "{pose:e}");
 }
+
+/// `Options::reduce` (scenes: `[solver] reduce = "auto"`): a generic run integrates the
+/// reduced model of every mechanism that has one and records the same series as the full
+/// model's run with the same settings, read back at every step.
+#[test]
+fn generic_runs_on_the_reduced_model_record_the_full_models_series() {
+    use symbody::generic::{self, Options};
+    for (name, n_reduced) in [("stewart_6_6", 60), ("slider_crank", 0), ("oscillators", 0)] {
+        let entry = generic::find(&symbody_mechanisms::REGISTRY, name).unwrap();
+        let opts = Options {
+            t_end: Some(0.5),
+            ..Options::default()
+        };
+        let full = generic::run(entry, &opts).unwrap();
+        let red = generic::run(
+            entry,
+            &Options {
+                reduce: true,
+                ..opts
+            },
+        )
+        .unwrap();
+        assert_eq!(full.reduced, None);
+        let n = red.reduced.expect("integrated reduced");
+        assert!(n < full.info.n_coords, "{name}: {n} coordinates");
+        if n_reduced > 0 {
+            assert_eq!(n, n_reduced);
+        }
+        assert_eq!(red.t, full.t);
+        let diff = |a: &[Vec<f64>], b: &[Vec<f64>]| {
+            let scale = b.iter().flatten().fold(1e-300f64, |m, v| m.max(v.abs()));
+            a.iter()
+                .flatten()
+                .zip(b.iter().flatten())
+                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs() / scale))
+        };
+        let flat = |r: &generic::Recording| -> Vec<Vec<f64>> {
+            r.wrenches
+                .iter()
+                .map(|w| {
+                    w.iter()
+                        .flat_map(|w| w.force.into_iter().chain(w.moment))
+                        .collect()
+                })
+                .collect()
+        };
+        let (q, efforts, wrenches) = (
+            diff(&red.q, &full.q),
+            diff(&red.efforts, &full.efforts),
+            diff(&flat(&red), &flat(&full)),
+        );
+        println!(
+            "{name}: reduced {n} of {}: q {q:.1e}, efforts {efforts:.1e}, wrenches {wrenches:.1e}",
+            full.info.n_coords
+        );
+        assert!(
+            q.max(efforts).max(wrenches) <= 1e-8,
+            "{name}: {q:e} {efforts:e} {wrenches:e}"
+        );
+    }
+}

@@ -307,6 +307,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                     output_step,
                     cross_singular: cross_singular_positions,
                     newton_tolerance: None,
+                    reduce: false,
                 };
                 parameters.parse().and_then(|p| {
                     simulate_named(registry, &name, &p, &opts, [velocities, accelerations], &files, &sensitivities.sensitivities)
@@ -702,6 +703,12 @@ fn report_named(
     );
     if let Some(origin) = origin {
         say!("  equations        {origin}");
+    }
+    if let Some(n) = rec.reduced {
+        say!(
+            "  reduced model    {n} coordinates integrated (of {}), read back in full at every step",
+            info.n_coords
+        );
     }
     say!("  time span        0 .. {span:.6} s, {method}");
     print_work(&rec.stats, rec.kinematic, span, rec.wall);

@@ -386,6 +386,7 @@ fn simulate<'py>(
         cross_singular: cross_singular_positions,
         newton_tolerance: None,
         tolerances,
+        reduce: false,
     };
     out_folder(out.as_deref())?;
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;

@@ -12,7 +12,7 @@ use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, Entry, EulerWarning,
     Formulation, HhtBuilder, Integrator, JointKind, KinematicPath, KinematicSettings, Mechanism,
-    MechanismInfo, PathStats, Pivots, Registry, ResidualWatch, Rotation, Stats, Wrench,
+    MechanismInfo, PathStats, Pivots, Reduction, Registry, ResidualWatch, Rotation, Stats, Wrench,
 };
 
 /// Why a run could not be made: an option out of range or not available for the mechanism
@@ -45,6 +45,11 @@ pub struct Options {
     /// absolute) and on |Φ|∞ (`None`: the integrator's defaults, 1e-6 and 1e-10). Tighter
     /// makes a run a smooth function of its parameters, as differencing whole runs needs.
     pub newton_tolerance: Option<f64>,
+    /// Integrate the mechanism's reduced model where the generator emitted one (rows
+    /// qᵢ − qⱼ − c(t) substituted away, docs/design.md decision 24), read back in the full
+    /// model's terms at every step: the same motion and forces with fewer coordinates.
+    /// Without a reduced model the full one is integrated.
+    pub reduce: bool,
 }
 
 impl Default for Options {
@@ -63,6 +68,7 @@ impl Default for Options {
             output_step: 0.01,
             cross_singular: false,
             newton_tolerance: None,
+            reduce: false,
         }
     }
 }
@@ -118,6 +124,9 @@ pub struct Recording {
     pub stats: Stats,
     /// The kinematic path's counters when the run was not integrated ([`run_kinematic`]).
     pub kinematic: Option<PathStats>,
+    /// The coordinates integrated when the run integrated the reduced model
+    /// ([`Options::reduce`]); `None`: the full model.
+    pub reduced: Option<usize>,
     /// Largest |Φ|∞ at the outputs.
     pub max_phi: f64,
     /// Largest |Φq q̇ + Φt|∞ at the outputs.
@@ -329,9 +338,12 @@ pub fn run_observed(
     observed(entry, opts, obs, integrate)
 }
 
+/// A generated reduced mechanism and the way back to its full model.
+type Reduced = (&'static (dyn Mechanism + Sync), &'static Reduction);
+
 /// The loop of a run: outputs at `k · output_step` (k = 0..=n_out) up to `t_end`.
 type Loop = fn(
-    &'static (dyn Mechanism + Sync),
+    (&'static (dyn Mechanism + Sync), Option<Reduced>),
     &Options,
     (f64, usize),
     &mut Recording,
@@ -349,9 +361,14 @@ fn observed(
     let t_end = opts.t_end.unwrap_or(entry.t_end);
     let n_out = output_count(t_end, opts.output_step)?;
     let mut rec = Recording::new(mech.info());
+    let reduced = match opts.reduce {
+        true => entry.reduced(mech.info().formulation),
+        false => None,
+    };
+    rec.reduced = reduced.map(|(r, _)| r.info().n_coords);
     obs.start(&mut rec)?;
     let start = Instant::now();
-    let result = body(mech, opts, (t_end, n_out), &mut rec, obs);
+    let result = body((mech, reduced), opts, (t_end, n_out), &mut rec, obs);
     rec.wall = start.elapsed();
     match result {
         Ok(()) => Ok(rec),
@@ -364,19 +381,22 @@ fn observed(
 
 /// The integration loop of [`run_observed`].
 fn integrate(
-    mech: &'static (dyn Mechanism + Sync),
+    (mech, reduced): (&'static (dyn Mechanism + Sync), Option<Reduced>),
     opts: &Options,
     (t_end, n_out): (f64, usize),
     rec: &mut Recording,
     obs: &mut dyn Observer,
 ) -> Result<(), Error> {
     let info = mech.info();
-    let mut it = integrator(mech, opts)?;
+    let mut it = integrator(reduced.map_or(mech, |(r, _)| r), opts)?;
+    // The full model's state, which every output and the meter see.
+    let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);
+    full_state(&it, reduced, &mut q, &mut qd)?;
     let mut meter: EnergyMeter =
         EnergyMeter::with_settings(info, solve_settings(opts.cross_singular))?;
     let mut watch = ResidualWatch::new(info);
-    let modes = mode_watch(mech, it.q())?;
-    let mut sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
+    let modes = mode_watch(mech, &q)?;
+    let mut sample = meter.record(&mech, it.t(), &q, &qd)?;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(t_end);
         // One accepted step per call, so the meter sees every step.
@@ -389,23 +409,38 @@ fn integrate(
             if stepped?.is_none() {
                 break;
             }
+            full_state(&it, reduced, &mut q, &mut qd)?;
             if let Some(w) = &modes {
-                w.check(it.q(), it.t())?;
+                w.check(&q, it.t())?;
             }
-            sample = meter.record(&mech, it.t(), it.q(), it.qd())?;
+            sample = meter.record(&mech, it.t(), &q, &qd)?;
             if obs.progress(it.t()).is_break() {
                 return Err(ScenarioError::Interrupted { time: it.t() });
             }
         }
-        record(
-            rec,
-            &meter,
-            &mut watch,
-            mech,
-            (it.t(), it.q(), it.qd()),
-            sample,
-        )?;
+        record(rec, &meter, &mut watch, mech, (it.t(), &q, &qd), sample)?;
         obs.output(rec)?;
+    }
+    Ok(())
+}
+
+/// The full model's state `(q, q̇)` from the integrator's, expanded when it integrates the
+/// reduced model.
+fn full_state(
+    it: &Integrator<&'static (dyn Mechanism + Sync)>,
+    reduced: Option<Reduced>,
+    q: &mut [f64],
+    qd: &mut [f64],
+) -> Result<(), Error> {
+    match reduced {
+        None => {
+            q.copy_from_slice(it.q());
+            qd.copy_from_slice(it.qd());
+        }
+        Some((_, r)) => {
+            r.expand(it.q(), it.t(), 0, q)?;
+            r.expand(it.qd(), it.t(), 1, qd)?;
+        }
     }
     Ok(())
 }
@@ -454,7 +489,7 @@ fn counted<M: Mechanism>(path: &KinematicPath<M>, rec: &Recording) -> PathStats 
 
 /// The loop of [`run_kinematic_observed`].
 fn follow_path(
-    mech: &'static (dyn Mechanism + Sync),
+    (mech, _): (&'static (dyn Mechanism + Sync), Option<Reduced>),
     opts: &Options,
     (t_end, n_out): (f64, usize),
     rec: &mut Recording,
@@ -554,6 +589,7 @@ impl Recording {
             energy: Vec::new(),
             stats: Stats::default(),
             kinematic: None,
+            reduced: None,
             max_phi: 0.0,
             max_velocity_residual: 0.0,
             max_norm_error: 0.0,

@@ -62,6 +62,7 @@ struct RawSolver {
     atol: Option<Spanned<f64>>,
     alpha: Option<Spanned<f64>>,
     cross_singular_positions: Option<Spanned<bool>>,
+    reduce: Option<Spanned<String>>,
 }
 
 /// Reads and checks the scene in `text`; `file` names it in messages.
@@ -317,6 +318,7 @@ fn check(
         atol: None,
         alpha: None,
         cross_singular_positions: None,
+        reduce: None,
     });
     let path = match &solver.path {
         None => PathRequest::Auto,
@@ -332,6 +334,22 @@ fn check(
                     "use \"auto\" (kinematic when exact, else integrate), \"kinematic\" or \"integrate\"",
                 ));
                 PathRequest::Auto
+            }
+        },
+    };
+    let reduce = match &solver.reduce {
+        None => false,
+        Some(r) => match r.get_ref().as_str() {
+            "auto" => true,
+            "off" => false,
+            other => {
+                errors.push(map.diag(
+                    r.span(),
+                    "[solver] `reduce`",
+                    format!("unknown reduce `{other}`"),
+                    "use \"auto\" (integrate the generated reduced model where there is one) or \"off\"",
+                ));
+                false
             }
         },
     };
@@ -401,6 +419,7 @@ fn check(
         tolerances,
         alpha,
         cross_singular,
+        reduce,
     })
 }
 

@@ -253,5 +253,6 @@ pub fn options(scene: &Scene) -> generic::Options {
         output_step: scene.output_step,
         cross_singular: scene.cross_singular,
         newton_tolerance: None,
+        reduce: scene.reduce,
     }
 }
