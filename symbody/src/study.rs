@@ -788,49 +788,14 @@ mod tests {
         assert!(got[1] > got[0], "the platform moves: {got:?}");
         let conditions = fk_conditions(info, &rec.q).unwrap();
         assert_eq!(got[2], conditions.iter().copied().fold(0.0, f64::max));
-        // At the first output (the home pose), by differences of the lengths |p + R b − a| for small moves
-        // (δp, δθ) of the platform, δθ a rotation vector applied on the left.
+        // At the first output (the home pose), by differences of the lengths |p + R b − a|
+        // for small moves of the platform (symbody_testkit::platform).
         let platform = info.platform.unwrap();
         let body = &info.bodies[platform.body];
         let q0 = &rec.q[0][..];
         let p0 = Vector3::from_column_slice(&q0[body.coord_offset..body.coord_offset + 3]);
         let r0 = symbody_runtime::rotation_matrix(body, q0).unwrap();
-        let lengths = |d: &[f64; 6]| -> [f64; 6] {
-            let turn = nalgebra::Rotation3::new(Vector3::new(d[3], d[4], d[5]));
-            let (p, r) = (p0 + Vector3::new(d[0], d[1], d[2]), turn.matrix() * r0);
-            std::array::from_fn(|i| {
-                let leg = &platform.legs[i];
-                (p + r * Vector3::from(leg.platform) - Vector3::from(leg.base)).norm()
-            })
-        };
-        let tops: Vec<Vector3<f64>> = platform
-            .legs
-            .iter()
-            .map(|l| Vector3::from(l.platform))
-            .collect();
-        let centre = tops.iter().sum::<Vector3<f64>>() / 6.0;
-        let radius = (tops
-            .iter()
-            .map(|b| (b - centre).norm_squared())
-            .sum::<f64>()
-            / 6.0)
-            .sqrt();
-        let h = 1e-6;
-        let jacobian = nalgebra::Matrix6::from_fn(|i, k| {
-            let mut plus = [0.0; 6];
-            let mut minus = [0.0; 6];
-            plus[k] = h;
-            minus[k] = -h;
-            let slope = (lengths(&plus)[i] - lengths(&minus)[i]) / (2.0 * h);
-            // Rotation columns per radian times the radius: metres, like the others.
-            if k >= 3 {
-                slope / radius
-            } else {
-                slope
-            }
-        });
-        let s = jacobian.singular_values();
-        let want = s.max() / s.min();
+        let want = symbody_testkit::platform::fk_condition(platform.legs, p0, r0);
         assert!(
             (conditions[0] - want).abs() < 1e-7 * want,
             "{} vs {want}",

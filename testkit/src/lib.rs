@@ -1,7 +1,8 @@
 //! Fixtures for tests and benchmarks, kept out of every library's public API: hand-written
 //! mechanisms ([`models`]), a counting allocator ([`alloc`]), a reproducible random generator
 //! and dense views of sparse outputs ([`common`]), the Newton–Euler reference of the paper's
-//! scenario ([`newton_euler`]) and a hand-written Stewart Φ for AD ([`reference`]).
+//! scenario ([`newton_euler`]), a hand-written Stewart Φ for AD ([`reference`]) and a
+//! six-leg platform's leg-length Jacobian by differences ([`platform`]).
 //!
 //! Only ever a dev-dependency. `models.rs` is also compiled into the runtime's own unit tests
 //! (`#[cfg(test)]`, through `#[path]`): those tests reach private items, and a dev-dependency
@@ -16,4 +17,5 @@ pub mod alloc;
 pub mod common;
 pub mod models;
 pub mod newton_euler;
+pub mod platform;
 pub mod reference;
