@@ -314,6 +314,54 @@ pub struct HhtSensitivity<K: KktSolver = crate::kkt::SchurKkt> {
     lambda: Vec<f64>,
     v_tilde: Vec<f64>,
     s: Scratch,
+    w: Work,
+}
+
+/// Work space of [`HhtSensitivity`], sized once: a step allocates nothing.
+struct Work {
+    /// Right-hand sides and stencil values, `n + m`.
+    rhs: Vec<f64>,
+    tmp: Vec<f64>,
+    /// Moved states inside the stencils.
+    qa: Vec<f64>,
+    va: Vec<f64>,
+    aa: Vec<f64>,
+    la: Vec<f64>,
+    /// Solutions `(x, y)` of the saddle-point solves.
+    x: Vec<f64>,
+    y: Vec<f64>,
+    /// The step's previous `r = Φqᵀλ − Q`, and its Newmark velocity and derivatives.
+    r0: Vec<f64>,
+    v_tilde: Vec<f64>,
+    dv_tilde: Vec<f64>,
+    da: Vec<f64>,
+    dl: Vec<f64>,
+    /// `M (v − ṽ)`'s difference, and the projection's multipliers.
+    diff: Vec<f64>,
+    mu: Vec<f64>,
+}
+
+impl Work {
+    fn new(n: usize, m: usize) -> Self {
+        let z = |k: usize| vec![0.0; k];
+        Work {
+            rhs: z(n + m),
+            tmp: z(n + m),
+            qa: z(n),
+            va: z(n),
+            aa: z(n),
+            la: z(m),
+            x: z(n),
+            y: z(m),
+            r0: z(n),
+            v_tilde: z(n),
+            dv_tilde: z(n),
+            da: z(n),
+            dl: z(m),
+            diff: z(n),
+            mu: z(m),
+        }
+    }
 }
 
 /// Sensitivity iterations of one step before giving up; each gains about the factor the
@@ -356,6 +404,7 @@ impl<K: KktSolver> HhtSensitivity<K> {
             lambda: lambda.to_vec(),
             v_tilde: v.to_vec(),
             s: Scratch::new(info),
+            w: Work::new(n, m),
         };
         me.kin.factor_at(mech, q, t0)?;
         let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
@@ -389,130 +438,143 @@ impl<K: KktSolver> HhtSensitivity<K> {
             out.copy_from_slice(mech.info().qd0);
             Ok(())
         })?;
-        let given = &mech.info().qd0.to_vec();
-        me.project_derivative(mech, nb, t0, given, &dv_given)?;
-        me.accelerations_derivative(mech, nb, t0)?;
-        let v0 = me.v.clone();
-        me.store_dr(nb, t0, &v0, &me.state.dqd.clone())?;
+        me.w.v_tilde.copy_from_slice(mech.info().qd0);
+        me.w.dv_tilde.copy_from_slice(&dv_given);
+        me.project_derivative(mech, nb, t0)?;
+        let (mut a, mut l) = (vec![0.0; n], vec![0.0; m]);
+        let (mut da, mut dl) = (vec![0.0; n], vec![0.0; m]);
+        me.accelerations(mech, nb, t0, [&mut a, &mut l, &mut da, &mut dl])?;
+        (me.a, me.lambda, me.state.dqdd, me.state.dlambda) = (a, l, da, dl);
+        // `r` at the start is evaluated with the projected velocity.
+        me.w.v_tilde.copy_from_slice(&me.v);
+        me.w.dv_tilde.copy_from_slice(&me.state.dqd);
+        me.store_dr(nb, t0)?;
         Ok(me)
     }
 
-    /// `state.dqd` for `v = ṽ + Δ`, Δ the projection of least kinetic energy of `ṽ` (whose
-    /// derivative is `dv_tilde`) onto the velocity constraints at `self.q`; `kin` must be
-    /// factored there. Sets `self.v` to the projected base velocity.
+    /// `state.dqd` for `v = ṽ + Δ`, Δ the projection of least kinetic energy of
+    /// ṽ = `w.v_tilde` (whose derivative is `w.dv_tilde`) onto the velocity constraints at
+    /// `self.q`; `kin` must be factored there. Sets `self.v` to the projected base velocity.
     fn project_derivative<M: Mechanism>(
         &mut self,
         mech: &M,
         nb: &Neighbours<'_>,
         t: f64,
-        v_tilde: &[f64],
-        dv_tilde: &[f64],
     ) -> Result<(), Error> {
         let info = mech.info();
-        let (n, m) = (info.n_coords, info.n_constraints);
-        let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
+        let n = info.n_coords;
+        let w = &mut self.w;
         // The base projection and its multipliers μ: K [Δ; μ] = [0; −(Φq ṽ + Φt)].
-        let mut delta = vec![0.0; n];
-        let mut mu = vec![0.0; m];
         self.s.fit(info);
         mech.phi_q(&self.q, t, &mut self.s.phi_q);
-        phi_q_times(info, &self.s.phi_q, v_tilde, &mut rhs[n..]);
-        mech.phi_t(&self.q, t, &mut tmp[n..]);
-        for (r, p) in rhs[n..].iter_mut().zip(&tmp[n..]) {
+        phi_q_times(info, &self.s.phi_q, &w.v_tilde, &mut w.rhs[n..]);
+        mech.phi_t(&self.q, t, &mut w.tmp[n..]);
+        for (r, p) in w.rhs[n..].iter_mut().zip(&w.tmp[n..]) {
             *r = -(*r + p);
         }
-        let zero_n = vec![0.0; n];
-        self.kin.solve(&zero_n, &rhs[n..], &mut delta, &mut mu, t)?;
-        let v: Vec<f64> = v_tilde.iter().zip(&delta).map(|(a, b)| a + b).collect();
+        w.tmp[..n].fill(0.0);
+        self.kin
+            .solve(&w.tmp[..n], &w.rhs[n..], &mut w.x, &mut w.mu, t)?;
+        for ((v, a), b) in self.v.iter_mut().zip(&w.v_tilde).zip(&w.x) {
+            *v = a + b;
+        }
         // The residual [M (v − ṽ) + Φqᵀμ; Φq v + Φt] stays zero along p.
-        let (q, dq) = (&self.q, &self.state.dq);
+        let (q, dq, v) = (&self.q, &self.state.dq, &self.v);
         let s = &mut self.s;
-        let (mut qa, mut va) = (Vec::with_capacity(n), Vec::with_capacity(n));
-        let mut diff = vec![0.0; n];
-        nb.derivative(&mut rhs, &mut tmp, |mech, e, out| {
-            moved(q, e, dq, &mut qa);
-            moved(v_tilde, e, dv_tilde, &mut va);
-            for ((d, a), b) in diff.iter_mut().zip(&v).zip(&va) {
+        let Work {
+            rhs,
+            tmp,
+            qa,
+            va,
+            diff,
+            mu,
+            v_tilde,
+            dv_tilde,
+            y,
+            ..
+        } = w;
+        nb.derivative(rhs, tmp, |mech, e, out| {
+            moved(q, e, dq, qa);
+            moved(v_tilde, e, dv_tilde, va);
+            for ((d, a), b) in diff.iter_mut().zip(v).zip(va.iter()) {
                 *d = a - b;
             }
-            velocity_residual(mech, t, (&qa, &diff, &mu), s, out);
+            velocity_residual(mech, t, (qa, diff, mu), s, out);
             // velocity_residual's lower half is Φq·(v − ṽ) + Φt; the projection's is Φq·v + Φt.
             let info = mech.info();
-            phi_q_times(info, &s.phi_q, &va, &mut s.vec_m);
+            phi_q_times(info, &s.phi_q, va, &mut s.vec_m);
             for (o, x) in out[n..].iter_mut().zip(&s.vec_m) {
                 *o += x;
             }
             Ok(())
         })?;
-        negate(&mut rhs);
+        negate(rhs);
         let (f, g) = rhs.split_at(n);
-        let mut dmu = vec![0.0; m];
-        self.kin.solve(f, g, &mut self.state.dqd, &mut dmu, t)?;
-        self.v = v;
-        Ok(())
+        self.kin.solve(f, g, &mut self.state.dqd, y, t)
     }
 
-    /// `state.dqdd`, `state.dlambda` of the saddle-point accelerations at `(self.q, self.v)`
-    /// (whose derivatives `state.dq`, `state.dqd` are set), `kin` factored at `self.q`; the
-    /// base accelerations and multipliers are solved too, into `self.a`, `self.lambda`.
-    fn accelerations_derivative<M: Mechanism>(
+    /// The saddle-point accelerations and multipliers at `(self.q, self.v)` into `a`, `l`,
+    /// and their derivatives (those of the position and velocity being `state.dq`,
+    /// `state.dqd`) into `da`, `dl`; `kin` factored at `self.q`.
+    fn accelerations<M: Mechanism>(
         &mut self,
         mech: &M,
         nb: &Neighbours<'_>,
         t: f64,
+        [a, l, da, dl]: [&mut [f64]; 4],
     ) -> Result<(), Error> {
-        let info = mech.info();
-        let (n, m) = (info.n_coords, info.n_constraints);
-        let (mut force, mut gamma) = (vec![0.0; n], vec![0.0; m]);
-        mech.force(&self.q, &self.v, t, &mut force);
-        mech.gamma(&self.q, &self.v, t, &mut gamma);
-        self.kin
-            .solve(&force, &gamma, &mut self.a, &mut self.lambda, t)?;
-        let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
-        let (q, v, a, l) = (&self.q, &self.v, &self.a, &self.lambda);
-        let (dq, dv) = (&self.state.dq, &self.state.dqd);
+        let n = self.q.len();
+        let w = &mut self.w;
+        let (force, gamma) = w.rhs.split_at_mut(n);
+        mech.force(&self.q, &self.v, t, force);
+        mech.gamma(&self.q, &self.v, t, gamma);
+        self.kin.solve(force, gamma, a, l, t)?;
+        let (q, v, dq, dv) = (&self.q, &self.v, &self.state.dq, &self.state.dqd);
         let s = &mut self.s;
-        let (mut qa, mut va) = (Vec::with_capacity(n), Vec::with_capacity(n));
-        nb.derivative(&mut rhs, &mut tmp, |mech, e, out| {
-            moved(q, e, dq, &mut qa);
-            moved(v, e, dv, &mut va);
-            acceleration_residual(mech, t, (&qa, &va, a, l), s, out);
+        let Work {
+            rhs, tmp, qa, va, ..
+        } = w;
+        let (a, l) = (&*a, &*l);
+        nb.derivative(rhs, tmp, |mech, e, out| {
+            moved(q, e, dq, qa);
+            moved(v, e, dv, va);
+            acceleration_residual(mech, t, (qa, va, a, l), s, out);
             Ok(())
         })?;
-        negate(&mut rhs);
+        negate(rhs);
         let (f, g) = rhs.split_at(n);
-        self.kin
-            .solve(f, g, &mut self.state.dqdd, &mut self.state.dlambda, t)
+        self.kin.solve(f, g, da, dl, t)
     }
 
-    /// `dr` = derivative of `Φqᵀλ − Q(q, v_r)` at the current base state, the velocity it
-    /// was evaluated with `v_r` moving by `dv_r`.
-    fn store_dr(
-        &mut self,
-        nb: &Neighbours<'_>,
-        t: f64,
-        v_r: &[f64],
-        dv_r: &[f64],
-    ) -> Result<(), Error> {
+    /// `dr` = derivative of `Φqᵀλ − Q(q, ṽ)` at the current base state, ṽ = `w.v_tilde`
+    /// (the velocity `r` is evaluated with) moving by `w.dv_tilde`; keeps ṽ for the next step.
+    fn store_dr(&mut self, nb: &Neighbours<'_>, t: f64) -> Result<(), Error> {
         let n = self.q.len();
         let (q, l) = (&self.q, &self.lambda);
         let (dq, dl) = (&self.state.dq, &self.state.dlambda);
         let s = &mut self.s;
-        let (mut qa, mut va, mut la) = (Vec::new(), Vec::new(), Vec::new());
-        let mut tmp = vec![0.0; n];
-        nb.derivative(&mut self.dr, &mut tmp, |mech, e, out| {
-            moved(q, e, dq, &mut qa);
-            moved(v_r, e, dv_r, &mut va);
-            moved(l, e, dl, &mut la);
-            generalized_reaction(mech, t, (&qa, &va, &la), s, out);
+        let Work {
+            tmp,
+            qa,
+            va,
+            la,
+            v_tilde,
+            dv_tilde,
+            ..
+        } = &mut self.w;
+        nb.derivative(&mut self.dr, &mut tmp[..n], |mech, e, out| {
+            moved(q, e, dq, qa);
+            moved(v_tilde, e, dv_tilde, va);
+            moved(l, e, dl, la);
+            generalized_reaction(mech, t, (qa, va, la), s, out);
             Ok(())
         })?;
-        self.v_tilde = v_r.to_vec();
+        self.v_tilde.copy_from_slice(v_tilde);
         Ok(())
     }
 
     /// After the integrator accepted a step to `t1` with the state `(q1, q̇1, q̈1, λ1)`: the
-    /// derivative of that state.
+    /// derivative of that state. Allocates nothing.
     pub fn step<M: Mechanism>(
         &mut self,
         mech: &M,
@@ -531,21 +593,33 @@ impl<K: KktSolver> HhtSensitivity<K> {
         self.kin.factor_at(mech, q1, t1)?;
         // The step's residual as a function of (q̈1, λ1) and the previous state.
         let (q0, v0, a0) = (&self.q, &self.v, &self.a);
-        let mut r0 = vec![0.0; n];
+        let w = &mut self.w;
         generalized_reaction(
             mech,
             self.t,
             (q0, &self.v_tilde, &self.lambda),
             &mut self.s,
-            &mut r0,
+            &mut w.r0,
         );
         let d = &self.state;
-        let (mut da, mut dl) = (d.dqdd.clone(), d.dlambda.clone());
-        let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
-        let (mut x, mut y) = (vec![0.0; n], vec![0.0; m]);
-        let (mut qa, mut va, mut aa, mut la) =
-            (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; m]);
+        w.da.copy_from_slice(&d.dqdd);
+        w.dl.copy_from_slice(&d.dlambda);
+        let Work {
+            rhs,
+            tmp,
+            qa,
+            va,
+            aa,
+            la,
+            x,
+            y,
+            r0,
+            da,
+            dl,
+            ..
+        } = w;
         let s = &mut self.s;
+        let dr = &self.dr;
         let mut converged = false;
         let mut iterations = 0;
         // The derivative's size, from the first change if the guess was zero.
@@ -556,7 +630,7 @@ impl<K: KktSolver> HhtSensitivity<K> {
         let mut last_rel = f64::INFINITY;
         while iterations < SENSITIVITY_ITERATIONS {
             iterations += 1;
-            nb.derivative(&mut rhs, &mut tmp, |mech, e, out| {
+            nb.derivative(rhs, tmp, |mech, e, out| {
                 for i in 0..n {
                     let (qi, vi) = (q0[i] + e * d.dq[i], v0[i] + e * d.dqd[i]);
                     let (a0i, a1i) = (a0[i] + e * d.dqdd[i], a1[i] + e * da[i]);
@@ -570,15 +644,15 @@ impl<K: KktSolver> HhtSensitivity<K> {
                 }
                 let info = mech.info();
                 let (top, bottom) = out.split_at_mut(n);
-                generalized_reaction(mech, t1, (&qa, &va, &la), s, top);
+                generalized_reaction(mech, t1, (qa, va, la), s, top);
                 s.fit(info);
-                mech.mass(&qa, &mut s.mass);
-                mass_times(info, &s.mass, &aa, &mut s.vec_n);
+                mech.mass(qa, &mut s.mass);
+                mass_times(info, &s.mass, aa, &mut s.vec_n);
                 for i in 0..n {
-                    let r_prev_i = r0[i] + e * self.dr[i];
+                    let r_prev_i = r0[i] + e * dr[i];
                     top[i] += c * s.vec_n[i] - alpha * c * r_prev_i;
                 }
-                mech.phi(&qa, t1, bottom);
+                mech.phi(qa, t1, bottom);
                 for b in bottom.iter_mut() {
                     *b *= inv_bh2;
                 }
@@ -590,13 +664,13 @@ impl<K: KktSolver> HhtSensitivity<K> {
             }
             negate(&mut rhs[n..]);
             let (f, g) = rhs.split_at(n);
-            self.kin.solve(f, g, &mut x, &mut y, t1)?;
+            self.kin.solve(f, g, x, y, t1)?;
             let (mut change_a, mut change_l) = (0.0f64, 0.0f64);
-            for (a, dx) in da.iter_mut().zip(&x) {
+            for (a, dx) in da.iter_mut().zip(x.iter()) {
                 *a += dx;
                 change_a = change_a.max(dx.abs());
             }
-            for (l, dy) in dl.iter_mut().zip(&y) {
+            for (l, dy) in dl.iter_mut().zip(y.iter()) {
                 *l += c * dy;
                 change_l = change_l.max((c * dy).abs());
             }
@@ -626,39 +700,38 @@ impl<K: KktSolver> HhtSensitivity<K> {
                 row: None,
             });
         }
-        // Newmark for the new position and (unprojected) velocity, and their derivatives.
-        let mut v_tilde = vec![0.0; n];
-        let mut dq1 = vec![0.0; n];
-        let mut dv_tilde = vec![0.0; n];
+        // Newmark for the new (unprojected) velocity, and the derivatives of the new position
+        // and velocity.
+        let w = &mut self.w;
+        let st = &mut self.state;
         for i in 0..n {
-            v_tilde[i] = self.v[i] + h * ((1.0 - gamma) * self.a[i] + gamma * a1[i]);
-            dq1[i] = d.dq[i]
-                + h * d.dqd[i]
-                + 0.5 * h * h * ((1.0 - 2.0 * beta) * d.dqdd[i] + 2.0 * beta * da[i]);
-            dv_tilde[i] = d.dqd[i] + h * ((1.0 - gamma) * d.dqdd[i] + gamma * da[i]);
+            w.v_tilde[i] = self.v[i] + h * ((1.0 - gamma) * self.a[i] + gamma * a1[i]);
+            st.dq[i] += h * st.dqd[i]
+                + 0.5 * h * h * ((1.0 - 2.0 * beta) * st.dqdd[i] + 2.0 * beta * w.da[i]);
+            w.dv_tilde[i] = st.dqd[i] + h * ((1.0 - gamma) * st.dqdd[i] + gamma * w.da[i]);
         }
+        st.dqdd.copy_from_slice(&w.da);
+        st.dlambda.copy_from_slice(&w.dl);
         self.t = t1;
         self.q.copy_from_slice(q1);
         self.a.copy_from_slice(a1);
         self.lambda.copy_from_slice(l1);
-        self.state.dq = dq1;
-        self.state.dqdd = da;
-        self.state.dlambda = dl;
         if self.project {
-            self.project_derivative(mech, nb, t1, &v_tilde, &dv_tilde)?;
+            self.project_derivative(mech, nb, t1)?;
         } else {
-            self.state.dqd.copy_from_slice(&dv_tilde);
+            self.state.dqd.copy_from_slice(&self.w.dv_tilde);
         }
         // The integrator's own (projected) velocity is the state; the projection above is
         // the ideal one of the same constraints, equal to it up to the step's tolerance.
         self.v.copy_from_slice(v1);
-        self.store_dr(nb, t1, &v_tilde, &dv_tilde)
+        self.store_dr(nb, t1)
     }
 
-    /// At the current state (after [`HhtSensitivity::start`] or a step): the derivative of
-    /// the saddle-point accelerations and multipliers recovered at `(q, q̇)`, as a run's
-    /// outputs are (`EnergyMeter`), into `dqdd`, `dlambda`; `state.dq`, `state.dqd` are the
-    /// position's and velocity's.
+    /// At the current state (after [`HhtSensitivity::start`] or a step): the saddle-point
+    /// accelerations and multipliers recovered at `(q, q̇)`, as a run's outputs are
+    /// (`EnergyMeter`), into `qdd`, `lambda`, and their derivatives into `dqdd`, `dlambda`;
+    /// `state.dq`, `state.dqd` are the position's and velocity's. The step's own state is
+    /// left as it was.
     pub fn recovered<M: Mechanism>(
         &mut self,
         mech: &M,
@@ -666,16 +739,9 @@ impl<K: KktSolver> HhtSensitivity<K> {
         (qdd, lambda): (&mut [f64], &mut [f64]),
         (dqdd, dlambda): (&mut [f64], &mut [f64]),
     ) -> Result<(), Error> {
-        let saved = (self.a.clone(), self.lambda.clone(), self.state.clone());
-        self.kin.factor_at(mech, &self.q.clone(), self.t)?;
+        self.kin.factor_at(mech, &self.q, self.t)?;
         let t = self.t;
-        self.accelerations_derivative(mech, nb, t)?;
-        qdd.copy_from_slice(&self.a);
-        lambda.copy_from_slice(&self.lambda);
-        dqdd.copy_from_slice(&self.state.dqdd);
-        dlambda.copy_from_slice(&self.state.dlambda);
-        (self.a, self.lambda, self.state) = saved;
-        Ok(())
+        self.accelerations(mech, nb, t, [qdd, lambda, dqdd, dlambda])
     }
 }
 
