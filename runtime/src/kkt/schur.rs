@@ -62,9 +62,16 @@ pub struct SchurKkt {
     dinv: Vec<f64>,
     /// By permuted position: the row is redundant (declared in the pattern) and dropped.
     redundant: Vec<bool>,
-    /// For permuted row j, the columns k < j with `L[j,k] ≠ 0` and the slot of that entry.
-    row_list_ptr: Vec<usize>,
-    row_list: Vec<(usize, usize)>,
+    /// Column k's updates of the later columns, `updates[update_ptr[k]..update_ptr[k + 1]]`:
+    /// `(a, b, dest)` means `lval[dest] -= L[a]·D[k]·L[b]` for two entries `a`, `b` of
+    /// column k (rows r_a > r_b) and `dest` the slot of `L[r_a, r_b]`. Listed once when the
+    /// solver is built, so the numeric factorization is one flat loop per column instead of
+    /// short, variable-length loops whose exits the branch predictor misses (12 bytes per
+    /// multiply-add of the factorization: 160 kB for the 40-bar chain of IFToMM A02).
+    update_ptr: Vec<usize>,
+    updates: Vec<[u32; 3]>,
+    /// diag(S) before elimination, the scale of each pivot's rank-loss test.
+    scale: Vec<f64>,
     work: Vec<f64>,
     rvec: Vec<f64>,
     factored: bool,
@@ -121,8 +128,9 @@ impl SchurKkt {
             diag: Vec::new(),
             dinv: Vec::new(),
             redundant: Vec::new(),
-            row_list_ptr: vec![0],
-            row_list: Vec::new(),
+            update_ptr: vec![0],
+            updates: Vec::new(),
+            scale: Vec::new(),
             work: Vec::new(),
             rvec: Vec::new(),
             factored: false,
@@ -243,19 +251,46 @@ fn factor_group(
         forward(a, inv, s, row);
     }
     let mut dest = dest.iter();
+    let mut add = |v: f64| {
+        let d = *dest.next().expect("pair slots precomputed");
+        if d & DIAG_FLAG != 0 {
+            diag[d & !DIAG_FLAG] += v;
+        } else {
+            lval[d] += v;
+        }
+    };
     for i in 0..k {
         let wi = &w[i * s..i * s + s];
-        for j in 0..=i {
-            let v = dot(wi, &w[j * s..j * s + s], s);
-            let d = *dest.next().expect("pair slots precomputed");
-            if d & DIAG_FLAG != 0 {
-                diag[d & !DIAG_FLAG] += v;
-            } else {
-                lval[d] += v;
+        // Four rows at a time: four independent sums keep the multiply-add pipeline full,
+        // where one dot product at a time waits on each addition (each sum is still added
+        // in the same order, so the result is unchanged).
+        let mut j = 0;
+        while j + 4 <= i + 1 {
+            for v in dot4(wi, &w[j * s..(j + 4) * s], s) {
+                add(v);
             }
+            j += 4;
+        }
+        for j in j..=i {
+            add(dot(wi, &w[j * s..j * s + s], s));
         }
     }
     Ok(())
+}
+
+/// The dot products of `a` with the four consecutive rows of `b` (each `s` long).
+#[inline(always)]
+fn dot4(a: &[f64], b: &[f64], s: usize) -> [f64; 4] {
+    let (a, b) = (&a[..s], &b[..4 * s]);
+    let mut t = [0.0; 4];
+    for c in 0..s {
+        let x = a[c];
+        t[0] += x * b[c];
+        t[1] += x * b[s + c];
+        t[2] += x * b[2 * s + c];
+        t[3] += x * b[3 * s + c];
+    }
+    t
 }
 
 fn find(parent: &mut [usize], mut i: usize) -> usize {
@@ -434,22 +469,26 @@ impl KktSolver for SchurKkt {
             pair_ptr.push(pair_dest.len());
         }
 
-        let mut row_count = vec![0usize; m];
-        for &r in &sym.row_idx {
-            row_count[r] += 1;
-        }
-        let mut row_list_ptr = vec![0; m + 1];
-        for j in 0..m {
-            row_list_ptr[j + 1] = row_list_ptr[j] + row_count[j];
-        }
-        let mut fill = row_list_ptr.clone();
-        let mut row_list = vec![(0, 0); sym.row_idx.len()];
+        let mut update_ptr = vec![0];
+        let mut updates = Vec::new();
         for k in 0..m {
-            for p in sym.col_ptr[k]..sym.col_ptr[k + 1] {
-                let j = sym.row_idx[p];
-                row_list[fill[j]] = (k, p);
-                fill[j] += 1;
+            let col = sym.col_ptr[k]..sym.col_ptr[k + 1];
+            for a in col.clone() {
+                for b in col.start..a {
+                    let (ra, rb) = (sym.row_idx[a], sym.row_idx[b]);
+                    let target = sym.col_ptr[rb]..sym.col_ptr[rb + 1];
+                    let off = sym.row_idx[target.clone()]
+                        .binary_search(&ra)
+                        .expect("fill lies inside the symbolic factor");
+                    let index = |i: usize| {
+                        u32::try_from(i).map_err(|_| Error::InvalidPattern {
+                            reason: format!("factor too large: {i} nonzeros"),
+                        })
+                    };
+                    updates.push([index(a)?, index(b)?, index(target.start + off)?]);
+                }
             }
+            update_ptr.push(updates.len());
         }
 
         let lnnz = sym.row_idx.len();
@@ -477,8 +516,9 @@ impl KktSolver for SchurKkt {
             diag: vec![0.0; m],
             dinv: vec![0.0; m],
             redundant,
-            row_list_ptr,
-            row_list,
+            update_ptr,
+            updates,
+            scale: vec![0.0; m],
             work: vec![0.0; m],
             rvec: vec![0.0; m],
             factored: false,
@@ -534,8 +574,9 @@ impl KktSolver for SchurKkt {
             }
         }
 
-        // Left-looking LDLᵀ of S in place; rank loss shows as a pivot that is tiny
-        // relative to the row's own diag(S).
+        // Right-looking LDLᵀ of S in place: column k, once final, updates the later columns
+        // through its precomputed list. Rank loss shows as a pivot that is tiny relative to
+        // the row's own diag(S).
         let mut bad = [0usize; 4];
         let mut nbad = 0;
         let mut worst = f64::INFINITY;
@@ -544,32 +585,20 @@ impl KktSolver for SchurKkt {
         let (mut small_d, mut small_scale) = (1.0, 1.0);
         let mut dropped = 0;
         let sym = &self.sym;
-        self.work.fill(0.0);
-        for j in 0..self.m {
-            let scale = self.diag[j];
-            let (c0, c1) = (sym.col_ptr[j], sym.col_ptr[j + 1]);
-            for p in c0..c1 {
-                self.work[sym.row_idx[p]] = self.lval[p];
-            }
-            let mut dj = self.diag[j];
-            for &(k, pk) in &self.row_list[self.row_list_ptr[j]..self.row_list_ptr[j + 1]] {
-                let ljk = self.lval[pk];
-                let t = ljk * self.diag[k];
-                dj -= t * ljk;
-                let end = sym.col_ptr[k + 1];
-                for (&r, &l) in sym.row_idx[pk + 1..end].iter().zip(&self.lval[pk + 1..end]) {
-                    self.work[r] -= l * t;
-                }
-            }
-            if dj.is_nan() {
+        self.scale.copy_from_slice(&self.diag);
+        for k in 0..self.m {
+            let scale = self.scale[k];
+            let col = sym.col_ptr[k]..sym.col_ptr[k + 1];
+            let dk = self.diag[k];
+            if dk.is_nan() {
                 return Err(KktError::NotFinite);
             }
-            if !(dj > self.pivot_tol * scale) {
-                if self.redundant[j] {
+            if !(dk > self.pivot_tol * scale) {
+                if self.redundant[k] {
                     // Isolated in S (no L entries either way): a unit pivot with 1/D = 0
                     // solves the row as absent and gives it y = 0.
-                    self.diag[j] = 1.0;
-                    self.dinv[j] = 0.0;
+                    self.diag[k] = 1.0;
+                    self.dinv[k] = 0.0;
                     continue;
                 }
                 if self.drop_dependent {
@@ -577,33 +606,33 @@ impl KktSolver for SchurKkt {
                     // As a redundant row, once its column of L is cleared below. (Clamping the
                     // pivot instead keeps the row corrected, but Newton then converges too
                     // slowly along the nearly dependent direction to finish a step.)
-                    self.diag[j] = 1.0;
+                    self.diag[k] = 1.0;
                 } else {
-                    worst = worst.min(if scale > 0.0 { dj / scale } else { 0.0 });
+                    worst = worst.min(if scale > 0.0 { dk / scale } else { 0.0 });
                     if nbad < bad.len() {
-                        bad[nbad] = sym.perm[j];
+                        bad[nbad] = sym.perm[k];
                     }
                     nbad += 1;
                     // Dropped too, so the remaining pivots can name further dependent rows.
-                    self.diag[j] = 0.0;
+                    self.diag[k] = 0.0;
                 }
-                self.dinv[j] = 0.0;
-                for p in c0..c1 {
-                    self.work[sym.row_idx[p]] = 0.0;
-                    self.lval[p] = 0.0;
-                }
+                self.dinv[k] = 0.0;
+                self.lval[col].fill(0.0);
                 continue;
             }
-            if dj * small_scale < small_d * scale {
-                (small_d, small_scale) = (dj, scale);
+            if dk * small_scale < small_d * scale {
+                (small_d, small_scale) = (dk, scale);
             }
-            self.diag[j] = dj;
-            let inv = 1.0 / dj;
-            self.dinv[j] = inv;
-            for p in c0..c1 {
-                let r = sym.row_idx[p];
-                self.lval[p] = self.work[r] * inv;
-                self.work[r] = 0.0;
+            let inv = 1.0 / dk;
+            self.dinv[k] = inv;
+            let lcol = &mut self.lval[col.clone()];
+            for (l, &r) in lcol.iter_mut().zip(&sym.row_idx[col]) {
+                *l *= inv;
+                self.diag[r] -= *l * dk * *l;
+            }
+            let lval = &mut self.lval[..];
+            for &[a, b, dest] in &self.updates[self.update_ptr[k]..self.update_ptr[k + 1]] {
+                lval[dest as usize] -= lval[a as usize] * dk * lval[b as usize];
             }
         }
         if nbad > 0 {
