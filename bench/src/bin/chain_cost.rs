@@ -12,9 +12,10 @@ use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::Instant;
 
+use symbody_bench::{best_time, fail, NewtonBuffers};
 use symbody_cli::plot::{draw_log_log, LogSeries};
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
-use symbody_runtime::{HhtBuilder, KktPattern, KktSolver, Mechanism, NewtonOutputs, SchurKkt};
+use symbody_runtime::{HhtBuilder, KktPattern, KktSolver, Mechanism, SchurKkt};
 
 const LENGTHS: [usize; 7] = [2, 4, 8, 16, 24, 32, 40];
 const STEP: f64 = 4e-4;
@@ -22,25 +23,6 @@ const STEP: f64 = 4e-4;
 /// iterations.
 const T_START: f64 = 0.3;
 const STEPS: usize = 300;
-
-fn fail(msg: &str) -> ! {
-    eprintln!("error: {msg}");
-    std::process::exit(2)
-}
-
-/// Best-of-`rounds` mean time per call (s): the minimum discards rounds another process
-/// interrupted.
-fn time(rounds: usize, reps: usize, mut f: impl FnMut()) -> f64 {
-    (0..rounds)
-        .map(|_| {
-            let t = Instant::now();
-            for _ in 0..reps {
-                f();
-            }
-            t.elapsed().as_secs_f64() / reps as f64
-        })
-        .fold(f64::INFINITY, f64::min)
-}
 
 /// The N = 40 file cut to `n` four-bars: its header, then the `[[body]]` and `[[joint]]`
 /// blocks of cranks 0…n, couplers 1…n, ground joints a0…an and tip joints left/right 1…n.
@@ -116,35 +98,20 @@ fn measure(n: usize, route: &'static str, mech: &'static (dyn Mechanism + Sync))
 
     let info = mech.info();
     let (q, qd, t) = (it.q().to_vec(), it.qd().to_vec(), it.t());
-    let mut phi = vec![0.0; info.n_constraints];
-    let mut phi_q = vec![0.0; info.phi_q_nnz()];
-    let mut mass = vec![0.0; info.mass_nnz()];
-    let mut force = vec![0.0; info.n_coords];
+    let mut b = NewtonBuffers::new(info);
     let reps = (20_000 / info.n_coords).max(10);
-    let eval = time(5, reps, || {
-        mech.eval_newton(
-            black_box(&q),
-            black_box(&qd),
-            black_box(t),
-            NewtonOutputs {
-                phi: &mut phi,
-                phi_q: &mut phi_q,
-                mass: &mut mass,
-                force: &mut force,
-            },
-        )
-    });
+    let eval = best_time(5, reps, || b.eval(mech, &q, &qd, t));
     let mut kkt = SchurKkt::new(&KktPattern::from_info(info))
         .unwrap_or_else(|e| fail(&format!("N = {n}: {e}")));
     kkt.drop_dependent_rows(DEFAULT_PIVOT_TOLERANCE);
-    let factor = time(5, reps, || {
-        kkt.factor(black_box(&mass), 1.0, black_box(&phi_q))
+    let factor = best_time(5, reps, || {
+        kkt.factor(black_box(&b.mass), 1.0, black_box(&b.phi_q))
             .unwrap_or_else(|e| fail(&format!("N = {n}: {e:?}")))
     });
-    let f: Vec<f64> = force.iter().map(|v| -v).collect();
+    let f: Vec<f64> = b.force.iter().map(|v| -v).collect();
     let (mut x, mut y) = (vec![0.0; info.n_coords], vec![0.0; info.n_constraints]);
-    let solve = time(5, reps, || {
-        kkt.solve(black_box(&f), black_box(&phi), &mut x, &mut y)
+    let solve = best_time(5, reps, || {
+        kkt.solve(black_box(&f), black_box(&b.phi), &mut x, &mut y)
             .unwrap_or_else(|e| fail(&format!("N = {n}: {e:?}")))
     });
     Row {

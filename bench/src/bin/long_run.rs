@@ -10,6 +10,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
 
+use symbody_bench::fail;
 use symbody_benchmark_mechanisms::stewart_6_6::Exact;
 use symbody_runtime::{
     actuator_force, EnergyMeter, HhtBuilder, KinematicPath, Kinematics, Mechanism, ResidualWatch,
@@ -160,9 +161,4 @@ fn main() {
         eprintln!("wrote {}", p.display());
     }
     print!("{md}");
-}
-
-fn fail(msg: &str) -> ! {
-    eprintln!("error: {msg}");
-    std::process::exit(2)
 }

@@ -12,32 +12,12 @@ use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::Instant;
 
+use symbody_bench::{best_time, fail, NewtonBuffers};
 use symbody_benchmark_mechanisms::stewart_6_6::Exact;
-use symbody_runtime::{
-    DenseKkt, HhtBuilder, KktPattern, KktSolver, Mechanism, NewtonOutputs, SchurKkt,
-};
+use symbody_runtime::{DenseKkt, HhtBuilder, KktPattern, KktSolver, Mechanism, SchurKkt};
 
 const ALPHA: f64 = -0.05;
 const STEP: f64 = 1e-3;
-
-fn fail(msg: &str) -> ! {
-    eprintln!("error: {msg}");
-    std::process::exit(2)
-}
-
-/// Best-of-`rounds` mean time per call (s) of `f` called `reps` times: the minimum over
-/// rounds discards the rounds another process on the machine interrupted.
-fn time(rounds: usize, reps: usize, mut f: impl FnMut()) -> f64 {
-    (0..rounds)
-        .map(|_| {
-            let t = Instant::now();
-            for _ in 0..reps {
-                f();
-            }
-            t.elapsed().as_secs_f64() / reps as f64
-        })
-        .fold(f64::INFINITY, f64::min)
-}
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -84,47 +64,32 @@ fn main() {
     // The pieces, at the current state.
     let info = Exact.info();
     let (q, qd, t) = (it.q().to_vec(), it.qd().to_vec(), it.t());
-    let mut phi = vec![0.0; info.n_constraints];
-    let mut phi_q = vec![0.0; info.phi_q_nnz()];
-    let mut mass = vec![0.0; info.mass_nnz()];
-    let mut force = vec![0.0; info.n_coords];
-    let eval = time(5, 20_000, || {
-        Exact.eval_newton(
-            black_box(&q),
-            black_box(&qd),
-            black_box(t),
-            NewtonOutputs {
-                phi: &mut phi,
-                phi_q: &mut phi_q,
-                mass: &mut mass,
-                force: &mut force,
-            },
-        );
-    });
+    let mut b = NewtonBuffers::new(info);
+    let eval = best_time(5, 20_000, || b.eval(&Exact, &q, &qd, t));
     let c = 1.0 / (1.0 + ALPHA);
     let pattern = KktPattern::from_info(info);
-    let f: Vec<f64> = force.iter().map(|v| -v).collect();
-    let g: Vec<f64> = phi.iter().map(|v| v * 1e3).collect();
+    let f: Vec<f64> = b.force.iter().map(|v| -v).collect();
+    let g: Vec<f64> = b.phi.iter().map(|v| v * 1e3).collect();
     let (mut x, mut y) = (vec![0.0; info.n_coords], vec![0.0; info.n_constraints]);
     let mut schur = SchurKkt::new(&pattern).unwrap_or_else(|e| fail(&e.to_string()));
     let mut dense = DenseKkt::new(&pattern).unwrap_or_else(|e| fail(&e.to_string()));
-    let s_factor = time(5, 20_000, || {
+    let s_factor = best_time(5, 20_000, || {
         schur
-            .factor(black_box(&mass), c, black_box(&phi_q))
+            .factor(black_box(&b.mass), c, black_box(&b.phi_q))
             .unwrap()
     });
-    let s_solve = time(5, 20_000, || {
+    let s_solve = best_time(5, 20_000, || {
         schur
             .solve(black_box(&f), black_box(&g), &mut x, &mut y)
             .unwrap()
     });
     let (xs, ys) = (x.clone(), y.clone());
-    let d_factor = time(5, 200, || {
+    let d_factor = best_time(5, 200, || {
         dense
-            .factor(black_box(&mass), c, black_box(&phi_q))
+            .factor(black_box(&b.mass), c, black_box(&b.phi_q))
             .unwrap()
     });
-    let d_solve = time(5, 2_000, || {
+    let d_solve = best_time(5, 2_000, || {
         dense
             .solve(black_box(&f), black_box(&g), &mut x, &mut y)
             .unwrap()
@@ -133,14 +98,14 @@ fn main() {
     // case the hand-written DenseKkt loop order is what makes dense slow.
     let size = info.n_coords + info.n_constraints;
     let mut kkt = nalgebra::DMatrix::<f64>::zeros(size, size);
-    for ((&r, &cc), &v) in info.mass_rows.iter().zip(info.mass_cols).zip(&mass) {
+    for ((&r, &cc), &v) in info.mass_rows.iter().zip(info.mass_cols).zip(&b.mass) {
         kkt[(r as usize, cc as usize)] = c * v;
     }
-    for ((&r, &cc), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(&phi_q) {
+    for ((&r, &cc), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(&b.phi_q) {
         kkt[(info.n_coords + r as usize, cc as usize)] = v;
         kkt[(cc as usize, info.n_coords + r as usize)] = v;
     }
-    let na_factor = time(5, 200, || {
+    let na_factor = best_time(5, 200, || {
         black_box(black_box(kkt.clone()).lu());
     });
     let agree = xs

@@ -9,17 +9,12 @@
 //! Prints a Markdown table and writes `bench-results/step_tail.csv`.
 
 use std::collections::BTreeMap;
-use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::Instant;
 
+use symbody_bench::{fail, NewtonBuffers};
 use symbody_benchmark_mechanisms::stewart_6_6::Exact;
-use symbody_runtime::{HhtBuilder, Mechanism, NewtonOutputs};
-
-fn fail(msg: &str) -> ! {
-    eprintln!("error: {msg}");
-    std::process::exit(2)
-}
+use symbody_runtime::{HhtBuilder, Mechanism};
 
 /// The `q`-quantile of sorted `v` (nearest rank).
 fn quantile(v: &[f64], q: f64) -> f64 {
@@ -72,23 +67,8 @@ fn main() {
     // The machine's noise: a fixed amount of work of about the median step's length.
     let info = Exact.info();
     let (q, qd, t) = (it.q().to_vec(), it.qd().to_vec(), it.t());
-    let mut phi = vec![0.0; info.n_constraints];
-    let mut phi_q = vec![0.0; info.phi_q_nnz()];
-    let mut mass = vec![0.0; info.mass_nnz()];
-    let mut force = vec![0.0; info.n_coords];
-    let mut eval = || {
-        Exact.eval_newton(
-            black_box(&q),
-            black_box(&qd),
-            black_box(t),
-            NewtonOutputs {
-                phi: &mut phi,
-                phi_q: &mut phi_q,
-                mass: &mut mass,
-                force: &mut force,
-            },
-        )
-    };
+    let mut buffers = NewtonBuffers::new(info);
+    let mut eval = || buffers.eval(&Exact, &q, &qd, t);
     let mut sorted = times.clone();
     sorted.sort_by(f64::total_cmp);
     let median = quantile(&sorted, 0.5);

@@ -19,7 +19,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use symbody::scenario::{kinematic, simulate, simulate_reduced, Options, Reactions, Run};
-use symbody_bench::REGISTRY;
+use symbody_bench::{fail, REGISTRY};
 use symbody_cli::plot::{draw_log_log, LogSeries};
 use symbody_runtime::Formulation;
 
@@ -449,11 +449,6 @@ fn split_csv(line: &str) -> Vec<String> {
     }
     fields.push(field);
     fields
-}
-
-fn fail(msg: &str) -> ! {
-    eprintln!("error: {msg}");
-    std::process::exit(2)
 }
 
 fn method_name(m: Method) -> &'static str {
