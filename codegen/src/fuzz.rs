@@ -6,8 +6,11 @@
 //! interpreter ([`interpret_one`]): every [`Mechanism`] function at the file's state and at
 //! NaN, infinite and huge ones, a few HHT steps and position solves, where a panic or a
 //! solver `Ok` holding a non-finite state is a failure and everything else must come back as
-//! a typed [`symbody_runtime::Error`]. Used by the `fuzz` binary (10⁶ inputs) and by a seeded
-//! test that runs a small share in CI.
+//! a typed [`symbody_runtime::Error`]. [`parameter_case`] sets the parameters of files that
+//! load to random and degenerate values through [`crate::model::load_with`] and the
+//! interpreter: each set is refused with errors naming what is wrong or gives a finite
+//! mechanism. Used by the `fuzz` binary (10⁶ inputs) and by a seeded test that runs a small
+//! share in CI.
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use symbody_runtime::{KinematicOutputs, Mechanism, NewtonOutputs};
@@ -616,4 +619,392 @@ fn exercise(
             run_position(mech, 0.0, &perturb(info.q0, rng), out);
         }
     }
+}
+
+/// What [`parameter_case`] did with one file's parameter sets.
+#[derive(Debug, Default, Clone)]
+pub struct ParameterCase {
+    /// The file's parameters (none: no sets were tried).
+    pub parameters: usize,
+    /// Override sets tried.
+    pub sets: usize,
+    /// Sets [`crate::model::load_with`] accepted.
+    pub loaded: usize,
+    /// Sets refused, by kind: the stage (`load`, `assembly`) and the first diagnostic's
+    /// message with names and numbers blanked out.
+    pub rejected: Vec<String>,
+    /// Refused sets whose diagnostics name one of the set's parameters (the others are
+    /// reported at the file's item only).
+    pub rejected_naming: usize,
+    /// Sets whose interpreted entry was built (the assembly succeeded too).
+    pub built: usize,
+    /// What the interpreter and the solvers did with the built entries, summed.
+    pub interpretation: Interpretation,
+    /// Sets that panicked, each as `name = value, …`: bugs.
+    pub panics: Vec<String>,
+    /// Sets accepted with a non-finite or inconsistent value in what the model or the entry
+    /// reports, accepted although they should be refused (an unknown name, a non-finite
+    /// value), or refused without naming the culprit: bugs.
+    pub findings: Vec<String>,
+}
+
+/// A uniform number in [0, 1).
+fn unit(rng: &mut Rng) -> f64 {
+    (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// A value for a parameter whose file value is `default` (`others`: every parameter's file
+/// value): half the time the default scaled by a random factor over many decades, sometimes
+/// negated; otherwise a degenerate value (zero of either sign, a negation, NaN, ±∞, the
+/// largest and a subnormal number, another parameter's value).
+fn parameter_value(rng: &mut Rng, default: f64, others: &[f64]) -> f64 {
+    match rng.below(20) {
+        0 => 0.0,
+        1 => -0.0,
+        2 => -default,
+        3 => -1.0,
+        4 => f64::NAN,
+        5 => f64::INFINITY,
+        6 => f64::NEG_INFINITY,
+        7 => 1e308,
+        8 => 1e-320,
+        9 => others[rng.below(others.len())],
+        k => {
+            // Mostly near the default (so that many sets still assemble and run), sometimes
+            // decades away from it.
+            let decades = if k < 16 { 0.2 } else { 30.0 };
+            let factor = 10f64.powf(decades * (2.0 * unit(rng) - 1.0));
+            let sign = if rng.below(6) == 0 { -1.0 } else { 1.0 };
+            sign * default * factor
+        }
+    }
+}
+
+/// Levenshtein distance, to check the loader's suggestion for an unknown name on its own
+/// terms rather than with the loader's own function.
+fn distance(a: &str, b: &str) -> usize {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    for i in 1..=a.len() {
+        let mut cur = vec![i; b.len() + 1];
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            cur[j] = (prev[j] + 1).min(cur[j - 1] + 1).min(prev[j - 1] + cost);
+        }
+        prev = cur;
+    }
+    prev[b.len()]
+}
+
+/// A name one edit away from `name` that no parameter has (a typo), or a name far from
+/// every one.
+fn unknown_name(rng: &mut Rng, name: &str, names: &[String]) -> String {
+    let mut chars: Vec<char> = name.chars().collect();
+    let c = (b'a' + rng.below(26) as u8) as char;
+    let at = rng.below(chars.len() + 1);
+    match rng.below(4) {
+        0 => chars.insert(at, c),
+        1 if chars.len() > 1 => {
+            chars.remove(at.min(chars.len() - 1));
+        }
+        2 if at < chars.len() => chars[at] = c,
+        _ => return "zz_no_such_parameter".to_string(),
+    }
+    let typo: String = chars.into_iter().collect();
+    if names.contains(&typo) {
+        "zz_no_such_parameter".to_string()
+    } else {
+        typo
+    }
+}
+
+/// A diagnostic's message reduced to its kind: its first clause (up to a `: ` after the
+/// start), names in backticks and numbers (a sign kept) blanked out.
+fn error_kind(stage: &str, message: &str) -> String {
+    let clause = match message.find(": ") {
+        Some(at) if at > 12 => &message[..at],
+        _ => message,
+    };
+    let mut out = format!("{stage}: ");
+    let mut quoted = false;
+    let mut number = false;
+    for c in clause.chars() {
+        if c == '`' {
+            quoted = !quoted;
+            if quoted {
+                out.push('·');
+            }
+            continue;
+        }
+        if quoted {
+            continue;
+        }
+        // Digits, and a number's point, exponent and exponent sign, are one `#`.
+        let part = c.is_ascii_digit() || number && matches!(c, '.' | 'e' | '-' | '+');
+        if part && !number {
+            out.push('#');
+        } else if !part {
+            out.push(c);
+        }
+        number = part;
+    }
+    out.chars().take(72).collect()
+}
+
+/// The problems of an accepted model: a non-finite or impossible value anywhere it reports,
+/// or an override not applied.
+fn model_problems(m: &crate::model::Model, set: &[(String, f64)]) -> Vec<String> {
+    let mut out = Vec::new();
+    for p in &m.parameters {
+        if !p.value.is_finite() {
+            out.push(format!("parameter `{}` = {}", p.name, p.value));
+        }
+        // The last setting of a name wins, as in a file read top to bottom.
+        if let Some((_, v)) = set.iter().rev().find(|(k, _)| *k == p.name) {
+            if p.value != *v || !p.overridden {
+                out.push(format!(
+                    "parameter `{}` set to {v} but used {}",
+                    p.name, p.value
+                ));
+            }
+        }
+    }
+    for b in &m.bodies {
+        if !(b.mass.is_finite() && b.mass > 0.0) {
+            out.push(format!("body `{}` has mass {}", b.name, b.mass));
+        }
+        if !b.inertia.iter().all(|x| x.is_finite() && *x >= 0.0) {
+            out.push(format!("body `{}` has inertia {:?}", b.name, b.inertia));
+        }
+        if !finite(&b.q0) || !finite(&b.qd0) {
+            out.push(format!(
+                "body `{}` starts at {:?}, {:?}",
+                b.name, b.q0, b.qd0
+            ));
+        }
+    }
+    if !(finite(&m.gravity) && m.t_end.is_finite() && m.t_end > 0.0) {
+        out.push(format!("gravity {:?}, t_end {}", m.gravity, m.t_end));
+    }
+    out
+}
+
+/// The problems of a built entry: a non-finite value in what it reports.
+fn entry_problems(loaded: &crate::interpret::Loaded) -> Vec<String> {
+    let mut out = Vec::new();
+    let entry = loaded.entry;
+    if !entry.t_end.is_finite() {
+        out.push(format!("t_end {}", entry.t_end));
+    }
+    for p in &loaded.parameters {
+        if !p.value.is_finite() {
+            out.push(format!("parameter `{}` = {}", p.name, p.value));
+        }
+    }
+    for &(_, mech) in entry.formulations {
+        let info = mech.info();
+        if !finite(info.q0) || !finite(info.qd0) || !finite(&info.gravity) {
+            out.push(format!("q0 {:?}, qd0 {:?}", info.q0, info.qd0));
+        }
+        for b in info.bodies {
+            if !(b.mass.is_finite() && b.mass > 0.0 && finite(&b.inertia)) {
+                out.push(format!("body `{}`: {} kg, {:?}", b.name, b.mass, b.inertia));
+            }
+        }
+        for j in info.joints {
+            if !finite(&j.point1) || !finite(&j.point2) || !j.effort_sign.is_finite() {
+                out.push(format!(
+                    "joint `{}`: {:?}, {:?}",
+                    j.name, j.point1, j.point2
+                ));
+            }
+        }
+        for l in info.platform.iter().flat_map(|p| p.legs) {
+            if !finite(&l.base) || !finite(&l.platform) {
+                out.push(format!(
+                    "leg `{}`: {:?}, {:?}",
+                    l.driver, l.base, l.platform
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// Parameter-value fuzzing of one file: when `text` loads and has parameters, `sets`
+/// override sets of one to all of them, with random values (the file's scaled over many
+/// decades, sign flips) and degenerate ones (±0, negatives, NaN, ±∞, 1e308, a subnormal,
+/// another parameter's value), and now and then a name the file does not have. Each goes
+/// through [`crate::model::load_with`]; a set it accepts must give a finite model with the
+/// values asked for, and then goes through [`crate::interpret::load_scoped_with`] (whose
+/// entry must report finite values) and [`exercise`] (every mechanism function at `states`
+/// perturbed states; with `solve`, HHT steps and position solves). A refusal of an unknown
+/// name must name it and suggest a closest parameter; of a non-finite value, name the
+/// parameter. A panic anywhere is recorded with its set.
+pub fn parameter_case(
+    text: &str,
+    rng: &mut Rng,
+    sets: usize,
+    states: usize,
+    solve: bool,
+) -> ParameterCase {
+    let mut out = ParameterCase::default();
+    let listed = match catch_unwind(|| crate::model::load("fuzz.toml", text)) {
+        Ok(Ok(m)) => m.parameters,
+        // The plain file's fate is `run_one`'s business.
+        _ => return out,
+    };
+    let names: Vec<String> = listed.iter().map(|p| p.name.clone()).collect();
+    let defaults: Vec<f64> = listed.iter().map(|p| p.value).collect();
+    out.parameters = names.len();
+    if names.is_empty() {
+        return out;
+    }
+    for _ in 0..sets {
+        // One parameter half the time, otherwise any number of them up to all.
+        let k = if rng.below(2) == 0 {
+            1
+        } else {
+            1 + rng.below(names.len())
+        };
+        let mut set: Vec<(String, f64)> = (0..k)
+            .map(|_| {
+                let i = rng.below(names.len());
+                let v = parameter_value(rng, defaults[i], &defaults);
+                (names[i].clone(), v)
+            })
+            .collect();
+        let unknown = (rng.below(8) == 0).then(|| {
+            let of = rng.below(names.len());
+            let name = unknown_name(rng, &names[of], &names);
+            let at = rng.below(set.len() + 1);
+            set.insert(at, (name.clone(), 1.0));
+            name
+        });
+        out.sets += 1;
+        let shown = || {
+            set.iter()
+                .map(|(k, v)| format!("{k} = {v:e}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let mut interpretation = Interpretation::default();
+        let result = catch_unwind(AssertUnwindSafe(|| {
+            let mut findings = Vec::new();
+            match crate::model::load_with("fuzz.toml", text, &set) {
+                Err(e) => {
+                    findings.extend(refusal_problems(&e, &set, &names, unknown.as_deref()));
+                    let kind = error_kind("load", &e.0[0].message);
+                    return (Some((kind, names_one(&e, &set))), false, findings);
+                }
+                Ok(m) => {
+                    if let Some(u) = &unknown {
+                        findings.push(format!("unknown parameter `{u}` accepted"));
+                    }
+                    if let Some((k, v)) = set.iter().find(|(_, v)| !v.is_finite()) {
+                        findings.push(format!("parameter `{k}` = {v} accepted"));
+                    }
+                    findings.extend(model_problems(&m, &set));
+                }
+            }
+            // SAFETY: the solvers are built and dropped inside the closure, and nothing
+            // taken from the entry leaves it.
+            let built = unsafe {
+                crate::interpret::load_scoped_with("fuzz.toml", text, &set, false, |loaded| {
+                    findings.extend(entry_problems(loaded));
+                    exercise(loaded, rng, states, solve, &mut interpretation);
+                })
+            };
+            match built {
+                Ok(()) => (None, true, findings),
+                Err(e) => {
+                    let kind = error_kind("assembly", &e.0[0].message);
+                    (Some((kind, names_one(&e, &set))), false, findings)
+                }
+            }
+        }));
+        match result {
+            Err(_) => out.panics.push(shown()),
+            Ok((rejected, built, findings)) => {
+                out.loaded += usize::from(
+                    rejected
+                        .as_ref()
+                        .is_none_or(|(k, _)| k.starts_with("assembly")),
+                );
+                if let Some((kind, named)) = rejected {
+                    out.rejected.push(kind);
+                    out.rejected_naming += usize::from(named);
+                }
+                out.built += usize::from(built);
+                out.findings
+                    .extend(findings.into_iter().map(|f| format!("{}: {f}", shown())));
+                for f in &interpretation.findings {
+                    out.findings.push(format!("{}: {f}", shown()));
+                }
+                let sum = &mut out.interpretation;
+                sum.built |= interpretation.built;
+                sum.formulations += interpretation.formulations;
+                sum.solver_runs += interpretation.solver_runs;
+                sum.steps += interpretation.steps;
+                sum.position_solves += interpretation.position_solves;
+                sum.errors.extend(interpretation.errors);
+            }
+        }
+    }
+    out
+}
+
+/// Whether a diagnostic of `e` names a parameter of `set`.
+fn names_one(e: &crate::Errors, set: &[(String, f64)]) -> bool {
+    e.0.iter().any(|d| {
+        set.iter().any(|(k, _)| {
+            let k = format!("`{k}`");
+            d.message.contains(&k) || d.help.contains(&k) || d.item.contains(&k)
+        })
+    })
+}
+
+/// What is wrong with a refusal of `set`: an unknown name not named, or without the
+/// closest parameter suggested; a non-finite value whose parameter is not named.
+fn refusal_problems(
+    e: &crate::Errors,
+    set: &[(String, f64)],
+    names: &[String],
+    unknown: Option<&str>,
+) -> Vec<String> {
+    let mut out = Vec::new();
+    if let Some(u) = unknown {
+        let named = format!("no parameter `{u}`");
+        match e.0.iter().find(|d| d.message.contains(&named)) {
+            None => out.push(format!("unknown parameter `{u}` not named: {e}")),
+            Some(d) => {
+                let best = names.iter().map(|n| distance(u, n)).min().unwrap_or(0);
+                // The loader suggests only close names: one edit away always qualifies.
+                let suggested = d
+                    .help
+                    .split_once("did you mean `")
+                    .and_then(|(_, rest)| rest.split_once('`'))
+                    .map(|(s, _)| s);
+                match suggested {
+                    Some(s) if names.iter().any(|n| n == s) && distance(u, s) == best => {}
+                    None if best > 2 => {}
+                    _ => out.push(format!(
+                        "unknown parameter `{u}`: suggested {suggested:?}, a closest is {best} edits away: {}",
+                        d.help
+                    )),
+                }
+            }
+        }
+    }
+    for (k, v) in set {
+        if !v.is_finite() && names.contains(k) {
+            let named = format!("parameter `{k}` set to");
+            if !e.0.iter().any(|d| d.message.contains(&named)) {
+                out.push(format!(
+                    "non-finite `{k}` = {v} refused without naming it: {e}"
+                ));
+            }
+        }
+    }
+    out
 }

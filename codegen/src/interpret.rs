@@ -90,7 +90,19 @@ pub fn load_with(
 ) -> Result<Loaded, Errors> {
     let model = model::load_with(source, text, parameters)?;
     let system = equations::build(&model);
-    let assembly = crate::assembly::assemble(&model, &system, source)?;
+    let assembly = crate::assembly::assemble(&model, &system, source).map_err(|mut e| {
+        // A pose that no longer assembles: say which of the values set it follows from.
+        let set: Vec<_> = parameters
+            .iter()
+            .filter_map(|(k, v)| {
+                let p = model.parameters.iter().find(|p| p.name == *k)?;
+                let hit = e.0.iter().map(|d| p.affects.contains(&d.item)).collect();
+                Some((k.clone(), *v, hit))
+            })
+            .collect();
+        model::blame(&mut e, &set);
+        e
+    })?;
     let entry = entry(&model, &system, &assembly, (source, stale, parameters));
     Ok(Loaded {
         entry,

@@ -351,12 +351,94 @@ pub fn load_with(file: &str, text: &str, overrides: &[(String, f64)]) -> Result<
         params: HashMap::new(),
         values: HashMap::new(),
         uses: HashMap::new(),
+        reads: HashMap::new(),
+        error_spans: Vec::new(),
         arena: Arena::new(),
     };
     let model = v.model(raw, overrides);
     match model {
         Some(m) if v.errors.is_empty() => Ok(m),
-        _ => Err(Errors(v.errors)),
+        _ => {
+            // An error at a value that reads a parameter set from outside the file (directly
+            // or through derived ones), or in a derived parameter, follows from that setting.
+            let set: Vec<(String, f64, Vec<bool>)> = overrides
+                .iter()
+                .filter(|(k, _)| v.params.contains_key(k))
+                .map(|(k, x)| {
+                    let reached = v.reached(k);
+                    let mut params = vec![k.clone()];
+                    params.extend(reached.iter().filter_map(|i| {
+                        Some(
+                            i.strip_prefix("parameter `")?
+                                .strip_suffix('`')?
+                                .to_string(),
+                        )
+                    }));
+                    let spans: Vec<&Range<usize>> = params
+                        .iter()
+                        .flat_map(|p| v.reads.get(p))
+                        .flatten()
+                        .collect();
+                    let hit = v
+                        .errors
+                        .iter()
+                        .zip(&v.error_spans)
+                        .map(|(d, e)| {
+                            reached.contains(&d.item)
+                                && (d.item.starts_with("parameter `")
+                                    || spans.iter().any(|r| {
+                                        r.start < e.end.max(e.start + 1) && e.start < r.end
+                                    }))
+                        })
+                        .collect();
+                    (k.clone(), *x, hit)
+                })
+                .collect();
+            let mut errors = Errors(std::mem::take(&mut v.errors));
+            blame(&mut errors, &set);
+            Err(errors)
+        }
+    }
+}
+
+/// `x` as a person would write it: plain in the usual range, with an exponent outside it.
+pub(crate) fn shown(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e6).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// Adds to each diagnostic that follows from a parameter set from outside the file (`set`:
+/// name, value, and for each diagnostic whether it follows from it) which of them: the error
+/// is reported at the file's item, but the value that broke it is not in the file.
+pub(crate) fn blame(errors: &mut Errors, set: &[(String, f64, Vec<bool>)]) {
+    for (i, d) in errors.0.iter_mut().enumerate() {
+        let mut culprits: Vec<String> = Vec::new();
+        // The last setting of a name is the one used.
+        for (name, value, hit) in set.iter().rev() {
+            if hit[i]
+                && !culprits
+                    .iter()
+                    .any(|c| c.starts_with(&format!("`{name}` =")))
+            {
+                culprits.push(format!("`{name}` = {}", shown(*value)));
+            }
+        }
+        if !culprits.is_empty() {
+            culprits.reverse();
+            let s = if culprits.len() == 1 { "" } else { "s" };
+            let note = format!(
+                "this depends on parameter{s} {} as set from outside the file",
+                culprits.join(", ")
+            );
+            d.help = if d.help.is_empty() {
+                note
+            } else {
+                format!("{note}; {}", d.help)
+            };
+        }
     }
 }
 
@@ -373,13 +455,18 @@ struct Validator<'a> {
     values: HashMap<String, ParamState>,
     /// For each parameter, the items whose fields read it directly.
     uses: HashMap<String, BTreeSet<String>>,
+    /// For each parameter, where the values that read it directly are in the file.
+    reads: HashMap<String, Vec<Range<usize>>>,
+    /// Where each of `errors` is in the file.
+    error_spans: Vec<Range<usize>>,
     arena: Arena,
 }
 
 impl Validator<'_> {
     fn err(&mut self, span: Range<usize>, item: &str, message: String, help: &str) {
-        let d = self.map.diag(span, item, message, help);
+        let d = self.map.diag(span.clone(), item, message, help);
         self.errors.push(d);
+        self.error_spans.push(span);
     }
 
     fn model(&mut self, raw: RawFile, overrides: &[(String, f64)]) -> Option<Model> {
@@ -523,34 +610,41 @@ impl Validator<'_> {
         }
     }
 
+    /// The items that read parameter `name`, directly or through any chain of parameters
+    /// (those parameters included, as ``parameter `q` ``).
+    fn reached(&self, name: &str) -> BTreeSet<String> {
+        let mut items = BTreeSet::new();
+        let mut todo = vec![name.to_string()];
+        let mut seen = BTreeSet::new();
+        while let Some(p) = todo.pop() {
+            if !seen.insert(p.clone()) {
+                continue;
+            }
+            for item in self.uses.get(&p).into_iter().flatten() {
+                if let Some(q) = item
+                    .strip_prefix("parameter `")
+                    .and_then(|s| s.strip_suffix('`'))
+                {
+                    todo.push(q.to_string());
+                }
+                items.insert(item.clone());
+            }
+        }
+        items
+    }
+
     /// The parameters as resolved, each with the items it affects through any chain of
     /// parameters.
     fn parameters(&self, raw: &RawFile, overrides: &[(String, f64)]) -> Vec<Parameter> {
-        let direct = |name: &str| self.uses.get(name).cloned().unwrap_or_default();
         raw.parameters
             .iter()
             .map(|(k, v)| {
                 let name = k.get_ref().clone();
-                // Items reached through parameters that read this one, transitively.
-                let mut items = BTreeSet::new();
-                let mut todo = vec![name.clone()];
-                let mut seen = BTreeSet::new();
-                while let Some(p) = todo.pop() {
-                    if !seen.insert(p.clone()) {
-                        continue;
-                    }
-                    for item in direct(&p) {
-                        match item
-                            .strip_prefix("parameter `")
-                            .and_then(|s| s.strip_suffix('`'))
-                        {
-                            Some(q) => todo.push(q.to_string()),
-                            None => {
-                                items.insert(item);
-                            }
-                        }
-                    }
-                }
+                let items: BTreeSet<String> = self
+                    .reached(&name)
+                    .into_iter()
+                    .filter(|i| !i.starts_with("parameter `"))
+                    .collect();
                 let value = match self.values.get(&name) {
                     Some(ParamState::Done(x)) => *x,
                     _ => f64::NAN,
@@ -658,5 +752,72 @@ impl Validator<'_> {
             return None;
         }
         Some(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const PENDULUM: &str = include_str!("../../mechanisms/simple_pendulum.toml");
+
+    fn refused(set: &[(&str, f64)]) -> Errors {
+        let set: Vec<(String, f64)> = set.iter().map(|(k, v)| (k.to_string(), *v)).collect();
+        load_with("pendulum.toml", PENDULUM, &set).expect_err("refused")
+    }
+
+    /// A value set from outside the file that breaks an item is reported at the item, with
+    /// the parameter it follows from (directly or through a derived parameter) named.
+    #[test]
+    fn a_bad_value_set_from_outside_names_its_parameter() {
+        let e = refused(&[("m", -1.0)]);
+        let d =
+            e.0.iter()
+                .find(|d| d.message.contains("mass must be positive"));
+        let d = d.unwrap_or_else(|| panic!("{e}"));
+        assert_eq!(d.item, "body `p1`");
+        assert!(d.help.contains("parameter `m` = -1"), "{e}");
+        // `ball` is derived from `m`: the inertia error names `m` as well.
+        let e = refused(&[("l", 2.0), ("m", 1e-320), ("ball", -1.0)]);
+        let d = e.0.iter().find(|d| d.message.contains("inertias"));
+        let d = d.unwrap_or_else(|| panic!("{e}"));
+        assert!(d.help.contains("parameter `ball` = -1"), "{e}");
+        assert!(
+            !d.help.contains("`l`"),
+            "`l` does not reach the inertia: {e}"
+        );
+        // Through the derived `ball`, a negative `m` breaks the inertias too.
+        let e = refused(&[("m", -1.0)]);
+        let d = e.0.iter().find(|d| d.message.contains("inertias"));
+        let d = d.unwrap_or_else(|| panic!("{e}"));
+        assert!(d.help.contains("parameter `m` = -1 "), "{e}");
+        // Extreme values are shown with an exponent.
+        let e = refused(&[("m", -1e-320)]);
+        assert!(e.0[0].message.ends_with("got -1e-320"), "{e}");
+    }
+
+    #[test]
+    fn non_finite_and_unknown_values_are_refused_naming_the_parameter() {
+        for v in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+            let e = refused(&[("l", v)]);
+            assert!(
+                e.0.iter().any(|d| d.item == "parameter `l`"
+                    && d.message == format!("parameter `l` set to {v}")),
+                "{e}"
+            );
+        }
+        let e = refused(&[("bal", 1.0)]);
+        assert!(
+            e.0[0].message == "no parameter `bal` to set"
+                && e.0[0].help.starts_with("did you mean `ball`?"),
+            "{e}"
+        );
+        // Accepted values are used as given, the derived ones follow.
+        let set = [("m".to_string(), 2.0)];
+        let m = load_with("pendulum.toml", PENDULUM, &set).unwrap();
+        assert_eq!(m.bodies[0].mass, 2.0);
+        let ball = m.parameters.iter().find(|p| p.name == "ball").unwrap();
+        assert_eq!(ball.value, 0.4 * 2.0 * 0.01 * 0.01);
+        assert!(m.parameters.iter().any(|p| p.name == "m" && p.overridden));
     }
 }

@@ -1,13 +1,19 @@
 //! `cargo run --release -p symbody-codegen --bin fuzz -- [--inputs N] [--seed S]
-//! [--generate-every K] [--interpret-every J] [--solve-every L] [--dump I]`: N inputs (default 10⁶), three
+//! [--generate-every K] [--interpret-every J] [--solve-every L] [--parameters-every P]
+//! [--parameter-sets S] [--dump I]`: N inputs (default 10⁶), three
 //! in four mutants of the shipped mechanism files and one in four a random structured file;
 //! every input goes through `load`, and one loaded mutant in K (default 1000) and one loaded
 //! structured file in 20 through all of `generate`. Every loaded structured file and one
 //! loaded mutant in J (default 100) also goes through the interpreter
 //! ([`symbody_codegen::fuzz::interpret_one`]: every mechanism function at the file's state and
 //! at perturbed ones with NaN, infinite and huge entries), one in L of those (default 1) through
-//! a few HHT steps and kinematic position solves too. Reports throughput, the runtime's typed
-//! errors by kind, any panic and any solver `Ok` with a non-finite state (a finding). Inputs
+//! a few HHT steps and kinematic position solves too. Every loaded structured file and one
+//! loaded mutant in P (default 10; 0: none) also get S (default 4) random and degenerate
+//! override sets of their parameters ([`symbody_codegen::fuzz::parameter_case`]), each
+//! through `model::load_with` and, when accepted, the interpreter and the solvers. Reports
+//! throughput, the runtime's typed errors by kind, the refused parameter sets by kind, any
+//! panic and any finding (a solver `Ok` with a non-finite state, a non-finite mechanism
+//! accepted, a bad value accepted or refused without naming it). Inputs
 //! that panic or give a finding are written to `codegen/tests/fuzz_regressions/`, where
 //! `cargo test` replays them.
 
@@ -16,7 +22,9 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
-use symbody_codegen::fuzz::{interpret_one, mutate, run_one, structured, Outcome, Rng};
+use symbody_codegen::fuzz::{
+    interpret_one, mutate, parameter_case, run_one, structured, Outcome, Rng,
+};
 
 /// What the interpreter share did, summed over the inputs.
 #[derive(Default)]
@@ -28,6 +36,24 @@ struct Interpreted {
     solver_runs: usize,
     steps: usize,
     position_solves: usize,
+    errors: BTreeMap<String, usize>,
+    findings: usize,
+    panics: usize,
+}
+
+/// What the parameter share did, summed over the inputs.
+#[derive(Default)]
+struct Parametrized {
+    inputs: usize,
+    sets: usize,
+    loaded: usize,
+    built: usize,
+    formulations: usize,
+    solver_runs: usize,
+    steps: usize,
+    position_solves: usize,
+    rejected: BTreeMap<String, usize>,
+    rejected_naming: usize,
     errors: BTreeMap<String, usize>,
     findings: usize,
     panics: usize,
@@ -94,6 +120,11 @@ fn main() {
     // 0 turns the interpreter off.
     let interpret_every = arg(&args, "--interpret-every", 100) as usize;
     let solve_every = arg(&args, "--solve-every", 1).max(1) as usize;
+    // 0 turns parameter fuzzing off.
+    let parameters_every = arg(&args, "--parameters-every", 10) as usize;
+    let parameter_sets = arg(&args, "--parameter-sets", 4) as usize;
+    let parametrized = Mutex::new(Parametrized::default());
+    let parameter_mutants = AtomicUsize::new(0);
     let interpreted = Mutex::new(Interpreted::default());
     let interpret_seen = AtomicUsize::new(0);
     let loaded_mutants = AtomicUsize::new(0);
@@ -179,6 +210,43 @@ fn main() {
                         }
                     }
                 }
+                // Parameter values: every loaded structured file, one loaded mutant in P.
+                let parameters = parameters_every > 0
+                    && outcome != Outcome::Rejected
+                    && outcome != Outcome::Panicked
+                    && (is_structured
+                        || parameter_mutants
+                            .fetch_add(1, Ordering::Relaxed)
+                            .is_multiple_of(parameters_every));
+                if parameters {
+                    let r = parameter_case(&mutant, &mut rng, parameter_sets, 1, true);
+                    let mut s = parametrized.lock().unwrap();
+                    s.inputs += usize::from(r.parameters > 0);
+                    s.sets += r.sets;
+                    s.loaded += r.loaded;
+                    s.built += r.built;
+                    s.formulations += r.interpretation.formulations;
+                    s.solver_runs += r.interpretation.solver_runs;
+                    s.steps += r.interpretation.steps;
+                    s.position_solves += r.interpretation.position_solves;
+                    s.rejected_naming += r.rejected_naming;
+                    for e in r.rejected {
+                        *s.rejected.entry(e).or_default() += 1;
+                    }
+                    for e in r.interpretation.errors {
+                        *s.errors.entry(e).or_default() += 1;
+                    }
+                    if let Some(p) = r.panics.first() {
+                        s.panics += r.panics.len();
+                        outcome = Outcome::Panicked;
+                        eprintln!("parameter set panicked on input {i} (from {name}): {p}");
+                    }
+                    if let Some(f) = r.findings.first() {
+                        s.findings += r.findings.len();
+                        finding = true;
+                        eprintln!("parameter finding on input {i} (from {name}): {f}");
+                    }
+                }
                 if is_structured && outcome != Outcome::Rejected {
                     structured_loaded.fetch_add(1, Ordering::Relaxed);
                 }
@@ -235,7 +303,46 @@ fn main() {
         s.findings,
         resident_mib()
     );
-    if c(Outcome::Panicked) > 0 || s.findings > 0 {
+    let p = parametrized.into_inner().unwrap();
+    println!(
+        "  parameter values (every loaded structured file, one loaded mutant in \
+         {parameters_every}, {parameter_sets} sets each): {} files with parameters, {} sets, \
+         {} accepted by load_with, {} built in the interpreter, {} formulations evaluated; \
+         {} HHT starts, {} HHT steps Ok, {} position solves",
+        p.inputs,
+        p.sets,
+        p.loaded,
+        p.built,
+        p.formulations,
+        p.solver_runs,
+        p.steps,
+        p.position_solves
+    );
+    let refused: usize = p.rejected.values().sum();
+    println!(
+        "  parameter sets refused {refused} ({} with a diagnostic naming a parameter of the set), \
+         by kind of the first diagnostic:",
+        p.rejected_naming
+    );
+    let mut kinds: Vec<(&String, &usize)> = p.rejected.iter().collect();
+    kinds.sort_by(|a, b| b.1.cmp(a.1).then(a.0.cmp(b.0)));
+    for (k, v) in kinds.iter().take(15) {
+        println!("    {v:>7}  {k}");
+    }
+    let rest: usize = kinds.iter().skip(15).map(|(_, v)| **v).sum();
+    if rest > 0 {
+        println!("    {rest:>7}  {} other kinds", kinds.len() - 15);
+    }
+    let errors: Vec<String> = p.errors.iter().map(|(k, v)| format!("{k} {v}")).collect();
+    println!(
+        "  runtime errors with parameter sets: {}",
+        errors.join(", ")
+    );
+    println!(
+        "  parameter-set panics {}, findings {}",
+        p.panics, p.findings
+    );
+    if c(Outcome::Panicked) > 0 || s.findings > 0 || p.panics > 0 || p.findings > 0 {
         std::process::exit(1);
     }
 }

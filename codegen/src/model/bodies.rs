@@ -62,7 +62,7 @@ impl Validator<'_> {
                 self.err(
                     rb.mass.as_ref().map_or(span.clone(), |s| s.span()),
                     &item,
-                    format!("mass must be positive, got {m}"),
+                    format!("mass must be positive, got {}", super::shown(m)),
                     "give the body's mass in kg",
                 );
             }

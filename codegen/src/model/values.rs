@@ -105,6 +105,7 @@ impl Validator<'_> {
                     .entry(n.clone())
                     .or_default()
                     .insert(item.to_string());
+                self.reads.entry(n.clone()).or_default().push(span.clone());
                 if let Some(v) = self.param_value(&n) {
                     values.insert(n, v);
                 } else {
@@ -254,7 +255,11 @@ impl Validator<'_> {
     ) -> Option<Id> {
         for n in referenced_names(src.get_ref()) {
             if self.params.contains_key(&n) {
-                self.uses.entry(n).or_default().insert(item.to_string());
+                self.uses
+                    .entry(n.clone())
+                    .or_default()
+                    .insert(item.to_string());
+                self.reads.entry(n).or_default().push(src.span());
             }
         }
         let params: Vec<(String, f64)> = self
