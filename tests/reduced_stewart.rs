@@ -141,7 +141,12 @@ fn the_paper_scenario_on_the_reduced_model_records_the_same_series() {
 #[test]
 fn generic_runs_on_the_reduced_model_record_the_full_models_series() {
     use symbody::generic::{self, Options};
-    for (name, n_reduced) in [("stewart_6_6", 60), ("slider_crank", 0), ("oscillators", 0)] {
+    for (name, n_reduced) in [
+        ("stewart_6_6", 60),
+        ("slider_crank", 0),
+        ("oscillators", 0),
+        ("simple_pendulum", 3),
+    ] {
         let entry = generic::find(&symbody_mechanisms::REGISTRY, name).unwrap();
         let opts = Options {
             t_end: Some(0.5),

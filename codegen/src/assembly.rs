@@ -54,6 +54,8 @@ pub struct Report {
     pub redundant: Vec<(usize, String)>,
     /// A six-leg platform: its body's name and the leg drivers' names.
     pub platform: Option<(String, Vec<String>)>,
+    /// The planar model's coordinates, rows and dependent rows' names.
+    pub planar: Option<(usize, usize, Vec<String>)>,
     /// Warnings (e.g. a corrected initial pose).
     pub warnings: Vec<String>,
 }
@@ -95,6 +97,16 @@ impl fmt::Display for Report {
                 legs.join(", ")
             )?;
         }
+        if let Some((n, m, redundant)) = &self.planar {
+            write!(
+                f,
+                "\n  planar model: {n} coordinates (x, y, γ per body), {m} rows, {}",
+                match redundant.len() {
+                    0 => "no redundant rows".to_string(),
+                    _ => format!("redundant: {}", redundant.join(", ")),
+                }
+            )?;
+        }
         for w in &self.warnings {
             write!(f, "\n  warning: {w}")?;
         }
@@ -106,6 +118,8 @@ impl fmt::Display for Report {
 pub struct Assembly {
     pub q0: Vec<f64>,
     pub redundant_rows: Vec<u32>,
+    /// The planar model (`planar = true`), checked to keep the spatial model's mobility.
+    pub planar: Option<crate::reduce::Reduced>,
     /// The six-leg platform, when the mechanism is one.
     pub platform: Option<Platform>,
     pub report: Report,
@@ -491,6 +505,81 @@ fn zero_inertias_fixed(
 }
 
 /// Assembles the initial pose at t = 0 and analyses Φq there.
+/// Adds row `r` of `jac` to the orthonormal `basis` when it is independent of it (twice
+/// orthogonalized, relative tolerance [`RANK_TOL`]); `false`: dependent.
+fn extend_basis(basis: &mut Vec<DVector<f64>>, jac: &DMatrix<f64>, r: usize) -> bool {
+    let row = jac.row(r).transpose();
+    let norm = row.norm();
+    let mut v = row.clone();
+    for _ in 0..2 {
+        for b in basis.iter() {
+            let c = b.dot(&v);
+            v -= b * c;
+        }
+    }
+    if v.norm() <= RANK_TOL * norm.max(1e-300) || norm == 0.0 {
+        return false;
+    }
+    basis.push(v.normalize());
+    true
+}
+
+/// The planar model of a `planar = true` file (declared at `line`), with its own dependent
+/// rows; an error when a row cannot hold in the plane, a warning (in `warnings`) when it has
+/// fewer degrees of freedom than the spatial model's `dof`.
+#[allow(clippy::too_many_arguments)]
+fn planar_check(
+    model: &Model,
+    sys: &System,
+    q: &[f64],
+    driver_rows: &[usize],
+    dof: usize,
+    line: usize,
+    file: &str,
+    warnings: &mut Vec<String>,
+) -> Result<crate::reduce::Reduced, Errors> {
+    let fail = |message: String| {
+        Errors(vec![Diagnostic {
+            file: file.to_string(),
+            line,
+            column: 1,
+            item: "`planar`".to_string(),
+            message,
+            help: "a planar mechanism turns about Z only: revolute axes along Z, prismatic axes \
+                   and loads in the plane; or leave `planar` out for the spatial model alone"
+                .to_string(),
+        }])
+    };
+    let mut red = crate::reduce::planar(sys, &model.bodies, q)
+        .map_err(|e| fail(format!("`planar = true`, but {e}")))?;
+    let qr: Vec<f64> = red.coords.iter().map(|&c| q[c]).collect();
+    let jac = Eval { sys: &red.system }.phi_q(&qr);
+    let is_driver = |k: &usize| driver_rows.contains(&red.rows[*k]);
+    let m = red.system.n_constraints;
+    let order = (0..m)
+        .filter(|k| !is_driver(k))
+        .chain((0..m).filter(is_driver));
+    let mut basis = Vec::new();
+    let mut dependent: Vec<usize> = order
+        .filter(|&k| !extend_basis(&mut basis, &jac, k))
+        .collect();
+    dependent.sort_unstable();
+    let planar_dof = red.system.n_coords - basis.len();
+    if planar_dof < dof {
+        // Out-of-plane freedoms of the spatial model (a pendulum on a distance joint can
+        // swing out of its plane): they stay at rest when nothing excites them, which the
+        // file's gravity and initial velocities in the plane ensure for symmetric loads.
+        warnings.push(format!(
+            "the planar model holds {} out-of-plane degree(s) of freedom of the spatial model \
+             fixed ({planar_dof} DOF in the plane, {dof} in space): both move alike only while \
+             no load pushes out of the plane",
+            dof - planar_dof
+        ));
+    }
+    red.redundant = Some(dependent);
+    Ok(red)
+}
+
 pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Errors> {
     let eval = Eval { sys };
     let q_file = model.q0();
@@ -598,19 +687,8 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
     let mut redundant = Vec::new();
     let mut rank_joints = 0;
     for &r in &order {
-        let row = jac.row(r).transpose();
-        let norm = row.norm();
-        let mut v = row.clone();
-        for _ in 0..2 {
-            for b in &basis {
-                let c = b.dot(&v);
-                v -= b * c;
-            }
-        }
-        if v.norm() <= RANK_TOL * norm.max(1e-300) || norm == 0.0 {
+        if !extend_basis(&mut basis, &jac, r) {
             redundant.push(r);
-        } else {
-            basis.push(v.normalize());
         }
         if !driver_rows.contains(&r) {
             rank_joints = basis.len();
@@ -618,6 +696,19 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
     }
     redundant.sort_unstable();
     let rank = basis.len();
+    let planar = match model.planar {
+        Some(line) => Some(planar_check(
+            model,
+            sys,
+            &q,
+            &driver_rows,
+            sys.n_coords - rank,
+            line,
+            file,
+            &mut warnings,
+        )?),
+        None => None,
+    };
     let joint_rows: i64 = model.joints.iter().map(|j| j.rows() as i64).sum();
     let platform = legs::detect(model, &q);
     let report = Report {
@@ -638,11 +729,21 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
             let legs = p.legs.iter().map(|l| model.drivers[l.driver].name.clone());
             (model.bodies[p.body].name.clone(), legs.collect())
         }),
+        planar: planar.as_ref().map(|p| {
+            let r = &p.system;
+            let dependent = p.redundant.iter().flatten();
+            (
+                r.n_coords,
+                r.n_constraints,
+                dependent.map(|&k| r.row_names[k].clone()).collect(),
+            )
+        }),
         warnings,
     };
     Ok(Assembly {
         q0: q,
         redundant_rows: redundant.iter().map(|&r| r as u32).collect(),
+        planar,
         platform,
         report,
     })

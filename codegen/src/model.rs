@@ -283,6 +283,10 @@ pub struct Model {
     /// The file's `repair_initial_pose`: joints violated by more than a modelling tolerance
     /// are assembled with a warning instead of being an error ([`crate::assembly`]).
     pub repair_initial_pose: bool,
+    /// The line of the file's `planar = true`: every body moves in its plane z = const and
+    /// turns about Z only, so the generator also emits the model in (x, y, γ) per body
+    /// ([`crate::reduce::planar`]).
+    pub planar: Option<usize>,
     pub bodies: Vec<Body>,
     pub joints: Vec<Joint>,
     pub drivers: Vec<Driver>,
@@ -539,6 +543,18 @@ impl Validator<'_> {
                 );
             }
         }
+        if let Some(p) = raw.planar.as_ref().filter(|p| *p.get_ref()) {
+            self.planar_bodies(&bodies, p.span(), &names);
+            if gravity.is_some_and(|g| g[2] != 0.0) {
+                let span = raw.gravity.as_ref().map_or(p.span(), |g| g.span());
+                self.err(
+                    span,
+                    "`gravity`",
+                    "`planar = true`, but gravity has a component along Z, out of the plane".into(),
+                    "a planar mechanism moves in planes z = const: give gravity in the XY plane",
+                );
+            }
+        }
         if !self.errors.is_empty() {
             return None;
         }
@@ -549,6 +565,11 @@ impl Validator<'_> {
             gravity: gravity?,
             t_end: t_end?,
             repair_initial_pose: raw.repair_initial_pose.unwrap_or(false),
+            planar: raw
+                .planar
+                .as_ref()
+                .filter(|p| *p.get_ref())
+                .map(|p| self.map.position(p.span().start).0),
             bodies,
             lines: names
                 .iter()
@@ -606,6 +627,58 @@ impl Validator<'_> {
                     );
                 }
                 Some((_, v)) => *v = raw::Scalar::Float(*value),
+            }
+        }
+    }
+
+    /// `planar = true` (at `span`): each body in Euler angles, turned about Z only and moving
+    /// in its plane at the start, so that pinning z, θ and β at their initial values leaves
+    /// the motion unchanged (the generator checks the mobility too).
+    fn planar_bodies(
+        &mut self,
+        bodies: &[Body],
+        span: Range<usize>,
+        names: &HashMap<String, Range<usize>>,
+    ) {
+        for b in bodies {
+            let at = names.get(&b.name).cloned().unwrap_or_else(|| span.clone());
+            let item = format!("body `{}`", b.name);
+            if b.rotation != Rotation::Euler {
+                self.err(
+                    at,
+                    &item,
+                    format!(
+                        "`planar = true` needs Euler angles, but this body uses {}",
+                        b.rotation.name()
+                    ),
+                    "add `rotation = \"euler\"` at the top of the file (or on the body)",
+                );
+                continue;
+            }
+            if b.q0[3] != 0.0 || b.q0[4] != 0.0 {
+                self.err(
+                    at,
+                    &item,
+                    format!(
+                        "`planar = true`, but the body starts tilted out of the plane (θ = {}, β = {})",
+                        b.q0[3], b.q0[4]
+                    ),
+                    "a planar body turns about Z only: give its orientation as `angles = [0, 0, γ]`",
+                );
+                continue;
+            }
+            let out_of_plane = [b.qd0[2], b.qd0[3], b.qd0[4]];
+            if out_of_plane.iter().any(|v| !(v.abs() <= 1e-12)) {
+                self.err(
+                    at,
+                    &item,
+                    format!(
+                        "`planar = true`, but the body starts moving out of the plane (ż = {}, \
+                         angular velocity about X or Y {}, {})",
+                        out_of_plane[0], out_of_plane[1], out_of_plane[2]
+                    ),
+                    "give `velocity` with z = 0 and `angular_velocity` along Z only",
+                );
             }
         }
     }

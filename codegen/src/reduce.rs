@@ -17,8 +17,9 @@ use crate::symbolic::Entry;
 /// One eliminated row: `coord = weight · target + offset(t)`.
 #[derive(Debug, Clone)]
 pub struct Substitution {
-    /// The eliminated row of the full system.
-    pub row: usize,
+    /// The eliminated row of the full system; `None` for a coordinate a planar model pins
+    /// ([`planar`]).
+    pub row: Option<usize>,
     /// The eliminated coordinate (full index).
     pub coord: usize,
     /// The coordinate it follows (full index), if any.
@@ -42,6 +43,20 @@ pub struct Reduced {
     pub coords: Vec<usize>,
     /// Full index of each reduced row.
     pub rows: Vec<usize>,
+    /// The reduced system's own dependent rows (reduced indices), found by [`planar`]'s
+    /// check; `None`: the full model's redundant rows that were kept.
+    pub redundant: Option<Vec<usize>>,
+}
+
+/// What one elimination takes: the row (if any), the coordinate, the coordinate it follows
+/// with its weight `−b/a`, the slope `a`, and the pinned value of a row-less one.
+struct Elimination {
+    row: Option<usize>,
+    coord: usize,
+    target: Option<usize>,
+    slope: f64,
+    b: f64,
+    pinned: f64,
 }
 
 /// The substitutable rows of `sys`, chosen so that no eliminated coordinate is another
@@ -87,30 +102,88 @@ fn choose(sys: &System) -> Vec<(usize, usize, Option<usize>, f64, f64)> {
 
 /// Eliminates every substitutable row of `sys`; `None` when there is none.
 pub fn substitute(sys: &System) -> Option<Reduced> {
-    let chosen = choose(sys);
+    let chosen: Vec<Elimination> = choose(sys)
+        .into_iter()
+        .map(|(row, coord, target, slope, b)| Elimination {
+            row: Some(row),
+            coord,
+            target,
+            slope,
+            b,
+            pinned: 0.0,
+        })
+        .collect();
     if chosen.is_empty() {
         return None;
     }
+    Some(eliminate(sys, &chosen, false).expect("rows are only dropped for planar models"))
+}
+
+/// The planar model of `sys` (decision 24's substitution, issue "planar mechanisms"): every
+/// Euler body's z, θ and β pinned at `q0`'s values, so that each body keeps (x, y, γ), and
+/// the rows that the pins make identically zero (a revolute's z row and its two axis rows)
+/// dropped. `Err` names a row the pins make a nonzero constant: the bodies cannot all stay
+/// in their planes. Whether the planar model keeps the spatial one's mobility is
+/// [`crate::assembly::planar_check`]'s to decide.
+pub fn planar(sys: &System, bodies: &[crate::model::Body], q0: &[f64]) -> Result<Reduced, String> {
+    let pins: Vec<Elimination> = bodies
+        .iter()
+        .flat_map(|b| {
+            [2, 3, 4].map(|k| Elimination {
+                row: None,
+                coord: b.offset + k,
+                target: None,
+                slope: 1.0,
+                b: 0.0,
+                // θ and β are exactly 0 (the model checked); z is the body's own plane.
+                pinned: if k == 2 { q0[b.offset + 2] } else { 0.0 },
+            })
+        })
+        .collect();
+    eliminate(sys, &pins, true)
+}
+
+/// `sys` with the `chosen` eliminations substituted; with `drop_zero_rows`, the rows that
+/// become the constant 0 are left out too (`Err`: one became another constant).
+fn eliminate(
+    sys: &System,
+    chosen: &[Elimination],
+    drop_zero_rows: bool,
+) -> Result<Reduced, String> {
     let mut a = sys.arena.clone();
     let n = sys.n_coords;
-    let is_eliminated = |c: usize| chosen.iter().any(|s| s.1 == c);
+    let is_eliminated = |c: usize| chosen.iter().any(|s| s.coord == c);
     let coords: Vec<usize> = (0..n).filter(|&c| !is_eliminated(c)).collect();
     let mut new_index = vec![usize::MAX; n];
     for (k, &c) in coords.iter().enumerate() {
         new_index[c] = k;
     }
-    let rows: Vec<usize> = (0..sys.n_constraints)
-        .filter(|&r| !chosen.iter().any(|s| s.0 == r))
+    let mut rows: Vec<usize> = (0..sys.n_constraints)
+        .filter(|&r| !chosen.iter().any(|s| s.row == Some(r)))
         .collect();
 
     // g(t) = Φ_r at q = 0, and its time derivatives; the offset is −g/a.
     let zero = a.constant(0.0);
     let one = a.constant(1.0);
     let mut substitutions = Vec::new();
-    for &(row, coord, target, slope, b) in &chosen {
-        let g = a.substitute(&[sys.phi[row]], &|v| matches!(v, Var::Q(_)).then_some(zero))[0];
-        let scale = a.constant(-1.0 / slope);
-        let c0 = a.mul(scale, g);
+    for e in chosen {
+        let &Elimination {
+            row,
+            coord,
+            target,
+            slope,
+            b,
+            pinned,
+        } = e;
+        let c0 = match row {
+            Some(row) => {
+                let g =
+                    a.substitute(&[sys.phi[row]], &|v| matches!(v, Var::Q(_)).then_some(zero))[0];
+                let scale = a.constant(-1.0 / slope);
+                a.mul(scale, g)
+            }
+            None => a.constant(pinned),
+        };
         let c1 = a.derivative(&[c0], &|v| (v == Var::T).then_some(one))[0];
         let c2 = a.derivative(&[c1], &|v| (v == Var::T).then_some(one))[0];
         substitutions.push(Substitution {
@@ -149,7 +222,35 @@ pub fn substitute(sys: &System) -> Option<Reduced> {
     };
 
     let kept: Vec<Id> = rows.iter().map(|&r| sys.phi[r]).collect();
-    let phi = a.substitute(&kept, &map);
+    let mut phi = a.substitute(&kept, &map);
+    if drop_zero_rows {
+        // A row held at the initial pose that the pins make constant is that pose's residual
+        // (roundoff of the assembly, whose tolerance is 1e-9); anything larger cannot hold.
+        for (&r, &p) in rows.iter().zip(&phi) {
+            match a.as_const(p) {
+                Some(v) if !(v.abs() <= 1e-9) => {
+                    return Err(format!(
+                        "row `{}` becomes the constant {v:e} in the plane",
+                        sys.row_names[r]
+                    ))
+                }
+                _ => {}
+            }
+        }
+        let keep: Vec<bool> = phi.iter().map(|&p| a.as_const(p).is_none()).collect();
+        rows = rows
+            .iter()
+            .zip(&keep)
+            .filter(|(_, k)| **k)
+            .map(|(r, _)| *r)
+            .collect();
+        phi = phi
+            .iter()
+            .zip(&keep)
+            .filter(|(_, k)| **k)
+            .map(|(p, _)| *p)
+            .collect();
+    }
     let m = coords.len();
     let (phi_q, phi_t, gamma) = derivatives(&mut a, &phi, m);
     let potential = a.substitute(&[sys.potential], &map)[0];
@@ -168,7 +269,7 @@ pub fn substitute(sys: &System) -> Option<Reduced> {
         .iter()
         .map(|d| reduce_dynamics(&mut a, d, &map, &weight_of, &substitutions, m))
         .collect();
-    Some(Reduced {
+    Ok(Reduced {
         system: System {
             arena: a,
             n_coords: m,
@@ -189,6 +290,7 @@ pub fn substitute(sys: &System) -> Option<Reduced> {
         substitutions,
         coords,
         rows,
+        redundant: None,
     })
 }
 
@@ -276,15 +378,16 @@ impl Reduced {
             out[r] = lambda[k];
         }
         for s in &self.substitutions {
+            let Some(row) = s.row else { continue };
             let i = s.coord as u32;
             let coupling: f64 = full
                 .phi_q
                 .iter()
                 .zip(phi_q)
-                .filter(|((r, c, _), _)| *c == i && *r as usize != s.row)
+                .filter(|((r, c, _), _)| *c == i && *r as usize != row)
                 .map(|((r, _, _), v)| v * out[*r as usize])
                 .sum();
-            out[s.row] = (force[s.coord] - mass_times_qdd[s.coord] - coupling) / s.slope;
+            out[row] = (force[s.coord] - mass_times_qdd[s.coord] - coupling) / s.slope;
         }
         out
     }

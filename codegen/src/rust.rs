@@ -388,21 +388,31 @@ fn reduced_module(
     let q0: Vec<f64> = red.coords.iter().map(|&c| asm.q0[c]).collect();
     let qd_full = model.qd0();
     let qd0: Vec<f64> = red.coords.iter().map(|&c| qd_full[c]).collect();
-    let redundant: Vec<u32> = asm
-        .redundant_rows
-        .iter()
-        .filter_map(|&row| {
-            red.rows
-                .iter()
-                .position(|&k| k == row as usize)
-                .map(|k| k as u32)
-        })
-        .collect();
+    let redundant: Vec<u32> = match &red.redundant {
+        Some(own) => own.iter().map(|&k| k as u32).collect(),
+        None => asm
+            .redundant_rows
+            .iter()
+            .filter_map(|&row| {
+                red.rows
+                    .iter()
+                    .position(|&k| k == row as usize)
+                    .map(|k| k as u32)
+            })
+            .collect(),
+    };
     let n_red = redundant.len();
     let coord_names = &r.coord_names;
     let row_names = &r.row_names;
     let subs = red.substitutions.iter().map(|s| {
-        let (row, coord, w, a) = (s.row as u32, s.coord as u32, s.weight, s.slope);
+        let (coord, w, a) = (s.coord as u32, s.weight, s.slope);
+        let row = match s.row {
+            Some(r) => {
+                let r = r as u32;
+                quote!(Some(#r))
+            }
+            None => quote!(None),
+        };
         let target = match s.target {
             Some(j) => {
                 let j = j as u32;
@@ -670,7 +680,12 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
         ));
         impls.push(mechanism_impl(&type_name, &modname, &type_doc));
     }
-    let reduced = crate::reduce::substitute(sys);
+    // A planar model takes the place of the substitution pass's (a planar file's bodies are
+    // in Euler angles, where that pass finds only what the plane already pins).
+    let reduced = asm
+        .planar
+        .clone()
+        .or_else(|| crate::reduce::substitute(sys));
     if let Some(red) = &reduced {
         items.push(reduced_module(model, sys, asm, red));
     }

@@ -152,7 +152,7 @@ fn the_paper_model_loses_its_eighteen_angle_equalities() {
     let names: Vec<&str> = red
         .substitutions
         .iter()
-        .map(|s| sys.row_names[s.row].as_str())
+        .map(|s| sys.row_names[s.row.expect("a row was eliminated")].as_str())
         .collect();
     assert_eq!(names.len(), 18);
     for (k, n) in names.iter().enumerate() {
@@ -203,7 +203,7 @@ fn only_rows_linear_in_at_most_two_coordinates_are_eliminated() {
             .map(|r| {
                 r.substitutions
                     .iter()
-                    .map(|s| sys.row_names[s.row].clone())
+                    .map(|s| sys.row_names[s.row.expect("a row was eliminated")].clone())
                     .collect()
             })
             .unwrap_or_default();

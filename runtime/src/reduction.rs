@@ -11,7 +11,9 @@ use crate::mechanism::Mechanism;
 /// respect to `q[coord]` is `slope`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Substitution {
-    pub row: u32,
+    /// The eliminated row of the full model; `None` for a coordinate pinned by a planar model
+    /// (its plane holds it, no row of the spatial model does on its own).
+    pub row: Option<u32>,
     pub coord: u32,
     pub target: Option<u32>,
     pub weight: f64,
@@ -98,7 +100,8 @@ impl Reduction {
         full.force(q, qd, t, &mut force);
         mass_times(info, &mass, qdd, &mut m_qdd);
         for s in self.substitutions {
-            let (i, row) = (s.coord, s.row as usize);
+            let Some(row) = s.row else { continue };
+            let (i, row) = (s.coord, row as usize);
             let coupling: f64 = (0..phi_q.len())
                 .filter(|&k| info.phi_q_cols[k] == i && info.phi_q_rows[k] as usize != row)
                 .map(|k| phi_q[k] * out[info.phi_q_rows[k] as usize])

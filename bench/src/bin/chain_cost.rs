@@ -3,9 +3,9 @@
 //!
 //! `cargo run --release -p symbody-bench --bin chain_cost` cuts the shipped N = 40 file down to
 //! N four-bars (the first N + 1 cranks, N couplers and their joints; nothing else changes),
-//! runs each interpreted (N = 2 and 40 also compiled) at A02's settings (α = 0, h = 4e-4 s)
-//! from t = 0.3 s, and writes `bench-results/chain_cost.{csv,md,png}`: cost per step and per
-//! body against the number of bodies (2N + 1 links).
+//! runs each interpreted (N = 40 also compiled, spatial and planar) at A02's settings (α = 0,
+//! h = 4e-4 s) from t = 0.3 s, and writes `bench-results/chain_cost.{csv,md,png}`: cost per
+//! step and per body against the number of bodies (2N + 1 links).
 
 use std::fmt::Write as _;
 use std::hint::black_box;
@@ -141,8 +141,15 @@ fn main() {
         std::fs::write(&path, chain_file(&full, n)).unwrap_or_else(|e| fail(&e.to_string()));
         let loaded = symbody::files::load(&path).unwrap_or_else(|e| fail(&e.to_string()));
         let interpreted = measure(n, "interpreted", loaded.entry.default_mechanism());
-        if let Some(entry) = symbody_bench::REGISTRY.find(&format!("n_four_bar_{n}")) {
+        // The file the others are cut from, compiled: its spatial and its planar model.
+        if let Some(entry) = symbody_bench::REGISTRY
+            .find("n_four_bar_40")
+            .filter(|_| n == 40)
+        {
             let compiled = measure(n, "compiled", entry.default_mechanism());
+            if let Some((planar, _)) = entry.reduced(entry.formulations[0].0) {
+                rows.push(measure(n, "planar", planar));
+            }
             // The cut file is the shipped one: same sizes as the compiled code of its file.
             if (compiled.coords, compiled.rows) != (interpreted.coords, interpreted.rows) {
                 fail(&format!(
@@ -222,6 +229,9 @@ fn main() {
         &[
             series("whole step (interpreted)", "interpreted", false, |r| r.step),
             series("whole step (compiled)", "compiled", true, |r| r.step),
+            series("whole step (planar model, compiled)", "planar", true, |r| {
+                r.step
+            }),
             series("KKT factor", "interpreted", false, |r| r.factor),
             series("KKT solve", "interpreted", false, |r| r.solve),
             series("eval_newton (interpreted)", "interpreted", false, |r| {

@@ -50,6 +50,7 @@ const SETTINGS: Settings = Settings {
     step: 2.5e-6,
     alpha: 0.0,
     tolerances: None,
+    planar: false,
 };
 
 /// The motor torque (N·m), for the energy balance.

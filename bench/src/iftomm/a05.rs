@@ -36,6 +36,7 @@ const SETTINGS: Settings = Settings {
     step: 4.0e-4,
     alpha: 0.0,
     tolerances: None,
+    planar: false,
 };
 
 /// RK4 step of the reference. The slider's damped mode has |λ| ≈ 2C(∂d/∂s)²/m_s ≈ 7e3 1/s,

@@ -114,6 +114,9 @@ pub struct Settings {
     pub alpha: f64,
     /// Step-size control `(rtol, atol)` (`HhtBuilder::tolerances`); `None`: fixed step.
     pub tolerances: Option<(f64, f64)>,
+    /// Integrate the mechanism's planar model (x, y, γ per body; its file says
+    /// `planar = true`) instead of the spatial one; outputs are read on the spatial model.
+    pub planar: bool,
 }
 
 impl Settings {
@@ -145,19 +148,46 @@ pub fn integrate(
     outputs: usize,
     sample: impl FnMut(f64, &[f64], &[f64]) -> Result<(), Error>,
 ) -> Result<(Duration, Stats), Error> {
-    integrate_with(name, settings.builder(), t_end, outputs, sample)
+    integrate_with(
+        name,
+        settings.builder(),
+        settings.planar,
+        t_end,
+        outputs,
+        sample,
+    )
 }
 
 /// As [`integrate`], with every integrator setting given.
 pub fn integrate_with(
     name: &str,
     builder: HhtBuilder,
+    planar: bool,
     t_end: f64,
     outputs: usize,
     mut sample: impl FnMut(f64, &[f64], &[f64]) -> Result<(), Error>,
 ) -> Result<(Duration, Stats), Error> {
     let entry = symbody::generic::find(&crate::REGISTRY, name)?;
-    let mech: &'static (dyn Mechanism + Sync) = entry.default_mechanism();
+    let spatial = entry.default_mechanism();
+    let (mech, reduction) = match planar {
+        false => (spatial, None),
+        true => {
+            let (m, r) = entry.reduced(entry.formulations[0].0).ok_or_else(|| {
+                Error::Options(format!("`{name}` has no planar model (`planar = true`)"))
+            })?;
+            (m, Some(r))
+        }
+    };
+    let n = spatial.info().n_coords;
+    let (mut q, mut qd) = (vec![0.0; n], vec![0.0; n]);
+    let mut sample = |t: f64, qr: &[f64], qdr: &[f64]| match reduction {
+        None => sample(t, qr, qdr),
+        Some(r) => {
+            r.expand(qr, t, 0, &mut q)?;
+            r.expand(qdr, t, 1, &mut qd)?;
+            sample(t, &q, &qd)
+        }
+    };
     let start = Instant::now();
     let mut it = builder.build(mech)?;
     let mut cpu = start.elapsed();

@@ -32,6 +32,9 @@ pub struct RawFile {
     /// Lets the generator move bodies by more than a modelling tolerance to assemble the
     /// initial pose (otherwise such a violation is an error).
     pub repair_initial_pose: Option<bool>,
+    /// The mechanism moves in the plane z = const: emit a planar model in (x, y, γ) per body
+    /// beside the spatial one.
+    pub planar: Option<Spanned<bool>>,
     #[serde(default)]
     pub parameters: BTreeMap<SStr, SScalar>,
     #[serde(default)]

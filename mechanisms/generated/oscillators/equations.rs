@@ -3036,35 +3036,35 @@ pub mod reduced {
     /// The eliminated rows.
     pub static SUBSTITUTIONS: [Substitution; 5usize] = [
         Substitution {
-            row: 2u32,
+            row: Some(2u32),
             coord: 1u32,
             target: None,
             weight: -0f64,
             slope: 1f64,
         },
         Substitution {
-            row: 3u32,
+            row: Some(3u32),
             coord: 2u32,
             target: None,
             weight: -0f64,
             slope: 1f64,
         },
         Substitution {
-            row: 5u32,
+            row: Some(5u32),
             coord: 7u32,
             target: None,
             weight: 0f64,
             slope: -1f64,
         },
         Substitution {
-            row: 6u32,
+            row: Some(6u32),
             coord: 8u32,
             target: None,
             weight: 0f64,
             slope: -1f64,
         },
         Substitution {
-            row: 7u32,
+            row: Some(7u32),
             coord: 9u32,
             target: None,
             weight: 0f64,

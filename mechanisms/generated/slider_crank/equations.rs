@@ -4729,14 +4729,14 @@ pub mod reduced {
     /// The eliminated rows.
     pub static SUBSTITUTIONS: [Substitution; 2usize] = [
         Substitution {
-            row: 14u32,
+            row: Some(14u32),
             coord: 15u32,
             target: None,
             weight: -0f64,
             slope: 1f64,
         },
         Substitution {
-            row: 15u32,
+            row: Some(15u32),
             coord: 16u32,
             target: None,
             weight: -0f64,

@@ -18,8 +18,9 @@ use super::{
 };
 use crate::error::Error;
 
-/// Largest group of mass-matrix blocks factored together as one dense block.
-const GROUP_MAX: usize = 6;
+/// Largest group of mass-matrix blocks factored together as one dense block: a quaternion
+/// body's seven coordinates.
+const GROUP_MAX: usize = 7;
 
 /// Marks a scatter destination in `diag` rather than in `lval`.
 const DIAG_FLAG: usize = 1 << (usize::BITS - 1);
@@ -347,22 +348,54 @@ impl KktSolver for SchurKkt {
             members[root_block[r]].push(c);
         }
         let component_sizes = members.iter().map(Vec::len).collect();
-        // Consecutive components are merged into groups of up to GROUP_MAX coordinates (a
-        // body's six): with the exact formulation a body's M is three 1×1 blocks and one 3×3,
-        // with the paper's six 1×1 blocks, all touching the same constraint rows. Per-block
-        // overhead (slicing, the scatter of `S += WᵀW` pairs, four times over the same rows)
-        // cost more than the structural zeros a dense 6×6 group adds; the result is the same
-        // (Cholesky keeps those zeros exactly zero).
-        let mut groups: Vec<Vec<usize>> = Vec::new();
-        for mem in members {
-            match groups.last_mut() {
-                Some(g) if g.len() + mem.len() <= GROUP_MAX => g.extend_from_slice(&mem),
-                // A quaternion body: three translations and its 4×4 rotation block. Kept
-                // together rather than split across the next body's coordinates, so its
-                // group touches only its own body's rows.
-                Some(g) if g.len() == 3 && mem.len() == 4 => g.extend_from_slice(&mem),
-                _ => groups.push(mem),
+        // Consecutive components are merged into groups of up to GROUP_MAX coordinates, as
+        // long as one of them touches every constraint row the others touch: a body's
+        // coordinates (exact formulation: three 1×1 translation blocks and a 3×3 or 4×4
+        // rotation block touching all of the body's rows; the paper's six 1×1 blocks; a
+        // planar body's x, y and γ) and no further. Per-block overhead (slicing, the scatter
+        // of `S += WᵀW` pairs, once per block over the same rows) costs more than the
+        // structural zeros of a dense group (Cholesky keeps them exactly zero); a group
+        // spanning two bodies would instead couple their rows in S and add fill.
+        let mut is_redundant = vec![false; m];
+        for &r in &pattern.redundant_rows {
+            is_redundant[r as usize] = true;
+        }
+        let mut component_of = vec![0; n];
+        for (k, mem) in members.iter().enumerate() {
+            for &c in mem {
+                component_of[c] = k;
             }
+        }
+        let mut component_rows: Vec<Vec<usize>> = vec![Vec::new(); members.len()];
+        for (&r, &c) in pattern.phi_q_rows.iter().zip(&pattern.phi_q_cols) {
+            if !is_redundant[r as usize] {
+                component_rows[component_of[c as usize]].push(r as usize);
+            }
+        }
+        for rows in &mut component_rows {
+            rows.sort_unstable();
+            rows.dedup();
+        }
+        let mut groups: Vec<Vec<usize>> = Vec::new();
+        let mut first = 0;
+        while first < members.len() {
+            let mut end = first;
+            let (mut size, mut union) = (members[first].len(), component_rows[first].clone());
+            for next in first + 1..members.len() {
+                size += members[next].len();
+                if size > GROUP_MAX {
+                    break;
+                }
+                union.extend_from_slice(&component_rows[next]);
+                union.sort_unstable();
+                union.dedup();
+                // Each member's rows lie in the union: equal sizes mean equal sets.
+                if (first..=next).any(|k| component_rows[k].len() == union.len()) {
+                    end = next;
+                }
+            }
+            groups.push(members[first..=end].concat());
+            first = end + 1;
         }
         let members = groups;
         let nb = members.len();
@@ -395,10 +428,6 @@ impl KktSolver for SchurKkt {
             .collect();
 
         // Rows of Φq touching each block; redundant rows touch none.
-        let mut is_redundant = vec![false; m];
-        for &r in &pattern.redundant_rows {
-            is_redundant[r as usize] = true;
-        }
         let mut touch: Vec<Vec<usize>> = vec![Vec::new(); nb];
         for (&r, &c) in pattern.phi_q_rows.iter().zip(&pattern.phi_q_cols) {
             if !is_redundant[r as usize] {
