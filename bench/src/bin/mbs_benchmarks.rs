@@ -7,7 +7,9 @@
 //! problem misses. `--short` runs the shortened lengths the CI test uses
 //! (`mbs_benchmarks_short.*`). `--steps 1e-3,5e-4` runs each problem at each of those steps
 //! (its own α, or `--alpha A`) instead of its own step: error against CPU time,
-//! `mbs_benchmarks_sweep[_<only>].*`, where a miss is a result, not a failure. Not run in CI.
+//! `mbs_benchmarks_sweep[_<only>].*`, where a miss is a result, not a failure. `--spatial` runs
+//! A01 and A02 N = 40 on their spatial models instead of their planar ones
+//! (`mbs_benchmarks_spatial.*`). Not run in CI.
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -22,6 +24,8 @@ fn main() {
             .map(|i| args.get(i + 1).cloned().unwrap_or_default())
     };
     let short = args.iter().any(|a| a == "--short");
+    // The problems that run a planar model (A01, A02 N = 40) on their spatial one instead.
+    let spatial = args.iter().any(|a| a == "--spatial");
     let only = value("--only");
     let steps: Option<Vec<f64>> = match value("--steps").map(|list| {
         list.split(',')
@@ -59,6 +63,7 @@ fn main() {
         let t_end = if short { spec.short_t_end } else { spec.t_end };
         let own = Settings {
             alpha: alpha.unwrap_or(p.settings.alpha),
+            planar: p.settings.planar && !spatial,
             ..p.settings
         };
         let runs: Vec<Settings> = match &steps {
@@ -119,8 +124,9 @@ fn main() {
         _ => String::new(),
     };
     let suffix = format!(
-        "{}{}{only_tag}",
+        "{}{}{}{only_tag}",
         if short { "_short" } else { "" },
+        if spatial { "_spatial" } else { "" },
         if steps.is_some() { "_sweep" } else { "" }
     );
     let written = std::fs::create_dir_all(&dir)

@@ -144,14 +144,19 @@ impl SchurKkt {
 }
 
 // The block kernels take the block size `s` as an argument and are always inlined: every
-// call site goes through `sized!`, which passes a literal 6 or 7 when the group has a body's
-// six (Euler) or seven (quaternion) coordinates, so the compiler sees a constant size,
-// unrolls the loops and drops bounds checks; other sizes run the same code with a variable.
+// call site goes through `sized!`, which passes a literal 3, 6 or 7 when the group has a
+// body's three (planar), six (Euler) or seven (quaternion) coordinates, so the compiler sees a
+// constant size, unrolls the loops and drops bounds checks; other sizes run the same code
+// with a variable.
 
-/// Evaluates `$body` with `$n` bound to the literal group size for 6 and 7, else to `$s`.
+/// Evaluates `$body` with `$n` bound to the literal group size for 3, 6 and 7, else to `$s`.
 macro_rules! sized {
     ($s:expr, |$n:ident| $body:expr) => {
         match $s {
+            3 => {
+                let $n = 3;
+                $body
+            }
             6 => {
                 let $n = 6;
                 $body
