@@ -85,8 +85,14 @@ fn check_reports_what_the_generator_finds_without_running() {
     assert!(out.status.success(), "{stdout}{stderr}");
     // A planar four-bar has mobility 3·3 − 2·4 = 1 and its crank driver takes it; written
     // with spatial revolutes (5 rows each) the count is 6·3 − 5·4 = −2, so 1 − (−2) = 3 rows
-    // are dependent.
-    assert!(stdout.contains("rank 21"), "{stdout}");
+    // are dependent: rank 18 of 21 rows on 18 Euler-angle coordinates. Its planar model has
+    // 3·3 coordinates and 2·4 + 1 rows, none dependent.
+    assert!(stdout.contains("rank 18"), "{stdout}");
+    assert!(
+        stdout
+            .contains("planar model: 9 coordinates (x, y, γ per body), 9 rows, no redundant rows"),
+        "{stdout}"
+    );
     assert!(
         stdout.contains("actual 1 (without drivers); 0 DOF left with drivers"),
         "{stdout}"

@@ -1,6 +1,6 @@
-//! Planar models against the spatial models they come from: the IFToMM A01 pendulum and the
-//! A02 chain of 40 four-bars integrated both ways with the benchmark's settings follow the
-//! same motion. The spatial model is the independent
+//! Planar models against the spatial models they come from: the driven `four_bar`, the IFToMM
+//! A01 pendulum and the A02 chain of 40 four-bars integrated both ways with the benchmark's
+//! settings follow the same motion. The spatial model is the independent
 //! reference here: it holds the plane with its joint rows, where the planar model pins it.
 
 use symbody_bench::iftomm::integrate_with;
@@ -43,6 +43,11 @@ fn largest_difference(name: &str, step: f64, t_end: f64, outputs: usize) -> f64 
         .fold(0.0, f64::max);
     eprintln!("{name}: planar against spatial over {t_end} s, largest difference {worst:.2e}");
     worst
+}
+
+#[test]
+fn the_driven_four_bar_turns_alike_in_its_plane_and_in_space() {
+    assert!(largest_difference("four_bar", 1e-3, 2.0, 40) < 1e-9);
 }
 
 #[test]

@@ -146,6 +146,7 @@ fn generic_runs_on_the_reduced_model_record_the_full_models_series() {
         ("slider_crank", 0),
         ("oscillators", 0),
         ("simple_pendulum", 3),
+        ("four_bar", 9),
     ] {
         let entry = generic::find(&symbody_mechanisms::REGISTRY, name).unwrap();
         let opts = Options {

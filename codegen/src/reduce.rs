@@ -119,7 +119,7 @@ pub fn substitute(sys: &System) -> Option<Reduced> {
     Some(eliminate(sys, &chosen, false).expect("rows are only dropped for planar models"))
 }
 
-/// The planar model of `sys` (decision 24's substitution, issue "planar mechanisms"): every
+/// The planar model of `sys` (docs/design.md, decision 34): every
 /// Euler body's z, θ and β pinned at `q0`'s values, so that each body keeps (x, y, γ), and
 /// the rows that the pins make identically zero (a revolute's z row and its two axis rows)
 /// dropped. `Err` names a row the pins make a nonzero constant: the bodies cannot all stay
