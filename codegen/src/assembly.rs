@@ -56,6 +56,8 @@ pub struct Report {
     pub platform: Option<(String, Vec<String>)>,
     /// The planar model's coordinates, rows and dependent rows' names.
     pub planar: Option<(usize, usize, Vec<String>)>,
+    /// The planar model was recognised (the file does not say `planar`).
+    pub planar_recognised: bool,
     /// Warnings (e.g. a corrected initial pose).
     pub warnings: Vec<String>,
 }
@@ -100,10 +102,14 @@ impl fmt::Display for Report {
         if let Some((n, m, redundant)) = &self.planar {
             write!(
                 f,
-                "\n  planar model: {n} coordinates (x, y, γ per body), {m} rows, {}",
+                "\n  planar model: {n} coordinates (x, y, γ per body), {m} rows, {}{}",
                 match redundant.len() {
                     0 => "no redundant rows".to_string(),
                     _ => format!("redundant: {}", redundant.join(", ")),
+                },
+                match self.planar_recognised {
+                    true => " (recognised: every body moves in its plane; `planar = false` turns it off)",
+                    false => "",
                 }
             )?;
         }
@@ -696,19 +702,28 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
     }
     redundant.sort_unstable();
     let rank = basis.len();
+    let dof = sys.n_coords - rank;
     let planar = match model.planar {
         Some(line) => Some(planar_check(
             model,
             sys,
             &q,
             &driver_rows,
-            sys.n_coords - rank,
+            dof,
             line,
             file,
             &mut warnings,
         )?),
+        // Recognised only when nothing about it would need a word: no error, no warning.
+        None if model.planar_unstated && model.starts_planar() => {
+            let mut notes = Vec::new();
+            planar_check(model, sys, &q, &driver_rows, dof, 0, file, &mut notes)
+                .ok()
+                .filter(|_| notes.is_empty())
+        }
         None => None,
     };
+    let planar_recognised = planar.is_some() && model.planar.is_none();
     let joint_rows: i64 = model.joints.iter().map(|j| j.rows() as i64).sum();
     let platform = legs::detect(model, &q);
     let report = Report {
@@ -738,6 +753,7 @@ pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Err
                 dependent.map(|&k| r.row_names[k].clone()).collect(),
             )
         }),
+        planar_recognised,
         warnings,
     };
     Ok(Assembly {

@@ -287,6 +287,9 @@ pub struct Model {
     /// turns about Z only, so the generator also emits the model in (x, y, γ) per body
     /// ([`crate::reduce::planar`]).
     pub planar: Option<usize>,
+    /// The file leaves `planar` out: the generator emits the planar model anyway when the
+    /// mechanism turns out to be planar ([`Model::starts_planar`] and equal mobility).
+    pub planar_unstated: bool,
     pub bodies: Vec<Body>,
     pub joints: Vec<Joint>,
     pub drivers: Vec<Driver>,
@@ -327,6 +330,18 @@ impl Model {
     pub fn qd0(&self) -> Vec<f64> {
         self.bodies.iter().flat_map(|b| b.qd0.clone()).collect()
     }
+    /// Every body in Euler angles, turned about Z only and moving in its plane at the start,
+    /// and gravity in the XY plane: what `planar = true` requires of the file.
+    pub fn starts_planar(&self) -> bool {
+        self.gravity[2] == 0.0
+            && self.bodies.iter().all(|b| {
+                b.rotation == Rotation::Euler
+                    && b.q0[3] == 0.0
+                    && b.q0[4] == 0.0
+                    && b.qd0[2..5].iter().all(|v| v.abs() <= 1e-12)
+            })
+    }
+
     pub fn body_name(&self, b: BodyRef) -> &str {
         b.map_or("ground", |i| self.bodies[i].name.as_str())
     }
@@ -570,6 +585,7 @@ impl Validator<'_> {
                 .as_ref()
                 .filter(|p| *p.get_ref())
                 .map(|p| self.map.position(p.span().start).0),
+            planar_unstated: raw.planar.is_none(),
             bodies,
             lines: names
                 .iter()

@@ -29,7 +29,11 @@ fn error(text: &str) -> String {
 #[test]
 fn the_four_bar_in_its_plane_has_three_coordinates_per_body_and_two_rows_per_hinge() {
     let four_bar = shipped("four_bar");
-    let spatial = generate("four_bar.toml", &without(&four_bar, "planar = true\n")).unwrap();
+    let spatial = generate(
+        "four_bar.toml",
+        &four_bar.replacen("planar = true", "planar = false", 1),
+    )
+    .unwrap();
     assert!(spatial.report.planar.is_none());
     assert!(!spatial.code.contains("pub mod reduced"));
     let g = generate("four_bar.toml", &four_bar).unwrap();
@@ -104,4 +108,37 @@ fn a_planar_file_needs_euler_angles_bodies_in_their_plane_and_gravity_in_it() {
         e.contains("body `crank`") && e.contains("out of the plane"),
         "{e}"
     );
+}
+
+#[test]
+fn a_planar_file_that_does_not_say_so_is_recognised() {
+    // The four-bar in Euler angles without `planar`: its bodies start in their planes and the
+    // planar model keeps its mobility, so the generator emits it and says why.
+    let g = generate(
+        "four_bar.toml",
+        &without(&shipped("four_bar"), "planar = true\n"),
+    )
+    .unwrap();
+    assert_eq!(g.report.planar, Some((9, 9, vec![])));
+    assert!(
+        g.report
+            .to_string()
+            .contains("(recognised: every body moves in its plane"),
+        "{}",
+        g.report
+    );
+    assert!(g.code.contains("pub mod reduced"));
+    // The pendulum's planar model would hold out-of-plane freedoms: not recognised unasked.
+    let pendulum = without(&shipped("simple_pendulum"), "planar = true\n");
+    assert!(generate("p.toml", &pendulum)
+        .unwrap()
+        .report
+        .planar
+        .is_none());
+    // Nor the Stewart platform, whose bodies are tilted.
+    assert!(generate("s.toml", &shipped("stewart_6_6"))
+        .unwrap()
+        .report
+        .planar
+        .is_none());
 }
