@@ -61,3 +61,57 @@ fn the_pendulum_swings_alike_in_its_plane_and_in_space() {
 fn forty_four_bars_move_alike_in_their_plane_and_in_space() {
     assert!(largest_difference("n_four_bar_40", 4e-4, 0.6, 20) < 1e-6);
 }
+
+/// `symbody simulate --reduced` integrates the planar model and writes the tables the spatial
+/// run writes; a mechanism without a reduced model is an error that says why.
+#[test]
+fn simulate_reduced_writes_the_spatial_runs_tables() {
+    let bin = env!("CARGO_BIN_EXE_symbody");
+    let dir = std::env::temp_dir().join(format!("symbody-reduced-{}", std::process::id()));
+    let simulate = |extra: &[&str], out: &str| {
+        let o = std::process::Command::new(bin)
+            .args([
+                "simulate",
+                "four_bar",
+                "--t-end",
+                "0.5",
+                "--no-plots",
+                "--out",
+            ])
+            .arg(dir.join(out))
+            .args(extra)
+            .output()
+            .unwrap();
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        String::from_utf8_lossy(&o.stdout).to_string()
+    };
+    let summary = simulate(&["--reduced"], "planar");
+    assert!(
+        summary.contains("reduced model    9 coordinates integrated (of 18)"),
+        "{summary}"
+    );
+    simulate(&[], "spatial");
+    for table in ["bodies.csv", "joints.csv", "drivers.csv"] {
+        let read = |run: &str| std::fs::read_to_string(dir.join(run).join(table)).unwrap();
+        assert_eq!(read("planar"), read("spatial"), "{table}");
+    }
+    let o = std::process::Command::new(bin)
+        .args([
+            "simulate",
+            "bricard",
+            "--reduced",
+            "--t-end",
+            "0.1",
+            "--no-plots",
+            "--out",
+        ])
+        .arg(dir.join("bricard"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        !o.status.success() && err.contains("`bricard` has no reduced model"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -188,6 +188,11 @@ enum Command {
         /// scenario; default: stop with the dependent rows named).
         #[arg(long)]
         cross_singular_positions: bool,
+        /// Integrate the mechanism's generated reduced model (its planar model where the
+        /// file is planar) and read every step back on the full model: the same tables; the
+        /// summary says how many coordinates were integrated (not the paper scenario).
+        #[arg(long)]
+        reduced: bool,
         /// Add each body's velocities to bodies.csv: <body>.vx,.vy,.vz (centre of mass, m/s)
         /// and .wx,.wy,.wz (angular velocity, rad/s), global frame (not the paper scenario).
         #[arg(long)]
@@ -282,6 +287,7 @@ pub fn main(registry: &Registry) -> ExitCode {
             alpha,
             output_step,
             cross_singular_positions,
+            reduced,
             velocities,
             accelerations,
             reactions,
@@ -295,6 +301,7 @@ pub fn main(registry: &Registry) -> ExitCode {
             None if !parameters.set.is_empty() => Err("--set applies to a named mechanism or a file; for the paper's scenario with other parameters, run scenes/paper.toml with --set (e.g. `symbody run scenes/paper.toml --set r_platform=0.11`)".to_string()),
             None if velocities || accelerations => Err(format!("--{} applies to a named mechanism or a file (it adds columns to bodies.csv); the paper scenario writes platform.csv", if velocities { "velocities" } else { "accelerations" })),
             None if cross_singular_positions => Err("--cross-singular-positions applies to a named mechanism or a file; the paper scenario has no singular position to cross".to_string()),
+            None if reduced => Err("--reduced applies to a named mechanism; for the paper's scenario on its reduced model, run `symbody simulate stewart_6_6 --reduced` or a scene with `[solver] reduce = \"auto\"`".to_string()),
             Some(_) if reactions.is_some() => Err("--reactions applies to the paper scenario only; a named mechanism always reports the reactions of each output state".to_string()),
             Some(name) => {
                 let defaults = generic::Options::default();
@@ -307,7 +314,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                     output_step,
                     cross_singular: cross_singular_positions,
                     newton_tolerance: None,
-                    reduce: false,
+                    reduce: reduced,
                 };
                 parameters.parse().and_then(|p| {
                     simulate_named(registry, &name, &p, &opts, [velocities, accelerations], &files, &sensitivities.sensitivities)
@@ -578,6 +585,9 @@ fn simulate_named(
     let entry =
         symbody::files::with_parameters(registry, name, parameters).map_err(|e| e.to_string())?;
     symbody::sensitivity::values(entry, parameters, sensitivities).map_err(|e| e.to_string())?;
+    if opts.reduce {
+        generic::require_reduced(entry, opts.formulation).map_err(|e| format!("--reduced: {e}"))?;
+    }
     let out = files.out.clone().unwrap_or_else(|| default_out(entry.name));
     let (out, plots, html) = (out.as_path(), !files.no_plots, files.html);
     let t_end = opts.t_end.unwrap_or(entry.t_end);
@@ -590,6 +600,7 @@ fn simulate_named(
         "output_step": opts.output_step,
         "velocities_projected": true,
         "cross_singular_positions": opts.cross_singular,
+        "reduced": opts.reduce,
         "velocities": velocities,
         "accelerations": accelerations,
         "parameters": parameters_json(parameters),

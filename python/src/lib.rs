@@ -356,7 +356,7 @@ fn recording_answer<'py>(
 /// One run of `symbody simulate <name>`: its tables `bodies`, `joints`, `drivers` and
 /// `energy`, its summary, and the CSV files written into `out` if given.
 #[pyfunction]
-#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions, out, params, sensitivities, rtol, atol))]
+#[pyo3(signature = (name, t_end, step, alpha, output_step, formulation, cross_singular_positions, out, params, sensitivities, rtol, atol, reduced))]
 #[allow(clippy::too_many_arguments)]
 fn simulate<'py>(
     py: Python<'py>,
@@ -372,13 +372,19 @@ fn simulate<'py>(
     sensitivities: Vec<String>,
     rtol: Option<f64>,
     atol: Option<f64>,
+    reduced: bool,
 ) -> PyResult<Answer<'py>> {
     let tolerances = generic::tolerances(rtol, atol, "").map_err(PyValueError::new_err)?;
     let base: Vec<(String, f64)> = params.clone().unwrap_or_default().into_iter().collect();
     let entry = find(&name, params)?;
     symbody::sensitivity::values(entry, &base, &sensitivities).map_err(py_err)?;
+    let formulation = self::formulation(formulation)?;
+    if reduced {
+        generic::require_reduced(entry, formulation)
+            .map_err(|e| PyValueError::new_err(format!("reduced: {e}")))?;
+    }
     let opts = generic::Options {
-        formulation: self::formulation(formulation)?,
+        formulation,
         t_end,
         step,
         alpha,
@@ -386,7 +392,7 @@ fn simulate<'py>(
         cross_singular: cross_singular_positions,
         newton_tolerance: None,
         tolerances,
-        reduce: false,
+        reduce: reduced,
     };
     out_folder(out.as_deref())?;
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;

@@ -37,6 +37,18 @@ def test_simulate_options_reach_the_run():
     np.testing.assert_allclose(run["energy"]["t"], [0.0, 0.05, 0.1], atol=1e-15)
 
 
+def test_simulate_on_the_planar_model_gives_the_spatial_runs_tables():
+    # four_bar's planar model (9 coordinates) integrates; the tables are the spatial ones.
+    planar = symbody.simulate("four_bar", t_end=0.2, reduced=True)
+    spatial = symbody.simulate("four_bar", t_end=0.2)
+    for table in ("bodies", "joints", "drivers"):
+        assert planar[table].columns == spatial[table].columns
+        for c in planar[table].columns:
+            np.testing.assert_array_equal(planar[table][c], spatial[table][c])
+    with pytest.raises(ValueError, match="`bricard` has no reduced model"):
+        symbody.simulate("bricard", t_end=0.1, reduced=True)
+
+
 def test_session_leg1_force_at_1s_equals_the_paper_scenario(cli, tmp_path, capsys):
     cli("simulate", "--t-end", "1", "--output-step", "0.5", "--no-plots", "--out", tmp_path)
     columns, data = read_csv(tmp_path / "actuators.csv")

@@ -341,6 +341,28 @@ pub fn run_observed(
 /// A generated reduced mechanism and the way back to its full model.
 type Reduced = (&'static (dyn Mechanism + Sync), &'static Reduction);
 
+/// An error unless `entry` has a generated reduced model in formulation `f` (its default):
+/// for an explicit request (`--reduced`), where [`Options::reduce`] alone falls back to the
+/// full model.
+pub fn require_reduced(entry: &Entry, f: Option<Formulation>) -> Result<(), Error> {
+    let mech = mechanism(entry, f)?;
+    if entry.reduced(mech.info().formulation).is_some() {
+        return Ok(());
+    }
+    Err(ScenarioError::Options(match entry.origin {
+        symbody_runtime::Origin::Interpreted { .. } => format!(
+            "`{}` runs interpreted, which has no reduced model: generate its code \
+             (`cargo xtask generate`) for the planar or substituted model",
+            entry.name
+        ),
+        symbody_runtime::Origin::Compiled { .. } => format!(
+            "`{}` has no reduced model: its file is not planar (`planar = true`, \
+             docs/mechanism-files.md) and has no row a·qᵢ + b·qⱼ + g(t) = 0 to substitute",
+            entry.name
+        ),
+    }))
+}
+
 /// The loop of a run: outputs at `k · output_step` (k = 0..=n_out) up to `t_end`.
 type Loop = fn(
     (&'static (dyn Mechanism + Sync), Option<Reduced>),

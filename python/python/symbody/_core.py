@@ -135,6 +135,7 @@ def simulate(
     sensitivities: Optional[Sequence[str]] = None,
     rtol: Optional[float] = None,
     atol: Optional[float] = None,
+    reduced: bool = False,
 ) -> Results:
     """Simulates the mechanism ``name`` as ``symbody simulate <name>`` does: a registered
     name, or a mechanism file's path (a ``str`` ending in ``.toml`` or with a folder, or a
@@ -161,7 +162,9 @@ def simulate(
     the derivative of each body pose, joint wrench and driver effort with respect to each.
     ``rtol``, ``atol``: step-size control on positions and velocities instead of the fixed
     ``step`` (which becomes the first step tried), as ``--rtol``/``--atol``; either alone sets
-    both. The summary's ``steps`` counts the steps taken.
+    both. The summary's ``steps`` counts the steps taken. ``reduced``: integrate the
+    mechanism's generated reduced model (its planar model where the file is planar) and read
+    every step back on the full model, as ``--reduced``: the same tables.
     """
     return _results(
         _native.simulate(
@@ -177,6 +180,7 @@ def simulate(
             _names(sensitivities),
             rtol,
             atol,
+            reduced,
         )
     )
 

@@ -25,6 +25,10 @@ def simulate(
     cross_singular_positions: bool,
     out: Optional[str],
     params: Optional[Dict[str, float]],
+    sensitivities: List[str],
+    rtol: Optional[float],
+    atol: Optional[float],
+    reduced: bool,
 ) -> _Answer: ...
 def run(scene: str, out: Optional[str]) -> _Answer: ...
 def fk(
