@@ -124,7 +124,7 @@ impl fmt::Display for Report {
 pub struct Assembly {
     pub q0: Vec<f64>,
     pub redundant_rows: Vec<u32>,
-    /// The planar model (`planar = true`), checked to keep the spatial model's mobility.
+    /// The planar model (`planar = true`, or recognised), with its own dependent rows.
     pub planar: Option<crate::reduce::Reduced>,
     /// The six-leg platform, when the mechanism is one.
     pub platform: Option<Platform>,
@@ -552,7 +552,7 @@ fn planar_check(
             item: "`planar`".to_string(),
             message,
             help: "a planar mechanism turns about Z only: revolute axes along Z, prismatic axes \
-                   and loads in the plane; or leave `planar` out for the spatial model alone"
+                   and loads in the plane; or `planar = false` for the spatial model alone"
                 .to_string(),
         }])
     };

@@ -6,6 +6,9 @@
 //! ([`Reduced::recover_multipliers`]). The paper's Stewart model loses its 18 Euler-angle
 //! equalities θ_U − θ_L = 0: 78 coordinates and 72 rows become 60 and 54.
 //!
+//! [`planar`] runs the same pass without rows: it pins a planar mechanism's out-of-plane
+//! coordinates and drops the rows that vanish in the plane (docs/design.md, decision 34).
+//!
 //! With `q = T q̃ + c(t)` (T holds the `−b/a` weights), the reduced dynamics are
 //! `M̃ = Tᵀ M T` and `Q̃ = Tᵀ (Q − M c̈)` at the substituted state; Φ̃, Φ̃q, Φ̃t and γ̃ are derived
 //! from the substituted rows like any others.
@@ -119,10 +122,9 @@ pub fn substitute(sys: &System) -> Option<Reduced> {
     Some(eliminate(sys, &chosen, false).expect("rows are only dropped for planar models"))
 }
 
-/// The planar model of `sys` (docs/design.md, decision 34): every
-/// Euler body's z, θ and β pinned at `q0`'s values, so that each body keeps (x, y, γ), and
-/// the rows that the pins make identically zero (a revolute's z row and its two axis rows)
-/// dropped. `Err` names a row the pins make a nonzero constant: the bodies cannot all stay
+/// The planar model of `sys` (docs/design.md, decision 34): every Euler body's z pinned at
+/// its value in `q0`, θ and β at 0, so that each body keeps (x, y, γ), and the rows that the
+/// pins make identically zero (a revolute's z row and its two axis rows) dropped. `Err` names a row the pins make a nonzero constant: the bodies cannot all stay
 /// in their planes. Whether the planar model keeps the spatial one's mobility is
 /// [`crate::assembly::planar_check`]'s to decide.
 pub fn planar(sys: &System, bodies: &[crate::model::Body], q0: &[f64]) -> Result<Reduced, String> {
@@ -237,19 +239,12 @@ fn eliminate(
                 _ => {}
             }
         }
-        let keep: Vec<bool> = phi.iter().map(|&p| a.as_const(p).is_none()).collect();
-        rows = rows
+        (rows, phi) = rows
             .iter()
-            .zip(&keep)
-            .filter(|(_, k)| **k)
-            .map(|(r, _)| *r)
-            .collect();
-        phi = phi
-            .iter()
-            .zip(&keep)
-            .filter(|(_, k)| **k)
-            .map(|(p, _)| *p)
-            .collect();
+            .zip(&phi)
+            .filter(|(_, &p)| a.as_const(p).is_none())
+            .map(|(&r, &p)| (r, p))
+            .unzip();
     }
     let m = coords.len();
     let (phi_q, phi_t, gamma) = derivatives(&mut a, &phi, m);
