@@ -91,6 +91,20 @@ impl Body {
     pub fn position(&self) -> V3 {
         V3::new(self.q0[0], self.q0[1], self.q0[2])
     }
+    /// What keeps this body out of a planar model (Euler angles, turned about Z only and
+    /// moving in its plane at the start), or `None`.
+    pub fn off_plane(&self) -> Option<OffPlane> {
+        if self.rotation != Rotation::Euler {
+            return Some(OffPlane::NotEuler);
+        }
+        if self.q0[3] != 0.0 || self.q0[4] != 0.0 {
+            return Some(OffPlane::Tilted);
+        }
+        // ż, θ̇ and β̇: at θ = β = 0 the angle rates are the angular velocity about X and Y.
+        let moving = self.qd0[2..5].iter().any(|v| !(v.abs() <= 1e-12));
+        moving.then_some(OffPlane::Moving)
+    }
+
     /// Initial rotation matrix (local to global).
     pub fn orientation(&self) -> M3 {
         let c = &self.q0[3..];
@@ -99,6 +113,17 @@ impl Body {
             Rotation::Quaternion => quaternion_matrix([c[0], c[1], c[2], c[3]]),
         }
     }
+}
+
+/// Why a body cannot be part of a planar model ([`Body::off_plane`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OffPlane {
+    /// Its rotation coordinates are quaternions.
+    NotEuler,
+    /// It starts turned about X or Y.
+    Tilted,
+    /// It starts moving along Z or turning about X or Y.
+    Moving,
 }
 
 /// A body reference in a joint: `None` is the ground.
@@ -333,13 +358,7 @@ impl Model {
     /// Every body in Euler angles, turned about Z only and moving in its plane at the start,
     /// and gravity in the XY plane: what `planar = true` requires of the file.
     pub fn starts_planar(&self) -> bool {
-        self.gravity[2] == 0.0
-            && self.bodies.iter().all(|b| {
-                b.rotation == Rotation::Euler
-                    && b.q0[3] == 0.0
-                    && b.q0[4] == 0.0
-                    && b.qd0[2..5].iter().all(|v| v.abs() <= 1e-12)
-            })
+        self.gravity[2] == 0.0 && self.bodies.iter().all(|b| b.off_plane().is_none())
     }
 
     pub fn body_name(&self, b: BodyRef) -> &str {
@@ -657,45 +676,33 @@ impl Validator<'_> {
         names: &HashMap<String, Range<usize>>,
     ) {
         for b in bodies {
+            let Some(off) = b.off_plane() else { continue };
             let at = names.get(&b.name).cloned().unwrap_or_else(|| span.clone());
-            let item = format!("body `{}`", b.name);
-            if b.rotation != Rotation::Euler {
-                self.err(
-                    at,
-                    &item,
+            let (message, help) = match off {
+                OffPlane::NotEuler => (
                     format!(
                         "`planar = true` needs Euler angles, but this body uses {}",
                         b.rotation.name()
                     ),
                     "add `rotation = \"euler\"` at the top of the file (or on the body)",
-                );
-                continue;
-            }
-            if b.q0[3] != 0.0 || b.q0[4] != 0.0 {
-                self.err(
-                    at,
-                    &item,
+                ),
+                OffPlane::Tilted => (
                     format!(
                         "`planar = true`, but the body starts tilted out of the plane (θ = {}, β = {})",
                         b.q0[3], b.q0[4]
                     ),
                     "a planar body turns about Z only: give its orientation as `angles = [0, 0, γ]`",
-                );
-                continue;
-            }
-            let out_of_plane = [b.qd0[2], b.qd0[3], b.qd0[4]];
-            if out_of_plane.iter().any(|v| !(v.abs() <= 1e-12)) {
-                self.err(
-                    at,
-                    &item,
+                ),
+                OffPlane::Moving => (
                     format!(
                         "`planar = true`, but the body starts moving out of the plane (ż = {}, \
                          angular velocity about X or Y {}, {})",
-                        out_of_plane[0], out_of_plane[1], out_of_plane[2]
+                        b.qd0[2], b.qd0[3], b.qd0[4]
                     ),
                     "give `velocity` with z = 0 and `angular_velocity` along Z only",
-                );
-            }
+                ),
+            };
+            self.err(at, &format!("body `{}`", b.name), message, help);
         }
     }
 

@@ -503,6 +503,11 @@ impl KktSolver for SchurKkt {
             pair_ptr.push(pair_dest.len());
         }
 
+        let index = |i: usize| {
+            u32::try_from(i).map_err(|_| Error::InvalidPattern {
+                reason: format!("factor too large: {i} nonzeros"),
+            })
+        };
         let mut update_ptr = vec![0];
         let mut updates = Vec::new();
         for k in 0..m {
@@ -514,11 +519,6 @@ impl KktSolver for SchurKkt {
                     let off = sym.row_idx[target.clone()]
                         .binary_search(&ra)
                         .expect("fill lies inside the symbolic factor");
-                    let index = |i: usize| {
-                        u32::try_from(i).map_err(|_| Error::InvalidPattern {
-                            reason: format!("factor too large: {i} nonzeros"),
-                        })
-                    };
                     updates.push([index(a)?, index(b)?, index(target.start + off)?]);
                 }
             }
