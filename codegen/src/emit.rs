@@ -19,6 +19,36 @@ pub enum Input {
     Q,
     Qd,
     T,
+    /// The run-time parameters `p` (`Var::P`).
+    P,
+    /// The values `setup` computed from them, `k` (`Var::K`).
+    K,
+}
+
+impl Input {
+    /// Every input, in the order of generated signatures.
+    const ALL: [Input; 5] = [Input::P, Input::K, Input::Q, Input::Qd, Input::T];
+
+    fn name(self) -> &'static str {
+        match self {
+            Input::Q => "q",
+            Input::Qd => "qd",
+            Input::T => "t",
+            Input::P => "p",
+            Input::K => "k",
+        }
+    }
+
+    fn reads(self, v: Var) -> bool {
+        matches!(
+            (v, self),
+            (Var::Q(_), Input::Q)
+                | (Var::Qd(_), Input::Qd)
+                | (Var::T, Input::T)
+                | (Var::P(_), Input::P)
+                | (Var::K(_), Input::K)
+        )
+    }
 }
 
 /// One output slice of a generated function.
@@ -59,7 +89,21 @@ pub struct Function<'a> {
     /// Inputs of the public signature, in order.
     pub inputs: &'a [Input],
     pub outputs: Vec<Output<'a>>,
+    /// Length of `q` and `qd`.
     pub n_coords: usize,
+    /// Length of `p` and of `k` (0 where there are none).
+    pub n_p: usize,
+    pub n_k: usize,
+}
+
+impl Function<'_> {
+    fn len(&self, input: Input) -> usize {
+        match input {
+            Input::Q | Input::Qd | Input::T => self.n_coords,
+            Input::P => self.n_p,
+            Input::K => self.n_k,
+        }
+    }
 }
 
 fn ident(s: &str) -> Ident {
@@ -155,6 +199,14 @@ fn leaf_tokens(arena: &Arena, id: Id, receiver: bool) -> Option<TokenStream> {
             Some(quote!(qd[#i]))
         }
         Node::Var(Var::T) => Some(quote!(t)),
+        Node::Var(Var::P(i)) => {
+            let i = int(i as usize);
+            Some(quote!(p[#i]))
+        }
+        Node::Var(Var::K(i)) => {
+            let i = int(i as usize);
+            Some(quote!(k[#i]))
+        }
         _ => None,
     }
 }
@@ -252,14 +304,7 @@ fn expression(arena: &Arena, places: &[Place], id: Id) -> TokenStream {
 }
 
 fn uses_input(arena: &Arena, nodes: &[u32], direct: &[Id], input: Input) -> bool {
-    let is = |id: Id| {
-        matches!(
-            (arena.node(id), input),
-            (Node::Var(Var::Q(_)), Input::Q)
-                | (Node::Var(Var::Qd(_)), Input::Qd)
-                | (Node::Var(Var::T), Input::T)
-        )
-    };
+    let is = |id: Id| matches!(arena.node(id), Node::Var(v) if input.reads(v));
     nodes
         .iter()
         .flat_map(|&n| operands(arena, Id(n)))
@@ -267,16 +312,12 @@ fn uses_input(arena: &Arena, nodes: &[u32], direct: &[Id], input: Input) -> bool
         .any(is)
 }
 
-fn input_param(input: Input, n: &Literal, used: bool, array: bool) -> TokenStream {
-    let name = match (input, used) {
-        (Input::Q, true) => "q",
-        (Input::Q, false) => "_q",
-        (Input::Qd, true) => "qd",
-        (Input::Qd, false) => "_qd",
-        (Input::T, true) => "t",
-        (Input::T, false) => "_t",
+fn input_param(input: Input, n: usize, used: bool, array: bool) -> TokenStream {
+    let name = match used {
+        true => ident(input.name()),
+        false => ident(&format!("_{}", input.name())),
     };
-    let name = ident(name);
+    let n = int(n);
     match (input, array) {
         (Input::T, _) => quote!(#name: f64),
         (_, true) => quote!(#name: &[f64; #n]),
@@ -335,7 +376,6 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
         places[n as usize] = Place::Shared(k);
     }
     let ns = int(shared.len());
-    let n = int(f.n_coords);
 
     let mut helpers = Vec::new();
     let mut calls = Vec::new();
@@ -358,23 +398,22 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
             quote!(let #x = #e; s[#k] = #x;)
         });
         let stmts: Vec<TokenStream> = stmts.collect();
-        let used: Vec<bool> = [Input::Q, Input::Qd, Input::T]
+        let used: Vec<bool> = Input::ALL
             .iter()
             .map(|&inp| uses_input(arena, group, &[], inp))
             .collect();
-        let params: Vec<TokenStream> = [Input::Q, Input::Qd, Input::T]
+        let params: Vec<TokenStream> = Input::ALL
             .iter()
             .zip(&used)
             .filter(|(inp, _)| f.inputs.contains(inp))
-            .map(|(&inp, &u)| input_param(inp, &n, u, true))
+            .map(|(&inp, &u)| input_param(inp, f.len(inp), u, true))
             .collect();
-        let args: Vec<TokenStream> = [Input::Q, Input::Qd, Input::T]
+        let args: Vec<TokenStream> = Input::ALL
             .iter()
             .filter(|inp| f.inputs.contains(inp))
-            .map(|inp| match inp {
-                Input::Q => quote!(q),
-                Input::Qd => quote!(qd),
-                Input::T => quote!(t),
+            .map(|inp| {
+                let name = ident(inp.name());
+                quote!(#name)
             })
             .collect();
         helpers.push(quote! {
@@ -435,14 +474,11 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
         let fname = ident(&format!("{name}_part_{c}"));
         let mut params: Vec<TokenStream> = Vec::new();
         let mut args: Vec<TokenStream> = Vec::new();
-        for inp in [Input::Q, Input::Qd, Input::T] {
+        for inp in Input::ALL {
             if f.inputs.contains(&inp) && uses_input(arena, &locals, &direct, inp) {
-                params.push(input_param(inp, &n, true, true));
-                args.push(match inp {
-                    Input::Q => quote!(q),
-                    Input::Qd => quote!(qd),
-                    Input::T => quote!(t),
-                });
+                params.push(input_param(inp, f.len(inp), true, true));
+                let name = ident(inp.name());
+                args.push(quote!(#name));
             }
         }
         if uses_shared {
@@ -470,16 +506,17 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
     let doc = f.doc;
     let mut params = Vec::new();
     let mut conversions = Vec::new();
-    for inp in f.inputs {
-        params.push(input_param(*inp, &n, true, false));
-        match inp {
-            Input::Q => conversions.push(quote! {
-                let q: &[f64; #n] = q.try_into().expect("q must have n_coords entries");
-            }),
-            Input::Qd => conversions.push(quote! {
-                let qd: &[f64; #n] = qd.try_into().expect("qd must have n_coords entries");
-            }),
-            Input::T => {}
+    for &inp in Input::ALL.iter().filter(|inp| f.inputs.contains(inp)) {
+        params.push(input_param(inp, f.len(inp), true, false));
+        let (name, len) = (ident(inp.name()), int(f.len(inp)));
+        let msg = match inp {
+            Input::Q | Input::Qd => format!("{} must have n_coords entries", inp.name()),
+            _ => format!("{} must have {} entries", inp.name(), f.len(inp)),
+        };
+        if inp != Input::T {
+            conversions.push(quote! {
+                let #name: &[f64; #len] = #name.try_into().expect(#msg);
+            });
         }
     }
     for out in &f.outputs {
@@ -504,10 +541,9 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
         .inputs
         .iter()
         .filter(|&&inp| !uses_input(arena, &all_nodes, &all_direct, inp))
-        .map(|inp| match inp {
-            Input::Q => quote!(let _ = q;),
-            Input::Qd => quote!(let _ = qd;),
-            Input::T => quote!(let _ = t;),
+        .map(|inp| {
+            let name = ident(inp.name());
+            quote!(let _ = #name;)
         })
         .collect();
     let shared_decl = if !shared.is_empty() {

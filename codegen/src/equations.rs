@@ -68,6 +68,9 @@ pub struct System {
     /// Power of the non-conservative loads (dampers, actuators, applied loads in `t`).
     pub power_nc: Id,
     pub dynamics: Vec<Dynamics>,
+    /// Each body's mass and principal inertias, as they enter the equations (written in the
+    /// run-time parameters by [`build_parametric`]).
+    pub mass_props: Vec<[Id; 4]>,
     pub row_names: Vec<String>,
     pub coord_names: Vec<String>,
     /// First row of each joint, then of each driver (one row each), then of each
@@ -160,8 +163,58 @@ fn quaternion_rotation(a: &mut Arena, [e0, e1, e2, e3]: [Id; 4]) -> M3s {
     [[d0, a01, a02], [a10, d1, a12], [a20, a21, d2]]
 }
 
-/// Builds every equation of `model`.
+/// Builds every equation of `model`, every number a constant.
 pub fn build(model: &Model) -> System {
+    build_with(model, false)
+}
+
+/// [`build`] with the masses and inertias written in the run-time parameters
+/// ([`Model::run_time_parameters`]) as `Var::P`, for the generated code.
+pub fn build_parametric(model: &Model) -> System {
+    build_with(model, true)
+}
+
+/// The bodies' masses and principal inertias as they enter the equations.
+struct MassProps {
+    mass: Vec<Id>,
+    inertia: Vec<[Id; 3]>,
+}
+
+impl MassProps {
+    fn new(a: &mut Arena, model: &Model, parametric: bool) -> Self {
+        let value = |a: &mut Arena, src: &Option<String>, v: f64| match src {
+            Some(e) if parametric => parameter_expr(a, model, e).unwrap_or_else(|| a.constant(v)),
+            _ => a.constant(v),
+        };
+        let mut mass = Vec::new();
+        let mut inertia = Vec::new();
+        for b in &model.bodies {
+            mass.push(value(a, &b.mass_expr, b.mass));
+            inertia.push([0, 1, 2].map(|k| value(a, &b.inertia_expr[k], b.inertia[k])));
+        }
+        MassProps { mass, inertia }
+    }
+}
+
+/// The file's expression `src` with run-time parameters as `Var::P`, derived parameters
+/// expanded, and the other parameters' values as constants (`None`: it does not parse,
+/// which the validator would have reported).
+fn parameter_expr(a: &mut Arena, model: &Model, src: &str) -> Option<Id> {
+    let run_time = model.run_time_parameters();
+    let mut resolve = |a: &mut Arena, name: &str| -> Option<Id> {
+        let p = model.parameters.iter().find(|p| p.name == name)?;
+        Some(
+            match (run_time.iter().position(|q| q.name == name), &p.expression) {
+                (Some(i), _) => a.var(Var::P(i as u32)),
+                (None, Some(e)) => parameter_expr(a, model, e)?,
+                (None, None) => a.constant(p.value),
+            },
+        )
+    };
+    crate::parse::parse_expr(a, src, &mut resolve).ok()
+}
+
+fn build_with(model: &Model, parametric: bool) -> System {
     let mut a = model.arena.clone();
     let bodies: Vec<BodySym> = model
         .bodies
@@ -202,13 +255,14 @@ pub fn build(model: &Model) -> System {
 
     let n_coords = model.n_coords();
     let (phi_q, phi_t, gamma) = derivatives(&mut a, &phi, n_coords);
-    let loads = crate::loads::build(&mut a, model, &bodies);
+    let props = MassProps::new(&mut a, model, parametric);
+    let loads = crate::loads::build(&mut a, model, &bodies, &props.mass);
     let dynamics = model
         .formulations
         .iter()
         .map(|f| match f {
-            Formulation::Paper => paper_dynamics(&mut a, model, &loads.force),
-            Formulation::Exact => exact_dynamics(&mut a, model, &bodies, &loads.force),
+            Formulation::Paper => paper_dynamics(&mut a, model, &props, &loads.force),
+            Formulation::Exact => exact_dynamics(&mut a, model, &props, &bodies, &loads.force),
         })
         .collect();
     let coord_names = model
@@ -232,6 +286,12 @@ pub fn build(model: &Model) -> System {
         potential: loads.potential,
         power_nc: loads.power_nc,
         dynamics,
+        mass_props: props
+            .mass
+            .iter()
+            .zip(&props.inertia)
+            .map(|(&m, &[a, b, c])| [m, a, b, c])
+            .collect(),
         row_names,
         coord_names,
         joint_rows: joint_rows_start,
@@ -249,7 +309,7 @@ pub fn derivatives(a: &mut Arena, phi: &[Id], n_coords: usize) -> (Vec<Entry>, V
     let seed = |v: Var| match v {
         Var::Q(i) => Some(qd[i as usize]),
         Var::T => Some(one),
-        Var::Qd(_) => None,
+        Var::Qd(_) | Var::P(_) | Var::K(_) => None,
     };
     let phi_dot = a.derivative(phi, &seed);
     let phi_ddot = a.derivative(&phi_dot, &seed);
@@ -257,34 +317,34 @@ pub fn derivatives(a: &mut Arena, phi: &[Id], n_coords: usize) -> (Vec<Entry>, V
     (phi_q, phi_t, gamma)
 }
 
-fn paper_dynamics(a: &mut Arena, model: &Model, loads: &[Id]) -> Dynamics {
+fn paper_dynamics(a: &mut Arena, model: &Model, props: &MassProps, loads: &[Id]) -> Dynamics {
     let mut mass = Vec::new();
     let mut force = Vec::new();
-    for body in &model.bodies {
-        let diag = [
-            body.mass,
-            body.mass,
-            body.mass,
-            body.inertia[0],
-            body.inertia[1],
-            body.inertia[2],
-        ];
-        for (k, m) in diag.iter().enumerate() {
+    for (b, body) in model.bodies.iter().enumerate() {
+        let m = props.mass[b];
+        let [ix, iy, iz] = props.inertia[b];
+        for (k, &mk) in [m, m, m, ix, iy, iz].iter().enumerate() {
             let i = body.offset + k;
-            mass.push((i as u32, i as u32, a.constant(*m)));
-            let f = if k < 3 {
-                body.mass * model.gravity[k]
+            mass.push((i as u32, i as u32, mk));
+            let g = if k < 3 {
+                let g = a.constant(model.gravity[k]);
+                a.mul(m, g)
             } else {
-                0.0
+                a.constant(0.0)
             };
-            let g = a.constant(f);
             force.push(a.add(g, loads[i]));
         }
     }
     Dynamics::new(a, Formulation::Paper, mass, force, Some(loads), true)
 }
 
-fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]) -> Dynamics {
+fn exact_dynamics(
+    a: &mut Arena,
+    model: &Model,
+    props: &MassProps,
+    bodies: &[BodySym],
+    loads: &[Id],
+) -> Dynamics {
     let n = model.n_coords();
     let half = a.constant(0.5);
     let one = a.constant(1.0);
@@ -298,11 +358,9 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]
         let mut terms = Vec::new();
         for k in 0..3 {
             let v2 = a.powi(qd[k], 2);
-            let c = a.constant(body.mass);
-            terms.push(a.mul(c, v2));
+            terms.push(a.mul(props.mass[b], v2));
             let w2 = a.powi(omega[k], 2);
-            let c = a.constant(body.inertia[k]);
-            terms.push(a.mul(c, w2));
+            terms.push(a.mul(props.inertia[b][k], w2));
         }
         let twice_t = a.sum(terms);
         let t_kin = a.mul(half, twice_t);
@@ -318,8 +376,11 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]
         // normalization row gives eᵀë = −ėᵀė, and makes the block positive definite
         // (docs/design.md, decision 15). k = 4·mean(J) matches the other eigenvalues 4·J_i.
         let reg = (body.rotation == Rotation::Quaternion).then(|| {
-            let k = 4.0 * (body.inertia[0] + body.inertia[1] + body.inertia[2]) / 3.0;
-            (a.constant(k), bodies[b].rot_coords.clone())
+            let sum = a.sum(props.inertia[b]);
+            let four = a.constant(4.0);
+            let three = a.constant(3.0);
+            let k = a.mul(four, sum);
+            (a.div(k, three), bodies[b].rot_coords.clone())
         });
         for (i, &pi) in p.iter().enumerate() {
             for j in 0..nb {
@@ -350,12 +411,12 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]
         for i in 0..nb {
             let target = Var::Q((off + i) as u32);
             let dt_dq = a.derivative(&[t_kin], &|v| (v == target).then_some(one))[0];
-            let g = if i < 3 {
-                body.mass * model.gravity[i]
+            let gc = if i < 3 {
+                let g = a.constant(model.gravity[i]);
+                a.mul(props.mass[b], g)
             } else {
-                0.0
+                a.constant(0.0)
             };
-            let gc = a.constant(g);
             let s = a.add(gc, dt_dq);
             let mut f = a.sub(s, pdot[i]);
             if let (Some((k, e)), Some(ed2), true) = (&reg, edot_sq, i >= 3) {
@@ -370,7 +431,12 @@ fn exact_dynamics(a: &mut Arena, model: &Model, bodies: &[BodySym], loads: &[Id]
         }
     }
     mass.sort_by_key(|&(r, c, _)| (r, c));
-    let mass_is_constant = mass.iter().all(|&(_, _, id)| a.as_const(id).is_some());
+    // Constant within a run: run-time parameters do not change during one.
+    let mass_is_constant = mass.iter().all(|&(_, _, id)| {
+        a.variables(id)
+            .iter()
+            .all(|v| matches!(v, Var::P(_) | Var::K(_)))
+    });
     Dynamics::new(
         a,
         Formulation::Exact,

@@ -24,6 +24,12 @@ pub enum Var {
     Qd(u32),
     /// Time.
     T,
+    /// Run-time parameter `p[i]` of the generated code: the file's `[parameters]` entries
+    /// that reach only masses and inertias ([`crate::model::Parameter::mass_only`]).
+    P(u32),
+    /// Hoisted value `k[i]`: a function of the parameters alone, computed once per parameter
+    /// set by the generated `setup` ([`crate::hoist`]).
+    K(u32),
 }
 
 /// Unary functions the engine knows how to evaluate, differentiate and emit.

@@ -20,6 +20,7 @@ pub mod expr;
 pub mod files;
 pub mod fuzz;
 pub mod geometry;
+pub mod hoist;
 pub mod info;
 pub mod interpret;
 pub mod legs;
@@ -48,7 +49,7 @@ pub struct Generated {
 /// messages and in the generated header (use a path relative to the workspace root).
 pub fn generate(source: &str, text: &str) -> Result<Generated, Errors> {
     let model = model::load(source, text)?;
-    let system = equations::build(&model);
+    let system = equations::build_parametric(&model);
     let assembly = assembly::assemble(&model, &system, source)?;
     Ok(Generated {
         code: rust::module(

@@ -82,7 +82,7 @@ impl Acc<'_> {
     }
 }
 
-pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Loads {
+pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym], masses: &[Id]) -> Loads {
     let n = model.n_coords();
     let mut acc = Acc {
         a,
@@ -91,9 +91,11 @@ pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym]) -> Loads {
         power: Vec::new(),
         n,
     };
-    for (b, body) in model.bodies.iter().enumerate() {
+    for (b, &mass) in masses.iter().enumerate() {
         for k in 0..3 {
-            let c = acc.a.constant(-body.mass * model.gravity[k]);
+            let g = acc.a.constant(model.gravity[k]);
+            let mg = acc.a.mul(mass, g);
+            let c = acc.a.neg(mg);
             let v = acc.a.mul(c, bodies[b].r[k]);
             acc.potential.push(v);
         }

@@ -74,6 +74,10 @@ pub struct Body {
     pub mass: f64,
     /// Principal inertias about the centre of mass, local axes.
     pub inertia: [f64; 3],
+    /// The file's expressions for `mass` and each of `inertia` (`None`: a number), which
+    /// [`crate::equations::build_parametric`] writes in the run-time parameters.
+    pub mass_expr: Option<String>,
+    pub inertia_expr: [Option<String>; 3],
     pub rotation: Rotation,
     /// Index of the body's first coordinate.
     pub offset: usize,
@@ -343,6 +347,10 @@ pub struct Parameter {
     /// The items whose values depend on it, directly or through other parameters (e.g.
     /// ``body `crank` ``, ``joint `pin` ``), in name order.
     pub affects: Vec<String>,
+    /// A number (not derived) that reaches only bodies' masses and principal inertias,
+    /// none of them zero: no decision of the generator (assembly, rank, reduction, platform)
+    /// depends on it, so the generated code takes it at run time (`Var::P`).
+    pub mass_only: bool,
 }
 
 impl Model {
@@ -359,6 +367,12 @@ impl Model {
     /// and gravity in the XY plane: what `planar = true` requires of the file.
     pub fn starts_planar(&self) -> bool {
         self.gravity[2] == 0.0 && self.bodies.iter().all(|b| b.off_plane().is_none())
+    }
+
+    /// The parameters the generated code takes at run time, in order (`Var::P(i)` is the
+    /// `i`-th): those that reach only masses and inertias.
+    pub fn run_time_parameters(&self) -> Vec<&Parameter> {
+        self.parameters.iter().filter(|p| p.mass_only).collect()
     }
 
     pub fn body_name(&self, b: BodyRef) -> &str {
@@ -389,6 +403,7 @@ pub fn load_with(file: &str, text: &str, overrides: &[(String, f64)]) -> Result<
         params: HashMap::new(),
         values: HashMap::new(),
         uses: HashMap::new(),
+        fields: HashMap::new(),
         reads: HashMap::new(),
         error_spans: Vec::new(),
         arena: Arena::new(),
@@ -493,6 +508,8 @@ struct Validator<'a> {
     values: HashMap<String, ParamState>,
     /// For each parameter, the items whose fields read it directly.
     uses: HashMap<String, BTreeSet<String>>,
+    /// For each parameter, the `(item, field)` pairs that read it directly.
+    fields: HashMap<String, BTreeSet<(String, String)>>,
     /// For each parameter, where the values that read it directly are in the file.
     reads: HashMap<String, Vec<Range<usize>>>,
     /// Where each of `errors` is in the file.
@@ -616,6 +633,22 @@ impl Validator<'_> {
             arena: std::mem::take(&mut self.arena),
             parameters: self.parameters(&raw, overrides),
         })
+        .map(|mut m| {
+            // A zero inertia decides the structure (a semi-definite mass matrix, checked at
+            // the assembled pose): the parameters that reach it stay compile-time numbers.
+            let zero: Vec<String> = m
+                .bodies
+                .iter()
+                .filter(|b| b.inertia.contains(&0.0))
+                .map(|b| format!("body `{}`", b.name))
+                .collect();
+            for p in &mut m.parameters {
+                if p.affects.iter().any(|i| zero.contains(i)) {
+                    p.mass_only = false;
+                }
+            }
+            m
+        })
     }
 
     /// Replaces the values of overridden parameters (before any is resolved).
@@ -729,6 +762,32 @@ impl Validator<'_> {
         items
     }
 
+    /// Whether every field that reads `name`, directly or through derived parameters, is a
+    /// body's `mass` or `inertia` (and one does).
+    fn reaches_mass_only(&self, name: &str) -> bool {
+        let mut todo = vec![name.to_string()];
+        let mut seen = BTreeSet::new();
+        let mut any = false;
+        while let Some(p) = todo.pop() {
+            if !seen.insert(p.clone()) {
+                continue;
+            }
+            for (item, field) in self.fields.get(&p).into_iter().flatten() {
+                if let Some(q) = item
+                    .strip_prefix("parameter `")
+                    .and_then(|s| s.strip_suffix('`'))
+                {
+                    todo.push(q.to_string());
+                } else if item.starts_with("body `") && (field == "mass" || field == "inertia") {
+                    any = true;
+                } else {
+                    return false;
+                }
+            }
+        }
+        any
+    }
+
     /// The parameters as resolved, each with the items it affects through any chain of
     /// parameters.
     fn parameters(&self, raw: &RawFile, overrides: &[(String, f64)]) -> Vec<Parameter> {
@@ -753,6 +812,8 @@ impl Validator<'_> {
                     overridden: overrides.iter().any(|(o, _)| *o == name),
                     line: self.map.position(k.span().start).0,
                     affects: items.into_iter().collect(),
+                    mass_only: matches!(v.get_ref(), raw::Scalar::Int(_) | raw::Scalar::Float(_))
+                        && self.reaches_mass_only(&name),
                     name,
                     value,
                 }

@@ -4,10 +4,10 @@
 use crate::assembly::Assembly;
 use crate::emit::{self, Function, Input, Output};
 use crate::equations::{Dynamics, System};
-use crate::expr::Id;
+use crate::expr::{Id, Node, Var};
 use crate::model::{DriverTarget, Formulation, Model, Rotation};
 use crate::symbolic::Entry;
-use proc_macro2::{Ident, Span, TokenStream};
+use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
 
 fn ident(s: &str) -> Ident {
@@ -135,9 +135,25 @@ fn header(model: &Model, sys: &System, asm: &Assembly, source: &str) -> String {
 /// Generates the module source for `model`, read from `source` (a path shown in the header).
 const QT: &[Input] = &[Input::Q, Input::T];
 const QQDT: &[Input] = &[Input::Q, Input::Qd, Input::T];
-const Q: &[Input] = &[Input::Q];
+/// The same, for functions of the dynamics: they read `k` where the system has hoisted values.
+const KQQDT: &[Input] = &[Input::K, Input::Q, Input::Qd, Input::T];
+const KQ: &[Input] = &[Input::K, Input::Q];
 
-/// One emitted function of `sys`.
+/// Lengths of `p` and `k` in `sys`: one past the largest `Var::P` and `Var::K` index.
+fn parameter_lengths(sys: &System) -> (usize, usize) {
+    let (mut np, mut nk) = (0, 0);
+    for i in 0..sys.arena.len() {
+        match sys.arena.node(Id(i as u32)) {
+            Node::Var(Var::P(j)) => np = np.max(j as usize + 1),
+            Node::Var(Var::K(j)) => nk = nk.max(j as usize + 1),
+            _ => {}
+        }
+    }
+    (np, nk)
+}
+
+/// One emitted function of `sys`; one that reads per-step values of the dynamics (`k`
+/// marks it) takes the hoisted values first where the system has any.
 fn function(
     sys: &System,
     name: &str,
@@ -145,16 +161,154 @@ fn function(
     inputs: &[Input],
     outputs: Vec<Output<'_>>,
 ) -> TokenStream {
+    let (n_p, n_k) = parameter_lengths(sys);
+    let inputs: Vec<Input> = inputs
+        .iter()
+        .copied()
+        .filter(|&i| i != Input::K || n_k > 0)
+        .collect();
     emit::function(
         &sys.arena,
         &Function {
             name,
             doc,
-            inputs,
+            inputs: &inputs,
             outputs,
             n_coords: sys.n_coords,
+            n_p,
+            n_k,
         },
     )
+}
+
+/// The argument that passes `k` to a function of `sys` (nothing where it has none).
+fn k_arg(sys: &System, k: &TokenStream) -> TokenStream {
+    match parameter_lengths(sys).1 {
+        0 => quote!(),
+        _ => quote!(#k,),
+    }
+}
+
+/// The parameter `k` of the helpers that wrap functions reading it (nothing where none do).
+fn k_param(sys: &System) -> TokenStream {
+    match parameter_lengths(sys).1 {
+        0 => quote!(),
+        _ => quote!(k: &[f64],),
+    }
+}
+
+/// Per system with hoisted values: how many, their values at the file's parameters (`K`,
+/// read by the types without parameters) and `setup`, which computes them from `p`.
+fn hoisted_items(sys: &System, hoisted: &[Id], p_values: &[f64]) -> TokenStream {
+    if hoisted.is_empty() {
+        return quote!();
+    }
+    let env = |v: Var| match v {
+        Var::P(i) => p_values[i as usize],
+        _ => f64::NAN,
+    };
+    let k_values = sys.arena.eval_many(hoisted, &env).into_iter().map(float);
+    let nk = Literal::usize_unsuffixed(hoisted.len());
+    let setup = function(
+        sys,
+        "setup",
+        " The values the per-step functions read (`k`), from the run-time parameters `p`.",
+        &[Input::P],
+        vec![Output::new("k", hoisted)],
+    );
+    quote! {
+        /// Number of values `setup` computes from the run-time parameters.
+        pub const N_K: usize = #nk;
+        /// `setup` at the file's parameter values: what the types without parameters read.
+        pub static K: [f64; #nk] = [#(#k_values),*];
+        #setup
+    }
+}
+
+/// The run-time parameters of the full model: names, the file's values, the checks of a
+/// new set, and `Parameters` (one set and its hoisted values) that the `<Type>At` types hold.
+fn parameters_items(model: &Model, sys: &System) -> TokenStream {
+    let (np, nk) = parameter_lengths(sys);
+    if np == 0 || nk == 0 {
+        return quote!();
+    }
+    let run_time = model.run_time_parameters();
+    let names: Vec<&str> = run_time.iter().map(|p| p.name.as_str()).collect();
+    let values = run_time.iter().map(|p| float(p.value));
+    let others: Vec<&str> = model
+        .parameters
+        .iter()
+        .filter(|p| !p.mass_only)
+        .map(|p| p.name.as_str())
+        .collect();
+    let no = Literal::usize_unsuffixed(others.len());
+    let bodies: Vec<&str> = model.bodies.iter().map(|b| b.name.as_str()).collect();
+    let nb = Literal::usize_unsuffixed(bodies.len());
+    let props: Vec<Id> = sys.mass_props.iter().flatten().copied().collect();
+    let mass_properties = function(
+        sys,
+        "mass_properties",
+        " Each body's mass and principal inertias at the run-time parameters `p`.",
+        &[Input::P],
+        vec![Output::new("out", &props)],
+    );
+    let n4 = Literal::usize_unsuffixed(4 * bodies.len());
+    let np = Literal::usize_unsuffixed(np);
+    quote! {
+        /// The parameters the generated code takes at run time: the file's `[parameters]`
+        /// entries that reach only masses and inertias (the others are set on the file).
+        pub static PARAMETERS: [&str; #np] = [#(#names),*];
+        /// Their values in the file.
+        pub static PARAMETER_VALUES: [f64; #np] = [#(#values),*];
+        static OTHER_PARAMETERS: [&str; #no] = [#(#others),*];
+        static BODY_NAMES: [&str; #nb] = [#(#bodies),*];
+        /// What a new parameter set is checked with.
+        pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
+            names: &PARAMETERS,
+            others: &OTHER_PARAMETERS,
+            bodies: &BODY_NAMES,
+            mass_properties,
+        };
+        #mass_properties
+        /// One set of run-time parameter values and the values `setup` computed from it.
+        #[derive(Debug, Clone)]
+        pub struct Parameters {
+            p: [f64; #np],
+            k: [f64; N_K],
+        }
+        impl Parameters {
+            /// The file's values.
+            pub fn file_values() -> Self {
+                Parameters { p: PARAMETER_VALUES, k: K }
+            }
+            /// Sets parameters by name. Checked first (known names, finite values, positive
+            /// masses, inertias of a rigid body): a refused set changes nothing. Allocates
+            /// nothing unless it is refused.
+            pub fn set(&mut self, set: &[(&str, f64)]) -> Result<(), ParameterError> {
+                let mut p = self.p;
+                RUN_TIME.assign(&mut p, set)?;
+                let mut props = [0.0; #n4];
+                RUN_TIME.check(&p, &mut props)?;
+                self.p = p;
+                setup(&self.p, &mut self.k);
+                Ok(())
+            }
+            /// The values, in the order of `PARAMETERS`.
+            pub fn values(&self) -> &[f64] {
+                &self.p
+            }
+        }
+    }
+}
+
+/// `v` as a literal, or as the constant naming it when it is not finite.
+fn float(v: f64) -> TokenStream {
+    match v {
+        v if v.is_nan() => quote!(f64::NAN),
+        v if v == f64::INFINITY => quote!(f64::INFINITY),
+        v if v == f64::NEG_INFINITY => quote!(f64::NEG_INFINITY),
+        v => quote!(#v),
+    }
 }
 
 /// Φ, Φq, Φt, γ, their fused evaluation, the potential and the non-conservative power.
@@ -209,14 +363,14 @@ fn kinematic_functions(sys: &System) -> Vec<TokenStream> {
             sys,
             "potential_into",
             " Potential energy of gravity and springs, written to `out[0]`.",
-            Q,
+            KQ,
             vec![Output::new("out", &pot)],
         ),
         function(
             sys,
             "power_nc_into",
             " Power of the non-conservative loads, written to `out[0]`.",
-            QQDT,
+            KQQDT,
             vec![Output::new("out", &power)],
         ),
     ]
@@ -234,28 +388,28 @@ fn dynamics_functions(sys: &System, dynamics: &Dynamics) -> Vec<TokenStream> {
             sys,
             "force_jacobian",
             " Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.",
-            QQDT,
+            KQQDT,
             vec![Output::new("dq", &force_q), Output::new("dqd", &force_qd)],
         ),
         function(
             sys,
             "mass",
             " Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.",
-            Q,
+            KQ,
             vec![Output::new("out", &mass_vals)],
         ),
         function(
             sys,
             "force",
             " Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.",
-            QQDT,
+            KQQDT,
             vec![Output::new("out", &dynamics.force)],
         ),
         function(
             sys,
             "eval_newton",
             " Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.",
-            QQDT,
+            KQQDT,
             vec![
                 Output::by_rows("phi", &sys.phi, &row_index),
                 Output::by_rows("phi_q", &phi_q_vals, &pq_rows),
@@ -267,32 +421,71 @@ fn dynamics_functions(sys: &System, dynamics: &Dynamics) -> Vec<TokenStream> {
 }
 
 /// `impl Mechanism for #type_name`, delegating to the functions of module `#modname` and of
-/// its parent.
-fn mechanism_impl(type_name: &Ident, modname: &Ident, doc: &str) -> TokenStream {
+/// its parent; `k` is the argument passing the hoisted values (empty without any).
+fn mechanism_impl(type_name: &Ident, modname: &Ident, k: &TokenStream) -> TokenStream {
     quote! {
-        #[doc = #doc]
-        #[derive(Debug, Clone, Copy, Default)]
-        pub struct #type_name;
         impl Mechanism for #type_name {
             fn info(&self) -> &'static MechanismInfo { &#modname::INFO }
             fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) { phi(q, t, out) }
             fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_q(q, t, out) }
             fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_t(q, t, out) }
             fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { gamma(q, qd, t, out) }
-            fn mass(&self, q: &[f64], out: &mut [f64]) { #modname::mass(q, out) }
-            fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { #modname::force(q, qd, t, out) }
+            fn mass(&self, q: &[f64], out: &mut [f64]) { #modname::mass(#k q, out) }
+            fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { #modname::force(#k q, qd, t, out) }
             fn force_jacobian(&self, q: &[f64], qd: &[f64], t: f64, dq: &mut [f64], dqd: &mut [f64]) {
-                #modname::force_jacobian(q, qd, t, dq, dqd)
+                #modname::force_jacobian(#k q, qd, t, dq, dqd)
             }
-            fn potential(&self, q: &[f64]) -> f64 { potential(q) }
-            fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 { power_nc(q, qd, t) }
+            fn potential(&self, q: &[f64]) -> f64 { potential(#k q) }
+            fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 { power_nc(#k q, qd, t) }
             fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
-                #modname::eval_newton(q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+                #modname::eval_newton(#k q, qd, t, out.phi, out.phi_q, out.mass, out.force)
             }
             fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
                 eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
             }
         }
+    }
+}
+
+/// The unit type of one formulation (the file's parameter values) and, where the system
+/// has run-time parameters, `<Type>At` (any values) with `<Type>::with_parameters`.
+fn formulation_types(
+    sys: &System,
+    type_name: &Ident,
+    modname: &Ident,
+    doc: &str,
+    with_at: bool,
+) -> TokenStream {
+    let unit = mechanism_impl(type_name, modname, &k_arg(sys, &quote!(&K)));
+    if !with_at || parameter_lengths(sys).1 == 0 {
+        return quote! {
+            #[doc = #doc]
+            #[derive(Debug, Clone, Copy, Default)]
+            pub struct #type_name;
+            #unit
+        };
+    }
+    let at = ident(&format!("{type_name}At"));
+    let at_impl = mechanism_impl(&at, modname, &k_arg(sys, &quote!(&self.0.k)));
+    let at_doc = format!("{doc} At run-time parameter values (`{type_name}::with_parameters`).");
+    quote! {
+        #[doc = #doc]
+        #[derive(Debug, Clone, Copy, Default)]
+        pub struct #type_name;
+        #unit
+        impl #type_name {
+            /// This formulation with some run-time parameters (`PARAMETERS`) set, the others
+            /// at the file's values; a name or value that is refused changes nothing.
+            pub fn with_parameters(set: &[(&str, f64)]) -> Result<#at, ParameterError> {
+                let mut p = Parameters::file_values();
+                p.set(set)?;
+                Ok(#at(p))
+            }
+        }
+        #[doc = #at_doc]
+        #[derive(Debug, Clone)]
+        pub struct #at(pub Parameters);
+        #at_impl
     }
 }
 
@@ -378,7 +571,17 @@ fn reduced_module(
     asm: &Assembly,
     red: &crate::reduce::Reduced,
 ) -> TokenStream {
-    let r = &red.system;
+    let mut r = red.system.clone();
+    let hoisted = crate::hoist::system(&mut r);
+    let r = &r;
+    let p_values: Vec<f64> = model
+        .run_time_parameters()
+        .iter()
+        .map(|p| p.value)
+        .collect();
+    let k_items = hoisted_items(r, &hoisted, &p_values);
+    let kp = k_param(r);
+    let ka = k_arg(r, &quote!(k));
     let (n, m) = (r.n_coords, r.n_constraints);
     let (pq_rows, pq_cols) = pattern(&r.phi_q);
     let nnz = pq_rows.len();
@@ -452,7 +655,7 @@ fn reduced_module(
             quote!(&[]),
             quote!(None),
         ));
-        forms.push(mechanism_impl(&type_name, &modname, &type_doc));
+        forms.push(formulation_types(r, &type_name, &modname, &type_doc, false));
     }
     quote! {
         /// The system after substituting rows `a·qᵢ + b·qⱼ + g(t) = 0` away (docs/design.md,
@@ -494,17 +697,18 @@ fn reduced_module(
                 offsets: offsets_into,
             };
             #offsets_fn
+            #k_items
             #(#fns)*
             /// Potential energy of gravity and springs.
-            pub fn potential(q: &[f64]) -> f64 {
+            pub fn potential(#kp q: &[f64]) -> f64 {
                 let mut out = [0.0];
-                potential_into(q, &mut out);
+                potential_into(#ka q, &mut out);
                 out[0]
             }
             /// Power of the non-conservative loads.
-            pub fn power_nc(q: &[f64], qd: &[f64], t: f64) -> f64 {
+            pub fn power_nc(#kp q: &[f64], qd: &[f64], t: f64) -> f64 {
                 let mut out = [0.0];
-                power_nc_into(q, qd, t, &mut out);
+                power_nc_into(#ka q, qd, t, &mut out);
                 out[0]
             }
             #(#forms)*
@@ -553,6 +757,18 @@ fn registry_entry(
 
 /// `hash` is the [`symbody_runtime::source_hash`] of the file's text.
 pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u64) -> String {
+    // A planar model takes the place of the substitution pass's (a planar file's bodies are
+    // in Euler angles, where that pass finds only what the plane already pins).
+    let reduced = asm
+        .planar
+        .clone()
+        .or_else(|| crate::reduce::substitute(sys));
+    let unhoisted = sys;
+    let mut sys = sys.clone();
+    let hoisted = crate::hoist::system(&mut sys);
+    let sys = &sys;
+    let run_time = model.run_time_parameters();
+    let p_values: Vec<f64> = run_time.iter().map(|p| p.value).collect();
     let n = sys.n_coords;
     let m = sys.n_constraints;
     let (pq_rows, pq_cols) = pattern(&sys.phi_q);
@@ -610,6 +826,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
         }
     };
     let leg_import = asm.platform.as_ref().map(|_| quote!(LegInfo,));
+    let (kp, ka) = (k_param(sys), k_arg(sys, &quote!(k)));
     items.push(quote! {
         /// Number of generalized coordinates.
         pub const N_COORDS: usize = #n;
@@ -639,18 +856,20 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
         /// not such a mechanism).
         pub const PLATFORM: Option<PlatformInfo> = #platform;
         /// Potential energy of gravity and springs.
-        pub fn potential(q: &[f64]) -> f64 {
+        pub fn potential(#kp q: &[f64]) -> f64 {
             let mut out = [0.0];
-            potential_into(q, &mut out);
+            potential_into(#ka q, &mut out);
             out[0]
         }
         /// Power of the non-conservative loads.
-        pub fn power_nc(q: &[f64], qd: &[f64], t: f64) -> f64 {
+        pub fn power_nc(#kp q: &[f64], qd: &[f64], t: f64) -> f64 {
             let mut out = [0.0];
-            power_nc_into(q, qd, t, &mut out);
+            power_nc_into(#ka q, qd, t, &mut out);
             out[0]
         }
     });
+    items.push(hoisted_items(sys, &hoisted, &p_values));
+    items.push(parameters_items(model, sys));
 
     let mut impls = Vec::new();
     for dynamics in &sys.dynamics {
@@ -678,18 +897,20 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
             quote!(&JOINTS),
             quote!(PLATFORM),
         ));
-        impls.push(mechanism_impl(&type_name, &modname, &type_doc));
+        impls.push(formulation_types(
+            sys, &type_name, &modname, &type_doc, true,
+        ));
     }
-    // A planar model takes the place of the substitution pass's (a planar file's bodies are
-    // in Euler angles, where that pass finds only what the plane already pins).
-    let reduced = asm
-        .planar
-        .clone()
-        .or_else(|| crate::reduce::substitute(sys));
     if let Some(red) = &reduced {
-        items.push(reduced_module(model, sys, asm, red));
+        items.push(reduced_module(model, unhoisted, asm, red));
     }
     let reduction_import = reduced.as_ref().map(|_| quote!(Reduction, Substitution,));
+    let parameter_import = match parameter_lengths(sys) {
+        (0, _) | (_, 0) => quote!(),
+        _ => quote!(
+            use symbody_runtime::parameters::{ParameterError, RunTimeParameters};
+        ),
+    };
     let default_type = ident(match model.formulations[0] {
         Formulation::Paper => "Paper",
         Formulation::Exact => "Exact",
@@ -699,6 +920,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
     let file = quote! {
         #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]
         use symbody_runtime::{BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, Origin, PlatformInfo, #reduction_import Rotation};
+        #parameter_import
         #(#items)*
         #(#impls)*
         /// The formulation listed first in the mechanism file.

@@ -97,6 +97,9 @@ pub fn lower(arena: &Arena, n_coords: usize, outputs: &[&[Id]]) -> Tape {
                 Var::Q(i) => c + i,
                 Var::Qd(i) => c + n + i,
                 Var::T => c + 2 * n,
+                Var::P(_) | Var::K(_) => {
+                    unreachable!("interpreted systems are built with their parameters' values")
+                }
             };
             register.insert(id, r);
         }

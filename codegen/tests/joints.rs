@@ -56,6 +56,7 @@ impl Case {
             Var::Q(i) => self.q0[i as usize],
             Var::Qd(_) => 0.0,
             Var::T => t,
+            Var::P(_) | Var::K(_) => unreachable!("built with the parameters' values"),
         }
     }
     /// Φq·q̇ per row at the start.

@@ -33,6 +33,7 @@ impl Case {
             Var::Q(i) => q[i as usize],
             Var::Qd(_) => 0.0,
             Var::T => t,
+            Var::P(_) | Var::K(_) => unreachable!("Φ reads no run-time parameter"),
         };
         self.sys.arena.eval_many(&self.sys.phi, &env)
     }

@@ -105,6 +105,7 @@ fn eval(
         Var::Q(i) => q[i as usize],
         Var::Qd(i) => qd[i as usize],
         Var::T => t,
+        Var::P(_) | Var::K(_) => unreachable!("built with the parameters' values"),
     })
 }
 

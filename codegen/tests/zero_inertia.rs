@@ -135,6 +135,7 @@ impl Interpreted {
             Var::Q(i) => q[i as usize],
             Var::Qd(i) => qd[i as usize],
             Var::T => t,
+            Var::P(_) | Var::K(_) => unreachable!("built with the parameters' values"),
         };
         out.copy_from_slice(&self.sys.arena.eval_many(roots, &env));
     }

@@ -36,6 +36,7 @@ pub mod kinematics;
 pub mod kkt;
 mod load_stiffness;
 pub mod mechanism;
+pub mod parameters;
 pub mod pose;
 pub mod quadrature;
 pub mod reactions;

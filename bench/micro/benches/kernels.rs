@@ -204,9 +204,19 @@ fn kernels(c: &mut Criterion) {
     g.bench_function("phi_t", |b| {
         b.iter(|| st::phi_t(black_box(q), black_box(t), &mut phi_t))
     });
-    g.bench_function("mass", |b| b.iter(|| exact::mass(black_box(q), &mut mass)));
+    g.bench_function("mass", |b| {
+        b.iter(|| exact::mass(&st::K, black_box(q), &mut mass))
+    });
     g.bench_function("force", |b| {
-        b.iter(|| exact::force(black_box(q), black_box(qd), black_box(t), &mut force))
+        b.iter(|| {
+            exact::force(
+                &st::K,
+                black_box(q),
+                black_box(qd),
+                black_box(t),
+                &mut force,
+            )
+        })
     });
     g.finish();
 
@@ -236,6 +246,7 @@ fn kernels(c: &mut Criterion) {
     g.bench_function("eval_newton", |b| {
         b.iter(|| {
             exact::eval_newton(
+                &st::K,
                 black_box(q),
                 black_box(qd),
                 black_box(t),
@@ -251,8 +262,8 @@ fn kernels(c: &mut Criterion) {
             let (q, qd, t) = (black_box(q), black_box(qd), black_box(t));
             st::phi(q, t, &mut phi);
             st::phi_q(q, t, &mut jac);
-            exact::mass(q, &mut mass);
-            exact::force(q, qd, t, &mut force);
+            exact::mass(&st::K, q, &mut mass);
+            exact::force(&st::K, q, qd, t, &mut force);
         })
     });
     g.finish();
@@ -291,6 +302,7 @@ fn bench_reduced(c: &mut Criterion) {
     g.bench_function("eval_newton", |b| {
         b.iter(|| {
             reduced::exact::eval_newton(
+                &reduced::K,
                 black_box(&q),
                 black_box(&qd),
                 black_box(t),

@@ -2,7 +2,7 @@
 //! placement between two joints) and the initial velocity.
 
 use super::joints::JointSpec;
-use super::raw::{RawBody, RawPlacement};
+use super::raw::{RawBody, RawPlacement, SScalar, Scalar};
 use super::{Body, Rotation, Validator};
 use crate::geometry::{
     euler_angles, euler_matrix, euler_rate_matrix, matrix_quaternion, quaternion_rates, v3, M3, V3,
@@ -120,10 +120,22 @@ impl Validator<'_> {
                 angular_velocity,
             });
             let n = 3 + rotation.n_coords();
+            let expr = |s: Option<&SScalar>| match s.map(|s| s.get_ref()) {
+                Some(Scalar::Expr(e)) => Some(e.clone()),
+                _ => None,
+            };
+            let inertia_expr = match rb.inertia.as_ref().map(|v| v.get_ref()) {
+                Some(c) if c.len() == 3 => {
+                    [expr(Some(&c[0])), expr(Some(&c[1])), expr(Some(&c[2]))]
+                }
+                _ => [None, None, None],
+            };
             bodies.push(Body {
                 name: bname,
                 mass: mass.unwrap_or(1.0),
                 inertia: inertia.unwrap_or([1.0; 3]),
+                mass_expr: expr(rb.mass.as_ref()),
+                inertia_expr,
                 rotation,
                 offset,
                 q0,

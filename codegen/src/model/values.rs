@@ -105,6 +105,10 @@ impl Validator<'_> {
                     .entry(n.clone())
                     .or_default()
                     .insert(item.to_string());
+                self.fields
+                    .entry(n.clone())
+                    .or_default()
+                    .insert((item.to_string(), field.to_string()));
                 self.reads.entry(n.clone()).or_default().push(span.clone());
                 if let Some(v) = self.param_value(&n) {
                     values.insert(n, v);
@@ -259,6 +263,10 @@ impl Validator<'_> {
                     .entry(n.clone())
                     .or_default()
                     .insert(item.to_string());
+                self.fields
+                    .entry(n.clone())
+                    .or_default()
+                    .insert((item.to_string(), field.to_string()));
                 self.reads.entry(n).or_default().push(src.span());
             }
         }

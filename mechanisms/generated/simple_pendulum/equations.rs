@@ -23,6 +23,7 @@ use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
     MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Reduction, Substitution, Rotation,
 };
+use symbody_runtime::parameters::{ParameterError, RunTimeParameters};
 /// Constraint residual Φ(q, t).
 pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
@@ -196,21 +197,24 @@ fn eval_kinematics_part_0(
     gamma[0] = x80;
 }
 /// Potential energy of gravity and springs, written to `out[0]`.
-pub fn potential_into(q: &[f64], out: &mut [f64]) {
+pub fn potential_into(k: &[f64], q: &[f64], out: &mut [f64]) {
+    let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
     let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
-    potential_into_part_0(q, out);
+    potential_into_part_0(k, q, out);
 }
 #[inline(never)]
-fn potential_into_part_0(q: &[f64; 6], out: &mut [f64; 1]) {
-    let x82 = q[1] * 9.81;
-    out[0] = x82;
+fn potential_into_part_0(k: &[f64; 5], q: &[f64; 6], out: &mut [f64; 1]) {
+    let x324 = q[1] * k[1];
+    out[0] = x324;
 }
 /// Power of the non-conservative loads, written to `out[0]`.
-pub fn power_nc_into(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+pub fn power_nc_into(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
     let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
     let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
+    let _ = k;
     let _ = q;
     let _ = qd;
     let _ = t;
@@ -276,16 +280,104 @@ pub const T_END: f64 = 2000f64;
 /// not such a mechanism).
 pub const PLATFORM: Option<PlatformInfo> = None;
 /// Potential energy of gravity and springs.
-pub fn potential(q: &[f64]) -> f64 {
+pub fn potential(k: &[f64], q: &[f64]) -> f64 {
     let mut out = [0.0];
-    potential_into(q, &mut out);
+    potential_into(k, q, &mut out);
     out[0]
 }
 /// Power of the non-conservative loads.
-pub fn power_nc(q: &[f64], qd: &[f64], t: f64) -> f64 {
+pub fn power_nc(k: &[f64], q: &[f64], qd: &[f64], t: f64) -> f64 {
     let mut out = [0.0];
-    power_nc_into(q, qd, t, &mut out);
+    power_nc_into(k, q, qd, t, &mut out);
     out[0]
+}
+/// Number of values `setup` computes from the run-time parameters.
+pub const N_K: usize = 5;
+/// `setup` at the file's parameter values: what the types without parameters read.
+pub static K: [f64; 5] = [0.00004f64, 9.81f64, -9.81f64, 1f64, 0.00004f64];
+/// The values the per-step functions read (`k`), from the run-time parameters `p`.
+pub fn setup(p: &[f64], k: &mut [f64]) {
+    let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
+    let k: &mut [f64; 5] = k.try_into().expect("k must have 5 entries");
+    setup_part_0(p, k);
+}
+#[inline(never)]
+fn setup_part_0(p: &[f64; 1], k: &mut [f64; 5]) {
+    let x83 = p[0] * 0.4;
+    let x85 = x83 * 0.01;
+    let x86 = 0.01 * x85;
+    let x89 = p[0] * 9.81;
+    let x90 = -x89;
+    let x153 = 2.0 * p[0];
+    let x154 = 0.5 * x153;
+    let x155 = 2.0 * x86;
+    let x156 = 0.5 * x155;
+    k[0] = x86;
+    k[1] = x89;
+    k[2] = x90;
+    k[3] = x154;
+    k[4] = x156;
+}
+/// The parameters the generated code takes at run time: the file's `[parameters]`
+/// entries that reach only masses and inertias (the others are set on the file).
+pub static PARAMETERS: [&str; 1] = ["m"];
+/// Their values in the file.
+pub static PARAMETER_VALUES: [f64; 1] = [1f64];
+static OTHER_PARAMETERS: [&str; 2] = ["ball", "l"];
+static BODY_NAMES: [&str; 1] = ["p1"];
+/// What a new parameter set is checked with.
+pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
+    names: &PARAMETERS,
+    others: &OTHER_PARAMETERS,
+    bodies: &BODY_NAMES,
+    mass_properties,
+};
+/// Each body's mass and principal inertias at the run-time parameters `p`.
+pub fn mass_properties(p: &[f64], out: &mut [f64]) {
+    let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
+    let out: &mut [f64; 4] = out.try_into().expect("out must have 4 entries");
+    mass_properties_part_0(p, out);
+}
+#[inline(never)]
+fn mass_properties_part_0(p: &[f64; 1], out: &mut [f64; 4]) {
+    let x83 = p[0] * 0.4;
+    let x85 = x83 * 0.01;
+    let x86 = 0.01 * x85;
+    out[0] = p[0];
+    out[1] = x86;
+    out[2] = x86;
+    out[3] = x86;
+}
+/// One set of run-time parameter values and the values `setup` computed from it.
+#[derive(Debug, Clone)]
+pub struct Parameters {
+    p: [f64; 1],
+    k: [f64; N_K],
+}
+impl Parameters {
+    /// The file's values.
+    pub fn file_values() -> Self {
+        Parameters {
+            p: PARAMETER_VALUES,
+            k: K,
+        }
+    }
+    /// Sets parameters by name. Checked first (known names, finite values, positive
+    /// masses, inertias of a rigid body): a refused set changes nothing. Allocates
+    /// nothing unless it is refused.
+    pub fn set(&mut self, set: &[(&str, f64)]) -> Result<(), ParameterError> {
+        let mut p = self.p;
+        RUN_TIME.assign(&mut p, set)?;
+        let mut props = [0.0; 4];
+        RUN_TIME.check(&p, &mut props)?;
+        self.p = p;
+        setup(&self.p, &mut self.k);
+        Ok(())
+    }
+    /// The values, in the order of `PARAMETERS`.
+    pub fn values(&self) -> &[f64] {
+        &self.p
+    }
 }
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
 pub mod exact {
@@ -331,190 +423,196 @@ pub mod exact {
     };
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
+        k: &[f64],
         q: &[f64],
         qd: &[f64],
         t: f64,
         dq: &mut [f64],
         dqd: &mut [f64],
     ) {
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
         let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
         let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+        let _ = k;
         let _ = q;
         let _ = qd;
         let _ = t;
     }
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
-    pub fn mass(q: &[f64], out: &mut [f64]) {
+    pub fn mass(k: &[f64], q: &[f64], out: &mut [f64]) {
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
         let out: &mut [f64; 10] = out.try_into().expect("out must have 10 entries");
-        mass_part_0(q, out);
+        mass_part_0(k, q, out);
     }
     #[inline(never)]
-    fn mass_part_0(q: &[f64; 6], out: &mut [f64; 10]) {
+    fn mass_part_0(k: &[f64; 5], q: &[f64; 6], out: &mut [f64; 10]) {
         let x6 = q[3].sin();
         let x7 = q[3].cos();
         let x8 = q[4].sin();
         let x9 = q[4].cos();
         let x16 = x6 * x9;
         let x17 = x7 * x9;
-        let x140 = x8 * 2.0;
-        let x142 = 0.00004 * x140;
-        let x144 = 0.5 * x142;
-        let x145 = -x144;
-        let x146 = x7 * 2.0;
-        let x147 = x6 * 2.0;
-        let x149 = x7 * x146;
-        let x150 = 0.00004 * x149;
-        let x151 = x6 * x147;
-        let x153 = 0.00004 * x151;
-        let x155 = x150 + x153;
-        let x156 = 0.5 * x155;
-        let x157 = x16 * 2.0;
-        let x158 = x17 * 2.0;
-        let x159 = x7 * x157;
-        let x160 = 0.00004 * x159;
-        let x161 = x6 * x158;
-        let x162 = 0.00004 * x161;
-        let x164 = x160 - x162;
-        let x165 = 0.5 * x164;
-        let x166 = x16 * x146;
-        let x167 = 0.00004 * x166;
-        let x168 = x17 * x147;
-        let x170 = 0.00004 * x168;
-        let x172 = x167 - x170;
-        let x173 = 0.5 * x172;
-        let x174 = x8 * x140;
-        let x176 = 0.00004 * x174;
-        let x178 = x16 * x157;
-        let x179 = 0.00004 * x178;
-        let x180 = x17 * x158;
-        let x181 = 0.00004 * x180;
-        let x182 = x176 + x179;
-        let x183 = x181 + x182;
-        let x184 = 0.5 * x183;
-        out[0] = 1.0;
-        out[1] = 1.0;
-        out[2] = 1.0;
-        out[3] = 0.00004;
-        out[4] = x145;
-        out[5] = x156;
-        out[6] = x165;
-        out[7] = x145;
-        out[8] = x173;
-        out[9] = x184;
+        let x157 = x8 * 2.0;
+        let x163 = x7 * 2.0;
+        let x164 = x6 * 2.0;
+        let x166 = x7 * x163;
+        let x168 = x6 * x164;
+        let x174 = x16 * 2.0;
+        let x175 = x17 * 2.0;
+        let x176 = x7 * x174;
+        let x178 = x6 * x175;
+        let x183 = x16 * x163;
+        let x185 = x17 * x164;
+        let x191 = x8 * x157;
+        let x195 = x16 * x174;
+        let x197 = x17 * x175;
+        let x327 = x157 * k[0];
+        let x328 = 0.5 * x327;
+        let x329 = -x328;
+        let x330 = x166 * k[0];
+        let x331 = x168 * k[0];
+        let x332 = x330 + x331;
+        let x333 = 0.5 * x332;
+        let x334 = x176 * k[0];
+        let x335 = x178 * k[0];
+        let x337 = x334 - x335;
+        let x338 = 0.5 * x337;
+        let x339 = x183 * k[0];
+        let x340 = x185 * k[0];
+        let x342 = x339 - x340;
+        let x343 = 0.5 * x342;
+        let x344 = x191 * k[0];
+        let x345 = x195 * k[0];
+        let x346 = x197 * k[0];
+        let x347 = x344 + x345;
+        let x348 = x346 + x347;
+        let x349 = 0.5 * x348;
+        out[0] = k[3];
+        out[1] = k[3];
+        out[2] = k[3];
+        out[3] = k[4];
+        out[4] = x329;
+        out[5] = x333;
+        out[6] = x338;
+        out[7] = x329;
+        out[8] = x343;
+        out[9] = x349;
     }
     /// Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.
-    pub fn force(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+    pub fn force(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
         let out: &mut [f64; 6] = out.try_into().expect("out must have 6 entries");
         let _ = t;
-        force_part_0(q, qd, out);
+        force_part_0(k, q, qd, out);
     }
     #[inline(never)]
-    fn force_part_0(q: &[f64; 6], qd: &[f64; 6], out: &mut [f64; 6]) {
+    fn force_part_0(k: &[f64; 5], q: &[f64; 6], qd: &[f64; 6], out: &mut [f64; 6]) {
         let x6 = q[3].sin();
         let x7 = q[3].cos();
         let x8 = q[4].sin();
         let x9 = q[4].cos();
         let x16 = x6 * x9;
         let x17 = x7 * x9;
-        let x84 = x8 * qd[5];
-        let x86 = x9 * qd[5];
-        let x87 = x7 * qd[4];
-        let x88 = x6 * x86;
-        let x89 = x87 + x88;
-        let x90 = x6 * qd[4];
-        let x91 = x7 * x86;
-        let x93 = x91 - x90;
-        let x94 = qd[3] - x84;
-        let x111 = 2.0 * x94;
-        let x112 = 2.0 * x89;
-        let x113 = 2.0 * x93;
-        let x185 = x7 * qd[3];
-        let x186 = x6 * qd[3];
-        let x188 = x9 * qd[4];
-        let x189 = x8 * qd[4];
-        let x191 = x9 * x185;
-        let x192 = x6 * x189;
-        let x194 = x191 - x192;
-        let x195 = x9 * x186;
-        let x197 = x7 * x189;
-        let x199 = x195 + x197;
-        let x201 = qd[5] * x188;
-        let x203 = qd[5] * x189;
-        let x205 = qd[4] * x186;
-        let x207 = x86 * x185;
-        let x208 = x6 * x203;
-        let x210 = x207 - x208;
-        let x211 = x210 - x205;
-        let x212 = qd[4] * x185;
-        let x213 = x86 * x186;
-        let x215 = x7 * x203;
-        let x217 = x213 + x215;
-        let x220 = x212 + x217;
-        let x222 = 2.0 * x201;
-        let x224 = 2.0 * x211;
-        let x225 = 2.0 * x220;
-        let x227 = 0.00004 * x222;
-        let x229 = 0.5 * x227;
-        let x231 = x112 * x186;
-        let x233 = x7 * x224;
-        let x234 = x233 - x231;
-        let x235 = 0.00004 * x234;
-        let x236 = x113 * x185;
-        let x237 = x6 * x225;
-        let x239 = x236 - x237;
-        let x240 = 0.00004 * x239;
-        let x242 = x235 - x240;
-        let x243 = 0.5 * x242;
-        let x244 = x111 * x188;
-        let x245 = x8 * x222;
-        let x247 = x244 - x245;
-        let x248 = 0.00004 * x247;
-        let x250 = x112 * x194;
-        let x251 = x16 * x224;
-        let x252 = x250 + x251;
-        let x253 = 0.00004 * x252;
-        let x254 = x113 * x199;
-        let x256 = x17 * x225;
-        let x258 = x254 + x256;
-        let x260 = 0.00004 * x258;
-        let x262 = x253 - x248;
-        let x263 = x262 - x260;
-        let x264 = 0.5 * x263;
-        let x269 = x93 * x112;
-        let x270 = 0.00004 * x269;
-        let x271 = x89 * x113;
-        let x273 = 0.00004 * x271;
-        let x275 = x270 - x273;
-        let x276 = 0.5 * x275;
-        let x277 = x229 + x276;
-        let x279 = x6 * x84;
-        let x281 = x7 * x84;
-        let x283 = x86 * x111;
-        let x285 = 0.00004 * x283;
-        let x287 = x112 * x279;
-        let x289 = 0.00004 * x287;
-        let x291 = x113 * x281;
-        let x293 = 0.00004 * x291;
-        let x295 = x285 + x289;
-        let x297 = x293 + x295;
-        let x299 = 0.5 * x297;
-        let x302 = x243 + x299;
-        let x303 = -x302;
-        let x304 = -x264;
+        let x93 = x8 * qd[5];
+        let x95 = x9 * qd[5];
+        let x96 = x7 * qd[4];
+        let x97 = x6 * x95;
+        let x98 = x96 + x97;
+        let x99 = x6 * qd[4];
+        let x100 = x7 * x95;
+        let x102 = x100 - x99;
+        let x103 = qd[3] - x93;
+        let x123 = 2.0 * x103;
+        let x124 = 2.0 * x98;
+        let x125 = 2.0 * x102;
+        let x202 = x7 * qd[3];
+        let x203 = x6 * qd[3];
+        let x205 = x9 * qd[4];
+        let x206 = x8 * qd[4];
+        let x208 = x9 * x202;
+        let x209 = x6 * x206;
+        let x211 = x208 - x209;
+        let x212 = x9 * x203;
+        let x214 = x7 * x206;
+        let x216 = x212 + x214;
+        let x218 = qd[5] * x205;
+        let x220 = qd[5] * x206;
+        let x222 = qd[4] * x203;
+        let x224 = x95 * x202;
+        let x225 = x6 * x220;
+        let x227 = x224 - x225;
+        let x228 = x227 - x222;
+        let x229 = qd[4] * x202;
+        let x230 = x95 * x203;
+        let x232 = x7 * x220;
+        let x234 = x230 + x232;
+        let x237 = x229 + x234;
+        let x239 = 2.0 * x218;
+        let x241 = 2.0 * x228;
+        let x242 = 2.0 * x237;
+        let x248 = x124 * x203;
+        let x250 = x7 * x241;
+        let x251 = x250 - x248;
+        let x253 = x125 * x202;
+        let x254 = x6 * x242;
+        let x256 = x253 - x254;
+        let x261 = x123 * x205;
+        let x262 = x8 * x239;
+        let x264 = x261 - x262;
+        let x267 = x124 * x211;
+        let x268 = x16 * x241;
+        let x269 = x267 + x268;
+        let x271 = x125 * x216;
+        let x273 = x17 * x242;
+        let x275 = x271 + x273;
+        let x285 = x102 * x124;
+        let x287 = x98 * x125;
+        let x295 = x6 * x93;
+        let x297 = x7 * x93;
+        let x299 = x95 * x123;
+        let x303 = x124 * x295;
+        let x307 = x125 * x297;
+        let x350 = x239 * k[0];
+        let x351 = 0.5 * x350;
+        let x352 = x251 * k[0];
+        let x353 = x256 * k[0];
+        let x355 = x352 - x353;
+        let x356 = 0.5 * x355;
+        let x357 = x264 * k[0];
+        let x359 = x269 * k[0];
+        let x360 = x275 * k[0];
+        let x362 = x359 - x357;
+        let x363 = x362 - x360;
+        let x364 = 0.5 * x363;
+        let x365 = x285 * k[0];
+        let x366 = x287 * k[0];
+        let x368 = x365 - x366;
+        let x369 = 0.5 * x368;
+        let x370 = x351 + x369;
+        let x371 = x299 * k[0];
+        let x372 = x303 * k[0];
+        let x373 = x307 * k[0];
+        let x374 = x371 + x372;
+        let x375 = x373 + x374;
+        let x376 = 0.5 * x375;
+        let x377 = x356 + x376;
+        let x378 = -x377;
+        let x379 = -x364;
         out[0] = 0.0;
-        out[1] = -9.81;
+        out[1] = k[2];
         out[2] = 0.0;
-        out[3] = x277;
-        out[4] = x303;
-        out[5] = x304;
+        out[3] = x370;
+        out[4] = x378;
+        out[5] = x379;
     }
     /// Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.
     pub fn eval_newton(
+        k: &[f64],
         q: &[f64],
         qd: &[f64],
         t: f64,
@@ -523,6 +621,7 @@ pub mod exact {
         mass: &mut [f64],
         force: &mut [f64],
     ) {
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
         let phi: &mut [f64; 1] = phi.try_into().expect("phi must have 1 entries");
@@ -530,10 +629,11 @@ pub mod exact {
         let mass: &mut [f64; 10] = mass.try_into().expect("mass must have 10 entries");
         let force: &mut [f64; 6] = force.try_into().expect("force must have 6 entries");
         let _ = t;
-        eval_newton_part_0(q, qd, phi, phi_q, mass, force);
+        eval_newton_part_0(k, q, qd, phi, phi_q, mass, force);
     }
     #[inline(never)]
     fn eval_newton_part_0(
+        k: &[f64; 5],
         q: &[f64; 6],
         qd: &[f64; 6],
         phi: &mut [f64; 1],
@@ -562,146 +662,146 @@ pub mod exact {
         let x49 = x44 * x48;
         let x50 = x45 * x48;
         let x51 = x46 * x48;
-        let x84 = x8 * qd[5];
-        let x86 = x9 * qd[5];
-        let x87 = x7 * qd[4];
-        let x88 = x6 * x86;
-        let x89 = x87 + x88;
-        let x90 = x6 * qd[4];
-        let x91 = x7 * x86;
-        let x93 = x91 - x90;
-        let x94 = qd[3] - x84;
-        let x111 = 2.0 * x94;
-        let x112 = 2.0 * x89;
-        let x113 = 2.0 * x93;
-        let x140 = x8 * 2.0;
-        let x142 = 0.00004 * x140;
-        let x144 = 0.5 * x142;
-        let x145 = -x144;
-        let x146 = x7 * 2.0;
-        let x147 = x6 * 2.0;
-        let x149 = x7 * x146;
-        let x150 = 0.00004 * x149;
-        let x151 = x6 * x147;
-        let x153 = 0.00004 * x151;
-        let x155 = x150 + x153;
-        let x156 = 0.5 * x155;
-        let x157 = x16 * 2.0;
-        let x158 = x17 * 2.0;
-        let x159 = x7 * x157;
-        let x160 = 0.00004 * x159;
-        let x161 = x6 * x158;
-        let x162 = 0.00004 * x161;
-        let x164 = x160 - x162;
-        let x165 = 0.5 * x164;
-        let x166 = x16 * x146;
-        let x167 = 0.00004 * x166;
-        let x168 = x17 * x147;
-        let x170 = 0.00004 * x168;
-        let x172 = x167 - x170;
-        let x173 = 0.5 * x172;
-        let x174 = x8 * x140;
-        let x176 = 0.00004 * x174;
-        let x178 = x16 * x157;
-        let x179 = 0.00004 * x178;
-        let x180 = x17 * x158;
-        let x181 = 0.00004 * x180;
-        let x182 = x176 + x179;
-        let x183 = x181 + x182;
-        let x184 = 0.5 * x183;
-        let x185 = x7 * qd[3];
-        let x186 = x6 * qd[3];
-        let x188 = x9 * qd[4];
-        let x189 = x8 * qd[4];
-        let x191 = x9 * x185;
-        let x192 = x6 * x189;
-        let x194 = x191 - x192;
-        let x195 = x9 * x186;
-        let x197 = x7 * x189;
-        let x199 = x195 + x197;
-        let x201 = qd[5] * x188;
-        let x203 = qd[5] * x189;
-        let x205 = qd[4] * x186;
-        let x207 = x86 * x185;
-        let x208 = x6 * x203;
-        let x210 = x207 - x208;
-        let x211 = x210 - x205;
-        let x212 = qd[4] * x185;
-        let x213 = x86 * x186;
-        let x215 = x7 * x203;
-        let x217 = x213 + x215;
-        let x220 = x212 + x217;
-        let x222 = 2.0 * x201;
-        let x224 = 2.0 * x211;
-        let x225 = 2.0 * x220;
-        let x227 = 0.00004 * x222;
-        let x229 = 0.5 * x227;
-        let x231 = x112 * x186;
-        let x233 = x7 * x224;
-        let x234 = x233 - x231;
-        let x235 = 0.00004 * x234;
-        let x236 = x113 * x185;
-        let x237 = x6 * x225;
-        let x239 = x236 - x237;
-        let x240 = 0.00004 * x239;
-        let x242 = x235 - x240;
-        let x243 = 0.5 * x242;
-        let x244 = x111 * x188;
-        let x245 = x8 * x222;
-        let x247 = x244 - x245;
-        let x248 = 0.00004 * x247;
-        let x250 = x112 * x194;
-        let x251 = x16 * x224;
-        let x252 = x250 + x251;
-        let x253 = 0.00004 * x252;
-        let x254 = x113 * x199;
-        let x256 = x17 * x225;
-        let x258 = x254 + x256;
-        let x260 = 0.00004 * x258;
-        let x262 = x253 - x248;
-        let x263 = x262 - x260;
-        let x264 = 0.5 * x263;
-        let x269 = x93 * x112;
-        let x270 = 0.00004 * x269;
-        let x271 = x89 * x113;
-        let x273 = 0.00004 * x271;
-        let x275 = x270 - x273;
-        let x276 = 0.5 * x275;
-        let x277 = x229 + x276;
-        let x279 = x6 * x84;
-        let x281 = x7 * x84;
-        let x283 = x86 * x111;
-        let x285 = 0.00004 * x283;
-        let x287 = x112 * x279;
-        let x289 = 0.00004 * x287;
-        let x291 = x113 * x281;
-        let x293 = 0.00004 * x291;
-        let x295 = x285 + x289;
-        let x297 = x293 + x295;
-        let x299 = 0.5 * x297;
-        let x302 = x243 + x299;
-        let x303 = -x302;
-        let x304 = -x264;
+        let x93 = x8 * qd[5];
+        let x95 = x9 * qd[5];
+        let x96 = x7 * qd[4];
+        let x97 = x6 * x95;
+        let x98 = x96 + x97;
+        let x99 = x6 * qd[4];
+        let x100 = x7 * x95;
+        let x102 = x100 - x99;
+        let x103 = qd[3] - x93;
+        let x123 = 2.0 * x103;
+        let x124 = 2.0 * x98;
+        let x125 = 2.0 * x102;
+        let x157 = x8 * 2.0;
+        let x163 = x7 * 2.0;
+        let x164 = x6 * 2.0;
+        let x166 = x7 * x163;
+        let x168 = x6 * x164;
+        let x174 = x16 * 2.0;
+        let x175 = x17 * 2.0;
+        let x176 = x7 * x174;
+        let x178 = x6 * x175;
+        let x183 = x16 * x163;
+        let x185 = x17 * x164;
+        let x191 = x8 * x157;
+        let x195 = x16 * x174;
+        let x197 = x17 * x175;
+        let x202 = x7 * qd[3];
+        let x203 = x6 * qd[3];
+        let x205 = x9 * qd[4];
+        let x206 = x8 * qd[4];
+        let x208 = x9 * x202;
+        let x209 = x6 * x206;
+        let x211 = x208 - x209;
+        let x212 = x9 * x203;
+        let x214 = x7 * x206;
+        let x216 = x212 + x214;
+        let x218 = qd[5] * x205;
+        let x220 = qd[5] * x206;
+        let x222 = qd[4] * x203;
+        let x224 = x95 * x202;
+        let x225 = x6 * x220;
+        let x227 = x224 - x225;
+        let x228 = x227 - x222;
+        let x229 = qd[4] * x202;
+        let x230 = x95 * x203;
+        let x232 = x7 * x220;
+        let x234 = x230 + x232;
+        let x237 = x229 + x234;
+        let x239 = 2.0 * x218;
+        let x241 = 2.0 * x228;
+        let x242 = 2.0 * x237;
+        let x248 = x124 * x203;
+        let x250 = x7 * x241;
+        let x251 = x250 - x248;
+        let x253 = x125 * x202;
+        let x254 = x6 * x242;
+        let x256 = x253 - x254;
+        let x261 = x123 * x205;
+        let x262 = x8 * x239;
+        let x264 = x261 - x262;
+        let x267 = x124 * x211;
+        let x268 = x16 * x241;
+        let x269 = x267 + x268;
+        let x271 = x125 * x216;
+        let x273 = x17 * x242;
+        let x275 = x271 + x273;
+        let x285 = x102 * x124;
+        let x287 = x98 * x125;
+        let x295 = x6 * x93;
+        let x297 = x7 * x93;
+        let x299 = x95 * x123;
+        let x303 = x124 * x295;
+        let x307 = x125 * x297;
+        let x327 = x157 * k[0];
+        let x328 = 0.5 * x327;
+        let x329 = -x328;
+        let x330 = x166 * k[0];
+        let x331 = x168 * k[0];
+        let x332 = x330 + x331;
+        let x333 = 0.5 * x332;
+        let x334 = x176 * k[0];
+        let x335 = x178 * k[0];
+        let x337 = x334 - x335;
+        let x338 = 0.5 * x337;
+        let x339 = x183 * k[0];
+        let x340 = x185 * k[0];
+        let x342 = x339 - x340;
+        let x343 = 0.5 * x342;
+        let x344 = x191 * k[0];
+        let x345 = x195 * k[0];
+        let x346 = x197 * k[0];
+        let x347 = x344 + x345;
+        let x348 = x346 + x347;
+        let x349 = 0.5 * x348;
+        let x350 = x239 * k[0];
+        let x351 = 0.5 * x350;
+        let x352 = x251 * k[0];
+        let x353 = x256 * k[0];
+        let x355 = x352 - x353;
+        let x356 = 0.5 * x355;
+        let x357 = x264 * k[0];
+        let x359 = x269 * k[0];
+        let x360 = x275 * k[0];
+        let x362 = x359 - x357;
+        let x363 = x362 - x360;
+        let x364 = 0.5 * x363;
+        let x365 = x285 * k[0];
+        let x366 = x287 * k[0];
+        let x368 = x365 - x366;
+        let x369 = 0.5 * x368;
+        let x370 = x351 + x369;
+        let x371 = x299 * k[0];
+        let x372 = x303 * k[0];
+        let x373 = x307 * k[0];
+        let x374 = x371 + x372;
+        let x375 = x373 + x374;
+        let x376 = 0.5 * x375;
+        let x377 = x356 + x376;
+        let x378 = -x377;
+        let x379 = -x364;
         phi[0] = x42;
         phi_q[0] = x49;
         phi_q[1] = x50;
         phi_q[2] = x51;
-        mass[0] = 1.0;
-        mass[1] = 1.0;
-        mass[2] = 1.0;
-        mass[3] = 0.00004;
-        mass[4] = x145;
-        mass[5] = x156;
-        mass[6] = x165;
-        mass[7] = x145;
-        mass[8] = x173;
-        mass[9] = x184;
+        mass[0] = k[3];
+        mass[1] = k[3];
+        mass[2] = k[3];
+        mass[3] = k[4];
+        mass[4] = x329;
+        mass[5] = x333;
+        mass[6] = x338;
+        mass[7] = x329;
+        mass[8] = x343;
+        mass[9] = x349;
         force[0] = 0.0;
-        force[1] = -9.81;
+        force[1] = k[2];
         force[2] = 0.0;
-        force[3] = x277;
-        force[4] = x303;
-        force[5] = x304;
+        force[3] = x370;
+        force[4] = x378;
+        force[5] = x379;
     }
 }
 /// The system after substituting rows `a·qᵢ + b·qⱼ + g(t) = 0` away (docs/design.md,
@@ -782,6 +882,32 @@ pub mod reduced {
         out[7] = 0.0;
         out[8] = 0.0;
     }
+    /// Number of values `setup` computes from the run-time parameters.
+    pub const N_K: usize = 4;
+    /// `setup` at the file's parameter values: what the types without parameters read.
+    pub static K: [f64; 4] = [9.81f64, -9.81f64, 1f64, 0.00004f64];
+    /// The values the per-step functions read (`k`), from the run-time parameters `p`.
+    pub fn setup(p: &[f64], k: &mut [f64]) {
+        let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
+        let k: &mut [f64; 4] = k.try_into().expect("k must have 4 entries");
+        setup_part_0(p, k);
+    }
+    #[inline(never)]
+    fn setup_part_0(p: &[f64; 1], k: &mut [f64; 4]) {
+        let x83 = p[0] * 0.4;
+        let x85 = x83 * 0.01;
+        let x86 = 0.01 * x85;
+        let x89 = p[0] * 9.81;
+        let x90 = -x89;
+        let x153 = 2.0 * p[0];
+        let x154 = 0.5 * x153;
+        let x155 = 2.0 * x86;
+        let x156 = 0.5 * x155;
+        k[0] = x89;
+        k[1] = x90;
+        k[2] = x154;
+        k[3] = x156;
+    }
     /// Constraint residual Φ(q, t).
     pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
@@ -794,9 +920,9 @@ pub mod reduced {
         let x35 = q[0] * q[0];
         let x36 = q[1] * q[1];
         let x38 = x35 + x36;
-        let x305 = x38.sqrt();
-        let x306 = x305 - 1.0;
-        out[0] = x306;
+        let x321 = x38.sqrt();
+        let x322 = x321 - 1.0;
+        out[0] = x322;
     }
     /// Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.
     pub fn phi_q(q: &[f64], t: f64, out: &mut [f64]) {
@@ -812,13 +938,13 @@ pub mod reduced {
         let x38 = x35 + x36;
         let x44 = q[0] * 2.0;
         let x45 = q[1] * 2.0;
-        let x305 = x38.sqrt();
-        let x307 = 2.0 * x305;
-        let x308 = 1.0 / x307;
-        let x309 = x44 * x308;
-        let x310 = x45 * x308;
-        out[0] = x309;
-        out[1] = x310;
+        let x321 = x38.sqrt();
+        let x323 = 2.0 * x321;
+        let x324 = 1.0 / x323;
+        let x325 = x44 * x324;
+        let x326 = x45 * x324;
+        out[0] = x325;
+        out[1] = x326;
     }
     /// Partial time derivative Φt(q, t).
     pub fn phi_t(q: &[f64], t: f64, out: &mut [f64]) {
@@ -855,18 +981,18 @@ pub mod reduced {
         let x71 = qd[0] * x64;
         let x72 = qd[1] * x65;
         let x74 = x71 + x72;
-        let x305 = x38.sqrt();
-        let x307 = 2.0 * x305;
-        let x308 = 1.0 / x307;
-        let x311 = x61 * x308;
-        let x312 = 2.0 * x311;
-        let x313 = x308 * x308;
-        let x314 = x312 * x313;
-        let x316 = x74 * x308;
-        let x317 = x61 * x314;
-        let x319 = x316 - x317;
-        let x320 = -x319;
-        out[0] = x320;
+        let x321 = x38.sqrt();
+        let x323 = 2.0 * x321;
+        let x324 = 1.0 / x323;
+        let x327 = x61 * x324;
+        let x328 = 2.0 * x327;
+        let x329 = x324 * x324;
+        let x330 = x328 * x329;
+        let x332 = x74 * x324;
+        let x333 = x61 * x330;
+        let x335 = x332 - x333;
+        let x336 = -x335;
+        out[0] = x336;
     }
     /// Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.
     pub fn eval_kinematics(
@@ -909,42 +1035,45 @@ pub mod reduced {
         let x71 = qd[0] * x64;
         let x72 = qd[1] * x65;
         let x74 = x71 + x72;
-        let x305 = x38.sqrt();
-        let x306 = x305 - 1.0;
-        let x307 = 2.0 * x305;
-        let x308 = 1.0 / x307;
-        let x309 = x44 * x308;
-        let x310 = x45 * x308;
-        let x311 = x61 * x308;
-        let x312 = 2.0 * x311;
-        let x313 = x308 * x308;
-        let x314 = x312 * x313;
-        let x316 = x74 * x308;
-        let x317 = x61 * x314;
-        let x319 = x316 - x317;
-        let x320 = -x319;
-        phi[0] = x306;
-        phi_q[0] = x309;
-        phi_q[1] = x310;
+        let x321 = x38.sqrt();
+        let x322 = x321 - 1.0;
+        let x323 = 2.0 * x321;
+        let x324 = 1.0 / x323;
+        let x325 = x44 * x324;
+        let x326 = x45 * x324;
+        let x327 = x61 * x324;
+        let x328 = 2.0 * x327;
+        let x329 = x324 * x324;
+        let x330 = x328 * x329;
+        let x332 = x74 * x324;
+        let x333 = x61 * x330;
+        let x335 = x332 - x333;
+        let x336 = -x335;
+        phi[0] = x322;
+        phi_q[0] = x325;
+        phi_q[1] = x326;
         phi_t[0] = 0.0;
-        gamma[0] = x320;
+        gamma[0] = x336;
     }
     /// Potential energy of gravity and springs, written to `out[0]`.
-    pub fn potential_into(q: &[f64], out: &mut [f64]) {
+    pub fn potential_into(k: &[f64], q: &[f64], out: &mut [f64]) {
+        let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
         let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
-        potential_into_part_0(q, out);
+        potential_into_part_0(k, q, out);
     }
     #[inline(never)]
-    fn potential_into_part_0(q: &[f64; 3], out: &mut [f64; 1]) {
-        let x82 = q[1] * 9.81;
-        out[0] = x82;
+    fn potential_into_part_0(k: &[f64; 4], q: &[f64; 3], out: &mut [f64; 1]) {
+        let x339 = q[1] * k[0];
+        out[0] = x339;
     }
     /// Power of the non-conservative loads, written to `out[0]`.
-    pub fn power_nc_into(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+    pub fn power_nc_into(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
         let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
+        let _ = k;
         let _ = q;
         let _ = qd;
         let _ = t;
@@ -955,15 +1084,15 @@ pub mod reduced {
         out[0] = 0.0;
     }
     /// Potential energy of gravity and springs.
-    pub fn potential(q: &[f64]) -> f64 {
+    pub fn potential(k: &[f64], q: &[f64]) -> f64 {
         let mut out = [0.0];
-        potential_into(q, &mut out);
+        potential_into(k, q, &mut out);
         out[0]
     }
     /// Power of the non-conservative loads.
-    pub fn power_nc(q: &[f64], qd: &[f64], t: f64) -> f64 {
+    pub fn power_nc(k: &[f64], q: &[f64], qd: &[f64], t: f64) -> f64 {
         let mut out = [0.0];
-        power_nc_into(q, qd, t, &mut out);
+        power_nc_into(k, q, qd, t, &mut out);
         out[0]
     }
     /// The reduced system's mass matrix and forces in this formulation.
@@ -1006,51 +1135,57 @@ pub mod reduced {
         };
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(
+            k: &[f64],
             q: &[f64],
             qd: &[f64],
             t: f64,
             dq: &mut [f64],
             dqd: &mut [f64],
         ) {
+            let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
             let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
             let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
             let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
             let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+            let _ = k;
             let _ = q;
             let _ = qd;
             let _ = t;
         }
         /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
-        pub fn mass(q: &[f64], out: &mut [f64]) {
+        pub fn mass(k: &[f64], q: &[f64], out: &mut [f64]) {
+            let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
             let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
             let out: &mut [f64; 3] = out.try_into().expect("out must have 3 entries");
             let _ = q;
-            mass_part_0(out);
+            mass_part_0(k, out);
         }
         #[inline(never)]
-        fn mass_part_0(out: &mut [f64; 3]) {
-            out[0] = 1.0;
-            out[1] = 1.0;
-            out[2] = 0.00004;
+        fn mass_part_0(k: &[f64; 4], out: &mut [f64; 3]) {
+            out[0] = k[2];
+            out[1] = k[2];
+            out[2] = k[3];
         }
         /// Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.
-        pub fn force(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        pub fn force(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+            let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
             let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
             let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
             let out: &mut [f64; 3] = out.try_into().expect("out must have 3 entries");
             let _ = q;
             let _ = qd;
             let _ = t;
-            force_part_0(out);
+            force_part_0(k, out);
         }
         #[inline(never)]
-        fn force_part_0(out: &mut [f64; 3]) {
+        fn force_part_0(k: &[f64; 4], out: &mut [f64; 3]) {
             out[0] = 0.0;
-            out[1] = -9.81;
+            out[1] = k[1];
             out[2] = 0.0;
         }
         /// Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.
         pub fn eval_newton(
+            k: &[f64],
             q: &[f64],
             qd: &[f64],
             t: f64,
@@ -1059,6 +1194,7 @@ pub mod reduced {
             mass: &mut [f64],
             force: &mut [f64],
         ) {
+            let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
             let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
             let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
             let phi: &mut [f64; 1] = phi.try_into().expect("phi must have 1 entries");
@@ -1071,10 +1207,11 @@ pub mod reduced {
                 .expect("force must have 3 entries");
             let _ = qd;
             let _ = t;
-            eval_newton_part_0(q, phi, phi_q, mass, force);
+            eval_newton_part_0(k, q, phi, phi_q, mass, force);
         }
         #[inline(never)]
         fn eval_newton_part_0(
+            k: &[f64; 4],
             q: &[f64; 3],
             phi: &mut [f64; 1],
             phi_q: &mut [f64; 2],
@@ -1086,20 +1223,20 @@ pub mod reduced {
             let x38 = x35 + x36;
             let x44 = q[0] * 2.0;
             let x45 = q[1] * 2.0;
-            let x305 = x38.sqrt();
-            let x306 = x305 - 1.0;
-            let x307 = 2.0 * x305;
-            let x308 = 1.0 / x307;
-            let x309 = x44 * x308;
-            let x310 = x45 * x308;
-            phi[0] = x306;
-            phi_q[0] = x309;
-            phi_q[1] = x310;
-            mass[0] = 1.0;
-            mass[1] = 1.0;
-            mass[2] = 0.00004;
+            let x321 = x38.sqrt();
+            let x322 = x321 - 1.0;
+            let x323 = 2.0 * x321;
+            let x324 = 1.0 / x323;
+            let x325 = x44 * x324;
+            let x326 = x45 * x324;
+            phi[0] = x322;
+            phi_q[0] = x325;
+            phi_q[1] = x326;
+            mass[0] = k[2];
+            mass[1] = k[2];
+            mass[2] = k[3];
             force[0] = 0.0;
-            force[1] = -9.81;
+            force[1] = k[1];
             force[2] = 0.0;
         }
     }
@@ -1123,10 +1260,10 @@ pub mod reduced {
             gamma(q, qd, t, out)
         }
         fn mass(&self, q: &[f64], out: &mut [f64]) {
-            exact::mass(q, out)
+            exact::mass(&K, q, out)
         }
         fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-            exact::force(q, qd, t, out)
+            exact::force(&K, q, qd, t, out)
         }
         fn force_jacobian(
             &self,
@@ -1136,16 +1273,16 @@ pub mod reduced {
             dq: &mut [f64],
             dqd: &mut [f64],
         ) {
-            exact::force_jacobian(q, qd, t, dq, dqd)
+            exact::force_jacobian(&K, q, qd, t, dq, dqd)
         }
         fn potential(&self, q: &[f64]) -> f64 {
-            potential(q)
+            potential(&K, q)
         }
         fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
-            power_nc(q, qd, t)
+            power_nc(&K, q, qd, t)
         }
         fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
-            exact::eval_newton(q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+            exact::eval_newton(&K, q, qd, t, out.phi, out.phi_q, out.mass, out.force)
         }
         fn eval_kinematics(
             &self,
@@ -1178,10 +1315,10 @@ impl Mechanism for Exact {
         gamma(q, qd, t, out)
     }
     fn mass(&self, q: &[f64], out: &mut [f64]) {
-        exact::mass(q, out)
+        exact::mass(&K, q, out)
     }
     fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-        exact::force(q, qd, t, out)
+        exact::force(&K, q, qd, t, out)
     }
     fn force_jacobian(
         &self,
@@ -1191,16 +1328,73 @@ impl Mechanism for Exact {
         dq: &mut [f64],
         dqd: &mut [f64],
     ) {
-        exact::force_jacobian(q, qd, t, dq, dqd)
+        exact::force_jacobian(&K, q, qd, t, dq, dqd)
     }
     fn potential(&self, q: &[f64]) -> f64 {
-        potential(q)
+        potential(&K, q)
     }
     fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
-        power_nc(q, qd, t)
+        power_nc(&K, q, qd, t)
     }
     fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
-        exact::eval_newton(q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+        exact::eval_newton(&K, q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+    }
+    fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
+        eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+    }
+}
+impl Exact {
+    /// This formulation with some run-time parameters (`PARAMETERS`) set, the others
+    /// at the file's values; a name or value that is refused changes nothing.
+    pub fn with_parameters(set: &[(&str, f64)]) -> Result<ExactAt, ParameterError> {
+        let mut p = Parameters::file_values();
+        p.set(set)?;
+        Ok(ExactAt(p))
+    }
+}
+/// `simple_pendulum` with the `exact` formulation. At run-time parameter values (`Exact::with_parameters`).
+#[derive(Debug, Clone)]
+pub struct ExactAt(pub Parameters);
+impl Mechanism for ExactAt {
+    fn info(&self) -> &'static MechanismInfo {
+        &exact::INFO
+    }
+    fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        phi(q, t, out)
+    }
+    fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        phi_q(q, t, out)
+    }
+    fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        phi_t(q, t, out)
+    }
+    fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        gamma(q, qd, t, out)
+    }
+    fn mass(&self, q: &[f64], out: &mut [f64]) {
+        exact::mass(&self.0.k, q, out)
+    }
+    fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        exact::force(&self.0.k, q, qd, t, out)
+    }
+    fn force_jacobian(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        exact::force_jacobian(&self.0.k, q, qd, t, dq, dqd)
+    }
+    fn potential(&self, q: &[f64]) -> f64 {
+        potential(&self.0.k, q)
+    }
+    fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
+        power_nc(&self.0.k, q, qd, t)
+    }
+    fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+        exact::eval_newton(&self.0.k, q, qd, t, out.phi, out.phi_q, out.mass, out.force)
     }
     fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
         eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)

@@ -1,0 +1,147 @@
+//! Run-time parameters of the compiled code (`<Type>::with_parameters`, decision 30): the
+//! parameters that reach only masses and inertias are inputs of the generated functions.
+//!
+//! Reference: the mechanism file loaded with the same value set (`files::with_parameters`),
+//! which derives the file again and interprets it (the file edited to that value, as
+//! `tests/parameters.rs` shows). Both must give the same equations and the same run; the
+//! file's own values must give what the unit types give.
+
+use symbody::files;
+use symbody_mechanisms::{oscillators, stewart_6_6, REGISTRY};
+use symbody_runtime::parameters::ParameterError;
+use symbody_runtime::{HhtBuilder, Mechanism, NewtonOutputs};
+
+/// `eval_newton` of `m` at the file's pose, moved a little so that nothing is symmetric,
+/// with velocities (so that every velocity term counts).
+fn newton(m: &dyn Mechanism) -> Vec<f64> {
+    let info = m.info();
+    let q: Vec<f64> = info
+        .q0
+        .iter()
+        .enumerate()
+        .map(|(i, v)| v + 1e-3 * (i as f64).sin())
+        .collect();
+    let qd: Vec<f64> = (0..q.len()).map(|i| 0.3 * (i as f64).cos()).collect();
+    let mut phi = vec![0.0; info.n_constraints];
+    let mut phi_q = vec![0.0; info.phi_q_nnz()];
+    let mut mass = vec![0.0; info.mass_nnz()];
+    let mut force = vec![0.0; info.n_coords];
+    m.eval_newton(
+        &q,
+        &qd,
+        0.4,
+        NewtonOutputs {
+            phi: &mut phi,
+            phi_q: &mut phi_q,
+            mass: &mut mass,
+            force: &mut force,
+        },
+    );
+    let mut out = mass;
+    out.extend(force);
+    out.push(m.potential(&q));
+    out
+}
+
+/// Largest |a − b| relative to the largest |b|.
+fn max_rel(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    a.iter()
+        .zip(b)
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs() / scale))
+}
+
+/// The positions after 0.5 s of HHT from the file's pose.
+fn run(m: impl Mechanism) -> Vec<f64> {
+    let qd0 = m.info().qd0;
+    let mut it = HhtBuilder::new()
+        .alpha(-0.05)
+        .step(1e-3)
+        .qd0(qd0)
+        .project_velocities(true)
+        .build(m)
+        .unwrap();
+    it.advance_to(0.5).unwrap();
+    it.q().to_vec()
+}
+
+fn interpreted(name: &str, set: &[(&str, f64)]) -> &'static (dyn Mechanism + Sync) {
+    let set: Vec<(String, f64)> = set.iter().map(|(k, v)| (k.to_string(), *v)).collect();
+    files::with_parameters(&REGISTRY, name, &set)
+        .unwrap()
+        .default_mechanism()
+}
+
+#[test]
+fn the_paper_platform_with_other_masses_is_the_file_derived_with_them() {
+    // The payload (with the platform) 40 % heavier, the cylinders and pistons of the legs
+    // heavier and thicker.
+    let set = [
+        ("m_platform", 2.5),
+        ("m_cyl", 0.45),
+        ("m_pis", 0.31),
+        ("r_cyl", 0.02),
+    ];
+    let compiled = stewart_6_6::Exact::with_parameters(&set).unwrap();
+    let reference = interpreted("stewart_6_6", &set);
+    let (a, b) = (newton(&compiled), newton(reference));
+    assert!(max_rel(&a, &b) <= 1e-13, "{:e}", max_rel(&a, &b));
+    // And the values made a difference.
+    assert!(max_rel(&newton(&stewart_6_6::Exact), &b) > 1e-2);
+    let (qa, qb) = (run(compiled), run(reference));
+    assert!(max_rel(&qa, &qb) <= 1e-12, "{:e}", max_rel(&qa, &qb));
+}
+
+#[test]
+fn the_oscillators_with_another_mass_are_the_file_derived_with_it() {
+    let set = [("m", 3.5)];
+    let compiled = oscillators::Exact::with_parameters(&set).unwrap();
+    let reference = interpreted("oscillators", &set);
+    let (a, b) = (newton(&compiled), newton(reference));
+    assert!(max_rel(&a, &b) <= 1e-13, "{:e}", max_rel(&a, &b));
+    let (qa, qb) = (run(compiled), run(reference));
+    assert!(max_rel(&qa, &qb) <= 1e-12, "{:e}", max_rel(&qa, &qb));
+}
+
+#[test]
+fn the_file_values_give_the_unit_type_to_the_last_bit() {
+    let at = stewart_6_6::Exact::with_parameters(&[]).unwrap();
+    assert_eq!(newton(&at), newton(&stewart_6_6::Exact));
+    assert_eq!(at.0.values(), &stewart_6_6::PARAMETER_VALUES[..]);
+}
+
+#[test]
+fn refused_sets_name_the_parameter_or_body_and_change_nothing() {
+    let mut p = stewart_6_6::Parameters::file_values();
+    let before = p.values().to_vec();
+    match p.set(&[("m_platfrom", 2.0)]) {
+        Err(ParameterError::Unknown { closest, .. }) => assert_eq!(closest, Some("m_platform")),
+        other => panic!("{other:?}"),
+    }
+    // Geometry decides the assembly: set on the file instead.
+    assert!(matches!(
+        p.set(&[("r_base", 0.3)]),
+        Err(ParameterError::NotRunTime { .. })
+    ));
+    assert!(matches!(
+        p.set(&[("m_cyl", f64::NAN)]),
+        Err(ParameterError::NotFinite { .. })
+    ));
+    // A valid value first, then the bad one: nothing of the set is applied.
+    match p.set(&[("m_cyl", 0.5), ("m_platform", -1.0)]) {
+        Err(e @ ParameterError::Mass { body, .. }) => {
+            assert_eq!(body, "platform");
+            assert!(e.to_string().contains("`m_platform` = -1"), "{e}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // A cylinder thicker than it is long is still a rigid body; zero radius is not allowed.
+    assert!(matches!(
+        p.set(&[("r_cyl", 0.0)]),
+        Err(ParameterError::Inertia { .. })
+    ));
+    assert_eq!(p.values(), &before[..]);
+    p.set(&[("m_cyl", 0.5)]).unwrap();
+    assert_ne!(p.values(), &before[..]);
+}
