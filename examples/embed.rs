@@ -1,25 +1,37 @@
 //! The generated solver inside a user's own program, used as a controller would: a 1 kHz loop
 //! that steps the paper's Stewart platform once per cycle and reads the six actuator forces
-//! and one joint's reaction wrench, without allocating in the loop.
+//! and one joint's reaction wrench, without allocating in the loop. Beside it the controller
+//! keeps its own model of the platform for feedforward (the forces the commanded motion
+//! needs) and retunes it when the payload changes at t = 0.5 s: a run-time parameter of the
+//! generated code, set in the loop without allocating and without regenerating anything.
 //!
 //! Run with `cargo run --release --example embed`. It prints leg 1's force at t = 1 s in the
 //! same format as the C example (`examples/c/`) and the Python package, which compute it
 //! through `symbody::session`; all three must agree.
 
-use symbody_mechanisms::stewart_6_6::Exact;
-use symbody_runtime::{driver_effort, joint_wrench, Error, HhtBuilder, Kinematics, Mechanism};
+use symbody_mechanisms::stewart_6_6::{self, Exact, ExactAt};
+use symbody_runtime::{driver_effort, joint_wrench, HhtBuilder, Kinematics, Mechanism};
 use symbody_testkit::alloc::CountingAllocator;
 
 // Counts heap allocations, so the example can show its control loop makes none.
 #[global_allocator]
 static GLOBAL: CountingAllocator = CountingAllocator;
 
+type Error = Box<dyn std::error::Error>;
+
 /// What the loop measured.
 struct Report {
     leg1_at_1s: f64,
+    /// Leg 1's feedforward force at t = 1 s, with the heavier payload.
+    feedforward_leg1_at_1s: f64,
+    /// Largest |feedforward − simulated| actuator force before the payload changed.
+    feedforward_gap_before: f64,
     allocations_in_loop: usize,
     cycles: usize,
 }
+
+/// The payload the platform picks up at t = 0.5 s (kg).
+const PAYLOAD: f64 = 0.5;
 
 fn control_loop(print: bool) -> Result<Report, Error> {
     // Consistent start (position, velocity, acceleration, multipliers), then HHT-α with the
@@ -40,6 +52,16 @@ fn control_loop(print: bool) -> Result<Report, Error> {
         .joint_index("upper_sph1")
         .expect("the file names upper_sph1");
     let mut forces = [0.0; 6];
+    // The controller's model: the file's platform mass until the payload is picked up.
+    let mut model: ExactAt = Exact::with_parameters(&[])?;
+    let m_platform = stewart_6_6::PARAMETERS
+        .iter()
+        .position(|n| *n == "m_platform")
+        .map(|i| stewart_6_6::PARAMETER_VALUES[i])
+        .expect("the file names m_platform");
+    let (mut qdd_model, mut lambda_model) = (qdd.clone(), lambda.clone());
+    let mut feedforward = [0.0; 6];
+    let mut feedforward_gap_before = 0.0f64;
 
     let mut cycles = 0;
     let mut run = || -> Result<(), Error> {
@@ -53,6 +75,20 @@ fn control_loop(print: bool) -> Result<Report, Error> {
             kinematics.acceleration(sim.mechanism(), t, q, qd, &mut qdd, &mut lambda)?;
             for (f, &j) in forces.iter_mut().zip(&actuators) {
                 *f = driver_effort(info, &lambda, j)?;
+            }
+            // The gripper closes at cycle 500 (t = 0.5 s): the model carries the payload from
+            // now on. Feedforward on the model: the forces the same motion needs with it.
+            if cycles == 500 {
+                model.0.set(&[("m_platform", m_platform + PAYLOAD)])?;
+            }
+            kinematics.acceleration(&model, t, q, qd, &mut qdd_model, &mut lambda_model)?;
+            for (f, &j) in feedforward.iter_mut().zip(&actuators) {
+                *f = driver_effort(info, &lambda_model, j)?;
+            }
+            if cycles < 500 {
+                for (a, b) in feedforward.iter().zip(&forces) {
+                    feedforward_gap_before = feedforward_gap_before.max((a - b).abs());
+                }
             }
             if cycles % 250 == 0 && print {
                 sim.mechanism().phi_q(q, t, &mut phi_q);
@@ -78,9 +114,10 @@ fn control_loop(print: bool) -> Result<Report, Error> {
     let mut result = Ok(());
     let allocations_in_loop = CountingAllocator::count(|| result = run());
     result?;
-    let leg1_at_1s = forces[0];
     Ok(Report {
-        leg1_at_1s,
+        leg1_at_1s: forces[0],
+        feedforward_leg1_at_1s: feedforward[0],
+        feedforward_gap_before,
         allocations_in_loop,
         cycles,
     })
@@ -95,6 +132,11 @@ fn main() -> Result<(), Error> {
         silent.cycles, silent.allocations_in_loop
     );
     println!("leg 1 force at t = 1 s: {:.15e} N", r.leg1_at_1s);
+    println!(
+        "feedforward with the {PAYLOAD} kg payload picked up at t = 0.5 s: leg 1 {:.4} N at \
+         t = 1 s (before it: within {:.1e} N of the simulation)",
+        r.feedforward_leg1_at_1s, r.feedforward_gap_before
+    );
     Ok(())
 }
 
@@ -103,12 +145,22 @@ mod tests {
     use super::*;
 
     /// `cargo test` builds and runs this example (`test = true` in Cargo.toml): the loop
-    /// allocates nothing, and its number is the one `symbody::session` gives (which the C and
-    /// Python bindings print), bit for bit.
+    /// allocates nothing, the payload change included, and its number is the one
+    /// `symbody::session` gives (which the C and Python bindings print), bit for bit.
     #[test]
     fn the_control_loop_allocates_nothing_and_matches_the_session() {
         let r = control_loop(false).unwrap();
         assert_eq!(r.allocations_in_loop, 0);
+        // Before the payload, the model is the simulated platform: the same forces exactly.
+        assert_eq!(r.feedforward_gap_before, 0.0);
+        // With it, the forces differ (tests/run_time_parameters.rs checks them against
+        // Newton's law for the platform).
+        assert!(
+            (r.feedforward_leg1_at_1s - r.leg1_at_1s).abs() > 1e-2,
+            "{} vs {}",
+            r.feedforward_leg1_at_1s,
+            r.leg1_at_1s
+        );
         let s = symbody::session::paper_leg1_force_at_1s(&symbody_mechanisms::REGISTRY).unwrap();
         assert_eq!(
             r.leg1_at_1s.to_bits(),

@@ -222,6 +222,7 @@ fn list_keeps_its_columns_aligned_for_long_names() {
         formulations: shipped.formulations,
         reduced: None,
         origin: shipped.origin,
+        run_time: None,
     }));
     let mut entries: Vec<&'static Entry> = symbody_benchmark_mechanisms::REGISTRY.iter().collect();
     entries.push(long);

@@ -1,15 +1,16 @@
 //! Run-time parameters of the compiled code (`<Type>::with_parameters`, decision 30): the
 //! parameters that reach only masses and inertias are inputs of the generated functions.
 //!
-//! Reference: the mechanism file loaded with the same value set (`files::with_parameters`),
-//! which derives the file again and interprets it (the file edited to that value, as
-//! `tests/parameters.rs` shows). Both must give the same equations and the same run; the
-//! file's own values must give what the unit types give.
+//! References: the mechanism file derived again with the same values and interpreted
+//! (`files::derive`; the file edited to that value, as `tests/parameters.rs` shows), which
+//! must give the same equations and the same run; Newton's second law for the platform, which
+//! a payload's feedforward forces must obey; and the unit types, which the file's own values
+//! must reproduce.
 
 use symbody::files;
 use symbody_mechanisms::{oscillators, stewart_6_6, REGISTRY};
 use symbody_runtime::parameters::ParameterError;
-use symbody_runtime::{HhtBuilder, Mechanism, NewtonOutputs};
+use symbody_runtime::{joint_force, HhtBuilder, Kinematics, Mechanism, NewtonOutputs, Origin};
 
 /// `eval_newton` of `m` at the file's pose, moved a little so that nothing is symmetric,
 /// with velocities (so that every velocity term counts).
@@ -66,11 +67,16 @@ fn run(m: impl Mechanism) -> Vec<f64> {
     it.q().to_vec()
 }
 
+fn owned(set: &[(&str, f64)]) -> Vec<(String, f64)> {
+    set.iter().map(|(k, v)| (k.to_string(), *v)).collect()
+}
+
+/// The file of `name` derived again with `set` and interpreted.
 fn interpreted(name: &str, set: &[(&str, f64)]) -> &'static (dyn Mechanism + Sync) {
-    let set: Vec<(String, f64)> = set.iter().map(|(k, v)| (k.to_string(), *v)).collect();
-    files::with_parameters(&REGISTRY, name, &set)
-        .unwrap()
-        .default_mechanism()
+    let entry = REGISTRY.find(name).unwrap();
+    let loaded = files::derive(entry, &owned(set)).unwrap();
+    assert!(matches!(loaded.entry.origin, Origin::Interpreted { .. }));
+    loaded.entry.default_mechanism()
 }
 
 #[test]
@@ -144,4 +150,86 @@ fn refused_sets_name_the_parameter_or_body_and_change_nothing() {
     assert_eq!(p.values(), &before[..]);
     p.set(&[("m_cyl", 0.5)]).unwrap();
     assert_ne!(p.values(), &before[..]);
+}
+
+/// `files::with_parameters` (what `--set`, Python, C and scenes use) takes the compiled
+/// route when every value set is a run-time parameter, and derives the file otherwise.
+#[test]
+fn setting_only_masses_runs_the_compiled_code() {
+    let set = owned(&[("m_platform", 2.5)]);
+    let e = files::with_parameters(&REGISTRY, "stewart_6_6", &set).unwrap();
+    assert!(
+        matches!(e.origin, Origin::Compiled { parameters, .. } if parameters == [("m_platform", 2.5)])
+    );
+    assert!(files::note(e).unwrap().contains("m_platform = 2.5"));
+    let direct = stewart_6_6::Exact::with_parameters(&[("m_platform", 2.5)]).unwrap();
+    assert_eq!(newton(e.default_mechanism()), newton(&direct));
+    // A geometric value among them: the file derived again, interpreted.
+    let mixed = owned(&[("m_platform", 2.5), ("r_base", 0.28)]);
+    let e = files::with_parameters(&REGISTRY, "stewart_6_6", &mixed).unwrap();
+    assert!(matches!(e.origin, Origin::Interpreted { .. }));
+}
+
+/// A payload on the paper's platform, following the same prescribed motion: the legs'
+/// forces on the platform change by exactly what Newton's second law asks for the added
+/// mass, Δm (a − g), with `a` the platform's acceleration (the motion is the same).
+#[test]
+fn a_payload_changes_the_legs_forces_by_its_weight_and_inertia() {
+    let dm = 0.5;
+    let light = stewart_6_6::Exact::with_parameters(&[]).unwrap();
+    let i = stewart_6_6::PARAMETERS
+        .iter()
+        .position(|n| *n == "m_platform")
+        .unwrap();
+    let heavy = stewart_6_6::Exact::with_parameters(&[(
+        "m_platform",
+        stewart_6_6::PARAMETER_VALUES[i] + dm,
+    )])
+    .unwrap();
+    let info = light.info();
+    // A state on the prescribed motion: 0.7 s into the scenario's run.
+    let mut it = HhtBuilder::new()
+        .alpha(-0.05)
+        .step(1e-3)
+        .build(light.clone())
+        .unwrap();
+    it.advance_to(0.7).unwrap();
+    let (t, q, qd) = (it.t(), it.q().to_vec(), it.qd().to_vec());
+    let platform = info.body_index("platform").unwrap();
+    let mut kin: Kinematics = Kinematics::new(info).unwrap();
+    let mut phi_q = vec![0.0; info.phi_q_nnz()];
+    let mut on_platform = |m: &dyn Mechanism| {
+        let (mut qdd, mut lambda) = (vec![0.0; info.n_coords], vec![0.0; info.n_constraints]);
+        kin.acceleration(&m, t, &q, &qd, &mut qdd, &mut lambda)
+            .unwrap();
+        m.phi_q(&q, t, &mut phi_q);
+        let mut sum = [0.0; 3];
+        for (j, joint) in info.joints.iter().enumerate() {
+            if joint.body1 == Some(platform) || joint.body2 == Some(platform) {
+                let f = joint_force(info, &phi_q, &lambda, j, platform).unwrap();
+                for k in 0..3 {
+                    sum[k] += f[k];
+                }
+            }
+        }
+        let off = info.bodies[platform].coord_offset;
+        (sum, [qdd[off], qdd[off + 1], qdd[off + 2]])
+    };
+    let (f_light, a_light) = on_platform(&light);
+    let (f_heavy, a_heavy) = on_platform(&heavy);
+    // The same prescribed motion (the solves differ in roundoff only).
+    for k in 0..3 {
+        assert!(
+            (a_light[k] - a_heavy[k]).abs() <= 1e-12,
+            "{a_light:?} {a_heavy:?}"
+        );
+    }
+    for k in 0..3 {
+        let want = dm * (a_light[k] - info.gravity[k]);
+        let got = f_heavy[k] - f_light[k];
+        assert!(
+            (got - want).abs() <= 1e-9 * (1.0 + want.abs()),
+            "{k}: {got} vs {want}"
+        );
+    }
 }

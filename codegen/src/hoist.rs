@@ -23,6 +23,36 @@ enum Kind {
 /// Rewrites the per-step roots of `sys` (masses, forces and their Jacobians, potential,
 /// power) over hoisted values; returns the nodes `k[j]` stands for, in order.
 pub fn system(sys: &mut System) -> Vec<Id> {
+    let mut hoisted = Vec::new();
+    rewrite(sys, |a, roots| {
+        let (new, h) = hoist(a, roots);
+        hoisted = h;
+        new
+    });
+    hoisted
+}
+
+/// [`system`], then every hoisted value replaced by the constant it has at the parameters
+/// `p`: the equations the generated code evaluates, with `setup`'s results folded in (the
+/// interpreter's; the same operations, so the same numbers to the last bit).
+pub fn bound(sys: &mut System, p: &[f64]) {
+    let hoisted = system(sys);
+    let env = |v: Var| match v {
+        Var::P(i) => p[i as usize],
+        _ => f64::NAN,
+    };
+    let k = sys.arena.eval_many(&hoisted, &env);
+    rewrite(sys, |a, roots| {
+        let values: Vec<Id> = k.iter().map(|&v| a.constant(v)).collect();
+        a.substitute(roots, &|v| match v {
+            Var::K(j) => Some(values[j as usize]),
+            _ => None,
+        })
+    });
+}
+
+/// The per-step roots of `sys` replaced by `f(arena, roots)`, in order.
+fn rewrite(sys: &mut System, f: impl FnOnce(&mut Arena, &[Id]) -> Vec<Id>) {
     let mut roots: Vec<Id> = vec![sys.potential, sys.power_nc];
     for d in &sys.dynamics {
         roots.extend(d.mass.iter().map(|e| e.2));
@@ -30,7 +60,7 @@ pub fn system(sys: &mut System) -> Vec<Id> {
         roots.extend(d.force_q.iter().map(|e| e.2));
         roots.extend(d.force_qd.iter().map(|e| e.2));
     }
-    let (new, hoisted) = hoist(&mut sys.arena, &roots);
+    let new = f(&mut sys.arena, &roots);
     let mut it = new.into_iter();
     let mut next = || it.next().expect("one new root per root");
     sys.potential = next();
@@ -55,7 +85,6 @@ pub fn system(sys: &mut System) -> Vec<Id> {
         entries(force_q, &mut next);
         entries(force_qd, &mut next);
     }
-    hoisted
 }
 
 /// `roots` with their parameter-only subexpressions replaced by `Var::K(j)`, and the

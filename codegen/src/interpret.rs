@@ -89,7 +89,15 @@ pub fn load_with(
     stale: bool,
 ) -> Result<Loaded, Errors> {
     let model = model::load_with(source, text, parameters)?;
-    let system = equations::build(&model);
+    // The compiled code's equations (masses and inertias in the run-time parameters,
+    // hoisted), with this file's values bound: interpreted and compiled runs agree bit for bit.
+    let mut system = equations::build_parametric(&model);
+    let p: Vec<f64> = model
+        .run_time_parameters()
+        .iter()
+        .map(|p| p.value)
+        .collect();
+    crate::hoist::bound(&mut system, &p);
     let assembly = crate::assembly::assemble(&model, &system, source).map_err(|mut e| {
         // A pose that no longer assembles: say which of the values set it follows from.
         let set: Vec<_> = parameters
@@ -302,5 +310,6 @@ fn entry(
             stale,
             parameters: leak(parameters.iter().map(|(k, v)| (leak_str(k), *v)).collect()),
         },
+        run_time: None,
     }))
 }

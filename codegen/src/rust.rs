@@ -253,6 +253,11 @@ fn parameters_items(model: &Model, sys: &System) -> TokenStream {
         vec![Output::new("out", &props)],
     );
     let n4 = Literal::usize_unsuffixed(4 * bodies.len());
+    let at_forms = model.formulations.iter().map(|&f| {
+        let (_, type_name, form) = formulation_names(f);
+        let at = ident(&format!("{type_name}At"));
+        quote!((#form, Box::new(#at(p.clone())) as Box<dyn Mechanism + Sync>))
+    });
     let np = Literal::usize_unsuffixed(np);
     quote! {
         /// The parameters the generated code takes at run time: the file's `[parameters]`
@@ -298,6 +303,17 @@ fn parameters_items(model: &Model, sys: &System) -> TokenStream {
                 &self.p
             }
         }
+        #[allow(clippy::type_complexity)]
+        fn at_parameters(
+            set: &[(&str, f64)],
+        ) -> Result<Vec<(Formulation, Box<dyn Mechanism + Sync>)>, ParameterError> {
+            let mut p = Parameters::file_values();
+            p.set(set)?;
+            Ok(vec![#(#at_forms),*])
+        }
+        /// This mechanism at other values of its run-time parameters, for the registries.
+        pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime =
+            symbody_runtime::registry::RunTime { parameters: &RUN_TIME, build: at_parameters };
     }
 }
 
@@ -721,6 +737,7 @@ fn reduced_module(
 fn registry_entry(
     model: &Model,
     reduced: Option<&crate::reduce::Reduced>,
+    run_time: bool,
     source: &str,
     hash: u64,
 ) -> TokenStream {
@@ -739,6 +756,10 @@ fn registry_entry(
         }
         None => quote!(None),
     };
+    let run_time = match run_time {
+        true => quote!(Some(&RUN_TIME_ENTRY)),
+        false => quote!(None),
+    };
     let name = &model.name;
     // The crate sits at `mechanisms/generated/<name>/`, three folders below the root that
     // `source` is relative to.
@@ -750,7 +771,8 @@ fn registry_entry(
             t_end: T_END,
             formulations: #full,
             reduced: #reduced,
-            origin: Origin::Compiled { file: #file, hash: #hash },
+            origin: Origin::Compiled { file: #file, hash: #hash, parameters: &[] },
+            run_time: #run_time,
         };
     }
 }
@@ -916,7 +938,8 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
         Formulation::Exact => "Exact",
     });
 
-    let entry = registry_entry(model, reduced.as_ref(), source, hash);
+    let (np, nk) = parameter_lengths(sys);
+    let entry = registry_entry(model, reduced.as_ref(), np > 0 && nk > 0, source, hash);
     let file = quote! {
         #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]
         use symbody_runtime::{BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, Origin, PlatformInfo, #reduction_import Rotation};

@@ -5,6 +5,7 @@
 //! mechanism rebuilds only its crate and the programs that link it.
 
 use crate::mechanism::{Formulation, Mechanism};
+use crate::parameters::{ParameterError, RunTimeParameters};
 use crate::reduction::Reduction;
 
 /// A mechanism in each formulation it was generated in; the first is the default.
@@ -19,14 +20,32 @@ pub struct Entry {
     /// The model after the substitution pass, where the generator found rows to substitute.
     pub reduced: Option<Reduced>,
     pub origin: Origin,
+    /// The compiled code's run-time parameters, where it has any (decision 30).
+    pub run_time: Option<&'static RunTime>,
+}
+
+/// What a compiled entry offers at other values of its run-time parameters.
+pub struct RunTime {
+    pub parameters: &'static RunTimeParameters,
+    /// Every formulation of the entry, in its order, at the file's values with `set`
+    /// applied (checked first: an error changes nothing).
+    #[allow(clippy::type_complexity)]
+    pub build: fn(
+        set: &[(&str, f64)],
+    ) -> Result<Vec<(Formulation, Box<dyn Mechanism + Sync>)>, ParameterError>,
 }
 
 /// Where an entry's equations come from.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Origin {
     /// Rust generated from `file` (its path when this program was built) whose text had
-    /// [`source_hash`] `hash`, compiled into this program.
-    Compiled { file: &'static str, hash: u64 },
+    /// [`source_hash`] `hash`, compiled into this program; `parameters`: run-time
+    /// parameters given other values than the file's ([`RunTime`]).
+    Compiled {
+        file: &'static str,
+        hash: u64,
+        parameters: &'static [(&'static str, f64)],
+    },
     /// Equations interpreted from `file` ([`crate::Interpreted`]), derived when this
     /// program ran; `stale`: in place of a compiled entry whose file changed since its code
     /// was generated; `parameters`: the file's parameters given other values than the file's.

@@ -10,7 +10,8 @@ use std::collections::HashMap;
 use std::path::Path;
 use std::sync::{Mutex, OnceLock};
 use symbody_codegen::model::Parameter;
-use symbody_runtime::{source_hash, Entry, Origin, Registry};
+use symbody_runtime::registry::{Formulations, RunTime};
+use symbody_runtime::{source_hash, Entry, Formulation, Mechanism, Origin, Registry};
 
 /// Largest mechanism file read: far above any real one (the 13-body Stewart file is 9 KB),
 /// and small enough that a wrong path (a log, a binary) is refused before it is parsed.
@@ -109,13 +110,118 @@ pub fn with_parameters(
     reparametrized(crate::generic::find(registry, name)?, parameters)
 }
 
-/// The file `entry` comes from, interpreted with `parameters` set (the file's values for the
-/// others, whatever `entry` was built with).
+/// The file `entry` comes from with `parameters` set (the file's values for the others,
+/// whatever `entry` was built with): its compiled code where every one is a run-time
+/// parameter of it ([`compiled_at`]), else the file derived again and interpreted.
 pub fn reparametrized(
     entry: &Entry,
     parameters: &Overrides,
 ) -> Result<&'static Entry, ScenarioError> {
-    derive(entry, parameters).map(|l| l.entry)
+    match compiled_at(entry, parameters)? {
+        Some(e) => Ok(e),
+        None => derive(entry, parameters).map(|l| l.entry),
+    }
+}
+
+/// `f` on `entry`'s compiled code at `parameters`, as [`compiled_at`] builds it but freed
+/// when `f` returns (a study's row); `None` where [`compiled_at`] gives none.
+pub fn with_compiled_at<R>(
+    entry: &Entry,
+    parameters: &Overrides,
+    f: impl FnOnce(&Entry) -> R,
+) -> Result<Option<R>, ScenarioError> {
+    let Some((rt, file, hash)) = run_time_route(entry, parameters) else {
+        return Ok(None);
+    };
+    let set: Vec<(&'static str, f64)> = parameters
+        .iter()
+        .filter_map(|(k, v)| Some((*rt.parameters.names.iter().find(|n| **n == k)?, *v)))
+        .collect();
+    let built =
+        (rt.build)(&set).map_err(|e| ScenarioError::Options(format!("`{}`: {e}", entry.name)))?;
+    let formulations: Vec<(Formulation, &(dyn Mechanism + Sync))> =
+        built.iter().map(|(f, m)| (*f, &**m)).collect();
+    // SAFETY: the entry and every reference in it are dropped when `f` returns, before
+    // `built`, `formulations` and `set`; `f` gets the entry by reference only, and the runs
+    // reduce what they record to numbers (the same contract as `interpret::load_scoped`).
+    let (formulations, set): (Formulations, &'static [(&'static str, f64)]) = unsafe {
+        (
+            std::mem::transmute::<&[(Formulation, &(dyn Mechanism + Sync))], Formulations>(
+                &formulations,
+            ),
+            std::mem::transmute::<&[(&'static str, f64)], &'static [(&'static str, f64)]>(&set),
+        )
+    };
+    let scoped = Entry {
+        name: entry.name,
+        t_end: entry.t_end,
+        formulations,
+        reduced: None,
+        origin: Origin::Compiled {
+            file,
+            hash,
+            parameters: set,
+        },
+        run_time: entry.run_time,
+    };
+    Ok(Some(f(&scoped)))
+}
+
+/// The run-time parameters of `entry`'s compiled code, its file and hash, when `parameters`
+/// is not empty, sets only those, and the file has not changed since the code was generated.
+fn run_time_route(
+    entry: &Entry,
+    parameters: &Overrides,
+) -> Option<(&'static RunTime, &'static str, u64)> {
+    let (Some(rt), Origin::Compiled { file, hash, .. }) = (entry.run_time, entry.origin) else {
+        return None;
+    };
+    let run_time = |k: &String| rt.parameters.names.contains(&k.as_str());
+    if parameters.is_empty() || !parameters.iter().all(|(k, _)| run_time(k)) {
+        return None;
+    }
+    // A file changed since its code was generated is derived again, as `fresh` does.
+    if std::fs::read_to_string(file).is_ok_and(|t| source_hash(&t) != hash) {
+        return None;
+    }
+    Some((rt, file, hash))
+}
+
+/// `entry`'s compiled code at `parameters` (the file's values for the others), when its file
+/// is unchanged and every one of them is a run-time parameter of that code (they reach only
+/// masses and inertias: decision 30); `None` otherwise. Lives as long as the program, as
+/// interpreted entries do.
+pub fn compiled_at(
+    entry: &Entry,
+    parameters: &Overrides,
+) -> Result<Option<&'static Entry>, ScenarioError> {
+    let Some((rt, file, hash)) = run_time_route(entry, parameters) else {
+        return Ok(None);
+    };
+    let set: Vec<(&str, f64)> = parameters.iter().map(|(k, v)| (k.as_str(), *v)).collect();
+    let built =
+        (rt.build)(&set).map_err(|e| ScenarioError::Options(format!("`{}`: {e}", entry.name)))?;
+    let formulations: Vec<_> = built
+        .into_iter()
+        .map(|(f, m)| (f, &*Box::leak(m)))
+        .collect();
+    let parameters: Vec<(&'static str, f64)> = parameters
+        .iter()
+        .map(|(k, v)| (&*Box::leak(k.clone().into_boxed_str()), *v))
+        .collect();
+    Ok(Some(Box::leak(Box::new(Entry {
+        name: entry.name,
+        t_end: entry.t_end,
+        formulations: Box::leak(formulations.into_boxed_slice()),
+        // The reduced models read the file's values (not generated with run-time types).
+        reduced: None,
+        origin: Origin::Compiled {
+            file,
+            hash,
+            parameters: Box::leak(parameters.into_boxed_slice()),
+        },
+        run_time: entry.run_time,
+    }))))
 }
 
 /// The file `entry` comes from, loaded with `parameters` set.
@@ -216,7 +322,12 @@ fn load_text(
 /// was built) has changed since its code was generated, the file interpreted. A changed file
 /// that no longer loads is an error with its diagnostics, not a silent run of the old code.
 pub fn fresh(entry: &'static Entry) -> Result<&'static Entry, ScenarioError> {
-    let Origin::Compiled { file, hash } = entry.origin else {
+    let Origin::Compiled {
+        file,
+        hash,
+        parameters,
+    } = entry.origin
+    else {
         return Ok(entry);
     };
     // Installed without its source tree (a wheel, a copied binary): nothing to compare.
@@ -229,7 +340,11 @@ pub fn fresh(entry: &'static Entry) -> Result<&'static Entry, ScenarioError> {
     let shown = Path::new(file)
         .canonicalize()
         .map_or_else(|_| file.to_string(), |p| p.display().to_string());
-    load_text(&shown, &text, true, &[])
+    let set: Vec<(String, f64)> = parameters
+        .iter()
+        .map(|(k, v)| (k.to_string(), *v))
+        .collect();
+    load_text(&shown, &text, true, &set)
         .map(|l| l.entry)
         .map_err(|e| {
             ScenarioError::Options(format!(
@@ -244,6 +359,17 @@ pub fn fresh(entry: &'static Entry) -> Result<&'static Entry, ScenarioError> {
 /// compiled code of its current file.
 pub fn note(entry: &Entry) -> Option<String> {
     match entry.origin {
+        Origin::Compiled { parameters, .. } if !parameters.is_empty() => {
+            let set: Vec<String> = parameters
+                .iter()
+                .map(|(k, v)| format!("{k} = {v}"))
+                .collect();
+            Some(format!(
+                "compiled, with run-time parameters {} (masses and inertias: nothing \
+                 re-derived)",
+                set.join(", ")
+            ))
+        }
         Origin::Compiled { .. } => None,
         Origin::Interpreted {
             file, parameters, ..
@@ -327,7 +453,7 @@ mod tests {
     /// A compiled entry whose file is a copy in a temporary folder, so the test may edit it.
     fn entry_with_file(dir: &Path) -> (&'static Entry, PathBuf, String) {
         let shipped = REGISTRY.find("slider_crank").unwrap();
-        let Origin::Compiled { file, hash } = shipped.origin else {
+        let Origin::Compiled { file, hash, .. } = shipped.origin else {
             panic!("compiled")
         };
         let text = std::fs::read_to_string(file).unwrap();
@@ -339,7 +465,12 @@ mod tests {
             t_end: shipped.t_end,
             formulations: shipped.formulations,
             reduced: None,
-            origin: Origin::Compiled { file: leaked, hash },
+            origin: Origin::Compiled {
+                file: leaked,
+                hash,
+                parameters: &[],
+            },
+            run_time: None,
         }));
         (entry, copy, text)
     }

@@ -512,8 +512,7 @@ pub fn run_row(
     let merged = crate::files::merged(&scene.parameters, parameters);
     // Tables, whatever the scene writes: the metrics are read from the generic recording.
     let tables = recorded(scene, metrics);
-    let run = |loaded: &symbody_codegen::interpret::Loaded| -> Result<Vec<f64>, String> {
-        let entry: &Entry = loaded.entry;
+    let run_entry = |entry: &Entry| -> Result<Vec<f64>, String> {
         match scene::run_observed(&tables, entry, &mut ()) {
             Err(e) => Err(e.to_string()),
             Ok((_, Err(stopped))) => Err(stopped.error.to_string()),
@@ -521,6 +520,13 @@ pub fn run_row(
             Ok((_, Ok(Outcome::Paper(_)))) => unreachable!("the study runs tables"),
         }
     };
+    // Rows that set only run-time parameters of the compiled code run it: nothing derived.
+    if let Some(result) = crate::files::with_compiled_at(scene.entry, &merged, run_entry)
+        .map_err(|e| e.to_string())?
+    {
+        return result;
+    }
+    let run = |loaded: &symbody_codegen::interpret::Loaded| run_entry(loaded.entry);
     // SAFETY: nothing from the entry outlives `run`: the recording is reduced to numbers in it.
     unsafe {
         symbody_codegen::interpret::load_scoped_with(source, text, &merged, false, run).map_err(

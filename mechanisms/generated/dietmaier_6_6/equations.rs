@@ -3816,5 +3816,7 @@ pub static ENTRY: Entry = Entry {
             env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/dietmaier_6_6.toml"
         ),
         hash: 11384551771382902092u64,
+        parameters: &[],
     },
+    run_time: None,
 };

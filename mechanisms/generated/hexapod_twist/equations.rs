@@ -4424,5 +4424,7 @@ pub static ENTRY: Entry = Entry {
             env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/hexapod_twist.toml"
         ),
         hash: 13001661441132106976u64,
+        parameters: &[],
     },
+    run_time: None,
 };

@@ -379,6 +379,24 @@ impl Parameters {
         &self.p
     }
 }
+#[allow(clippy::type_complexity)]
+fn at_parameters(
+    set: &[(&str, f64)],
+) -> Result<Vec<(Formulation, Box<dyn Mechanism + Sync>)>, ParameterError> {
+    let mut p = Parameters::file_values();
+    p.set(set)?;
+    Ok(
+        vec![
+            (Formulation::Exact, Box::new(ExactAt(p.clone())) as Box < dyn Mechanism +
+            Sync >)
+        ],
+    )
+}
+/// This mechanism at other values of its run-time parameters, for the registries.
+pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime::registry::RunTime {
+    parameters: &RUN_TIME,
+    build: at_parameters,
+};
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
 pub mod exact {
     use super::*;
@@ -1418,5 +1436,7 @@ pub static ENTRY: Entry = Entry {
             env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/simple_pendulum.toml"
         ),
         hash: 11379041075575716480u64,
+        parameters: &[],
     },
+    run_time: Some(&RUN_TIME_ENTRY),
 };

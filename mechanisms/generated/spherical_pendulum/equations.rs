@@ -1419,5 +1419,7 @@ pub static ENTRY: Entry = Entry {
             "mechanisms/spherical_pendulum.toml"
         ),
         hash: 11312270152100685384u64,
+        parameters: &[],
     },
+    run_time: None,
 };

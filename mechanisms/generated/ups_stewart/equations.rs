@@ -23903,6 +23903,24 @@ impl Parameters {
         &self.p
     }
 }
+#[allow(clippy::type_complexity)]
+fn at_parameters(
+    set: &[(&str, f64)],
+) -> Result<Vec<(Formulation, Box<dyn Mechanism + Sync>)>, ParameterError> {
+    let mut p = Parameters::file_values();
+    p.set(set)?;
+    Ok(
+        vec![
+            (Formulation::Exact, Box::new(ExactAt(p.clone())) as Box < dyn Mechanism +
+            Sync >)
+        ],
+    )
+}
+/// This mechanism at other values of its run-time parameters, for the registries.
+pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime::registry::RunTime {
+    parameters: &RUN_TIME,
+    build: at_parameters,
+};
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
 pub mod exact {
     use super::*;
@@ -38164,5 +38182,7 @@ pub static ENTRY: Entry = Entry {
             env!("CARGO_MANIFEST_DIR"), "/../../../", "mechanisms/ups_stewart.toml"
         ),
         hash: 11971209215141035808u64,
+        parameters: &[],
     },
+    run_time: Some(&RUN_TIME_ENTRY),
 };
