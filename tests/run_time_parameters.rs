@@ -138,7 +138,11 @@ fn refused_sets_name_the_parameter_or_body_and_change_nothing() {
     match p.set(&[("m_cyl", 0.5), ("m_platform", -1.0)]) {
         Err(e @ ParameterError::Mass { body, .. }) => {
             assert_eq!(body, "platform");
-            assert!(e.to_string().contains("`m_platform` = -1"), "{e}");
+            assert!(
+                e.to_string()
+                    .contains("with m_cyl = 0.5, m_platform = -1 set"),
+                "{e}"
+            );
         }
         other => panic!("{other:?}"),
     }

@@ -528,6 +528,13 @@ fn list_parameters(registry: &Registry, name: &str) -> Result<(), String> {
         loaded.entry.name,
         ps.len()
     );
+    // Run-time parameters of the compiled code: setting only those derives nothing.
+    let run_time = |p: &str| {
+        symbody::generic::find(registry, name)
+            .ok()
+            .and_then(|e| e.run_time)
+            .is_some_and(|rt| rt.parameters.names.contains(&p))
+    };
     let width = ps.iter().map(|p| p.name.chars().count()).max().unwrap_or(0);
     for p in ps {
         let how = match &p.expression {
@@ -538,8 +545,12 @@ fn list_parameters(registry: &Registry, name: &str) -> Result<(), String> {
             true => "nothing (unused)".to_string(),
             false => p.affects.join(", "),
         };
+        let compiled = match run_time(&p.name) {
+            true => ", run-time in the compiled code",
+            false => "",
+        };
         say!(
-            "  {:width$} {:>14}{how}  (line {}) affects: {affects}",
+            "  {:width$} {:>14}{how}  (line {}) affects: {affects}{compiled}",
             p.name,
             short(p.value),
             p.line

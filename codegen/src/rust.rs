@@ -293,7 +293,7 @@ fn parameters_items(model: &Model, sys: &System) -> TokenStream {
                 let mut p = self.p;
                 RUN_TIME.assign(&mut p, set)?;
                 let mut props = [0.0; #n4];
-                RUN_TIME.check(&p, &mut props)?;
+                RUN_TIME.check(&p, set, &mut props)?;
                 self.p = p;
                 setup(&self.p, &mut self.k);
                 Ok(())

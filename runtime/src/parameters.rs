@@ -124,17 +124,18 @@ impl RunTimeParameters {
         Ok(())
     }
 
-    /// Checks the bodies' masses and inertias at `p`; `props` is scratch of four entries
-    /// per body.
-    pub fn check(&self, p: &[f64], props: &mut [f64]) -> Result<(), ParameterError> {
+    /// Checks the bodies' masses and inertias at `p`, which `set` gave its new values (named
+    /// in the errors); `props` is scratch of four entries per body.
+    pub fn check(
+        &self,
+        p: &[f64],
+        set: &[(&str, f64)],
+        props: &mut [f64],
+    ) -> Result<(), ParameterError> {
         (self.mass_properties)(p, props);
         let shown = || {
-            self.names
-                .iter()
-                .zip(p)
-                .map(|(n, v)| format!("`{n}` = {v}"))
-                .collect::<Vec<_>>()
-                .join(", ")
+            let values: Vec<String> = set.iter().map(|(n, v)| format!("{n} = {v}")).collect();
+            format!("{} set", values.join(", "))
         };
         for (b, v) in props.chunks_exact(4).enumerate() {
             let body = self.bodies[b];

@@ -2315,7 +2315,7 @@ impl Parameters {
         let mut p = self.p;
         RUN_TIME.assign(&mut p, set)?;
         let mut props = [0.0; 12];
-        RUN_TIME.check(&p, &mut props)?;
+        RUN_TIME.check(&p, set, &mut props)?;
         self.p = p;
         setup(&self.p, &mut self.k);
         Ok(())
