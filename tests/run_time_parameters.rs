@@ -1,5 +1,6 @@
 //! Run-time parameters of the compiled code (`<Type>::with_parameters`, decision 30): the
-//! parameters that reach only masses and inertias are inputs of the generated functions.
+//! parameters that reach only masses, inertias and springs' stiffness and damping are inputs
+//! of the generated functions.
 //!
 //! References: the mechanism file derived again with the same values and interpreted
 //! (`files::derive`; the file edited to that value, as `tests/parameters.rs` shows), which
@@ -101,7 +102,14 @@ fn the_paper_platform_with_other_masses_is_the_file_derived_with_them() {
 
 #[test]
 fn the_oscillators_with_another_mass_are_the_file_derived_with_it() {
-    let set = [("m", 3.5)];
+    // And stiffer, more damped springs (linear and torsion).
+    let set = [
+        ("m", 3.5),
+        ("k", 80.0),
+        ("c", 1.1),
+        ("kt", 3.0),
+        ("ct", 0.05),
+    ];
     let compiled = oscillators::Exact::with_parameters(&set).unwrap();
     let reference = interpreted("oscillators", &set);
     let (a, b) = (newton(&compiled), newton(reference));
@@ -153,6 +161,15 @@ fn refused_sets_name_the_parameter_or_body_and_change_nothing() {
     ));
     assert_eq!(p.values(), &before[..]);
     p.set(&[("m_cyl", 0.5)]).unwrap();
+    // A spring's constants: negative is refused, naming the force.
+    let mut o = oscillators::Parameters::file_values();
+    match o.set(&[("k", -5.0)]) {
+        Err(e @ ParameterError::ForceConstant { field, .. }) => {
+            assert_eq!(field, "stiffness");
+            assert!(e.to_string().contains("with k = -5 set"), "{e}");
+        }
+        other => panic!("{other:?}"),
+    }
     assert_ne!(p.values(), &before[..]);
 }
 

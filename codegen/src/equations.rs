@@ -5,7 +5,7 @@
 //! [`crate::loads`].
 
 use crate::expr::{Arena, Id, Var};
-use crate::model::{Formulation, Model, Rotation};
+use crate::model::{ForceKind, Formulation, Model, Rotation};
 use crate::primitives::{driver_row, joint_rows};
 use crate::symbolic::{jacobian, jacobian_in, BodySym, Entry, M3s, V3s};
 
@@ -71,6 +71,8 @@ pub struct System {
     /// Each body's mass and principal inertias, as they enter the equations (written in the
     /// run-time parameters by [`build_parametric`]).
     pub mass_props: Vec<[Id; 4]>,
+    /// Each force's stiffness and damping (0 for applied forces and torques), likewise.
+    pub force_constants: Vec<[Id; 2]>,
     pub row_names: Vec<String>,
     pub coord_names: Vec<String>,
     /// First row of each joint, then of each driver (one row each), then of each
@@ -168,16 +170,18 @@ pub fn build(model: &Model) -> System {
     build_with(model, false)
 }
 
-/// [`build`] with the masses and inertias written in the run-time parameters
+/// [`build`] with the masses, inertias and springs' constants written in the run-time parameters
 /// ([`Model::run_time_parameters`]) as `Var::P`, for the generated code.
 pub fn build_parametric(model: &Model) -> System {
     build_with(model, true)
 }
 
-/// The bodies' masses and principal inertias as they enter the equations.
+/// The numbers the run-time parameters can reach, as they enter the equations: the bodies'
+/// masses and principal inertias, each force's stiffness and damping (0 where it has none).
 struct MassProps {
     mass: Vec<Id>,
     inertia: Vec<[Id; 3]>,
+    force_constants: Vec<[Id; 2]>,
 }
 
 impl MassProps {
@@ -192,7 +196,30 @@ impl MassProps {
             mass.push(value(a, &b.mass_expr, b.mass));
             inertia.push([0, 1, 2].map(|k| value(a, &b.inertia_expr[k], b.inertia[k])));
         }
-        MassProps { mass, inertia }
+        let force_constants = model
+            .forces
+            .iter()
+            .map(|f| {
+                let (k, c) = match f.kind {
+                    ForceKind::Spring {
+                        stiffness, damping, ..
+                    }
+                    | ForceKind::Torsion {
+                        stiffness, damping, ..
+                    } => (stiffness, damping),
+                    _ => (0.0, 0.0),
+                };
+                [
+                    value(a, &f.constants_expr[0], k),
+                    value(a, &f.constants_expr[1], c),
+                ]
+            })
+            .collect();
+        MassProps {
+            mass,
+            inertia,
+            force_constants,
+        }
     }
 }
 
@@ -256,7 +283,7 @@ fn build_with(model: &Model, parametric: bool) -> System {
     let n_coords = model.n_coords();
     let (phi_q, phi_t, gamma) = derivatives(&mut a, &phi, n_coords);
     let props = MassProps::new(&mut a, model, parametric);
-    let loads = crate::loads::build(&mut a, model, &bodies, &props.mass);
+    let loads = crate::loads::build(&mut a, model, &bodies, &props.mass, &props.force_constants);
     let dynamics = model
         .formulations
         .iter()
@@ -292,6 +319,7 @@ fn build_with(model: &Model, parametric: bool) -> System {
             .zip(&props.inertia)
             .map(|(&m, &[a, b, c])| [m, a, b, c])
             .collect(),
+        force_constants: props.force_constants,
         row_names,
         coord_names,
         joint_rows: joint_rows_start,

@@ -25,7 +25,8 @@ pub enum Var {
     /// Time.
     T,
     /// Run-time parameter `p[i]` of the generated code: the file's `[parameters]` entries
-    /// that reach only masses and inertias ([`crate::model::Parameter::mass_only`]).
+    /// that reach only masses, inertias and springs' constants
+    /// ([`crate::model::Parameter::run_time`]).
     P(u32),
     /// Hoisted value `k[i]`: a function of the parameters alone, computed once per parameter
     /// set by the generated `setup` ([`crate::hoist`]).

@@ -89,7 +89,7 @@ pub fn load_with(
     stale: bool,
 ) -> Result<Loaded, Errors> {
     let model = model::load_with(source, text, parameters)?;
-    // The compiled code's equations (masses and inertias in the run-time parameters,
+    // The compiled code's equations (masses, inertias, springs' constants in the run-time parameters,
     // hoisted), with this file's values bound: interpreted and compiled runs agree bit for bit.
     let mut system = equations::build_parametric(&model);
     let p: Vec<f64> = model

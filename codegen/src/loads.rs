@@ -58,14 +58,14 @@ impl Acc<'_> {
     /// A spring–damper–actuator along the scalar `coord`: generalized force
     /// `−k·stretch − c·rate + f(t)` along it, potential `½k·stretch²`, non-conservative
     /// power `(f(t) − c·rate)·rate`.
-    fn spring_damper(&mut self, coord: Id, stretch: Id, rate: Id, (k, c, f): (f64, f64, Id)) {
+    fn spring_damper(&mut self, coord: Id, stretch: Id, rate: Id, [kc, cc, f]: [Id; 3]) {
         let a = &mut *self.a;
-        let (kc, cc) = (a.constant(k), a.constant(c));
         let elastic = a.mul(kc, stretch);
         let viscous = a.mul(cc, rate);
         let nc = a.sub(f, viscous);
         let total = a.sub(nc, elastic);
-        let half_k = a.constant(0.5 * k);
+        let half = a.constant(0.5);
+        let half_k = a.mul(half, kc);
         let s2 = a.powi(stretch, 2);
         self.potential.push(a.mul(half_k, s2));
         self.power.push(a.mul(nc, rate));
@@ -82,7 +82,16 @@ impl Acc<'_> {
     }
 }
 
-pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym], masses: &[Id]) -> Loads {
+/// The loads of `model`; `masses` are the bodies' masses and `constants` each force's
+/// stiffness and damping (springs and torsion springs; unused for the others), as they enter
+/// the equations.
+pub fn build(
+    a: &mut Arena,
+    model: &Model,
+    bodies: &[BodySym],
+    masses: &[Id],
+    constants: &[[Id; 2]],
+) -> Loads {
     let n = model.n_coords();
     let mut acc = Acc {
         a,
@@ -100,15 +109,14 @@ pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym], masses: &[Id]) ->
             acc.potential.push(v);
         }
     }
-    for f in &model.forces {
+    for (f, &[k, c]) in model.forces.iter().zip(constants) {
         match &f.kind {
             ForceKind::Spring {
                 f1,
                 f2,
-                stiffness,
-                damping,
                 free_length,
                 actuator,
+                ..
             } => {
                 let a = &mut *acc.a;
                 let s1 = sym_frame(a, bodies, f1);
@@ -117,14 +125,13 @@ pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym], masses: &[Id]) ->
                 let len_dot = acc.rate(&[len])[0];
                 let l0 = acc.a.constant(*free_length);
                 let stretch = acc.a.sub(len, l0);
-                acc.spring_damper(len, stretch, len_dot, (*stiffness, *damping, *actuator));
+                acc.spring_damper(len, stretch, len_dot, [k, c, *actuator]);
             }
             ForceKind::Torsion {
                 joint,
-                stiffness,
-                damping,
                 free_angle,
                 torque,
+                ..
             } => {
                 let j = &model.joints[*joint];
                 let a = &mut *acc.a;
@@ -147,7 +154,7 @@ pub fn build(a: &mut Arena, model: &Model, bodies: &[BodySym], masses: &[Id]) ->
                 };
                 let delta = a.atan2(y, x);
                 let delta_dot = acc.rate(&[delta])[0];
-                acc.spring_damper(delta, delta, delta_dot, (*stiffness, *damping, *torque));
+                acc.spring_damper(delta, delta, delta_dot, [k, c, *torque]);
             }
             ForceKind::Force {
                 at,

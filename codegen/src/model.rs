@@ -297,6 +297,10 @@ pub enum ForceKind {
 pub struct Force {
     pub name: String,
     pub kind: ForceKind,
+    /// The file's expressions for a spring's or torsion spring's `stiffness` and `damping`
+    /// (`None`: a number or absent), which [`crate::equations::build_parametric`] writes in
+    /// the run-time parameters.
+    pub constants_expr: [Option<String>; 2],
 }
 
 /// A validated mechanism.
@@ -347,10 +351,11 @@ pub struct Parameter {
     /// The items whose values depend on it, directly or through other parameters (e.g.
     /// ``body `crank` ``, ``joint `pin` ``), in name order.
     pub affects: Vec<String>,
-    /// A number (not derived) that reaches only bodies' masses and principal inertias,
-    /// none of them zero: no decision of the generator (assembly, rank, reduction, platform)
-    /// depends on it, so the generated code takes it at run time (`Var::P`).
-    pub mass_only: bool,
+    /// A number (not derived) that reaches only bodies' masses and principal inertias (none
+    /// of them zero) and springs' stiffness and damping: no decision of the generator
+    /// (assembly, rank, reduction, platform) depends on it, so the generated code takes it at
+    /// run time (`Var::P`, docs/design.md, decision 35).
+    pub run_time: bool,
 }
 
 impl Model {
@@ -370,9 +375,9 @@ impl Model {
     }
 
     /// The parameters the generated code takes at run time, in order (`Var::P(i)` is the
-    /// `i`-th): those that reach only masses and inertias.
+    /// `i`-th): [`Parameter::run_time`].
     pub fn run_time_parameters(&self) -> Vec<&Parameter> {
-        self.parameters.iter().filter(|p| p.mass_only).collect()
+        self.parameters.iter().filter(|p| p.run_time).collect()
     }
 
     pub fn body_name(&self, b: BodyRef) -> &str {
@@ -644,7 +649,7 @@ impl Validator<'_> {
                 .collect();
             for p in &mut m.parameters {
                 if p.affects.iter().any(|i| zero.contains(i)) {
-                    p.mass_only = false;
+                    p.run_time = false;
                 }
             }
             m
@@ -763,8 +768,8 @@ impl Validator<'_> {
     }
 
     /// Whether every field that reads `name`, directly or through derived parameters, is a
-    /// body's `mass` or `inertia` (and one does).
-    fn reaches_mass_only(&self, name: &str) -> bool {
+    /// body's `mass` or `inertia` or a force's `stiffness` or `damping` (and one does).
+    fn reaches_run_time_fields_only(&self, name: &str) -> bool {
         let mut todo = vec![name.to_string()];
         let mut seen = BTreeSet::new();
         let mut any = false;
@@ -778,7 +783,9 @@ impl Validator<'_> {
                     .and_then(|s| s.strip_suffix('`'))
                 {
                     todo.push(q.to_string());
-                } else if item.starts_with("body `") && (field == "mass" || field == "inertia") {
+                } else if (item.starts_with("body `") && (field == "mass" || field == "inertia"))
+                    || (item.starts_with("force `") && (field == "stiffness" || field == "damping"))
+                {
                     any = true;
                 } else {
                     return false;
@@ -812,8 +819,8 @@ impl Validator<'_> {
                     overridden: overrides.iter().any(|(o, _)| *o == name),
                     line: self.map.position(k.span().start).0,
                     affects: items.into_iter().collect(),
-                    mass_only: matches!(v.get_ref(), raw::Scalar::Int(_) | raw::Scalar::Float(_))
-                        && self.reaches_mass_only(&name),
+                    run_time: matches!(v.get_ref(), raw::Scalar::Int(_) | raw::Scalar::Float(_))
+                        && self.reaches_run_time_fields_only(&name),
                     name,
                     value,
                 }

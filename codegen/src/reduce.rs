@@ -277,6 +277,7 @@ fn eliminate(
             power_nc,
             dynamics,
             mass_props: sys.mass_props.clone(),
+            force_constants: sys.force_constants.clone(),
             row_names: rows.iter().map(|&r| sys.row_names[r].clone()).collect(),
             coord_names: coords.iter().map(|&c| sys.coord_names[c].clone()).collect(),
             joint_rows: Vec::new(),

@@ -238,7 +238,7 @@ fn parameters_items(model: &Model, sys: &System) -> TokenStream {
     let others: Vec<&str> = model
         .parameters
         .iter()
-        .filter(|p| !p.mass_only)
+        .filter(|p| !p.run_time)
         .map(|p| p.name.as_str())
         .collect();
     let no = Literal::usize_unsuffixed(others.len());
@@ -253,6 +253,17 @@ fn parameters_items(model: &Model, sys: &System) -> TokenStream {
         vec![Output::new("out", &props)],
     );
     let n4 = Literal::usize_unsuffixed(4 * bodies.len());
+    let forces: Vec<&str> = model.forces.iter().map(|f| f.name.as_str()).collect();
+    let nf = Literal::usize_unsuffixed(forces.len());
+    let n2 = Literal::usize_unsuffixed(2 * forces.len());
+    let constants: Vec<Id> = sys.force_constants.iter().flatten().copied().collect();
+    let force_constants = function(
+        sys,
+        "force_constants",
+        " Each force's stiffness and damping at the run-time parameters `p`.",
+        &[Input::P],
+        vec![Output::new("out", &constants)],
+    );
     let at_forms = model.formulations.iter().map(|&f| {
         let (_, type_name, form) = formulation_names(f);
         let at = ident(&format!("{type_name}At"));
@@ -261,20 +272,25 @@ fn parameters_items(model: &Model, sys: &System) -> TokenStream {
     let np = Literal::usize_unsuffixed(np);
     quote! {
         /// The parameters the generated code takes at run time: the file's `[parameters]`
-        /// entries that reach only masses and inertias (the others are set on the file).
+        /// entries that reach only masses, inertias and springs' constants (the others are set on
+        /// the file).
         pub static PARAMETERS: [&str; #np] = [#(#names),*];
         /// Their values in the file.
         pub static PARAMETER_VALUES: [f64; #np] = [#(#values),*];
         static OTHER_PARAMETERS: [&str; #no] = [#(#others),*];
         static BODY_NAMES: [&str; #nb] = [#(#bodies),*];
+        static FORCE_NAMES: [&str; #nf] = [#(#forces),*];
         /// What a new parameter set is checked with.
         pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
             names: &PARAMETERS,
             others: &OTHER_PARAMETERS,
             bodies: &BODY_NAMES,
             mass_properties,
+            forces: &FORCE_NAMES,
+            force_constants,
         };
         #mass_properties
+        #force_constants
         /// One set of run-time parameter values and the values `setup` computed from it.
         #[derive(Debug, Clone)]
         pub struct Parameters {
@@ -292,8 +308,8 @@ fn parameters_items(model: &Model, sys: &System) -> TokenStream {
             pub fn set(&mut self, set: &[(&str, f64)]) -> Result<(), ParameterError> {
                 let mut p = self.p;
                 RUN_TIME.assign(&mut p, set)?;
-                let mut props = [0.0; #n4];
-                RUN_TIME.check(&p, set, &mut props)?;
+                let (mut props, mut constants) = ([0.0; #n4], [0.0; #n2]);
+                RUN_TIME.check(&p, set, &mut props, &mut constants)?;
                 self.p = p;
                 setup(&self.p, &mut self.k);
                 Ok(())

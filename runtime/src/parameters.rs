@@ -1,6 +1,7 @@
-//! Run-time parameters of generated code (docs/design.md, decision 30): the entries of a
-//! file's `[parameters]` that reach only masses and inertias are inputs of the generated
-//! functions rather than literals, so a mass or an inertia changes without regenerating.
+//! Run-time parameters of generated code (docs/design.md, decision 35): the entries of a
+//! file's `[parameters]` that reach only masses, inertias and springs' stiffness and damping
+//! are inputs of the generated functions rather than literals, so they change without
+//! regenerating.
 //! Everything that depends on them alone is computed once per parameter set by the
 //! generated `setup`; this module checks a new set before it replaces the old one.
 
@@ -15,7 +16,8 @@ pub enum ParameterError {
         closest: Option<&'static str>,
     },
     /// A parameter of the file that the generated code does not take at run time: derived
-    /// from others, or reaching geometry, drivers or loads, which decide the assembly.
+    /// from others, or reaching geometry, drivers or applied loads, which decide the assembly
+    /// or the structure of the equations.
     NotRunTime { name: String },
     /// NaN or infinite.
     NotFinite { name: String, value: f64 },
@@ -30,6 +32,13 @@ pub enum ParameterError {
     Inertia {
         body: &'static str,
         values: [f64; 3],
+        parameters: String,
+    },
+    /// A spring's stiffness or damping came out negative or not finite.
+    ForceConstant {
+        force: &'static str,
+        field: &'static str,
+        value: f64,
         parameters: String,
     },
 }
@@ -47,7 +56,7 @@ impl fmt::Display for ParameterError {
             ParameterError::NotRunTime { name } => write!(
                 f,
                 "parameter `{name}` is not a run-time parameter of the generated code (it is \
-                 derived from others or reaches more than masses and inertias); set it on the \
+                 derived from others or reaches more than masses, inertias and springs' constants); set it on the \
                  mechanism file, which is then derived again (`--set`, `files::with_parameters`)"
             ),
             ParameterError::NotFinite { name, value } => {
@@ -70,6 +79,15 @@ impl fmt::Display for ParameterError {
                 "body `{body}`: principal inertias {values:?} with {parameters}; each must be \
                  positive and at most the sum of the other two"
             ),
+            ParameterError::ForceConstant {
+                force,
+                field,
+                value,
+                parameters,
+            } => write!(
+                f,
+                "force `{force}`: {field} {value} with {parameters}; it must not be negative"
+            ),
         }
     }
 }
@@ -87,6 +105,10 @@ pub struct RunTimeParameters {
     pub bodies: &'static [&'static str],
     /// `mass_properties(p, out)`: each body's mass and three principal inertias.
     pub mass_properties: fn(&[f64], &mut [f64]),
+    /// The forces' names, in the order of `force_constants`.
+    pub forces: &'static [&'static str],
+    /// `force_constants(p, out)`: each force's stiffness and damping (0 for applied loads).
+    pub force_constants: fn(&[f64], &mut [f64]),
 }
 
 impl RunTimeParameters {
@@ -124,15 +146,18 @@ impl RunTimeParameters {
         Ok(())
     }
 
-    /// Checks the bodies' masses and inertias at `p`, which `set` gave its new values (named
-    /// in the errors); `props` is scratch of four entries per body.
+    /// Checks the bodies' masses and inertias and the forces' stiffness and damping at `p`,
+    /// which `set` gave its new values (named in the errors); `props` is scratch of four
+    /// entries per body, `constants` of two per force.
     pub fn check(
         &self,
         p: &[f64],
         set: &[(&str, f64)],
         props: &mut [f64],
+        constants: &mut [f64],
     ) -> Result<(), ParameterError> {
         (self.mass_properties)(p, props);
+        (self.force_constants)(p, constants);
         let shown = || {
             let values: Vec<String> = set.iter().map(|(n, v)| format!("{n} = {v}")).collect();
             format!("{} set", values.join(", "))
@@ -156,6 +181,18 @@ impl RunTimeParameters {
                     values: i,
                     parameters: shown(),
                 });
+            }
+        }
+        for (f, v) in constants.chunks_exact(2).enumerate() {
+            for (field, &value) in ["stiffness", "damping"].into_iter().zip(v) {
+                if !(value >= 0.0 && value.is_finite()) {
+                    return Err(ParameterError::ForceConstant {
+                        force: self.forces[f],
+                        field,
+                        value,
+                        parameters: shown(),
+                    });
+                }
             }
         }
         Ok(())

@@ -189,7 +189,7 @@ fn run_time_route(
 
 /// `entry`'s compiled code at `parameters` (the file's values for the others), when its file
 /// is unchanged and every one of them is a run-time parameter of that code (they reach only
-/// masses and inertias: decision 30); `None` otherwise. Lives as long as the program, as
+/// masses, inertias and springs' constants: decision 35); `None` otherwise. Lives as long as the program, as
 /// interpreted entries do.
 pub fn compiled_at(
     entry: &Entry,
@@ -365,8 +365,7 @@ pub fn note(entry: &Entry) -> Option<String> {
                 .map(|(k, v)| format!("{k} = {v}"))
                 .collect();
             Some(format!(
-                "compiled, with run-time parameters {} (masses and inertias: nothing \
-                 re-derived)",
+                "compiled, with run-time parameters {} (nothing re-derived)",
                 set.join(", ")
             ))
         }

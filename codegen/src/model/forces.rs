@@ -3,7 +3,7 @@
 //! torques given as functions of `t`.
 
 use super::drivers::{frame_point, joint_angle, TwoPoints};
-use super::raw::RawForce;
+use super::raw::{RawForce, SScalar, Scalar};
 use super::{Body, Force, ForceKind, Frame, Joint, Validator};
 use crate::expr::Id;
 use crate::geometry::{arr, v3};
@@ -69,7 +69,21 @@ impl Validator<'_> {
                 }
             };
             if let Some(kind) = built {
-                out.push(Force { name, kind });
+                let expr = |s: &Option<SScalar>| match s.as_ref().map(|s| s.get_ref()) {
+                    Some(Scalar::Expr(e)) => Some(e.clone()),
+                    _ => None,
+                };
+                let constants_expr = match kind {
+                    ForceKind::Spring { .. } | ForceKind::Torsion { .. } => {
+                        [expr(&rf.stiffness), expr(&rf.damping)]
+                    }
+                    _ => [None, None],
+                };
+                out.push(Force {
+                    name,
+                    kind,
+                    constants_expr,
+                });
             }
         }
         Some(out)

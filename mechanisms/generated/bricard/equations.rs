@@ -5477,12 +5477,15 @@ pub static PARAMETERS: [&str; 1] = ["m"];
 pub static PARAMETER_VALUES: [f64; 1] = [1f64];
 static OTHER_PARAMETERS: [&str; 4] = ["half_turn", "i_axis", "i_cross", "quarter"];
 static BODY_NAMES: [&str; 5] = ["rod1", "rod2", "rod3", "rod4", "rod5"];
+static FORCE_NAMES: [&str; 0] = [];
 /// What a new parameter set is checked with.
 pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
     names: &PARAMETERS,
     others: &OTHER_PARAMETERS,
     bodies: &BODY_NAMES,
     mass_properties,
+    forces: &FORCE_NAMES,
+    force_constants,
 };
 /// Each body's mass and principal inertias at the run-time parameters `p`.
 pub fn mass_properties(p: &[f64], out: &mut [f64]) {
@@ -5517,6 +5520,12 @@ fn mass_properties_part_0(p: &[f64; 1], out: &mut [f64; 20]) {
     out[18] = x2156;
     out[19] = x2156;
 }
+/// Each force's stiffness and damping at the run-time parameters `p`.
+pub fn force_constants(p: &[f64], out: &mut [f64]) {
+    let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
+    let _: &mut [f64; 0] = out.try_into().expect("out must have 0 entries");
+    let _ = p;
+}
 /// One set of run-time parameter values and the values `setup` computed from it.
 #[derive(Debug, Clone)]
 pub struct Parameters {
@@ -5537,8 +5546,8 @@ impl Parameters {
     pub fn set(&mut self, set: &[(&str, f64)]) -> Result<(), ParameterError> {
         let mut p = self.p;
         RUN_TIME.assign(&mut p, set)?;
-        let mut props = [0.0; 20];
-        RUN_TIME.check(&p, set, &mut props)?;
+        let (mut props, mut constants) = ([0.0; 20], [0.0; 0]);
+        RUN_TIME.check(&p, set, &mut props, &mut constants)?;
         self.p = p;
         setup(&self.p, &mut self.k);
         Ok(())

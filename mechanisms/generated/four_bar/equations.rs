@@ -3587,12 +3587,15 @@ static OTHER_PARAMETERS: [&str; 12] = [
     "theta0",
 ];
 static BODY_NAMES: [&str; 3] = ["crank", "coupler", "rocker"];
+static FORCE_NAMES: [&str; 0] = [];
 /// What a new parameter set is checked with.
 pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
     names: &PARAMETERS,
     others: &OTHER_PARAMETERS,
     bodies: &BODY_NAMES,
     mass_properties,
+    forces: &FORCE_NAMES,
+    force_constants,
 };
 /// Each body's mass and principal inertias at the run-time parameters `p`.
 pub fn mass_properties(p: &[f64], out: &mut [f64]) {
@@ -3615,6 +3618,12 @@ fn mass_properties_part_0(p: &[f64; 1], out: &mut [f64; 12]) {
     out[10] = 0.0029999999999999996;
     out[11] = 0.0029999999999999996;
 }
+/// Each force's stiffness and damping at the run-time parameters `p`.
+pub fn force_constants(p: &[f64], out: &mut [f64]) {
+    let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
+    let _: &mut [f64; 0] = out.try_into().expect("out must have 0 entries");
+    let _ = p;
+}
 /// One set of run-time parameter values and the values `setup` computed from it.
 #[derive(Debug, Clone)]
 pub struct Parameters {
@@ -3635,8 +3644,8 @@ impl Parameters {
     pub fn set(&mut self, set: &[(&str, f64)]) -> Result<(), ParameterError> {
         let mut p = self.p;
         RUN_TIME.assign(&mut p, set)?;
-        let mut props = [0.0; 12];
-        RUN_TIME.check(&p, set, &mut props)?;
+        let (mut props, mut constants) = ([0.0; 12], [0.0; 0]);
+        RUN_TIME.check(&p, set, &mut props, &mut constants)?;
         self.p = p;
         setup(&self.p, &mut self.k);
         Ok(())

@@ -5323,12 +5323,15 @@ pub static PARAMETERS: [&str; 2] = ["i_axis", "m"];
 pub static PARAMETER_VALUES: [f64; 2] = [0.0001f64, 1f64];
 static OTHER_PARAMETERS: [&str; 4] = ["i_cross", "l", "quarter", "w0"];
 static BODY_NAMES: [&str; 5] = ["crank0", "crank1", "crank2", "coupler1", "coupler2"];
+static FORCE_NAMES: [&str; 0] = [];
 /// What a new parameter set is checked with.
 pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
     names: &PARAMETERS,
     others: &OTHER_PARAMETERS,
     bodies: &BODY_NAMES,
     mass_properties,
+    forces: &FORCE_NAMES,
+    force_constants,
 };
 /// Each body's mass and principal inertias at the run-time parameters `p`.
 pub fn mass_properties(p: &[f64], out: &mut [f64]) {
@@ -5360,6 +5363,12 @@ fn mass_properties_part_0(p: &[f64; 2], out: &mut [f64; 20]) {
     out[18] = x2002;
     out[19] = x2002;
 }
+/// Each force's stiffness and damping at the run-time parameters `p`.
+pub fn force_constants(p: &[f64], out: &mut [f64]) {
+    let p: &[f64; 2] = p.try_into().expect("p must have 2 entries");
+    let _: &mut [f64; 0] = out.try_into().expect("out must have 0 entries");
+    let _ = p;
+}
 /// One set of run-time parameter values and the values `setup` computed from it.
 #[derive(Debug, Clone)]
 pub struct Parameters {
@@ -5380,8 +5389,8 @@ impl Parameters {
     pub fn set(&mut self, set: &[(&str, f64)]) -> Result<(), ParameterError> {
         let mut p = self.p;
         RUN_TIME.assign(&mut p, set)?;
-        let mut props = [0.0; 20];
-        RUN_TIME.check(&p, set, &mut props)?;
+        let (mut props, mut constants) = ([0.0; 20], [0.0; 0]);
+        RUN_TIME.check(&p, set, &mut props, &mut constants)?;
         self.p = p;
         setup(&self.p, &mut self.k);
         Ok(())

@@ -325,12 +325,15 @@ pub static PARAMETERS: [&str; 1] = ["m"];
 pub static PARAMETER_VALUES: [f64; 1] = [1f64];
 static OTHER_PARAMETERS: [&str; 2] = ["ball", "l"];
 static BODY_NAMES: [&str; 1] = ["p1"];
+static FORCE_NAMES: [&str; 0] = [];
 /// What a new parameter set is checked with.
 pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
     names: &PARAMETERS,
     others: &OTHER_PARAMETERS,
     bodies: &BODY_NAMES,
     mass_properties,
+    forces: &FORCE_NAMES,
+    force_constants,
 };
 /// Each body's mass and principal inertias at the run-time parameters `p`.
 pub fn mass_properties(p: &[f64], out: &mut [f64]) {
@@ -347,6 +350,12 @@ fn mass_properties_part_0(p: &[f64; 1], out: &mut [f64; 4]) {
     out[1] = x86;
     out[2] = x86;
     out[3] = x86;
+}
+/// Each force's stiffness and damping at the run-time parameters `p`.
+pub fn force_constants(p: &[f64], out: &mut [f64]) {
+    let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
+    let _: &mut [f64; 0] = out.try_into().expect("out must have 0 entries");
+    let _ = p;
 }
 /// One set of run-time parameter values and the values `setup` computed from it.
 #[derive(Debug, Clone)]
@@ -368,8 +377,8 @@ impl Parameters {
     pub fn set(&mut self, set: &[(&str, f64)]) -> Result<(), ParameterError> {
         let mut p = self.p;
         RUN_TIME.assign(&mut p, set)?;
-        let mut props = [0.0; 4];
-        RUN_TIME.check(&p, set, &mut props)?;
+        let (mut props, mut constants) = ([0.0; 4], [0.0; 0]);
+        RUN_TIME.check(&p, set, &mut props, &mut constants)?;
         self.p = p;
         setup(&self.p, &mut self.k);
         Ok(())

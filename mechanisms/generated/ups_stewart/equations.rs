@@ -23787,12 +23787,15 @@ static BODY_NAMES: [&str; 13] = [
     "lower5",
     "lower6",
 ];
+static FORCE_NAMES: [&str; 0] = [];
 /// What a new parameter set is checked with.
 pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
     names: &PARAMETERS,
     others: &OTHER_PARAMETERS,
     bodies: &BODY_NAMES,
     mass_properties,
+    forces: &FORCE_NAMES,
+    force_constants,
 };
 /// Each body's mass and principal inertias at the run-time parameters `p`.
 pub fn mass_properties(p: &[f64], out: &mut [f64]) {
@@ -23872,6 +23875,12 @@ fn mass_properties_part_0(p: &[f64; 5], out: &mut [f64; 52]) {
     out[50] = x10006;
     out[51] = x10003;
 }
+/// Each force's stiffness and damping at the run-time parameters `p`.
+pub fn force_constants(p: &[f64], out: &mut [f64]) {
+    let p: &[f64; 5] = p.try_into().expect("p must have 5 entries");
+    let _: &mut [f64; 0] = out.try_into().expect("out must have 0 entries");
+    let _ = p;
+}
 /// One set of run-time parameter values and the values `setup` computed from it.
 #[derive(Debug, Clone)]
 pub struct Parameters {
@@ -23892,8 +23901,8 @@ impl Parameters {
     pub fn set(&mut self, set: &[(&str, f64)]) -> Result<(), ParameterError> {
         let mut p = self.p;
         RUN_TIME.assign(&mut p, set)?;
-        let mut props = [0.0; 52];
-        RUN_TIME.check(&p, set, &mut props)?;
+        let (mut props, mut constants) = ([0.0; 52], [0.0; 0]);
+        RUN_TIME.check(&p, set, &mut props, &mut constants)?;
         self.p = p;
         setup(&self.p, &mut self.k);
         Ok(())
