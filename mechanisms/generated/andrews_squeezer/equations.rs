@@ -9136,7 +9136,8 @@ fn setup_part_0(p: &[f64; 15], k: &mut [f64; 30]) {
     k[29] = x6608;
 }
 /// The parameters the generated code takes at run time: the file's `[parameters]`
-/// entries that reach only masses and inertias (the others are set on the file).
+/// entries that reach only masses, inertias and springs' constants (the others are set on
+/// the file).
 pub static PARAMETERS: [&str; 15] = [
     "c0",
     "i1",

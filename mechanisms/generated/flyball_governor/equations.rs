@@ -4072,7 +4072,8 @@ fn setup_part_0(p: &[f64; 3], k: &mut [f64; 8]) {
     k[7] = x2606;
 }
 /// The parameters the generated code takes at run time: the file's `[parameters]`
-/// entries that reach only masses and inertias (the others are set on the file).
+/// entries that reach only masses, inertias and springs' constants (the others are set on
+/// the file).
 pub static PARAMETERS: [&str; 3] = ["c", "cube", "k"];
 /// Their values in the file.
 pub static PARAMETER_VALUES: [f64; 3] = [40000f64, 0.1f64, 800000f64];

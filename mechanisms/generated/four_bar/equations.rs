@@ -3568,7 +3568,8 @@ fn setup_part_0(p: &[f64; 1], k: &mut [f64; 2]) {
     k[1] = x1830;
 }
 /// The parameters the generated code takes at run time: the file's `[parameters]`
-/// entries that reach only masses and inertias (the others are set on the file).
+/// entries that reach only masses, inertias and springs' constants (the others are set on
+/// the file).
 pub static PARAMETERS: [&str; 1] = ["rod"];
 /// Their values in the file.
 pub static PARAMETER_VALUES: [f64; 1] = [0.0001f64];

@@ -5317,7 +5317,8 @@ fn setup_part_0(p: &[f64; 2], k: &mut [f64; 6]) {
     k[5] = x2127;
 }
 /// The parameters the generated code takes at run time: the file's `[parameters]`
-/// entries that reach only masses and inertias (the others are set on the file).
+/// entries that reach only masses, inertias and springs' constants (the others are set on
+/// the file).
 pub static PARAMETERS: [&str; 2] = ["i_axis", "m"];
 /// Their values in the file.
 pub static PARAMETER_VALUES: [f64; 2] = [0.0001f64, 1f64];

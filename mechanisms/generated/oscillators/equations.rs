@@ -827,7 +827,8 @@ fn setup_part_0(p: &[f64; 6], k: &mut [f64; 10]) {
     k[9] = x920;
 }
 /// The parameters the generated code takes at run time: the file's `[parameters]`
-/// entries that reach only masses and inertias (the others are set on the file).
+/// entries that reach only masses, inertias and springs' constants (the others are set on
+/// the file).
 pub static PARAMETERS: [&str; 6] = ["c", "ct", "j", "k", "kt", "m"];
 /// Their values in the file.
 pub static PARAMETER_VALUES: [f64; 6] = [0.8f64, 0.1f64, 0.2f64, 50f64, 2f64, 2f64];

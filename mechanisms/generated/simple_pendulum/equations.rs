@@ -319,7 +319,8 @@ fn setup_part_0(p: &[f64; 1], k: &mut [f64; 5]) {
     k[4] = x156;
 }
 /// The parameters the generated code takes at run time: the file's `[parameters]`
-/// entries that reach only masses and inertias (the others are set on the file).
+/// entries that reach only masses, inertias and springs' constants (the others are set on
+/// the file).
 pub static PARAMETERS: [&str; 1] = ["m"];
 /// Their values in the file.
 pub static PARAMETER_VALUES: [f64; 1] = [1f64];

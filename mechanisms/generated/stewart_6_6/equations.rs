@@ -9928,7 +9928,8 @@ fn setup_part_0(p: &[f64; 6], k: &mut [f64; 18]) {
     k[17] = x6553;
 }
 /// The parameters the generated code takes at run time: the file's `[parameters]`
-/// entries that reach only masses and inertias (the others are set on the file).
+/// entries that reach only masses, inertias and springs' constants (the others are set on
+/// the file).
 pub static PARAMETERS: [&str; 6] = [
     "l_part",
     "m_cyl",

@@ -23722,7 +23722,8 @@ fn setup_part_0(p: &[f64; 5], k: &mut [f64; 12]) {
     k[11] = x13069;
 }
 /// The parameters the generated code takes at run time: the file's `[parameters]`
-/// entries that reach only masses and inertias (the others are set on the file).
+/// entries that reach only masses, inertias and springs' constants (the others are set on
+/// the file).
 pub static PARAMETERS: [&str; 5] = ["l_part", "m_cyl", "m_pis", "r_cyl", "r_pis"];
 /// Their values in the file.
 pub static PARAMETER_VALUES: [f64; 5] = [0.25f64, 0.3f64, 0.2f64, 0.015f64, 0.01f64];
