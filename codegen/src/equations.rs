@@ -186,6 +186,13 @@ struct MassProps {
 
 impl MassProps {
     fn new(a: &mut Arena, model: &Model, parametric: bool) -> Self {
+        if parametric {
+            // Every run-time parameter is a variable of the arena, read or not, so that the
+            // generated code's `p` has one entry per name.
+            for i in 0..model.run_time_parameters().len() {
+                a.var(Var::P(i as u32));
+            }
+        }
         let value = |a: &mut Arena, src: &Option<String>, v: f64| match src {
             Some(e) if parametric => parameter_expr(a, model, e).unwrap_or_else(|| a.constant(v)),
             _ => a.constant(v),

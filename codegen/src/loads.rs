@@ -109,7 +109,7 @@ pub fn build(
             acc.potential.push(v);
         }
     }
-    for (f, &[k, c]) in model.forces.iter().zip(constants) {
+    for (f, &[stiffness, damping]) in model.forces.iter().zip(constants) {
         match &f.kind {
             ForceKind::Spring {
                 f1,
@@ -125,7 +125,7 @@ pub fn build(
                 let len_dot = acc.rate(&[len])[0];
                 let l0 = acc.a.constant(*free_length);
                 let stretch = acc.a.sub(len, l0);
-                acc.spring_damper(len, stretch, len_dot, [k, c, *actuator]);
+                acc.spring_damper(len, stretch, len_dot, [stiffness, damping, *actuator]);
             }
             ForceKind::Torsion {
                 joint,
@@ -154,7 +154,7 @@ pub fn build(
                 };
                 let delta = a.atan2(y, x);
                 let delta_dot = acc.rate(&[delta])[0];
-                acc.spring_damper(delta, delta, delta_dot, [k, c, *torque]);
+                acc.spring_damper(delta, delta, delta_dot, [stiffness, damping, *torque]);
             }
             ForceKind::Force {
                 at,
