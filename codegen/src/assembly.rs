@@ -244,7 +244,7 @@ fn non_finite(
 /// Emission writes every constant of the equations as a Rust literal, and a literal cannot be
 /// infinite or NaN: such a constant comes from numbers whose products overflow f64 (a spring
 /// of length 1e300 has ½kℓ² = ∞), and is reported here instead of failing in emission.
-fn non_finite_constants(sys: &System, file: &str) -> Result<(), Errors> {
+pub fn non_finite_constants(sys: &System, file: &str) -> Result<(), Errors> {
     let mut roots: Vec<Id> = [sys.phi.as_slice(), &sys.phi_t, &sys.gamma].concat();
     roots.extend(sys.phi_q.iter().map(|e| e.2));
     roots.extend([sys.potential, sys.power_nc]);

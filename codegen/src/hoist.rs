@@ -1,4 +1,4 @@
-//! Hoisting of what depends on the run-time parameters alone (docs/design.md, decision 30):
+//! Hoisting of what depends on the run-time parameters alone (docs/design.md, decision 35):
 //! every largest subexpression of the per-step functions whose only variables are
 //! parameters (`Var::P`) is replaced by a hoisted value `Var::K(j)`; the generated `setup`
 //! computes those values once per parameter set, and the per-step functions read them.

@@ -89,15 +89,10 @@ pub fn load_with(
     stale: bool,
 ) -> Result<Loaded, Errors> {
     let model = model::load_with(source, text, parameters)?;
-    // The compiled code's equations (masses, inertias, springs' constants in the run-time parameters,
-    // hoisted), with this file's values bound: interpreted and compiled runs agree bit for bit.
+    // The compiled code's equations (run-time parameters as variables, hoisted), with this
+    // file's values bound: interpreted and compiled runs agree bit for bit.
     let mut system = equations::build_parametric(&model);
-    let p: Vec<f64> = model
-        .run_time_parameters()
-        .iter()
-        .map(|p| p.value)
-        .collect();
-    crate::hoist::bound(&mut system, &p);
+    crate::hoist::bound(&mut system, &model.run_time_values());
     let assembly = crate::assembly::assemble(&model, &system, source).map_err(|mut e| {
         // A pose that no longer assembles: say which of the values set it follows from.
         let set: Vec<_> = parameters

@@ -50,6 +50,11 @@ pub struct Generated {
 pub fn generate(source: &str, text: &str) -> Result<Generated, Errors> {
     let model = model::load(source, text)?;
     let system = equations::build_parametric(&model);
+    // What the run-time parameters make of the equations at the file's values must be finite,
+    // as every literal must (the interpreter folds the same values in, and is checked alike).
+    let mut bound = system.clone();
+    hoist::bound(&mut bound, &model.run_time_values());
+    assembly::non_finite_constants(&bound, source)?;
     let assembly = assembly::assemble(&model, &system, source)?;
     Ok(Generated {
         code: rust::module(

@@ -380,6 +380,11 @@ impl Model {
         self.parameters.iter().filter(|p| p.run_time).collect()
     }
 
+    /// The run-time parameters' values, in their order: `p` at this model's values.
+    pub fn run_time_values(&self) -> Vec<f64> {
+        self.run_time_parameters().iter().map(|p| p.value).collect()
+    }
+
     pub fn body_name(&self, b: BodyRef) -> &str {
         b.map_or("ground", |i| self.bodies[i].name.as_str())
     }

@@ -606,12 +606,7 @@ fn reduced_module(
     let mut r = red.system.clone();
     let hoisted = crate::hoist::system(&mut r);
     let r = &r;
-    let p_values: Vec<f64> = model
-        .run_time_parameters()
-        .iter()
-        .map(|p| p.value)
-        .collect();
-    let k_items = hoisted_items(r, &hoisted, &p_values);
+    let k_items = hoisted_items(r, &hoisted, &model.run_time_values());
     let kp = k_param(r);
     let ka = k_arg(r, &quote!(k));
     let (n, m) = (r.n_coords, r.n_constraints);
@@ -805,8 +800,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
     let mut sys = sys.clone();
     let hoisted = crate::hoist::system(&mut sys);
     let sys = &sys;
-    let run_time = model.run_time_parameters();
-    let p_values: Vec<f64> = run_time.iter().map(|p| p.value).collect();
+    let p_values = model.run_time_values();
     let n = sys.n_coords;
     let m = sys.n_constraints;
     let (pq_rows, pq_cols) = pattern(&sys.phi_q);

@@ -133,10 +133,7 @@ pub fn with_compiled_at<R>(
     let Some((rt, file, hash)) = run_time_route(entry, parameters) else {
         return Ok(None);
     };
-    let set: Vec<(&'static str, f64)> = parameters
-        .iter()
-        .filter_map(|(k, v)| Some((*rt.parameters.names.iter().find(|n| **n == k)?, *v)))
-        .collect();
+    let set = static_names(rt, parameters);
     let built =
         (rt.build)(&set).map_err(|e| ScenarioError::Options(format!("`{}`: {e}", entry.name)))?;
     let formulations: Vec<(Formulation, &(dyn Mechanism + Sync))> =
@@ -187,10 +184,19 @@ fn run_time_route(
     Some((rt, file, hash))
 }
 
+/// `parameters` named by the compiled code's own strings (every name is one of them: see
+/// [`run_time_route`]).
+fn static_names(rt: &RunTime, parameters: &Overrides) -> Vec<(&'static str, f64)> {
+    parameters
+        .iter()
+        .filter_map(|(k, v)| Some((*rt.parameters.names.iter().find(|n| **n == k)?, *v)))
+        .collect()
+}
+
 /// `entry`'s compiled code at `parameters` (the file's values for the others), when its file
 /// is unchanged and every one of them is a run-time parameter of that code (they reach only
-/// masses, inertias and springs' constants: decision 35); `None` otherwise. Lives as long as the program, as
-/// interpreted entries do.
+/// masses, inertias and springs' constants: decision 35); `None` otherwise. Lives as long as
+/// the program, as interpreted entries do.
 pub fn compiled_at(
     entry: &Entry,
     parameters: &Overrides,
@@ -198,16 +204,12 @@ pub fn compiled_at(
     let Some((rt, file, hash)) = run_time_route(entry, parameters) else {
         return Ok(None);
     };
-    let set: Vec<(&str, f64)> = parameters.iter().map(|(k, v)| (k.as_str(), *v)).collect();
+    let set = static_names(rt, parameters);
     let built =
         (rt.build)(&set).map_err(|e| ScenarioError::Options(format!("`{}`: {e}", entry.name)))?;
     let formulations: Vec<_> = built
         .into_iter()
         .map(|(f, m)| (f, &*Box::leak(m)))
-        .collect();
-    let parameters: Vec<(&'static str, f64)> = parameters
-        .iter()
-        .map(|(k, v)| (&*Box::leak(k.clone().into_boxed_str()), *v))
         .collect();
     Ok(Some(Box::leak(Box::new(Entry {
         name: entry.name,
@@ -218,7 +220,7 @@ pub fn compiled_at(
         origin: Origin::Compiled {
             file,
             hash,
-            parameters: Box::leak(parameters.into_boxed_slice()),
+            parameters: Box::leak(set.into_boxed_slice()),
         },
         run_time: entry.run_time,
     }))))
