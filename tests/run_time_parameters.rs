@@ -254,3 +254,43 @@ fn a_payload_changes_the_legs_forces_by_its_weight_and_inertia() {
         );
     }
 }
+
+/// A mechanism on the compiled route keeps its reduced model (the planar four-bar, the
+/// oscillators' substituted one) at the values set: a run on it records the full model's run
+/// at the same values, to the integrator's agreement (as `tests/reduced_stewart.rs` pins for
+/// the file's values), and the values set take effect on it.
+#[test]
+fn the_reduced_models_take_the_run_time_parameters_too() {
+    use symbody::generic::{self, Options};
+    for (name, set) in [
+        (
+            "oscillators",
+            owned(&[("m", 3.0), ("k", 80.0), ("kt", 3.0)]),
+        ),
+        ("four_bar", owned(&[("rod", 2e-4)])),
+    ] {
+        let entry = files::with_parameters(&REGISTRY, name, &set).unwrap();
+        assert!(entry.reduced.is_some(), "{name}");
+        let opts = Options {
+            t_end: Some(0.5),
+            ..Options::default()
+        };
+        let full = generic::run(entry, &opts).unwrap();
+        let reduce = Options {
+            reduce: true,
+            ..opts
+        };
+        let red = generic::run(entry, &reduce).unwrap();
+        assert!(red.reduced.is_some(), "{name}: ran reduced");
+        let flat = |r: &generic::Recording| r.q.iter().flatten().copied().collect::<Vec<f64>>();
+        let d = max_rel(&flat(&red), &flat(&full));
+        assert!(d <= 1e-8, "{name}: {d:e}");
+        if name == "oscillators" {
+            let base = generic::run(REGISTRY.find(name).unwrap(), &reduce).unwrap();
+            assert!(
+                max_rel(&flat(&red), &flat(&base)) > 1e-3,
+                "{name}: values took effect"
+            );
+        }
+    }
+}

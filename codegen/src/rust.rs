@@ -225,9 +225,35 @@ fn hoisted_items(sys: &System, hoisted: &[Id], p_values: &[f64]) -> TokenStream 
     }
 }
 
+/// `<Type>At` of the reduced model (where the mechanism has run-time parameters): the hoisted
+/// values of the reduced system, computed from the full model's `Parameters`.
+fn reduced_at_type(model: &Model, r: &System, type_name: &Ident, modname: &Ident) -> TokenStream {
+    if model.run_time_parameters().is_empty() || parameter_lengths(r).1 == 0 {
+        return quote!();
+    }
+    let at = ident(&format!("{type_name}At"));
+    let at_impl = mechanism_impl(&at, modname, &k_arg(r, &quote!(&self.k)));
+    quote! {
+        /// The reduced model at run-time parameter values.
+        #[derive(Debug, Clone)]
+        pub struct #at {
+            k: [f64; N_K],
+        }
+        impl #at {
+            /// At the parameter values of `p` (checked when they were set).
+            pub fn new(p: &Parameters) -> Self {
+                let mut k = [0.0; N_K];
+                setup(p.values(), &mut k);
+                #at { k }
+            }
+        }
+        #at_impl
+    }
+}
+
 /// The run-time parameters of the full model: names, the file's values, the checks of a
 /// new set, and `Parameters` (one set and its hoisted values) that the `<Type>At` types hold.
-fn parameters_items(model: &Model, sys: &System) -> TokenStream {
+fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> TokenStream {
     let (np, nk) = parameter_lengths(sys);
     if np == 0 || nk == 0 {
         return quote!();
@@ -269,6 +295,28 @@ fn parameters_items(model: &Model, sys: &System) -> TokenStream {
         let at = ident(&format!("{type_name}At"));
         quote!((#form, Box::new(#at(p.clone())) as Box<dyn Mechanism + Sync>))
     });
+    let (reduced_fn, build_reduced) = match reduced.map(parameter_lengths) {
+        Some((_, nk)) if nk > 0 => {
+            let forms = model.formulations.iter().map(|&f| {
+                let (_, type_name, form) = formulation_names(f);
+                let at = ident(&format!("{type_name}At"));
+                quote!((#form, Box::new(reduced::#at::new(&p)) as Box<dyn Mechanism + Sync>))
+            });
+            (
+                quote! {
+                    fn at_parameters_reduced(
+                        set: &[(&str, f64)],
+                    ) -> Result<symbody_runtime::registry::Built, ParameterError> {
+                        let mut p = Parameters::file_values();
+                        p.set(set)?;
+                        Ok(vec![#(#forms),*])
+                    }
+                },
+                quote!(Some(at_parameters_reduced)),
+            )
+        }
+        _ => (quote!(), quote!(None)),
+    };
     let np = Literal::usize_unsuffixed(np);
     quote! {
         /// The parameters the generated code takes at run time: the file's `[parameters]`
@@ -319,17 +367,21 @@ fn parameters_items(model: &Model, sys: &System) -> TokenStream {
                 &self.p
             }
         }
-        #[allow(clippy::type_complexity)]
         fn at_parameters(
             set: &[(&str, f64)],
-        ) -> Result<Vec<(Formulation, Box<dyn Mechanism + Sync>)>, ParameterError> {
+        ) -> Result<symbody_runtime::registry::Built, ParameterError> {
             let mut p = Parameters::file_values();
             p.set(set)?;
             Ok(vec![#(#at_forms),*])
         }
+        #reduced_fn
         /// This mechanism at other values of its run-time parameters, for the registries.
         pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime =
-            symbody_runtime::registry::RunTime { parameters: &RUN_TIME, build: at_parameters };
+            symbody_runtime::registry::RunTime {
+                parameters: &RUN_TIME,
+                build: at_parameters,
+                build_reduced: #build_reduced,
+            };
     }
 }
 
@@ -602,11 +654,9 @@ fn reduced_module(
     sys: &System,
     asm: &Assembly,
     red: &crate::reduce::Reduced,
+    (r, hoisted): &(System, Vec<Id>),
 ) -> TokenStream {
-    let mut r = red.system.clone();
-    let hoisted = crate::hoist::system(&mut r);
-    let r = &r;
-    let k_items = hoisted_items(r, &hoisted, &model.run_time_values());
+    let k_items = hoisted_items(r, hoisted, &model.run_time_values());
     let kp = k_param(r);
     let ka = k_arg(r, &quote!(k));
     let (n, m) = (r.n_coords, r.n_constraints);
@@ -683,6 +733,7 @@ fn reduced_module(
             quote!(None),
         ));
         forms.push(formulation_types(r, &type_name, &modname, &type_doc, false));
+        forms.push(reduced_at_type(model, r, &type_name, &modname));
     }
     quote! {
         /// The system after substituting rows `a·qᵢ + b·qⱼ + g(t) = 0` away (docs/design.md,
@@ -901,7 +952,17 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
         }
     });
     items.push(hoisted_items(sys, &hoisted, &p_values));
-    items.push(parameters_items(model, sys));
+    // The reduced system over its own hoisted values.
+    let reduced_hoisted = reduced.as_ref().map(|red| {
+        let mut r = red.system.clone();
+        let hoisted = crate::hoist::system(&mut r);
+        (r, hoisted)
+    });
+    items.push(parameters_items(
+        model,
+        sys,
+        reduced_hoisted.as_ref().map(|(r, _)| r),
+    ));
 
     let mut impls = Vec::new();
     for dynamics in &sys.dynamics {
@@ -933,8 +994,8 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
             sys, &type_name, &modname, &type_doc, true,
         ));
     }
-    if let Some(red) = &reduced {
-        items.push(reduced_module(model, unhoisted, asm, red));
+    if let (Some(red), Some(h)) = (&reduced, &reduced_hoisted) {
+        items.push(reduced_module(model, unhoisted, asm, red, h));
     }
     let reduction_import = reduced.as_ref().map(|_| quote!(Reduction, Substitution,));
     let parameter_import = match parameter_lengths(sys) {

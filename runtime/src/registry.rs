@@ -29,11 +29,16 @@ pub struct RunTime {
     pub parameters: &'static RunTimeParameters,
     /// Every formulation of the entry, in its order, at the file's values with `set`
     /// applied (checked first: an error changes nothing).
-    #[allow(clippy::type_complexity)]
-    pub build: fn(
-        set: &[(&str, f64)],
-    ) -> Result<Vec<(Formulation, Box<dyn Mechanism + Sync>)>, ParameterError>,
+    pub build: Build,
+    /// The same for the entry's reduced model, where it has one.
+    pub build_reduced: Option<Build>,
 }
+
+/// Builds every formulation at the file's values with `set` applied.
+pub type Build = fn(set: &[(&str, f64)]) -> Result<Built, ParameterError>;
+
+/// Mechanisms built at run-time parameter values, one per formulation.
+pub type Built = Vec<(Formulation, Box<dyn Mechanism + Sync>)>;
 
 /// Where an entry's equations come from.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -10,7 +10,7 @@ use std::collections::HashMap;
 use std::path::Path;
 use std::sync::{Mutex, OnceLock};
 use symbody_codegen::model::Parameter;
-use symbody_runtime::registry::{Formulations, RunTime};
+use symbody_runtime::registry::{Built, Formulations, Reduced, RunTime};
 use symbody_runtime::{source_hash, Entry, Formulation, Mechanism, Origin, Registry};
 
 /// Largest mechanism file read: far above any real one (the 13-body Stewart file is 9 KB),
@@ -134,34 +134,60 @@ pub fn with_compiled_at<R>(
         return Ok(None);
     };
     let set = static_names(rt, parameters);
-    let built =
-        (rt.build)(&set).map_err(|e| ScenarioError::Options(format!("`{}`: {e}", entry.name)))?;
-    let formulations: Vec<(Formulation, &(dyn Mechanism + Sync))> =
-        built.iter().map(|(f, m)| (*f, &**m)).collect();
+    let (built, built_reduced) = build(entry, rt, &set)?;
+    fn refs(
+        b: &[(Formulation, Box<dyn Mechanism + Sync>)],
+    ) -> Vec<(Formulation, &(dyn Mechanism + Sync))> {
+        b.iter().map(|(f, m)| (*f, &**m)).collect()
+    }
+    let (formulations, reduced_formulations) = (refs(&built), built_reduced.as_deref().map(refs));
     // SAFETY: the entry and every reference in it are dropped when `f` returns, before
-    // `built`, `formulations` and `set`; `f` gets the entry by reference only, and the runs
-    // reduce what they record to numbers (the same contract as `interpret::load_scoped`).
-    let (formulations, set): (Formulations, &'static [(&'static str, f64)]) = unsafe {
-        (
-            std::mem::transmute::<&[(Formulation, &(dyn Mechanism + Sync))], Formulations>(
-                &formulations,
-            ),
-            std::mem::transmute::<&[(&'static str, f64)], &'static [(&'static str, f64)]>(&set),
-        )
+    // `built`, `built_reduced`, the lists of references and `set`; `f` gets the entry by
+    // reference only, and the runs reduce what they record to numbers (the same contract as
+    // `interpret::load_scoped`).
+    let forever = |l: &[(Formulation, &(dyn Mechanism + Sync))]| unsafe {
+        std::mem::transmute::<&[(Formulation, &(dyn Mechanism + Sync))], Formulations>(l)
+    };
+    let set_forever = unsafe {
+        std::mem::transmute::<&[(&'static str, f64)], &'static [(&'static str, f64)]>(&set)
     };
     let scoped = Entry {
         name: entry.name,
         t_end: entry.t_end,
-        formulations,
-        reduced: None,
+        formulations: forever(&formulations),
+        reduced: entry.reduced.as_ref().map(|r| Reduced {
+            formulations: reduced_formulations
+                .as_deref()
+                .map_or(r.formulations, forever),
+            reduction: r.reduction,
+        }),
         origin: Origin::Compiled {
             file,
             hash,
-            parameters: set,
+            parameters: set_forever,
         },
         run_time: entry.run_time,
     };
     Ok(Some(f(&scoped)))
+}
+
+/// Every formulation of `entry`'s compiled code at `set`, and of its reduced model where it
+/// has one that takes run-time parameters (a reduced model that reads none of them, as the
+/// planar four-bar's with the inertia about the links' own axes, serves any values as it is).
+fn build(
+    entry: &Entry,
+    rt: &RunTime,
+    set: &[(&'static str, f64)],
+) -> Result<(Built, Option<Built>), ScenarioError> {
+    let refused = |e: symbody_runtime::parameters::ParameterError| {
+        ScenarioError::Options(format!("`{}`: {e}", entry.name))
+    };
+    let full = (rt.build)(set).map_err(refused)?;
+    let reduced = match (&entry.reduced, rt.build_reduced) {
+        (Some(_), Some(b)) => Some(b(set).map_err(refused)?),
+        _ => None,
+    };
+    Ok((full, reduced))
 }
 
 /// The run-time parameters of `entry`'s compiled code, its file and hash, when `parameters`
@@ -205,18 +231,19 @@ pub fn compiled_at(
         return Ok(None);
     };
     let set = static_names(rt, parameters);
-    let built =
-        (rt.build)(&set).map_err(|e| ScenarioError::Options(format!("`{}`: {e}", entry.name)))?;
-    let formulations: Vec<_> = built
-        .into_iter()
-        .map(|(f, m)| (f, &*Box::leak(m)))
-        .collect();
+    let (built, built_reduced) = build(entry, rt, &set)?;
+    let leaked = |b: Built| -> Formulations {
+        let l: Vec<_> = b.into_iter().map(|(f, m)| (f, &*Box::leak(m))).collect();
+        Box::leak(l.into_boxed_slice())
+    };
     Ok(Some(Box::leak(Box::new(Entry {
         name: entry.name,
         t_end: entry.t_end,
-        formulations: Box::leak(formulations.into_boxed_slice()),
-        // The reduced models read the file's values (not generated with run-time types).
-        reduced: None,
+        formulations: leaked(built),
+        reduced: entry.reduced.as_ref().map(|r| Reduced {
+            formulations: built_reduced.map_or(r.formulations, leaked),
+            reduction: r.reduction,
+        }),
         origin: Origin::Compiled {
             file,
             hash,

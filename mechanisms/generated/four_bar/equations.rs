@@ -3656,10 +3656,9 @@ impl Parameters {
         &self.p
     }
 }
-#[allow(clippy::type_complexity)]
 fn at_parameters(
     set: &[(&str, f64)],
-) -> Result<Vec<(Formulation, Box<dyn Mechanism + Sync>)>, ParameterError> {
+) -> Result<symbody_runtime::registry::Built, ParameterError> {
     let mut p = Parameters::file_values();
     p.set(set)?;
     Ok(
@@ -3673,6 +3672,7 @@ fn at_parameters(
 pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime::registry::RunTime {
     parameters: &RUN_TIME,
     build: at_parameters,
+    build_reduced: None,
 };
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
 pub mod exact {

@@ -389,10 +389,9 @@ impl Parameters {
         &self.p
     }
 }
-#[allow(clippy::type_complexity)]
 fn at_parameters(
     set: &[(&str, f64)],
-) -> Result<Vec<(Formulation, Box<dyn Mechanism + Sync>)>, ParameterError> {
+) -> Result<symbody_runtime::registry::Built, ParameterError> {
     let mut p = Parameters::file_values();
     p.set(set)?;
     Ok(
@@ -402,10 +401,23 @@ fn at_parameters(
         ],
     )
 }
+fn at_parameters_reduced(
+    set: &[(&str, f64)],
+) -> Result<symbody_runtime::registry::Built, ParameterError> {
+    let mut p = Parameters::file_values();
+    p.set(set)?;
+    Ok(
+        vec![
+            (Formulation::Exact, Box::new(reduced::ExactAt::new(& p)) as Box < dyn
+            Mechanism + Sync >)
+        ],
+    )
+}
 /// This mechanism at other values of its run-time parameters, for the registries.
 pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime::registry::RunTime {
     parameters: &RUN_TIME,
     build: at_parameters,
+    build_reduced: Some(at_parameters_reduced),
 };
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
 pub mod exact {
@@ -1311,6 +1323,79 @@ pub mod reduced {
         }
         fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
             exact::eval_newton(&K, q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+        }
+        fn eval_kinematics(
+            &self,
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            out: KinematicOutputs<'_>,
+        ) {
+            eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+        }
+    }
+    /// The reduced model at run-time parameter values.
+    #[derive(Debug, Clone)]
+    pub struct ExactAt {
+        k: [f64; N_K],
+    }
+    impl ExactAt {
+        /// At the parameter values of `p` (checked when they were set).
+        pub fn new(p: &Parameters) -> Self {
+            let mut k = [0.0; N_K];
+            setup(p.values(), &mut k);
+            ExactAt { k }
+        }
+    }
+    impl Mechanism for ExactAt {
+        fn info(&self) -> &'static MechanismInfo {
+            &exact::INFO
+        }
+        fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
+            phi(q, t, out)
+        }
+        fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
+            phi_q(q, t, out)
+        }
+        fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
+            phi_t(q, t, out)
+        }
+        fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+            gamma(q, qd, t, out)
+        }
+        fn mass(&self, q: &[f64], out: &mut [f64]) {
+            exact::mass(&self.k, q, out)
+        }
+        fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+            exact::force(&self.k, q, qd, t, out)
+        }
+        fn force_jacobian(
+            &self,
+            q: &[f64],
+            qd: &[f64],
+            t: f64,
+            dq: &mut [f64],
+            dqd: &mut [f64],
+        ) {
+            exact::force_jacobian(&self.k, q, qd, t, dq, dqd)
+        }
+        fn potential(&self, q: &[f64]) -> f64 {
+            potential(&self.k, q)
+        }
+        fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
+            power_nc(&self.k, q, qd, t)
+        }
+        fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+            exact::eval_newton(
+                &self.k,
+                q,
+                qd,
+                t,
+                out.phi,
+                out.phi_q,
+                out.mass,
+                out.force,
+            )
         }
         fn eval_kinematics(
             &self,
