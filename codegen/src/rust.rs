@@ -307,8 +307,7 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
                     fn at_parameters_reduced(
                         set: &[(&str, f64)],
                     ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-                        let mut p = Parameters::file_values();
-                        p.set(set)?;
+                        let p = Parameters::at(set)?;
                         Ok(vec![#(#forms),*])
                     }
                 },
@@ -350,6 +349,12 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
             pub fn file_values() -> Self {
                 Parameters { p: PARAMETER_VALUES, k: K }
             }
+            /// The file's values with `set` applied ([`Parameters::set`]).
+            pub fn at(set: &[(&str, f64)]) -> Result<Self, ParameterError> {
+                let mut p = Self::file_values();
+                p.set(set)?;
+                Ok(p)
+            }
             /// Sets parameters by name. Checked first (known names, finite values, positive
             /// masses, inertias of a rigid body): a refused set changes nothing. Allocates
             /// nothing unless it is refused.
@@ -370,8 +375,7 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
         fn at_parameters(
             set: &[(&str, f64)],
         ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-            let mut p = Parameters::file_values();
-            p.set(set)?;
+            let p = Parameters::at(set)?;
             Ok(vec![#(#at_forms),*])
         }
         #reduced_fn
@@ -540,30 +544,26 @@ fn formulation_types(
     doc: &str,
     with_at: bool,
 ) -> TokenStream {
-    let unit = mechanism_impl(type_name, modname, &k_arg(sys, &quote!(&K)));
+    let unit_impl = mechanism_impl(type_name, modname, &k_arg(sys, &quote!(&K)));
+    let unit = quote! {
+        #[doc = #doc]
+        #[derive(Debug, Clone, Copy, Default)]
+        pub struct #type_name;
+        #unit_impl
+    };
     if !with_at || parameter_lengths(sys).1 == 0 {
-        return quote! {
-            #[doc = #doc]
-            #[derive(Debug, Clone, Copy, Default)]
-            pub struct #type_name;
-            #unit
-        };
+        return unit;
     }
     let at = ident(&format!("{type_name}At"));
     let at_impl = mechanism_impl(&at, modname, &k_arg(sys, &quote!(&self.0.k)));
     let at_doc = format!("{doc} At run-time parameter values (`{type_name}::with_parameters`).");
     quote! {
-        #[doc = #doc]
-        #[derive(Debug, Clone, Copy, Default)]
-        pub struct #type_name;
         #unit
         impl #type_name {
             /// This formulation with some run-time parameters (`PARAMETERS`) set, the others
             /// at the file's values; a name or value that is refused changes nothing.
             pub fn with_parameters(set: &[(&str, f64)]) -> Result<#at, ParameterError> {
-                let mut p = Parameters::file_values();
-                p.set(set)?;
-                Ok(#at(p))
+                Parameters::at(set).map(#at)
             }
         }
         #[doc = #at_doc]

@@ -2318,6 +2318,12 @@ impl Parameters {
             k: K,
         }
     }
+    /// The file's values with `set` applied ([`Parameters::set`]).
+    pub fn at(set: &[(&str, f64)]) -> Result<Self, ParameterError> {
+        let mut p = Self::file_values();
+        p.set(set)?;
+        Ok(p)
+    }
     /// Sets parameters by name. Checked first (known names, finite values, positive
     /// masses, inertias of a rigid body): a refused set changes nothing. Allocates
     /// nothing unless it is refused.
@@ -2338,8 +2344,7 @@ impl Parameters {
 fn at_parameters(
     set: &[(&str, f64)],
 ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-    let mut p = Parameters::file_values();
-    p.set(set)?;
+    let p = Parameters::at(set)?;
     Ok(
         vec![
             (Formulation::Exact, Box::new(ExactAt(p.clone())) as Box < dyn Mechanism +
@@ -2350,8 +2355,7 @@ fn at_parameters(
 fn at_parameters_reduced(
     set: &[(&str, f64)],
 ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-    let mut p = Parameters::file_values();
-    p.set(set)?;
+    let p = Parameters::at(set)?;
     Ok(
         vec![
             (Formulation::Exact, Box::new(reduced::ExactAt::new(& p)) as Box < dyn
@@ -9465,9 +9469,7 @@ impl Exact {
     /// This formulation with some run-time parameters (`PARAMETERS`) set, the others
     /// at the file's values; a name or value that is refused changes nothing.
     pub fn with_parameters(set: &[(&str, f64)]) -> Result<ExactAt, ParameterError> {
-        let mut p = Parameters::file_values();
-        p.set(set)?;
-        Ok(ExactAt(p))
+        Parameters::at(set).map(ExactAt)
     }
 }
 /// `slider_crank` with the `exact` formulation. At run-time parameter values (`Exact::with_parameters`).

@@ -10097,6 +10097,12 @@ impl Parameters {
             k: K,
         }
     }
+    /// The file's values with `set` applied ([`Parameters::set`]).
+    pub fn at(set: &[(&str, f64)]) -> Result<Self, ParameterError> {
+        let mut p = Self::file_values();
+        p.set(set)?;
+        Ok(p)
+    }
     /// Sets parameters by name. Checked first (known names, finite values, positive
     /// masses, inertias of a rigid body): a refused set changes nothing. Allocates
     /// nothing unless it is refused.
@@ -10117,8 +10123,7 @@ impl Parameters {
 fn at_parameters(
     set: &[(&str, f64)],
 ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-    let mut p = Parameters::file_values();
-    p.set(set)?;
+    let p = Parameters::at(set)?;
     Ok(
         vec![
             (Formulation::Exact, Box::new(ExactAt(p.clone())) as Box < dyn Mechanism +
@@ -10130,8 +10135,7 @@ fn at_parameters(
 fn at_parameters_reduced(
     set: &[(&str, f64)],
 ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-    let mut p = Parameters::file_values();
-    p.set(set)?;
+    let p = Parameters::at(set)?;
     Ok(
         vec![
             (Formulation::Exact, Box::new(reduced::ExactAt::new(& p)) as Box < dyn
@@ -32994,9 +32998,7 @@ impl Exact {
     /// This formulation with some run-time parameters (`PARAMETERS`) set, the others
     /// at the file's values; a name or value that is refused changes nothing.
     pub fn with_parameters(set: &[(&str, f64)]) -> Result<ExactAt, ParameterError> {
-        let mut p = Parameters::file_values();
-        p.set(set)?;
-        Ok(ExactAt(p))
+        Parameters::at(set).map(ExactAt)
     }
 }
 /// `stewart_6_6` with the `exact` formulation. At run-time parameter values (`Exact::with_parameters`).
@@ -33099,9 +33101,7 @@ impl Paper {
     /// This formulation with some run-time parameters (`PARAMETERS`) set, the others
     /// at the file's values; a name or value that is refused changes nothing.
     pub fn with_parameters(set: &[(&str, f64)]) -> Result<PaperAt, ParameterError> {
-        let mut p = Parameters::file_values();
-        p.set(set)?;
-        Ok(PaperAt(p))
+        Parameters::at(set).map(PaperAt)
     }
 }
 /// `stewart_6_6` with the `paper` formulation. At run-time parameter values (`Paper::with_parameters`).
