@@ -14,7 +14,7 @@ const M: usize = 72;
 
 fn phi_at(q: &[f64], t: f64) -> Vec<f64> {
     let mut out = vec![0.0; M];
-    st::phi(q, t, &mut out);
+    st::phi(&st::K, q, t, &mut out);
     out
 }
 
@@ -27,7 +27,7 @@ fn sizes_pattern_and_rank() {
     assert_eq!(info.bodies.len(), 13);
     assert_eq!(info.joints.len(), 24, "18 joints and 6 drivers");
     let mut jac = vec![0.0; 390];
-    st::phi_q(info.q0, 0.0, &mut jac);
+    st::phi_q(&st::K, info.q0, 0.0, &mut jac);
     let dense = dense_phi_q(info, &jac);
     let sv = dense.singular_values();
     let (max, min) = (sv.max(), sv.min());
@@ -72,7 +72,7 @@ fn phi_q_matches_central_differences() {
     for _ in 0..25 {
         let (q, _, t) = random_state(&mut rng, info.q0);
         let mut jac = vec![0.0; 390];
-        st::phi_q(&q, t, &mut jac);
+        st::phi_q(&st::K, &q, t, &mut jac);
         let dense = dense_phi_q(info, &jac);
         let h = 1e-6;
         for j in 0..N {
@@ -87,7 +87,7 @@ fn phi_q_matches_central_differences() {
         }
         // Φt likewise.
         let mut pt = vec![0.0; M];
-        st::phi_t(&q, t, &mut pt);
+        st::phi_t(&st::K, &q, t, &mut pt);
         let (fp, fm) = (phi_at(&q, t + h), phi_at(&q, t - h));
         for i in 0..M {
             worst = worst.max(((fp[i] - fm[i]) / (2.0 * h) - pt[i]).abs());
@@ -107,7 +107,7 @@ fn gamma_matches_second_difference_along_the_motion() {
     for _ in 0..25 {
         let (q, qd, t) = random_state(&mut rng, info.q0);
         let mut gamma = vec![0.0; M];
-        st::gamma(&q, &qd, t, &mut gamma);
+        st::gamma(&st::K, &q, &qd, t, &mut gamma);
         let h = 1e-3;
         let at = |s: f64| {
             let p: Vec<f64> = q.iter().zip(&qd).map(|(a, b)| a + s * b).collect();

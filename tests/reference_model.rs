@@ -85,7 +85,7 @@ fn phi_matches_generated() {
     let mut worst = 0.0f64;
     for (s, (q, _, t)) in states().iter().enumerate() {
         r.phi_f64(q, *t, &mut mine);
-        st::phi(q, *t, &mut gen);
+        st::phi(&st::K, q, *t, &mut gen);
         for row in 0..M {
             let e = (mine[row] - gen[row]).abs();
             worst = worst.max(e);
@@ -109,7 +109,7 @@ fn phi_q_matches_generated_and_pattern() {
     // Every pattern entry must be nonzero somewhere: the pattern holds no dead entries.
     let mut ever_nonzero = [false; 390];
     for (s, (q, _, t)) in states().iter().enumerate() {
-        st::phi_q(q, *t, &mut gen);
+        st::phi_q(&st::K, q, *t, &mut gen);
         for (seen, v) in ever_nonzero.iter_mut().zip(&gen) {
             *seen |= *v != 0.0;
         }
@@ -198,7 +198,7 @@ fn gamma_matches_generated() {
     let mut worst = 0.0f64;
     for (s, (q, qd, t)) in states().iter().enumerate() {
         r.gamma(q, qd, *t, &mut mine);
-        st::gamma(q, qd, *t, &mut gen);
+        st::gamma(&st::K, q, qd, *t, &mut gen);
         // Relative to the row's scale; rows whose γ happens to be tiny are measured against
         // the largest |γ| of the state (an absolute floor at that scale).
         let scale = gen.iter().fold(0.0f64, |a, b| a.max(b.abs()));

@@ -122,7 +122,9 @@ fn the_oscillators_with_another_mass_are_the_file_derived_with_it() {
 fn the_file_values_give_the_unit_type_to_the_last_bit() {
     let at = stewart_6_6::Exact::with_parameters(&[]).unwrap();
     assert_eq!(newton(&at), newton(&stewart_6_6::Exact));
-    assert_eq!(at.0.values(), &stewart_6_6::PARAMETER_VALUES[..]);
+    let named = stewart_6_6::PARAMETERS.len();
+    assert_eq!(&at.0.values()[..named], &stewart_6_6::PARAMETER_VALUES[..]);
+    assert_eq!(at.0.values(), &stewart_6_6::P0[..]);
 }
 
 #[test]
@@ -185,10 +187,14 @@ fn setting_only_masses_runs_the_compiled_code() {
     assert!(files::note(e).unwrap().contains("m_platform = 2.5"));
     let direct = stewart_6_6::Exact::with_parameters(&[("m_platform", 2.5)]).unwrap();
     assert_eq!(newton(e.default_mechanism()), newton(&direct));
-    // A geometric value among them: the file derived again, interpreted.
+    // A geometric value among them: the compiled code takes the numbers of the file loaded
+    // at these values (tests/compiled_numbers.rs).
     let mixed = owned(&[("m_platform", 2.5), ("r_base", 0.28)]);
     let e = files::with_parameters(&REGISTRY, "stewart_6_6", &mixed).unwrap();
-    assert!(matches!(e.origin, Origin::Interpreted { .. }));
+    assert!(matches!(e.origin, Origin::Compiled { parameters, .. } if parameters.len() == 2));
+    assert!(files::note(e)
+        .unwrap()
+        .contains("the code takes the numbers"));
 }
 
 /// A payload on the paper's platform, following the same prescribed motion: the legs'

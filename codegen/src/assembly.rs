@@ -133,12 +133,15 @@ pub struct Assembly {
 
 struct Eval<'a> {
     sys: &'a System,
+    /// The run-time values (`Var::P`), [`Model::run_time_values`].
+    p: Vec<f64>,
 }
 
 impl Eval<'_> {
     fn phi(&self, q: &[f64]) -> DVector<f64> {
         let env = |v: Var| match v {
             Var::Q(i) => q[i as usize],
+            Var::P(i) => self.p[i as usize],
             _ => 0.0,
         };
         DVector::from_vec(self.sys.arena.eval_many(&self.sys.phi, &env))
@@ -147,6 +150,7 @@ impl Eval<'_> {
     fn phi_q(&self, q: &[f64]) -> DMatrix<f64> {
         let env = |v: Var| match v {
             Var::Q(i) => q[i as usize],
+            Var::P(i) => self.p[i as usize],
             _ => 0.0,
         };
         let ids: Vec<_> = self.sys.phi_q.iter().map(|e| e.2).collect();
@@ -559,7 +563,11 @@ fn planar_check(
     let mut red = crate::reduce::planar(sys, &model.bodies, q)
         .map_err(|e| fail(format!("`planar = true`, but {e}")))?;
     let qr: Vec<f64> = red.coords.iter().map(|&c| q[c]).collect();
-    let jac = Eval { sys: &red.system }.phi_q(&qr);
+    let jac = Eval {
+        sys: &red.system,
+        p: model.run_time_values(),
+    }
+    .phi_q(&qr);
     let is_driver = |k: &usize| driver_rows.contains(&red.rows[*k]);
     let m = red.system.n_constraints;
     let order = (0..m)
@@ -587,7 +595,10 @@ fn planar_check(
 }
 
 pub fn assemble(model: &Model, sys: &System, file: &str) -> Result<Assembly, Errors> {
-    let eval = Eval { sys };
+    let eval = Eval {
+        sys,
+        p: model.run_time_values(),
+    };
     let q_file = model.q0();
     let mut q = q_file.clone();
     non_finite(model, sys, &eval, &q, file)?;

@@ -170,8 +170,9 @@ pub fn build(model: &Model) -> System {
     build_with(model, false)
 }
 
-/// [`build`] with the masses, inertias and springs' constants written in the run-time parameters
-/// ([`Model::run_time_parameters`]) as `Var::P`, for the generated code.
+/// [`build`] with the run-time values as `Var::P`, for the generated code: masses, inertias
+/// and springs' constants written in the run-time parameters
+/// ([`Model::run_time_parameters`]), and the numbers [`crate::slots::mark`] marked.
 pub fn build_parametric(model: &Model) -> System {
     build_with(model, true)
 }
@@ -187,9 +188,9 @@ struct MassProps {
 impl MassProps {
     fn new(a: &mut Arena, model: &Model, parametric: bool) -> Self {
         if parametric {
-            // Every run-time parameter is a variable of the arena, read or not, so that the
-            // generated code's `p` has one entry per name.
-            for i in 0..model.run_time_parameters().len() {
+            // Every run-time value is a variable of the arena, read or not, so that the
+            // generated code's `p` has one entry per name and per slot.
+            for i in 0..model.run_time_values().len() {
                 a.var(Var::P(i as u32));
             }
         }

@@ -24,9 +24,10 @@ pub enum Var {
     Qd(u32),
     /// Time.
     T,
-    /// Run-time parameter `p[i]` of the generated code: the file's `[parameters]` entries
+    /// Run-time value `p[i]` of the generated code: first the file's `[parameters]` entries
     /// that reach only masses, inertias and springs' constants
-    /// ([`crate::model::Parameter::run_time`]).
+    /// ([`crate::model::Parameter::run_time`]), then the numbers of the model that the other
+    /// parameters reach ([`crate::slots`]).
     P(u32),
     /// Hoisted value `k[i]`: a function of the parameters alone, computed once per parameter
     /// set by the generated `setup` ([`crate::hoist`]).
@@ -96,6 +97,25 @@ impl Func {
             Func::Atan => x.atan(),
         }
     }
+}
+
+/// Bits of a number of the model marked as run-time value `p[i]` ([`marked`]): a signalling
+/// NaN, whose upper half no arithmetic result has (any operation on it gives a quiet NaN, and
+/// negation sets the sign bit), so a marked number that is computed with instead of being
+/// passed to [`Arena::constant`] shows up as a non-finite constant, never as a variable.
+const MARK: u64 = 0x7FF0_05A5_0000_0000;
+
+/// The number that [`Arena::constant`] turns into `Var::P(i)`: how the equation stages, which
+/// read the model's points, axes and lengths as `f64`, write the ones parameters reach as
+/// variables ([`crate::slots`]).
+pub fn marked(i: u32) -> f64 {
+    f64::from_bits(MARK | u64::from(i))
+}
+
+/// `i` where `x` is [`marked`]`(i)`.
+pub fn marked_index(x: f64) -> Option<u32> {
+    let bits = x.to_bits();
+    (bits & 0xFFFF_FFFF_0000_0000 == MARK).then_some(bits as u32)
 }
 
 /// One node of the DAG. Constants are stored by their bit pattern so nodes can be hashed.
@@ -180,6 +200,9 @@ impl Arena {
     }
 
     pub fn constant(&mut self, value: f64) -> Id {
+        if let Some(i) = marked_index(value) {
+            return self.var(Var::P(i));
+        }
         // One zero: -0.0 and 0.0 behave identically in every expression we build.
         let value = if value == 0.0 { 0.0 } else { value };
         self.intern(Node::Const(value.to_bits()))

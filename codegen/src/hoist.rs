@@ -20,8 +20,8 @@ enum Kind {
     State,
 }
 
-/// Rewrites the per-step roots of `sys` (masses, forces and their Jacobians, potential,
-/// power) over hoisted values; returns the nodes `k[j]` stands for, in order.
+/// Rewrites the per-step roots of `sys` (Φ, Φq, Φt, γ, masses, forces and their Jacobians,
+/// potential, power) over hoisted values; returns the nodes `k[j]` stands for, in order.
 pub fn system(sys: &mut System) -> Vec<Id> {
     let mut hoisted = Vec::new();
     rewrite(sys, |a, roots| {
@@ -54,6 +54,8 @@ pub fn bound(sys: &mut System, p: &[f64]) {
 /// The per-step roots of `sys` replaced by `f(arena, roots)`, in order.
 fn rewrite(sys: &mut System, f: impl FnOnce(&mut Arena, &[Id]) -> Vec<Id>) {
     let mut roots: Vec<Id> = vec![sys.potential, sys.power_nc];
+    roots.extend(sys.phi.iter().chain(&sys.phi_t).chain(&sys.gamma));
+    roots.extend(sys.phi_q.iter().map(|e| e.2));
     for d in &sys.dynamics {
         roots.extend(d.mass.iter().map(|e| e.2));
         roots.extend(&d.force);
@@ -65,11 +67,20 @@ fn rewrite(sys: &mut System, f: impl FnOnce(&mut Arena, &[Id]) -> Vec<Id>) {
     let mut next = || it.next().expect("one new root per root");
     sys.potential = next();
     sys.power_nc = next();
+    for r in sys
+        .phi
+        .iter_mut()
+        .chain(&mut sys.phi_t)
+        .chain(&mut sys.gamma)
+    {
+        *r = next();
+    }
     let entries = |v: &mut Vec<Entry>, next: &mut dyn FnMut() -> Id| {
         for e in v.iter_mut() {
             e.2 = next();
         }
     };
+    entries(&mut sys.phi_q, &mut next);
     for d in &mut sys.dynamics {
         let Dynamics {
             mass,

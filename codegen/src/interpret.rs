@@ -88,10 +88,11 @@ pub fn load_with(
     parameters: &[(String, f64)],
     stale: bool,
 ) -> Result<Loaded, Errors> {
-    let model = model::load_with(source, text, parameters)?;
-    // The compiled code's equations (run-time parameters as variables, hoisted), with this
+    let mut model = model::load_with(source, text, parameters)?;
+    // The compiled code's equations (run-time values as variables, hoisted), with this
     // file's values bound: interpreted and compiled runs agree bit for bit.
-    let mut system = equations::build_parametric(&model);
+    let marked = crate::slots::mark(source, text, &mut model);
+    let mut system = equations::build_parametric(&marked);
     crate::hoist::bound(&mut system, &model.run_time_values());
     let assembly = crate::assembly::assemble(&model, &system, source).map_err(|mut e| {
         // A pose that no longer assembles: say which of the values set it follows from.

@@ -30,6 +30,7 @@ pub mod parse;
 pub mod primitives;
 pub mod reduce;
 pub mod rust;
+pub mod slots;
 pub mod symbolic;
 pub mod tape;
 
@@ -48,8 +49,8 @@ pub struct Generated {
 /// Generates the Rust module for the mechanism file `text`; `source` names the file in
 /// messages and in the generated header (use a path relative to the workspace root).
 pub fn generate(source: &str, text: &str) -> Result<Generated, Errors> {
-    let model = model::load(source, text)?;
-    let system = equations::build_parametric(&model);
+    let mut model = model::load(source, text)?;
+    let system = equations::build_parametric(&slots::mark(source, text, &mut model));
     // What the run-time parameters make of the equations at the file's values must be finite,
     // as every literal must (the interpreter folds the same values in, and is checked alike).
     let mut bound = system.clone();

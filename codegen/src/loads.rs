@@ -140,8 +140,8 @@ pub fn build(
                 let (c, s) = angle_cos_sin(a, &s1, &s2);
                 // θ − θ0 from the reference turned by θ0, so atan2 only wraps at ±π away from
                 // the free angle.
-                let (s0, c0) = free_angle.sin_cos();
-                let (s0, c0) = (a.constant(s0), a.constant(c0));
+                let angle0 = a.constant(*free_angle);
+                let (s0, c0) = (a.sin(angle0), a.cos(angle0));
                 let y = {
                     let p = a.mul(s, c0);
                     let q = a.mul(c, s0);

@@ -334,6 +334,11 @@ pub struct Model {
     pub lines: HashMap<String, usize>,
     /// The file's `[parameters]`, in name order, with the values used (overrides applied).
     pub parameters: Vec<Parameter>,
+    /// The numbers of this model that the other parameters reach, as the equations read them
+    /// (`Var::P` after the run-time parameters): set by [`crate::slots::mark`], empty before.
+    pub data: Vec<f64>,
+    /// Where those numbers are ([`crate::slots::Slots::encoded`]).
+    pub data_slots: Vec<u32>,
 }
 
 /// One entry of a file's `[parameters]`.
@@ -380,9 +385,11 @@ impl Model {
         self.parameters.iter().filter(|p| p.run_time).collect()
     }
 
-    /// The run-time parameters' values, in their order: `p` at this model's values.
+    /// `p` at this model's values: the run-time parameters' values in their order, then
+    /// [`Model::data`].
     pub fn run_time_values(&self) -> Vec<f64> {
-        self.run_time_parameters().iter().map(|p| p.value).collect()
+        let named = self.run_time_parameters().into_iter().map(|p| p.value);
+        named.chain(self.data.iter().copied()).collect()
     }
 
     pub fn body_name(&self, b: BodyRef) -> &str {
@@ -642,6 +649,8 @@ impl Validator<'_> {
             forces: forces?,
             arena: std::mem::take(&mut self.arena),
             parameters: self.parameters(&raw, overrides),
+            data: Vec::new(),
+            data_slots: Vec::new(),
         })
         .map(|mut m| {
             // A zero inertia decides the structure (a semi-definite mass matrix, checked at

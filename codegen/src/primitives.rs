@@ -29,12 +29,14 @@ pub fn sub3(a: &mut Arena, x: V3s, y: V3s) -> V3s {
     [0, 1, 2].map(|i| a.sub(x[i], y[i]))
 }
 
-fn cross3(v: [f64; 3], w: [f64; 3]) -> [f64; 3] {
-    [
-        v[1] * w[2] - v[2] * w[1],
-        v[2] * w[0] - v[0] * w[2],
-        v[0] * w[1] - v[1] * w[0],
-    ]
+/// `v × w` of constant vectors, on the arena (so that a run-time value in them stays one).
+fn cross3(a: &mut Arena, v: [f64; 3], w: [f64; 3]) -> V3s {
+    let (v, w) = (consts(a, v), consts(a, w));
+    [(1, 2), (2, 0), (0, 1)].map(|(i, j)| {
+        let p = a.mul(v[i], w[j]);
+        let q = a.mul(v[j], w[i]);
+        a.sub(p, q)
+    })
 }
 
 /// Global position of a point fixed on a body (or a ground point).
@@ -52,6 +54,10 @@ pub fn point_world(a: &mut Arena, bodies: &[BodySym], body: Option<usize>, p: [f
 /// Global direction of a vector fixed on a body (or a ground direction).
 fn direction_world(a: &mut Arena, bodies: &[BodySym], body: Option<usize>, v: [f64; 3]) -> V3s {
     let vc = consts(a, v);
+    direction_world_sym(a, bodies, body, vc)
+}
+
+fn direction_world_sym(a: &mut Arena, bodies: &[BodySym], body: Option<usize>, vc: V3s) -> V3s {
     match body {
         None => vc,
         Some(b) => mat_vec(a, &bodies[b].rot, vc),
@@ -62,7 +68,10 @@ pub fn sym_frame(a: &mut Arena, bodies: &[BodySym], f: &Frame) -> SymFrame {
     SymFrame {
         p: point_world(a, bodies, f.body, f.point),
         x: direction_world(a, bodies, f.body, f.x),
-        y: direction_world(a, bodies, f.body, cross3(f.z, f.x)),
+        y: {
+            let y = cross3(a, f.z, f.x);
+            direction_world_sym(a, bodies, f.body, y)
+        },
         z: direction_world(a, bodies, f.body, f.z),
     }
 }

@@ -138,6 +138,19 @@ const QQDT: &[Input] = &[Input::Q, Input::Qd, Input::T];
 /// The same, for functions of the dynamics: they read `k` where the system has hoisted values.
 const KQQDT: &[Input] = &[Input::K, Input::Q, Input::Qd, Input::T];
 const KQ: &[Input] = &[Input::K, Input::Q];
+const KQT: &[Input] = &[Input::K, Input::Q, Input::T];
+
+/// Whether Φ, Φq, Φt or γ of `sys` read hoisted values: the model's numbers that parameters
+/// reach are in the constraints ([`crate::slots`]); masses and springs' constants are not.
+fn kinematics_read_k(sys: &System) -> bool {
+    let mut roots = [sys.phi.as_slice(), &sys.phi_t, &sys.gamma].concat();
+    roots.extend(sys.phi_q.iter().map(|e| e.2));
+    let reached = sys.arena.reachable(&roots);
+    reached
+        .iter()
+        .enumerate()
+        .any(|(i, &r)| r && matches!(sys.arena.node(Id(i as u32)), Node::Var(Var::K(_))))
+}
 
 /// Lengths of `p` and `k` in `sys`: one past the largest `Var::P` and `Var::K` index.
 fn parameter_lengths(sys: &System) -> (usize, usize) {
@@ -189,6 +202,15 @@ fn k_arg(sys: &System, k: &TokenStream) -> TokenStream {
     }
 }
 
+/// The argument that passes `k` to the kinematic functions of `sys` (nothing where they
+/// read none).
+fn kinematic_k_arg(sys: &System, k: &TokenStream) -> TokenStream {
+    match kinematics_read_k(sys) {
+        true => quote!(#k,),
+        false => quote!(),
+    }
+}
+
 /// The parameter `k` of the helpers that wrap functions reading it (nothing where none do).
 fn k_param(sys: &System) -> TokenStream {
     match parameter_lengths(sys).1 {
@@ -228,11 +250,12 @@ fn hoisted_items(sys: &System, hoisted: &[Id], p_values: &[f64]) -> TokenStream 
 /// `<Type>At` of the reduced model (where the mechanism has run-time parameters): the hoisted
 /// values of the reduced system, computed from the full model's `Parameters`.
 fn reduced_at_type(model: &Model, r: &System, type_name: &Ident, modname: &Ident) -> TokenStream {
-    if model.run_time_parameters().is_empty() || parameter_lengths(r).1 == 0 {
+    if model.run_time_values().is_empty() || parameter_lengths(r).1 == 0 {
         return quote!();
     }
     let at = ident(&format!("{type_name}At"));
-    let at_impl = mechanism_impl(&at, modname, &k_arg(r, &quote!(&self.k)));
+    let k = quote!(&self.k);
+    let at_impl = mechanism_impl(&at, modname, &k_arg(r, &k), &kinematic_k_arg(r, &k));
     quote! {
         /// The reduced model at run-time parameter values.
         #[derive(Debug, Clone)]
@@ -316,14 +339,25 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
         }
         _ => (quote!(), quote!(None)),
     };
+    let n_named = Literal::usize_unsuffixed(names.len());
+    let p0 = model.run_time_values().into_iter().map(float);
+    let data = &model.data_slots;
+    let n_data = Literal::usize_unsuffixed(data.len());
     let np = Literal::usize_unsuffixed(np);
     quote! {
-        /// The parameters the generated code takes at run time: the file's `[parameters]`
-        /// entries that reach only masses, inertias and springs' constants (the others are set on
-        /// the file).
-        pub static PARAMETERS: [&str; #np] = [#(#names),*];
+        /// The parameters the generated code takes at run time by name: the file's
+        /// `[parameters]` entries that reach only masses, inertias and springs' constants.
+        pub static PARAMETERS: [&str; #n_named] = [#(#names),*];
         /// Their values in the file.
-        pub static PARAMETER_VALUES: [f64; #np] = [#(#values),*];
+        pub static PARAMETER_VALUES: [f64; #n_named] = [#(#values),*];
+        /// Number of values `p` holds: the parameters by name, then the model's numbers that
+        /// the other parameters reach (read off the file loaded at their values: `DATA`).
+        pub const N_P: usize = #np;
+        /// `p` at the file's values.
+        pub static P0: [f64; #np] = [#(#p0),*];
+        /// Where the numbers after the named parameters come from in the model (the
+        /// generator's `slots::Slots::encoded`).
+        pub static DATA: [u32; #n_data] = [#(#data),*];
         static OTHER_PARAMETERS: [&str; #no] = [#(#others),*];
         static BODY_NAMES: [&str; #nb] = [#(#bodies),*];
         static FORCE_NAMES: [&str; #nf] = [#(#forces),*];
@@ -341,13 +375,25 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
         /// One set of run-time parameter values and the values `setup` computed from it.
         #[derive(Debug, Clone)]
         pub struct Parameters {
-            p: [f64; #np],
+            p: [f64; N_P],
             k: [f64; N_K],
         }
         impl Parameters {
             /// The file's values.
             pub fn file_values() -> Self {
-                Parameters { p: PARAMETER_VALUES, k: K }
+                Parameters { p: P0, k: K }
+            }
+            /// All of `p` at once (`N_P` values: the named parameters, then the model's
+            /// numbers `DATA` names, as the mechanism file loaded at other values gives them),
+            /// checked as [`Parameters::set`] checks.
+            pub fn from_values(values: &[f64]) -> Result<Self, ParameterError> {
+                let mut p = [0.0; N_P];
+                RUN_TIME.assign_all(&mut p, values)?;
+                let (mut props, mut constants) = ([0.0; #n4], [0.0; #n2]);
+                RUN_TIME.check(&p, &[], &mut props, &mut constants)?;
+                let mut k = [0.0; N_K];
+                setup(&p, &mut k);
+                Ok(Parameters { p, k })
             }
             /// The file's values with `set` applied ([`Parameters::set`]).
             pub fn at(set: &[(&str, f64)]) -> Result<Self, ParameterError> {
@@ -367,16 +413,21 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
                 setup(&self.p, &mut self.k);
                 Ok(())
             }
-            /// The values, in the order of `PARAMETERS`.
+            /// The values: those of `PARAMETERS`, then the numbers `DATA` names.
             pub fn values(&self) -> &[f64] {
                 &self.p
             }
         }
+        fn built(p: Parameters) -> symbody_runtime::registry::Built {
+            vec![#(#at_forms),*]
+        }
         fn at_parameters(
             set: &[(&str, f64)],
         ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-            let p = Parameters::at(set)?;
-            Ok(vec![#(#at_forms),*])
+            Parameters::at(set).map(built)
+        }
+        fn at_values(values: &[f64]) -> Result<symbody_runtime::registry::Built, ParameterError> {
+            Parameters::from_values(values).map(built)
         }
         #reduced_fn
         /// This mechanism at other values of its run-time parameters, for the registries.
@@ -385,6 +436,8 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
                 parameters: &RUN_TIME,
                 build: at_parameters,
                 build_reduced: #build_reduced,
+                data: &DATA,
+                build_values: at_values,
             };
     }
 }
@@ -401,6 +454,10 @@ fn float(v: f64) -> TokenStream {
 
 /// Φ, Φq, Φt, γ, their fused evaluation, the potential and the non-conservative power.
 fn kinematic_functions(sys: &System) -> Vec<TokenStream> {
+    let (qt, qqdt) = match kinematics_read_k(sys) {
+        true => (KQT, KQQDT),
+        false => (QT, QQDT),
+    };
     let phi_q_vals = values(&sys.phi_q);
     let (pq_rows, _) = pattern(&sys.phi_q);
     let row_index: Vec<u32> = (0..sys.n_constraints as u32).collect();
@@ -411,35 +468,35 @@ fn kinematic_functions(sys: &System) -> Vec<TokenStream> {
             sys,
             "phi",
             " Constraint residual Φ(q, t).",
-            QT,
+            qt,
             vec![Output::new("out", &sys.phi)],
         ),
         function(
             sys,
             "phi_q",
             " Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.",
-            QT,
+            qt,
             vec![Output::new("out", &phi_q_vals)],
         ),
         function(
             sys,
             "phi_t",
             " Partial time derivative Φt(q, t).",
-            QT,
+            qt,
             vec![Output::new("out", &sys.phi_t)],
         ),
         function(
             sys,
             "gamma",
             " Acceleration right-hand side γ(q, q̇, t) = −D²Φ[(q̇,1),(q̇,1)].",
-            QQDT,
+            qqdt,
             vec![Output::new("out", &sys.gamma)],
         ),
         function(
             sys,
             "eval_kinematics",
             " Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.",
-            QQDT,
+            qqdt,
             vec![
                 Output::by_rows("phi", &sys.phi, &row_index),
                 Output::by_rows("phi_q", &phi_q_vals, &pq_rows),
@@ -510,14 +567,21 @@ fn dynamics_functions(sys: &System, dynamics: &Dynamics) -> Vec<TokenStream> {
 
 /// `impl Mechanism for #type_name`, delegating to the functions of module `#modname` and of
 /// its parent; `k` is the argument passing the hoisted values (empty without any).
-fn mechanism_impl(type_name: &Ident, modname: &Ident, k: &TokenStream) -> TokenStream {
+/// `k`: the argument passing the hoisted values to the functions that read them; `kk` the
+/// same for the kinematic functions (nothing where they read none).
+fn mechanism_impl(
+    type_name: &Ident,
+    modname: &Ident,
+    k: &TokenStream,
+    kk: &TokenStream,
+) -> TokenStream {
     quote! {
         impl Mechanism for #type_name {
             fn info(&self) -> &'static MechanismInfo { &#modname::INFO }
-            fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) { phi(q, t, out) }
-            fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_q(q, t, out) }
-            fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_t(q, t, out) }
-            fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { gamma(q, qd, t, out) }
+            fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) { phi(#kk q, t, out) }
+            fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_q(#kk q, t, out) }
+            fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_t(#kk q, t, out) }
+            fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { gamma(#kk q, qd, t, out) }
             fn mass(&self, q: &[f64], out: &mut [f64]) { #modname::mass(#k q, out) }
             fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) { #modname::force(#k q, qd, t, out) }
             fn force_jacobian(&self, q: &[f64], qd: &[f64], t: f64, dq: &mut [f64], dqd: &mut [f64]) {
@@ -529,7 +593,7 @@ fn mechanism_impl(type_name: &Ident, modname: &Ident, k: &TokenStream) -> TokenS
                 #modname::eval_newton(#k q, qd, t, out.phi, out.phi_q, out.mass, out.force)
             }
             fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
-                eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+                eval_kinematics(#kk q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
             }
         }
     }
@@ -544,7 +608,12 @@ fn formulation_types(
     doc: &str,
     with_at: bool,
 ) -> TokenStream {
-    let unit_impl = mechanism_impl(type_name, modname, &k_arg(sys, &quote!(&K)));
+    let unit_impl = mechanism_impl(
+        type_name,
+        modname,
+        &k_arg(sys, &quote!(&K)),
+        &kinematic_k_arg(sys, &quote!(&K)),
+    );
     let unit = quote! {
         #[doc = #doc]
         #[derive(Debug, Clone, Copy, Default)]
@@ -555,7 +624,8 @@ fn formulation_types(
         return unit;
     }
     let at = ident(&format!("{type_name}At"));
-    let at_impl = mechanism_impl(&at, modname, &k_arg(sys, &quote!(&self.0.k)));
+    let k = quote!(&self.0.k);
+    let at_impl = mechanism_impl(&at, modname, &k_arg(sys, &k), &kinematic_k_arg(sys, &k));
     let at_doc = format!("{doc} At run-time parameter values (`{type_name}::with_parameters`).");
     quote! {
         #unit
@@ -704,11 +774,31 @@ fn reduced_module(
     });
     let n_sub = red.substitutions.len();
     let offsets: Vec<Id> = red.substitutions.iter().flat_map(|s| s.offset).collect();
+    let reads_p = offsets
+        .iter()
+        .any(|&o| r.arena.variables(o).iter().any(|v| matches!(v, Var::P(_))));
+    // Offsets that the model's numbers reach (a slider's line at y = e) take them from the
+    // file's `p`: the reduced model is the file's; other values run the file derived again.
+    let (offset_inputs, offsets_at): (&[Input], _) = match reads_p {
+        true => (
+            &[Input::P, Input::T],
+            quote! {
+                fn offsets_at_file_values(t: f64, out: &mut [f64]) {
+                    offsets_into(&super::P0, t, out)
+                }
+            },
+        ),
+        false => (&[Input::T], quote!()),
+    };
+    let offsets_name = ident(match reads_p {
+        true => "offsets_at_file_values",
+        false => "offsets_into",
+    });
     let offsets_fn = function(
         r,
         "offsets_into",
         " `c, ċ, c̈` of each substitution at time `t`, three per substitution.",
-        &[Input::T],
+        offset_inputs,
         vec![Output::new("out", &offsets)],
     );
     let (n_full, m_full) = (sys.n_coords, sys.n_constraints);
@@ -772,9 +862,10 @@ fn reduced_module(
                 coords: &COORDS,
                 rows: &ROWS,
                 substitutions: &SUBSTITUTIONS,
-                offsets: offsets_into,
+                offsets: #offsets_name,
             };
             #offsets_fn
+            #offsets_at
             #k_items
             #(#fns)*
             /// Potential energy of gravity and springs.

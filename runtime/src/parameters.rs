@@ -21,6 +21,8 @@ pub enum ParameterError {
     NotRunTime { name: String },
     /// NaN or infinite.
     NotFinite { name: String, value: f64 },
+    /// A whole `p` of the wrong length.
+    Values { expected: usize, given: usize },
     /// A body's mass came out zero, negative or not finite.
     Mass {
         body: &'static str,
@@ -55,13 +57,18 @@ impl fmt::Display for ParameterError {
             }
             ParameterError::NotRunTime { name } => write!(
                 f,
-                "parameter `{name}` is not a run-time parameter of the generated code (it is \
-                 derived from others or reaches more than masses, inertias and springs' constants); set it on the \
-                 mechanism file, which is then derived again (`--set`, `files::with_parameters`)"
+                "parameter `{name}` is not set by name in the generated code (it is derived \
+                 from others, or reaches points, axes, lengths or drivers, which the mechanism \
+                 file computes from it); set it on the mechanism file (`--set`, \
+                 `files::with_parameters`), whose numbers at that value the compiled code takes"
             ),
             ParameterError::NotFinite { name, value } => {
                 write!(f, "parameter `{name}` = {value}: give a finite number")
             }
+            ParameterError::Values { expected, given } => write!(
+                f,
+                "{given} run-time values given where the generated code takes {expected}"
+            ),
             ParameterError::Mass {
                 body,
                 value,
@@ -149,6 +156,26 @@ impl RunTimeParameters {
     /// Checks the bodies' masses and inertias and the forces' stiffness and damping at `p`,
     /// which `set` gave its new values (named in the errors); `props` is scratch of four
     /// entries per body, `constants` of two per force.
+    /// Copies a whole `p` (the named parameters, then the model's numbers) into `p`:
+    /// `values` must have its length and finite numbers.
+    pub fn assign_all(&self, p: &mut [f64], values: &[f64]) -> Result<(), ParameterError> {
+        if values.len() != p.len() {
+            return Err(ParameterError::Values {
+                expected: p.len(),
+                given: values.len(),
+            });
+        }
+        let names = self.names.iter().map(|n| n.to_string());
+        let numbers = (0..).map(|i| format!("model number {i}"));
+        for (name, &value) in names.chain(numbers).zip(values) {
+            if !value.is_finite() {
+                return Err(ParameterError::NotFinite { name, value });
+            }
+        }
+        p.copy_from_slice(values);
+        Ok(())
+    }
+
     pub fn check(
         &self,
         p: &[f64],
@@ -158,9 +185,12 @@ impl RunTimeParameters {
     ) -> Result<(), ParameterError> {
         (self.mass_properties)(p, props);
         (self.force_constants)(p, constants);
-        let shown = || {
-            let values: Vec<String> = set.iter().map(|(n, v)| format!("{n} = {v}")).collect();
-            format!("{} set", values.join(", "))
+        let shown = || match set.is_empty() {
+            true => "these values".to_string(),
+            false => {
+                let values: Vec<String> = set.iter().map(|(n, v)| format!("{n} = {v}")).collect();
+                format!("{} set", values.join(", "))
+            }
         };
         for (b, v) in props.chunks_exact(4).enumerate() {
             let body = self.bodies[b];

@@ -32,6 +32,12 @@ pub struct RunTime {
     pub build: Build,
     /// The same for the entry's reduced model, where it has one.
     pub build_reduced: Option<Build>,
+    /// Where the values of `p` after the named parameters come from: the model's numbers
+    /// that the other parameters reach (points, axes, lengths, drivers' constants), read off
+    /// the mechanism file loaded at new values (the generator's `slots::values_at`).
+    pub data: &'static [u32],
+    /// Every formulation at a whole `p` (named parameters, then `data`'s numbers).
+    pub build_values: fn(p: &[f64]) -> Result<Built, ParameterError>,
 }
 
 /// Builds every formulation at the file's values with `set` applied.

@@ -117,21 +117,26 @@ pub fn reparametrized(
     entry: &Entry,
     parameters: &Overrides,
 ) -> Result<&'static Entry, ScenarioError> {
-    match compiled_at(entry, parameters)? {
+    if let Some(e) = compiled_at(entry, parameters)? {
+        return Ok(e);
+    }
+    let derived = || derive(entry, parameters).map(|l| l.entry);
+    match crate::compiled_numbers::compiled_at(entry, parameters, derived)? {
         Some(e) => Ok(e),
         None => derive(entry, parameters).map(|l| l.entry),
     }
 }
 
-/// `f` on `entry`'s compiled code at `parameters`, as [`compiled_at`] builds it but freed
-/// when `f` returns (a study's row); `None` where [`compiled_at`] gives none.
+/// `f` on `entry`'s compiled code at `parameters`, as [`compiled_at`] (or
+/// [`crate::compiled_numbers::compiled_at`]) builds it but freed when `f` returns (a study's
+/// row); `None` where neither applies.
 pub fn with_compiled_at<R>(
     entry: &Entry,
     parameters: &Overrides,
     f: impl FnOnce(&Entry) -> R,
 ) -> Result<Option<R>, ScenarioError> {
     let Some((rt, file, hash)) = run_time_route(entry, parameters) else {
-        return Ok(None);
+        return crate::compiled_numbers::with_compiled_at(entry, parameters, f);
     };
     let set = static_names(rt, parameters);
     let (built, built_reduced) = build(entry, rt, &set)?;
@@ -388,13 +393,30 @@ pub fn fresh(entry: &'static Entry) -> Result<&'static Entry, ScenarioError> {
 /// compiled code of its current file.
 pub fn note(entry: &Entry) -> Option<String> {
     match entry.origin {
-        Origin::Compiled { parameters, .. } if !parameters.is_empty() => {
+        Origin::Compiled {
+            file, parameters, ..
+        } if !parameters.is_empty() => {
             let set: Vec<String> = parameters
                 .iter()
                 .map(|(k, v)| format!("{k} = {v}"))
                 .collect();
+            let by_name = |k: &str| {
+                entry
+                    .run_time
+                    .is_some_and(|rt| rt.parameters.names.contains(&k))
+            };
+            if parameters.iter().all(|(k, _)| by_name(k)) {
+                return Some(format!(
+                    "compiled, with run-time parameters {} (nothing re-derived)",
+                    set.join(", ")
+                ));
+            }
+            let changed = structure_change(file, entry)
+                .map(|c| format!("; with these values {c}"))
+                .unwrap_or_default();
             Some(format!(
-                "compiled, with run-time parameters {} (nothing re-derived)",
+                "compiled, with {} (the code takes the numbers the file gives at these values; \
+                 the file derived again for its pose and dependent rows){changed}",
                 set.join(", ")
             ))
         }

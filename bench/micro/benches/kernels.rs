@@ -56,9 +56,9 @@ fn phi_q_central_fd(q: &[f64; N], t: f64, index: &PatternIndex, out: &mut [f64; 
     let (mut plus, mut minus) = ([0.0; M], [0.0; M]);
     for j in 0..N {
         x[j] = q[j] + H_FD;
-        st::phi(&x, t, &mut plus);
+        st::phi(&st::K, &x, t, &mut plus);
         x[j] = q[j] - H_FD;
-        st::phi(&x, t, &mut minus);
+        st::phi(&st::K, &x, t, &mut minus);
         x[j] = q[j];
         for &(row, slot) in index.column(j) {
             let row = row as usize;
@@ -98,12 +98,12 @@ fn gamma_fd(q: &[f64; N], qd: &[f64; N], t: f64, out: &mut [f64; M]) {
     for k in 0..N {
         x[k] = q[k] + h * qd[k];
     }
-    st::phi(&x, t + h, &mut plus);
-    st::phi(q, t, &mut mid);
+    st::phi(&st::K, &x, t + h, &mut plus);
+    st::phi(&st::K, q, t, &mut mid);
     for k in 0..N {
         x[k] = q[k] - h * qd[k];
     }
-    st::phi(&x, t - h, &mut minus);
+    st::phi(&st::K, &x, t - h, &mut minus);
     for r in 0..M {
         out[r] = -(plus[r] - 2.0 * mid[r] + minus[r]) / (h * h);
     }
@@ -121,7 +121,7 @@ fn max_rel(a: &[f64], b: &[f64]) -> f64 {
 /// against what the slower methods deliver.
 fn report_accuracy(r: &Stewart, s: &State, index: &PatternIndex) {
     let (mut gen, mut other) = ([0.0; NNZ], [0.0; NNZ]);
-    st::phi_q(&s.q, s.t, &mut gen);
+    st::phi_q(&st::K, &s.q, s.t, &mut gen);
     phi_q_central_fd(&s.q, s.t, index, &mut other);
     eprintln!(
         "accuracy: Φq central FD max rel err {:.1e}",
@@ -138,7 +138,7 @@ fn report_accuracy(r: &Stewart, s: &State, index: &PatternIndex) {
         max_rel(&other, &gen)
     );
     let (mut g, mut o) = ([0.0; M], [0.0; M]);
-    st::gamma(&s.q, &s.qd, s.t, &mut g);
+    st::gamma(&st::K, &s.q, &s.qd, s.t, &mut g);
     gamma_fd(&s.q, &s.qd, s.t, &mut o);
     eprintln!(
         "accuracy: γ second diff max rel err {:.1e}",
@@ -161,7 +161,7 @@ fn kernels(c: &mut Criterion) {
     let mut phi = [0.0; M];
     let mut g = c.benchmark_group("phi");
     g.bench_function("generated", |b| {
-        b.iter(|| st::phi(black_box(q), black_box(t), &mut phi))
+        b.iter(|| st::phi(&st::K, black_box(q), black_box(t), &mut phi))
     });
     g.bench_function("reference", |b| {
         b.iter(|| r.phi(black_box(q), black_box(t), &mut phi))
@@ -171,7 +171,7 @@ fn kernels(c: &mut Criterion) {
     let mut jac = [0.0; NNZ];
     let mut g = c.benchmark_group("phi_q");
     g.bench_function("generated", |b| {
-        b.iter(|| st::phi_q(black_box(q), black_box(t), &mut jac))
+        b.iter(|| st::phi_q(&st::K, black_box(q), black_box(t), &mut jac))
     });
     g.bench_function("central_fd", |b| {
         b.iter(|| phi_q_central_fd(black_box(q), black_box(t), &index, &mut jac))
@@ -187,7 +187,7 @@ fn kernels(c: &mut Criterion) {
     let mut gam = [0.0; M];
     let mut g = c.benchmark_group("gamma");
     g.bench_function("generated", |b| {
-        b.iter(|| st::gamma(black_box(q), black_box(qd), black_box(t), &mut gam))
+        b.iter(|| st::gamma(&st::K, black_box(q), black_box(qd), black_box(t), &mut gam))
     });
     g.bench_function("fd", |b| {
         b.iter(|| gamma_fd(black_box(q), black_box(qd), black_box(t), &mut gam))
@@ -202,7 +202,7 @@ fn kernels(c: &mut Criterion) {
     // The remaining pieces of the separate calls, so the fused ratios can be explained.
     let mut g = c.benchmark_group("parts");
     g.bench_function("phi_t", |b| {
-        b.iter(|| st::phi_t(black_box(q), black_box(t), &mut phi_t))
+        b.iter(|| st::phi_t(&st::K, black_box(q), black_box(t), &mut phi_t))
     });
     g.bench_function("mass", |b| {
         b.iter(|| exact::mass(&st::K, black_box(q), &mut mass))
@@ -224,6 +224,7 @@ fn kernels(c: &mut Criterion) {
     g.bench_function("eval_kinematics", |b| {
         b.iter(|| {
             st::eval_kinematics(
+                &st::K,
                 black_box(q),
                 black_box(qd),
                 black_box(t),
@@ -237,10 +238,10 @@ fn kernels(c: &mut Criterion) {
     g.bench_function("kinematics_separate", |b| {
         b.iter(|| {
             let (q, qd, t) = (black_box(q), black_box(qd), black_box(t));
-            st::phi(q, t, &mut phi);
-            st::phi_q(q, t, &mut jac);
-            st::phi_t(q, t, &mut phi_t);
-            st::gamma(q, qd, t, &mut gam);
+            st::phi(&st::K, q, t, &mut phi);
+            st::phi_q(&st::K, q, t, &mut jac);
+            st::phi_t(&st::K, q, t, &mut phi_t);
+            st::gamma(&st::K, q, qd, t, &mut gam);
         })
     });
     g.bench_function("eval_newton", |b| {
@@ -260,8 +261,8 @@ fn kernels(c: &mut Criterion) {
     g.bench_function("newton_separate", |b| {
         b.iter(|| {
             let (q, qd, t) = (black_box(q), black_box(qd), black_box(t));
-            st::phi(q, t, &mut phi);
-            st::phi_q(q, t, &mut jac);
+            st::phi(&st::K, q, t, &mut phi);
+            st::phi_q(&st::K, q, t, &mut jac);
             exact::mass(&st::K, q, &mut mass);
             exact::force(&st::K, q, qd, t, &mut force);
         })
@@ -289,6 +290,7 @@ fn bench_reduced(c: &mut Criterion) {
     g.bench_function("eval_kinematics", |b| {
         b.iter(|| {
             reduced::eval_kinematics(
+                &reduced::K,
                 black_box(&q),
                 black_box(&qd),
                 black_box(t),

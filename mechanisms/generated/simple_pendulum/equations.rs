@@ -25,27 +25,30 @@ use symbody_runtime::{
 };
 use symbody_runtime::parameters::{ParameterError, RunTimeParameters};
 /// Constraint residual Φ(q, t).
-pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
+pub fn phi(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
     let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
     let _ = t;
-    phi_part_0(q, out);
+    phi_part_0(k, q, out);
 }
 #[inline(never)]
-fn phi_part_0(q: &[f64; 6], out: &mut [f64; 1]) {
+fn phi_part_0(k: &[f64; 6], q: &[f64; 6], out: &mut [f64; 1]) {
     let x35 = q[0] * q[0];
     let x36 = q[1] * q[1];
     let x37 = q[2] * q[2];
     let x38 = x35 + x36;
     let x39 = x37 + x38;
     let x40 = x39.sqrt();
-    let x42 = x40 - 1.0;
-    out[0] = x42;
+    let x329 = x40 + k[0];
+    out[0] = x329;
 }
 /// Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.
-pub fn phi_q(q: &[f64], t: f64, out: &mut [f64]) {
+pub fn phi_q(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
     let out: &mut [f64; 3] = out.try_into().expect("out must have 3 entries");
+    let _ = k;
     let _ = t;
     phi_q_part_0(q, out);
 }
@@ -57,22 +60,24 @@ fn phi_q_part_0(q: &[f64; 6], out: &mut [f64; 3]) {
     let x38 = x35 + x36;
     let x39 = x37 + x38;
     let x40 = x39.sqrt();
-    let x44 = q[0] * 2.0;
-    let x45 = q[1] * 2.0;
-    let x46 = q[2] * 2.0;
-    let x47 = x40 * 2.0;
-    let x48 = 1.0 / x47;
-    let x49 = x44 * x48;
-    let x50 = x45 * x48;
-    let x51 = x46 * x48;
-    out[0] = x49;
-    out[1] = x50;
-    out[2] = x51;
+    let x45 = q[0] * 2.0;
+    let x46 = q[1] * 2.0;
+    let x47 = q[2] * 2.0;
+    let x48 = x40 * 2.0;
+    let x49 = 1.0 / x48;
+    let x50 = x45 * x49;
+    let x51 = x46 * x49;
+    let x52 = x47 * x49;
+    out[0] = x50;
+    out[1] = x51;
+    out[2] = x52;
 }
 /// Partial time derivative Φt(q, t).
-pub fn phi_t(q: &[f64], t: f64, out: &mut [f64]) {
+pub fn phi_t(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
     let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
+    let _ = k;
     let _ = q;
     let _ = t;
     phi_t_part_0(out);
@@ -82,10 +87,12 @@ fn phi_t_part_0(out: &mut [f64; 1]) {
     out[0] = 0.0;
 }
 /// Acceleration right-hand side γ(q, q̇, t) = −D²Φ[(q̇,1),(q̇,1)].
-pub fn gamma(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+pub fn gamma(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
     let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
     let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
+    let _ = k;
     let _ = t;
     gamma_part_0(q, qd, out);
 }
@@ -97,36 +104,37 @@ fn gamma_part_0(q: &[f64; 6], qd: &[f64; 6], out: &mut [f64; 1]) {
     let x38 = x35 + x36;
     let x39 = x37 + x38;
     let x40 = x39.sqrt();
-    let x44 = q[0] * 2.0;
-    let x45 = q[1] * 2.0;
-    let x46 = q[2] * 2.0;
-    let x47 = x40 * 2.0;
-    let x48 = 1.0 / x47;
-    let x58 = x44 * qd[0];
-    let x59 = x45 * qd[1];
-    let x60 = x46 * qd[2];
-    let x61 = x58 + x59;
-    let x62 = x60 + x61;
-    let x63 = x48 * x62;
-    let x64 = 2.0 * qd[0];
-    let x65 = 2.0 * qd[1];
-    let x66 = 2.0 * qd[2];
-    let x67 = 2.0 * x63;
-    let x68 = x48 * x48;
-    let x69 = x67 * x68;
-    let x71 = qd[0] * x64;
-    let x72 = qd[1] * x65;
-    let x73 = qd[2] * x66;
-    let x74 = x71 + x72;
-    let x75 = x73 + x74;
-    let x76 = x62 * x69;
-    let x78 = x48 * x75;
-    let x79 = x78 - x76;
-    let x80 = -x79;
-    out[0] = x80;
+    let x45 = q[0] * 2.0;
+    let x46 = q[1] * 2.0;
+    let x47 = q[2] * 2.0;
+    let x48 = x40 * 2.0;
+    let x49 = 1.0 / x48;
+    let x59 = x45 * qd[0];
+    let x60 = x46 * qd[1];
+    let x61 = x47 * qd[2];
+    let x62 = x59 + x60;
+    let x63 = x61 + x62;
+    let x64 = x49 * x63;
+    let x65 = 2.0 * qd[0];
+    let x66 = 2.0 * qd[1];
+    let x67 = 2.0 * qd[2];
+    let x68 = 2.0 * x64;
+    let x69 = x49 * x49;
+    let x70 = x68 * x69;
+    let x72 = qd[0] * x65;
+    let x73 = qd[1] * x66;
+    let x74 = qd[2] * x67;
+    let x75 = x72 + x73;
+    let x76 = x74 + x75;
+    let x77 = x63 * x70;
+    let x79 = x49 * x76;
+    let x80 = x79 - x77;
+    let x81 = -x80;
+    out[0] = x81;
 }
 /// Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.
 pub fn eval_kinematics(
+    k: &[f64],
     q: &[f64],
     qd: &[f64],
     t: f64,
@@ -135,6 +143,7 @@ pub fn eval_kinematics(
     phi_t: &mut [f64],
     gamma: &mut [f64],
 ) {
+    let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
     let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
     let phi: &mut [f64; 1] = phi.try_into().expect("phi must have 1 entries");
@@ -142,10 +151,11 @@ pub fn eval_kinematics(
     let phi_t: &mut [f64; 1] = phi_t.try_into().expect("phi_t must have 1 entries");
     let gamma: &mut [f64; 1] = gamma.try_into().expect("gamma must have 1 entries");
     let _ = t;
-    eval_kinematics_part_0(q, qd, phi, phi_q, phi_t, gamma);
+    eval_kinematics_part_0(k, q, qd, phi, phi_q, phi_t, gamma);
 }
 #[inline(never)]
 fn eval_kinematics_part_0(
+    k: &[f64; 6],
     q: &[f64; 6],
     qd: &[f64; 6],
     phi: &mut [f64; 1],
@@ -159,58 +169,58 @@ fn eval_kinematics_part_0(
     let x38 = x35 + x36;
     let x39 = x37 + x38;
     let x40 = x39.sqrt();
-    let x42 = x40 - 1.0;
-    let x44 = q[0] * 2.0;
-    let x45 = q[1] * 2.0;
-    let x46 = q[2] * 2.0;
-    let x47 = x40 * 2.0;
-    let x48 = 1.0 / x47;
-    let x49 = x44 * x48;
-    let x50 = x45 * x48;
-    let x51 = x46 * x48;
-    let x58 = x44 * qd[0];
-    let x59 = x45 * qd[1];
-    let x60 = x46 * qd[2];
-    let x61 = x58 + x59;
-    let x62 = x60 + x61;
-    let x63 = x48 * x62;
-    let x64 = 2.0 * qd[0];
-    let x65 = 2.0 * qd[1];
-    let x66 = 2.0 * qd[2];
-    let x67 = 2.0 * x63;
-    let x68 = x48 * x48;
-    let x69 = x67 * x68;
-    let x71 = qd[0] * x64;
-    let x72 = qd[1] * x65;
-    let x73 = qd[2] * x66;
-    let x74 = x71 + x72;
-    let x75 = x73 + x74;
-    let x76 = x62 * x69;
-    let x78 = x48 * x75;
-    let x79 = x78 - x76;
-    let x80 = -x79;
-    phi[0] = x42;
-    phi_q[0] = x49;
-    phi_q[1] = x50;
-    phi_q[2] = x51;
+    let x45 = q[0] * 2.0;
+    let x46 = q[1] * 2.0;
+    let x47 = q[2] * 2.0;
+    let x48 = x40 * 2.0;
+    let x49 = 1.0 / x48;
+    let x50 = x45 * x49;
+    let x51 = x46 * x49;
+    let x52 = x47 * x49;
+    let x59 = x45 * qd[0];
+    let x60 = x46 * qd[1];
+    let x61 = x47 * qd[2];
+    let x62 = x59 + x60;
+    let x63 = x61 + x62;
+    let x64 = x49 * x63;
+    let x65 = 2.0 * qd[0];
+    let x66 = 2.0 * qd[1];
+    let x67 = 2.0 * qd[2];
+    let x68 = 2.0 * x64;
+    let x69 = x49 * x49;
+    let x70 = x68 * x69;
+    let x72 = qd[0] * x65;
+    let x73 = qd[1] * x66;
+    let x74 = qd[2] * x67;
+    let x75 = x72 + x73;
+    let x76 = x74 + x75;
+    let x77 = x63 * x70;
+    let x79 = x49 * x76;
+    let x80 = x79 - x77;
+    let x81 = -x80;
+    let x329 = x40 + k[0];
+    phi[0] = x329;
+    phi_q[0] = x50;
+    phi_q[1] = x51;
+    phi_q[2] = x52;
     phi_t[0] = 0.0;
-    gamma[0] = x80;
+    gamma[0] = x81;
 }
 /// Potential energy of gravity and springs, written to `out[0]`.
 pub fn potential_into(k: &[f64], q: &[f64], out: &mut [f64]) {
-    let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
+    let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
     let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
     potential_into_part_0(k, q, out);
 }
 #[inline(never)]
-fn potential_into_part_0(k: &[f64; 5], q: &[f64; 6], out: &mut [f64; 1]) {
-    let x324 = q[1] * k[1];
-    out[0] = x324;
+fn potential_into_part_0(k: &[f64; 6], q: &[f64; 6], out: &mut [f64; 1]) {
+    let x333 = q[1] * k[2];
+    out[0] = x333;
 }
 /// Power of the non-conservative loads, written to `out[0]`.
 pub fn power_nc_into(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-    let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
+    let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
     let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
     let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
     let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
@@ -292,38 +302,56 @@ pub fn power_nc(k: &[f64], q: &[f64], qd: &[f64], t: f64) -> f64 {
     out[0]
 }
 /// Number of values `setup` computes from the run-time parameters.
-pub const N_K: usize = 5;
+pub const N_K: usize = 6;
 /// `setup` at the file's parameter values: what the types without parameters read.
-pub static K: [f64; 5] = [0.00004f64, 9.81f64, -9.81f64, 1f64, 0.00004f64];
+pub static K: [f64; 6] = [-1f64, 0.00004f64, 9.81f64, -9.81f64, 1f64, 0.00004f64];
 /// The values the per-step functions read (`k`), from the run-time parameters `p`.
 pub fn setup(p: &[f64], k: &mut [f64]) {
-    let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
-    let k: &mut [f64; 5] = k.try_into().expect("k must have 5 entries");
+    let p: &[f64; 8] = p.try_into().expect("p must have 8 entries");
+    let k: &mut [f64; 6] = k.try_into().expect("k must have 6 entries");
     setup_part_0(p, k);
 }
 #[inline(never)]
-fn setup_part_0(p: &[f64; 1], k: &mut [f64; 5]) {
-    let x83 = p[0] * 0.4;
-    let x85 = x83 * 0.01;
-    let x86 = 0.01 * x85;
-    let x89 = p[0] * 9.81;
-    let x90 = -x89;
-    let x153 = 2.0 * p[0];
-    let x154 = 0.5 * x153;
-    let x155 = 2.0 * x86;
-    let x156 = 0.5 * x155;
-    k[0] = x86;
-    k[1] = x89;
-    k[2] = x90;
-    k[3] = x154;
-    k[4] = x156;
+fn setup_part_0(p: &[f64; 8], k: &mut [f64; 6]) {
+    let x42 = -p[7];
+    let x90 = p[0] * 0.4;
+    let x92 = x90 * 0.01;
+    let x93 = 0.01 * x92;
+    let x96 = p[0] * 9.81;
+    let x97 = -x96;
+    let x160 = 2.0 * p[0];
+    let x161 = 0.5 * x160;
+    let x162 = 2.0 * x93;
+    let x163 = 0.5 * x162;
+    k[0] = x42;
+    k[1] = x93;
+    k[2] = x96;
+    k[3] = x97;
+    k[4] = x161;
+    k[5] = x163;
 }
-/// The parameters the generated code takes at run time: the file's `[parameters]`
-/// entries that reach only masses, inertias and springs' constants (the others are set on
-/// the file).
+/// The parameters the generated code takes at run time by name: the file's
+/// `[parameters]` entries that reach only masses, inertias and springs' constants.
 pub static PARAMETERS: [&str; 1] = ["m"];
 /// Their values in the file.
 pub static PARAMETER_VALUES: [f64; 1] = [1f64];
+/// Number of values `p` holds: the parameters by name, then the model's numbers that
+/// the other parameters reach (read off the file loaded at their values: `DATA`).
+pub const N_P: usize = 8;
+/// `p` at the file's values.
+pub static P0: [f64; 8] = [
+    1f64,
+    1f64,
+    1f64,
+    1f64,
+    0.00004f64,
+    0.00004f64,
+    0.00004f64,
+    1f64,
+];
+/// Where the numbers after the named parameters come from in the model (the
+/// generator's `slots::Slots::encoded`).
+pub static DATA: [u32; 7] = [3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 27u32];
 static OTHER_PARAMETERS: [&str; 2] = ["ball", "l"];
 static BODY_NAMES: [&str; 1] = ["p1"];
 static FORCE_NAMES: [&str; 0] = [];
@@ -338,39 +366,48 @@ pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
 };
 /// Each body's mass and principal inertias at the run-time parameters `p`.
 pub fn mass_properties(p: &[f64], out: &mut [f64]) {
-    let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
+    let p: &[f64; 8] = p.try_into().expect("p must have 8 entries");
     let out: &mut [f64; 4] = out.try_into().expect("out must have 4 entries");
     mass_properties_part_0(p, out);
 }
 #[inline(never)]
-fn mass_properties_part_0(p: &[f64; 1], out: &mut [f64; 4]) {
-    let x83 = p[0] * 0.4;
-    let x85 = x83 * 0.01;
-    let x86 = 0.01 * x85;
+fn mass_properties_part_0(p: &[f64; 8], out: &mut [f64; 4]) {
+    let x90 = p[0] * 0.4;
+    let x92 = x90 * 0.01;
+    let x93 = 0.01 * x92;
     out[0] = p[0];
-    out[1] = x86;
-    out[2] = x86;
-    out[3] = x86;
+    out[1] = x93;
+    out[2] = x93;
+    out[3] = x93;
 }
 /// Each force's stiffness and damping at the run-time parameters `p`.
 pub fn force_constants(p: &[f64], out: &mut [f64]) {
-    let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
+    let p: &[f64; 8] = p.try_into().expect("p must have 8 entries");
     let _: &mut [f64; 0] = out.try_into().expect("out must have 0 entries");
     let _ = p;
 }
 /// One set of run-time parameter values and the values `setup` computed from it.
 #[derive(Debug, Clone)]
 pub struct Parameters {
-    p: [f64; 1],
+    p: [f64; N_P],
     k: [f64; N_K],
 }
 impl Parameters {
     /// The file's values.
     pub fn file_values() -> Self {
-        Parameters {
-            p: PARAMETER_VALUES,
-            k: K,
-        }
+        Parameters { p: P0, k: K }
+    }
+    /// All of `p` at once (`N_P` values: the named parameters, then the model's
+    /// numbers `DATA` names, as the mechanism file loaded at other values gives them),
+    /// checked as [`Parameters::set`] checks.
+    pub fn from_values(values: &[f64]) -> Result<Self, ParameterError> {
+        let mut p = [0.0; N_P];
+        RUN_TIME.assign_all(&mut p, values)?;
+        let (mut props, mut constants) = ([0.0; 4], [0.0; 0]);
+        RUN_TIME.check(&p, &[], &mut props, &mut constants)?;
+        let mut k = [0.0; N_K];
+        setup(&p, &mut k);
+        Ok(Parameters { p, k })
     }
     /// The file's values with `set` applied ([`Parameters::set`]).
     pub fn at(set: &[(&str, f64)]) -> Result<Self, ParameterError> {
@@ -390,21 +427,26 @@ impl Parameters {
         setup(&self.p, &mut self.k);
         Ok(())
     }
-    /// The values, in the order of `PARAMETERS`.
+    /// The values: those of `PARAMETERS`, then the numbers `DATA` names.
     pub fn values(&self) -> &[f64] {
         &self.p
     }
 }
+fn built(p: Parameters) -> symbody_runtime::registry::Built {
+    vec![
+        (Formulation::Exact, Box::new(ExactAt(p.clone())) as Box < dyn Mechanism + Sync
+        >)
+    ]
+}
 fn at_parameters(
     set: &[(&str, f64)],
 ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-    let p = Parameters::at(set)?;
-    Ok(
-        vec![
-            (Formulation::Exact, Box::new(ExactAt(p.clone())) as Box < dyn Mechanism +
-            Sync >)
-        ],
-    )
+    Parameters::at(set).map(built)
+}
+fn at_values(
+    values: &[f64],
+) -> Result<symbody_runtime::registry::Built, ParameterError> {
+    Parameters::from_values(values).map(built)
 }
 fn at_parameters_reduced(
     set: &[(&str, f64)],
@@ -422,6 +464,8 @@ pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime:
     parameters: &RUN_TIME,
     build: at_parameters,
     build_reduced: Some(at_parameters_reduced),
+    data: &DATA,
+    build_values: at_values,
 };
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
 pub mod exact {
@@ -474,7 +518,7 @@ pub mod exact {
         dq: &mut [f64],
         dqd: &mut [f64],
     ) {
-        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
+        let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
         let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
         let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
@@ -486,68 +530,68 @@ pub mod exact {
     }
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
     pub fn mass(k: &[f64], q: &[f64], out: &mut [f64]) {
-        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
+        let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
         let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
         let out: &mut [f64; 10] = out.try_into().expect("out must have 10 entries");
         mass_part_0(k, q, out);
     }
     #[inline(never)]
-    fn mass_part_0(k: &[f64; 5], q: &[f64; 6], out: &mut [f64; 10]) {
+    fn mass_part_0(k: &[f64; 6], q: &[f64; 6], out: &mut [f64; 10]) {
         let x6 = q[3].sin();
         let x7 = q[3].cos();
         let x8 = q[4].sin();
         let x9 = q[4].cos();
         let x16 = x6 * x9;
         let x17 = x7 * x9;
-        let x157 = x8 * 2.0;
-        let x163 = x7 * 2.0;
-        let x164 = x6 * 2.0;
-        let x166 = x7 * x163;
-        let x168 = x6 * x164;
-        let x174 = x16 * 2.0;
-        let x175 = x17 * 2.0;
-        let x176 = x7 * x174;
-        let x178 = x6 * x175;
-        let x183 = x16 * x163;
-        let x185 = x17 * x164;
-        let x191 = x8 * x157;
-        let x195 = x16 * x174;
-        let x197 = x17 * x175;
-        let x327 = x157 * k[0];
-        let x328 = 0.5 * x327;
-        let x329 = -x328;
-        let x330 = x166 * k[0];
-        let x331 = x168 * k[0];
-        let x332 = x330 + x331;
-        let x333 = 0.5 * x332;
-        let x334 = x176 * k[0];
-        let x335 = x178 * k[0];
-        let x337 = x334 - x335;
-        let x338 = 0.5 * x337;
-        let x339 = x183 * k[0];
-        let x340 = x185 * k[0];
-        let x342 = x339 - x340;
-        let x343 = 0.5 * x342;
-        let x344 = x191 * k[0];
-        let x345 = x195 * k[0];
-        let x346 = x197 * k[0];
-        let x347 = x344 + x345;
-        let x348 = x346 + x347;
-        let x349 = 0.5 * x348;
-        out[0] = k[3];
-        out[1] = k[3];
-        out[2] = k[3];
-        out[3] = k[4];
-        out[4] = x329;
-        out[5] = x333;
-        out[6] = x338;
-        out[7] = x329;
-        out[8] = x343;
-        out[9] = x349;
+        let x164 = x8 * 2.0;
+        let x170 = x7 * 2.0;
+        let x171 = x6 * 2.0;
+        let x173 = x7 * x170;
+        let x175 = x6 * x171;
+        let x181 = x16 * 2.0;
+        let x182 = x17 * 2.0;
+        let x183 = x7 * x181;
+        let x185 = x6 * x182;
+        let x190 = x16 * x170;
+        let x192 = x17 * x171;
+        let x198 = x8 * x164;
+        let x202 = x16 * x181;
+        let x204 = x17 * x182;
+        let x336 = x164 * k[1];
+        let x337 = 0.5 * x336;
+        let x338 = -x337;
+        let x339 = x173 * k[1];
+        let x340 = x175 * k[1];
+        let x341 = x339 + x340;
+        let x342 = 0.5 * x341;
+        let x343 = x183 * k[1];
+        let x344 = x185 * k[1];
+        let x346 = x343 - x344;
+        let x347 = 0.5 * x346;
+        let x348 = x190 * k[1];
+        let x349 = x192 * k[1];
+        let x351 = x348 - x349;
+        let x352 = 0.5 * x351;
+        let x353 = x198 * k[1];
+        let x354 = x202 * k[1];
+        let x355 = x204 * k[1];
+        let x356 = x353 + x354;
+        let x357 = x355 + x356;
+        let x358 = 0.5 * x357;
+        out[0] = k[4];
+        out[1] = k[4];
+        out[2] = k[4];
+        out[3] = k[5];
+        out[4] = x338;
+        out[5] = x342;
+        out[6] = x347;
+        out[7] = x338;
+        out[8] = x352;
+        out[9] = x358;
     }
     /// Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.
     pub fn force(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
+        let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
         let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
         let out: &mut [f64; 6] = out.try_into().expect("out must have 6 entries");
@@ -555,104 +599,104 @@ pub mod exact {
         force_part_0(k, q, qd, out);
     }
     #[inline(never)]
-    fn force_part_0(k: &[f64; 5], q: &[f64; 6], qd: &[f64; 6], out: &mut [f64; 6]) {
+    fn force_part_0(k: &[f64; 6], q: &[f64; 6], qd: &[f64; 6], out: &mut [f64; 6]) {
         let x6 = q[3].sin();
         let x7 = q[3].cos();
         let x8 = q[4].sin();
         let x9 = q[4].cos();
         let x16 = x6 * x9;
         let x17 = x7 * x9;
-        let x93 = x8 * qd[5];
-        let x95 = x9 * qd[5];
-        let x96 = x7 * qd[4];
-        let x97 = x6 * x95;
-        let x98 = x96 + x97;
-        let x99 = x6 * qd[4];
-        let x100 = x7 * x95;
-        let x102 = x100 - x99;
-        let x103 = qd[3] - x93;
-        let x123 = 2.0 * x103;
-        let x124 = 2.0 * x98;
-        let x125 = 2.0 * x102;
-        let x202 = x7 * qd[3];
-        let x203 = x6 * qd[3];
-        let x205 = x9 * qd[4];
-        let x206 = x8 * qd[4];
-        let x208 = x9 * x202;
-        let x209 = x6 * x206;
-        let x211 = x208 - x209;
-        let x212 = x9 * x203;
-        let x214 = x7 * x206;
-        let x216 = x212 + x214;
-        let x218 = qd[5] * x205;
-        let x220 = qd[5] * x206;
-        let x222 = qd[4] * x203;
-        let x224 = x95 * x202;
-        let x225 = x6 * x220;
-        let x227 = x224 - x225;
-        let x228 = x227 - x222;
-        let x229 = qd[4] * x202;
-        let x230 = x95 * x203;
-        let x232 = x7 * x220;
-        let x234 = x230 + x232;
-        let x237 = x229 + x234;
-        let x239 = 2.0 * x218;
-        let x241 = 2.0 * x228;
-        let x242 = 2.0 * x237;
-        let x248 = x124 * x203;
-        let x250 = x7 * x241;
-        let x251 = x250 - x248;
-        let x253 = x125 * x202;
-        let x254 = x6 * x242;
-        let x256 = x253 - x254;
-        let x261 = x123 * x205;
-        let x262 = x8 * x239;
-        let x264 = x261 - x262;
-        let x267 = x124 * x211;
-        let x268 = x16 * x241;
-        let x269 = x267 + x268;
-        let x271 = x125 * x216;
-        let x273 = x17 * x242;
-        let x275 = x271 + x273;
-        let x285 = x102 * x124;
-        let x287 = x98 * x125;
-        let x295 = x6 * x93;
-        let x297 = x7 * x93;
-        let x299 = x95 * x123;
-        let x303 = x124 * x295;
-        let x307 = x125 * x297;
-        let x350 = x239 * k[0];
-        let x351 = 0.5 * x350;
-        let x352 = x251 * k[0];
-        let x353 = x256 * k[0];
-        let x355 = x352 - x353;
-        let x356 = 0.5 * x355;
-        let x357 = x264 * k[0];
-        let x359 = x269 * k[0];
-        let x360 = x275 * k[0];
-        let x362 = x359 - x357;
-        let x363 = x362 - x360;
-        let x364 = 0.5 * x363;
-        let x365 = x285 * k[0];
-        let x366 = x287 * k[0];
-        let x368 = x365 - x366;
-        let x369 = 0.5 * x368;
-        let x370 = x351 + x369;
-        let x371 = x299 * k[0];
-        let x372 = x303 * k[0];
-        let x373 = x307 * k[0];
-        let x374 = x371 + x372;
-        let x375 = x373 + x374;
-        let x376 = 0.5 * x375;
-        let x377 = x356 + x376;
-        let x378 = -x377;
-        let x379 = -x364;
+        let x100 = x8 * qd[5];
+        let x102 = x9 * qd[5];
+        let x103 = x7 * qd[4];
+        let x104 = x6 * x102;
+        let x105 = x103 + x104;
+        let x106 = x6 * qd[4];
+        let x107 = x7 * x102;
+        let x109 = x107 - x106;
+        let x110 = qd[3] - x100;
+        let x130 = 2.0 * x110;
+        let x131 = 2.0 * x105;
+        let x132 = 2.0 * x109;
+        let x209 = x7 * qd[3];
+        let x210 = x6 * qd[3];
+        let x212 = x9 * qd[4];
+        let x213 = x8 * qd[4];
+        let x215 = x9 * x209;
+        let x216 = x6 * x213;
+        let x218 = x215 - x216;
+        let x219 = x9 * x210;
+        let x221 = x7 * x213;
+        let x223 = x219 + x221;
+        let x225 = qd[5] * x212;
+        let x227 = qd[5] * x213;
+        let x229 = qd[4] * x210;
+        let x231 = x102 * x209;
+        let x232 = x6 * x227;
+        let x234 = x231 - x232;
+        let x235 = x234 - x229;
+        let x236 = qd[4] * x209;
+        let x237 = x102 * x210;
+        let x239 = x7 * x227;
+        let x241 = x237 + x239;
+        let x244 = x236 + x241;
+        let x246 = 2.0 * x225;
+        let x248 = 2.0 * x235;
+        let x249 = 2.0 * x244;
+        let x255 = x131 * x210;
+        let x257 = x7 * x248;
+        let x258 = x257 - x255;
+        let x260 = x132 * x209;
+        let x261 = x6 * x249;
+        let x263 = x260 - x261;
+        let x268 = x130 * x212;
+        let x269 = x8 * x246;
+        let x271 = x268 - x269;
+        let x274 = x131 * x218;
+        let x275 = x16 * x248;
+        let x276 = x274 + x275;
+        let x278 = x132 * x223;
+        let x280 = x17 * x249;
+        let x282 = x278 + x280;
+        let x292 = x109 * x131;
+        let x294 = x105 * x132;
+        let x302 = x6 * x100;
+        let x304 = x7 * x100;
+        let x306 = x102 * x130;
+        let x310 = x131 * x302;
+        let x314 = x132 * x304;
+        let x359 = x246 * k[1];
+        let x360 = 0.5 * x359;
+        let x361 = x258 * k[1];
+        let x362 = x263 * k[1];
+        let x364 = x361 - x362;
+        let x365 = 0.5 * x364;
+        let x366 = x271 * k[1];
+        let x368 = x276 * k[1];
+        let x369 = x282 * k[1];
+        let x371 = x368 - x366;
+        let x372 = x371 - x369;
+        let x373 = 0.5 * x372;
+        let x374 = x292 * k[1];
+        let x375 = x294 * k[1];
+        let x377 = x374 - x375;
+        let x378 = 0.5 * x377;
+        let x379 = x360 + x378;
+        let x380 = x306 * k[1];
+        let x381 = x310 * k[1];
+        let x382 = x314 * k[1];
+        let x383 = x380 + x381;
+        let x384 = x382 + x383;
+        let x385 = 0.5 * x384;
+        let x386 = x365 + x385;
+        let x387 = -x386;
+        let x388 = -x373;
         out[0] = 0.0;
-        out[1] = k[2];
+        out[1] = k[3];
         out[2] = 0.0;
-        out[3] = x370;
-        out[4] = x378;
-        out[5] = x379;
+        out[3] = x379;
+        out[4] = x387;
+        out[5] = x388;
     }
     /// Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.
     pub fn eval_newton(
@@ -665,7 +709,7 @@ pub mod exact {
         mass: &mut [f64],
         force: &mut [f64],
     ) {
-        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
+        let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
         let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
         let phi: &mut [f64; 1] = phi.try_into().expect("phi must have 1 entries");
@@ -677,7 +721,7 @@ pub mod exact {
     }
     #[inline(never)]
     fn eval_newton_part_0(
-        k: &[f64; 5],
+        k: &[f64; 6],
         q: &[f64; 6],
         qd: &[f64; 6],
         phi: &mut [f64; 1],
@@ -697,155 +741,155 @@ pub mod exact {
         let x38 = x35 + x36;
         let x39 = x37 + x38;
         let x40 = x39.sqrt();
-        let x42 = x40 - 1.0;
-        let x44 = q[0] * 2.0;
-        let x45 = q[1] * 2.0;
-        let x46 = q[2] * 2.0;
-        let x47 = x40 * 2.0;
-        let x48 = 1.0 / x47;
-        let x49 = x44 * x48;
-        let x50 = x45 * x48;
-        let x51 = x46 * x48;
-        let x93 = x8 * qd[5];
-        let x95 = x9 * qd[5];
-        let x96 = x7 * qd[4];
-        let x97 = x6 * x95;
-        let x98 = x96 + x97;
-        let x99 = x6 * qd[4];
-        let x100 = x7 * x95;
-        let x102 = x100 - x99;
-        let x103 = qd[3] - x93;
-        let x123 = 2.0 * x103;
-        let x124 = 2.0 * x98;
-        let x125 = 2.0 * x102;
-        let x157 = x8 * 2.0;
-        let x163 = x7 * 2.0;
-        let x164 = x6 * 2.0;
-        let x166 = x7 * x163;
-        let x168 = x6 * x164;
-        let x174 = x16 * 2.0;
-        let x175 = x17 * 2.0;
-        let x176 = x7 * x174;
-        let x178 = x6 * x175;
-        let x183 = x16 * x163;
-        let x185 = x17 * x164;
-        let x191 = x8 * x157;
-        let x195 = x16 * x174;
-        let x197 = x17 * x175;
-        let x202 = x7 * qd[3];
-        let x203 = x6 * qd[3];
-        let x205 = x9 * qd[4];
-        let x206 = x8 * qd[4];
-        let x208 = x9 * x202;
-        let x209 = x6 * x206;
-        let x211 = x208 - x209;
-        let x212 = x9 * x203;
-        let x214 = x7 * x206;
-        let x216 = x212 + x214;
-        let x218 = qd[5] * x205;
-        let x220 = qd[5] * x206;
-        let x222 = qd[4] * x203;
-        let x224 = x95 * x202;
-        let x225 = x6 * x220;
-        let x227 = x224 - x225;
-        let x228 = x227 - x222;
-        let x229 = qd[4] * x202;
-        let x230 = x95 * x203;
-        let x232 = x7 * x220;
-        let x234 = x230 + x232;
-        let x237 = x229 + x234;
-        let x239 = 2.0 * x218;
-        let x241 = 2.0 * x228;
-        let x242 = 2.0 * x237;
-        let x248 = x124 * x203;
-        let x250 = x7 * x241;
-        let x251 = x250 - x248;
-        let x253 = x125 * x202;
-        let x254 = x6 * x242;
-        let x256 = x253 - x254;
-        let x261 = x123 * x205;
-        let x262 = x8 * x239;
-        let x264 = x261 - x262;
-        let x267 = x124 * x211;
-        let x268 = x16 * x241;
-        let x269 = x267 + x268;
-        let x271 = x125 * x216;
-        let x273 = x17 * x242;
-        let x275 = x271 + x273;
-        let x285 = x102 * x124;
-        let x287 = x98 * x125;
-        let x295 = x6 * x93;
-        let x297 = x7 * x93;
-        let x299 = x95 * x123;
-        let x303 = x124 * x295;
-        let x307 = x125 * x297;
-        let x327 = x157 * k[0];
-        let x328 = 0.5 * x327;
-        let x329 = -x328;
-        let x330 = x166 * k[0];
-        let x331 = x168 * k[0];
-        let x332 = x330 + x331;
-        let x333 = 0.5 * x332;
-        let x334 = x176 * k[0];
-        let x335 = x178 * k[0];
-        let x337 = x334 - x335;
-        let x338 = 0.5 * x337;
-        let x339 = x183 * k[0];
-        let x340 = x185 * k[0];
-        let x342 = x339 - x340;
-        let x343 = 0.5 * x342;
-        let x344 = x191 * k[0];
-        let x345 = x195 * k[0];
-        let x346 = x197 * k[0];
-        let x347 = x344 + x345;
-        let x348 = x346 + x347;
-        let x349 = 0.5 * x348;
-        let x350 = x239 * k[0];
-        let x351 = 0.5 * x350;
-        let x352 = x251 * k[0];
-        let x353 = x256 * k[0];
-        let x355 = x352 - x353;
-        let x356 = 0.5 * x355;
-        let x357 = x264 * k[0];
-        let x359 = x269 * k[0];
-        let x360 = x275 * k[0];
-        let x362 = x359 - x357;
-        let x363 = x362 - x360;
-        let x364 = 0.5 * x363;
-        let x365 = x285 * k[0];
-        let x366 = x287 * k[0];
-        let x368 = x365 - x366;
-        let x369 = 0.5 * x368;
-        let x370 = x351 + x369;
-        let x371 = x299 * k[0];
-        let x372 = x303 * k[0];
-        let x373 = x307 * k[0];
-        let x374 = x371 + x372;
-        let x375 = x373 + x374;
-        let x376 = 0.5 * x375;
-        let x377 = x356 + x376;
-        let x378 = -x377;
-        let x379 = -x364;
-        phi[0] = x42;
-        phi_q[0] = x49;
-        phi_q[1] = x50;
-        phi_q[2] = x51;
-        mass[0] = k[3];
-        mass[1] = k[3];
-        mass[2] = k[3];
-        mass[3] = k[4];
-        mass[4] = x329;
-        mass[5] = x333;
-        mass[6] = x338;
-        mass[7] = x329;
-        mass[8] = x343;
-        mass[9] = x349;
+        let x45 = q[0] * 2.0;
+        let x46 = q[1] * 2.0;
+        let x47 = q[2] * 2.0;
+        let x48 = x40 * 2.0;
+        let x49 = 1.0 / x48;
+        let x50 = x45 * x49;
+        let x51 = x46 * x49;
+        let x52 = x47 * x49;
+        let x100 = x8 * qd[5];
+        let x102 = x9 * qd[5];
+        let x103 = x7 * qd[4];
+        let x104 = x6 * x102;
+        let x105 = x103 + x104;
+        let x106 = x6 * qd[4];
+        let x107 = x7 * x102;
+        let x109 = x107 - x106;
+        let x110 = qd[3] - x100;
+        let x130 = 2.0 * x110;
+        let x131 = 2.0 * x105;
+        let x132 = 2.0 * x109;
+        let x164 = x8 * 2.0;
+        let x170 = x7 * 2.0;
+        let x171 = x6 * 2.0;
+        let x173 = x7 * x170;
+        let x175 = x6 * x171;
+        let x181 = x16 * 2.0;
+        let x182 = x17 * 2.0;
+        let x183 = x7 * x181;
+        let x185 = x6 * x182;
+        let x190 = x16 * x170;
+        let x192 = x17 * x171;
+        let x198 = x8 * x164;
+        let x202 = x16 * x181;
+        let x204 = x17 * x182;
+        let x209 = x7 * qd[3];
+        let x210 = x6 * qd[3];
+        let x212 = x9 * qd[4];
+        let x213 = x8 * qd[4];
+        let x215 = x9 * x209;
+        let x216 = x6 * x213;
+        let x218 = x215 - x216;
+        let x219 = x9 * x210;
+        let x221 = x7 * x213;
+        let x223 = x219 + x221;
+        let x225 = qd[5] * x212;
+        let x227 = qd[5] * x213;
+        let x229 = qd[4] * x210;
+        let x231 = x102 * x209;
+        let x232 = x6 * x227;
+        let x234 = x231 - x232;
+        let x235 = x234 - x229;
+        let x236 = qd[4] * x209;
+        let x237 = x102 * x210;
+        let x239 = x7 * x227;
+        let x241 = x237 + x239;
+        let x244 = x236 + x241;
+        let x246 = 2.0 * x225;
+        let x248 = 2.0 * x235;
+        let x249 = 2.0 * x244;
+        let x255 = x131 * x210;
+        let x257 = x7 * x248;
+        let x258 = x257 - x255;
+        let x260 = x132 * x209;
+        let x261 = x6 * x249;
+        let x263 = x260 - x261;
+        let x268 = x130 * x212;
+        let x269 = x8 * x246;
+        let x271 = x268 - x269;
+        let x274 = x131 * x218;
+        let x275 = x16 * x248;
+        let x276 = x274 + x275;
+        let x278 = x132 * x223;
+        let x280 = x17 * x249;
+        let x282 = x278 + x280;
+        let x292 = x109 * x131;
+        let x294 = x105 * x132;
+        let x302 = x6 * x100;
+        let x304 = x7 * x100;
+        let x306 = x102 * x130;
+        let x310 = x131 * x302;
+        let x314 = x132 * x304;
+        let x329 = x40 + k[0];
+        let x336 = x164 * k[1];
+        let x337 = 0.5 * x336;
+        let x338 = -x337;
+        let x339 = x173 * k[1];
+        let x340 = x175 * k[1];
+        let x341 = x339 + x340;
+        let x342 = 0.5 * x341;
+        let x343 = x183 * k[1];
+        let x344 = x185 * k[1];
+        let x346 = x343 - x344;
+        let x347 = 0.5 * x346;
+        let x348 = x190 * k[1];
+        let x349 = x192 * k[1];
+        let x351 = x348 - x349;
+        let x352 = 0.5 * x351;
+        let x353 = x198 * k[1];
+        let x354 = x202 * k[1];
+        let x355 = x204 * k[1];
+        let x356 = x353 + x354;
+        let x357 = x355 + x356;
+        let x358 = 0.5 * x357;
+        let x359 = x246 * k[1];
+        let x360 = 0.5 * x359;
+        let x361 = x258 * k[1];
+        let x362 = x263 * k[1];
+        let x364 = x361 - x362;
+        let x365 = 0.5 * x364;
+        let x366 = x271 * k[1];
+        let x368 = x276 * k[1];
+        let x369 = x282 * k[1];
+        let x371 = x368 - x366;
+        let x372 = x371 - x369;
+        let x373 = 0.5 * x372;
+        let x374 = x292 * k[1];
+        let x375 = x294 * k[1];
+        let x377 = x374 - x375;
+        let x378 = 0.5 * x377;
+        let x379 = x360 + x378;
+        let x380 = x306 * k[1];
+        let x381 = x310 * k[1];
+        let x382 = x314 * k[1];
+        let x383 = x380 + x381;
+        let x384 = x382 + x383;
+        let x385 = 0.5 * x384;
+        let x386 = x365 + x385;
+        let x387 = -x386;
+        let x388 = -x373;
+        phi[0] = x329;
+        phi_q[0] = x50;
+        phi_q[1] = x51;
+        phi_q[2] = x52;
+        mass[0] = k[4];
+        mass[1] = k[4];
+        mass[2] = k[4];
+        mass[3] = k[5];
+        mass[4] = x338;
+        mass[5] = x342;
+        mass[6] = x347;
+        mass[7] = x338;
+        mass[8] = x352;
+        mass[9] = x358;
         force[0] = 0.0;
-        force[1] = k[2];
+        force[1] = k[3];
         force[2] = 0.0;
-        force[3] = x370;
-        force[4] = x378;
-        force[5] = x379;
+        force[3] = x379;
+        force[4] = x387;
+        force[5] = x388;
     }
 }
 /// The system after substituting rows `a·qᵢ + b·qⱼ + g(t) = 0` away (docs/design.md,
@@ -927,51 +971,56 @@ pub mod reduced {
         out[8] = 0.0;
     }
     /// Number of values `setup` computes from the run-time parameters.
-    pub const N_K: usize = 4;
+    pub const N_K: usize = 5;
     /// `setup` at the file's parameter values: what the types without parameters read.
-    pub static K: [f64; 4] = [9.81f64, -9.81f64, 1f64, 0.00004f64];
+    pub static K: [f64; 5] = [-1f64, 9.81f64, -9.81f64, 1f64, 0.00004f64];
     /// The values the per-step functions read (`k`), from the run-time parameters `p`.
     pub fn setup(p: &[f64], k: &mut [f64]) {
-        let p: &[f64; 1] = p.try_into().expect("p must have 1 entries");
-        let k: &mut [f64; 4] = k.try_into().expect("k must have 4 entries");
+        let p: &[f64; 8] = p.try_into().expect("p must have 8 entries");
+        let k: &mut [f64; 5] = k.try_into().expect("k must have 5 entries");
         setup_part_0(p, k);
     }
     #[inline(never)]
-    fn setup_part_0(p: &[f64; 1], k: &mut [f64; 4]) {
-        let x83 = p[0] * 0.4;
-        let x85 = x83 * 0.01;
-        let x86 = 0.01 * x85;
-        let x89 = p[0] * 9.81;
-        let x90 = -x89;
-        let x153 = 2.0 * p[0];
-        let x154 = 0.5 * x153;
-        let x155 = 2.0 * x86;
-        let x156 = 0.5 * x155;
-        k[0] = x89;
-        k[1] = x90;
-        k[2] = x154;
-        k[3] = x156;
+    fn setup_part_0(p: &[f64; 8], k: &mut [f64; 5]) {
+        let x42 = -p[7];
+        let x90 = p[0] * 0.4;
+        let x92 = x90 * 0.01;
+        let x93 = 0.01 * x92;
+        let x96 = p[0] * 9.81;
+        let x97 = -x96;
+        let x160 = 2.0 * p[0];
+        let x161 = 0.5 * x160;
+        let x162 = 2.0 * x93;
+        let x163 = 0.5 * x162;
+        k[0] = x42;
+        k[1] = x96;
+        k[2] = x97;
+        k[3] = x161;
+        k[4] = x163;
     }
     /// Constraint residual Φ(q, t).
-    pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
+    pub fn phi(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
         let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
         let _ = t;
-        phi_part_0(q, out);
+        phi_part_0(k, q, out);
     }
     #[inline(never)]
-    fn phi_part_0(q: &[f64; 3], out: &mut [f64; 1]) {
+    fn phi_part_0(k: &[f64; 5], q: &[f64; 3], out: &mut [f64; 1]) {
         let x35 = q[0] * q[0];
         let x36 = q[1] * q[1];
         let x38 = x35 + x36;
-        let x321 = x38.sqrt();
-        let x322 = x321 - 1.0;
-        out[0] = x322;
+        let x328 = x38.sqrt();
+        let x350 = x328 + k[0];
+        out[0] = x350;
     }
     /// Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.
-    pub fn phi_q(q: &[f64], t: f64, out: &mut [f64]) {
+    pub fn phi_q(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
         let out: &mut [f64; 2] = out.try_into().expect("out must have 2 entries");
+        let _ = k;
         let _ = t;
         phi_q_part_0(q, out);
     }
@@ -980,20 +1029,22 @@ pub mod reduced {
         let x35 = q[0] * q[0];
         let x36 = q[1] * q[1];
         let x38 = x35 + x36;
-        let x44 = q[0] * 2.0;
-        let x45 = q[1] * 2.0;
-        let x321 = x38.sqrt();
-        let x323 = 2.0 * x321;
-        let x324 = 1.0 / x323;
-        let x325 = x44 * x324;
-        let x326 = x45 * x324;
-        out[0] = x325;
-        out[1] = x326;
+        let x45 = q[0] * 2.0;
+        let x46 = q[1] * 2.0;
+        let x328 = x38.sqrt();
+        let x330 = 2.0 * x328;
+        let x331 = 1.0 / x330;
+        let x332 = x45 * x331;
+        let x333 = x46 * x331;
+        out[0] = x332;
+        out[1] = x333;
     }
     /// Partial time derivative Φt(q, t).
-    pub fn phi_t(q: &[f64], t: f64, out: &mut [f64]) {
+    pub fn phi_t(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
         let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
+        let _ = k;
         let _ = q;
         let _ = t;
         phi_t_part_0(out);
@@ -1003,10 +1054,12 @@ pub mod reduced {
         out[0] = 0.0;
     }
     /// Acceleration right-hand side γ(q, q̇, t) = −D²Φ[(q̇,1),(q̇,1)].
-    pub fn gamma(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+    pub fn gamma(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
         let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
+        let _ = k;
         let _ = t;
         gamma_part_0(q, qd, out);
     }
@@ -1015,31 +1068,32 @@ pub mod reduced {
         let x35 = q[0] * q[0];
         let x36 = q[1] * q[1];
         let x38 = x35 + x36;
-        let x44 = q[0] * 2.0;
-        let x45 = q[1] * 2.0;
-        let x58 = x44 * qd[0];
-        let x59 = x45 * qd[1];
-        let x61 = x58 + x59;
-        let x64 = 2.0 * qd[0];
-        let x65 = 2.0 * qd[1];
-        let x71 = qd[0] * x64;
-        let x72 = qd[1] * x65;
-        let x74 = x71 + x72;
-        let x321 = x38.sqrt();
-        let x323 = 2.0 * x321;
-        let x324 = 1.0 / x323;
-        let x327 = x61 * x324;
-        let x328 = 2.0 * x327;
-        let x329 = x324 * x324;
-        let x330 = x328 * x329;
-        let x332 = x74 * x324;
-        let x333 = x61 * x330;
-        let x335 = x332 - x333;
-        let x336 = -x335;
-        out[0] = x336;
+        let x45 = q[0] * 2.0;
+        let x46 = q[1] * 2.0;
+        let x59 = x45 * qd[0];
+        let x60 = x46 * qd[1];
+        let x62 = x59 + x60;
+        let x65 = 2.0 * qd[0];
+        let x66 = 2.0 * qd[1];
+        let x72 = qd[0] * x65;
+        let x73 = qd[1] * x66;
+        let x75 = x72 + x73;
+        let x328 = x38.sqrt();
+        let x330 = 2.0 * x328;
+        let x331 = 1.0 / x330;
+        let x334 = x62 * x331;
+        let x335 = 2.0 * x334;
+        let x336 = x331 * x331;
+        let x337 = x335 * x336;
+        let x339 = x75 * x331;
+        let x340 = x62 * x337;
+        let x342 = x339 - x340;
+        let x343 = -x342;
+        out[0] = x343;
     }
     /// Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.
     pub fn eval_kinematics(
+        k: &[f64],
         q: &[f64],
         qd: &[f64],
         t: f64,
@@ -1048,6 +1102,7 @@ pub mod reduced {
         phi_t: &mut [f64],
         gamma: &mut [f64],
     ) {
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
         let phi: &mut [f64; 1] = phi.try_into().expect("phi must have 1 entries");
@@ -1055,10 +1110,11 @@ pub mod reduced {
         let phi_t: &mut [f64; 1] = phi_t.try_into().expect("phi_t must have 1 entries");
         let gamma: &mut [f64; 1] = gamma.try_into().expect("gamma must have 1 entries");
         let _ = t;
-        eval_kinematics_part_0(q, qd, phi, phi_q, phi_t, gamma);
+        eval_kinematics_part_0(k, q, qd, phi, phi_q, phi_t, gamma);
     }
     #[inline(never)]
     fn eval_kinematics_part_0(
+        k: &[f64; 5],
         q: &[f64; 3],
         qd: &[f64; 3],
         phi: &mut [f64; 1],
@@ -1069,51 +1125,51 @@ pub mod reduced {
         let x35 = q[0] * q[0];
         let x36 = q[1] * q[1];
         let x38 = x35 + x36;
-        let x44 = q[0] * 2.0;
-        let x45 = q[1] * 2.0;
-        let x58 = x44 * qd[0];
-        let x59 = x45 * qd[1];
-        let x61 = x58 + x59;
-        let x64 = 2.0 * qd[0];
-        let x65 = 2.0 * qd[1];
-        let x71 = qd[0] * x64;
-        let x72 = qd[1] * x65;
-        let x74 = x71 + x72;
-        let x321 = x38.sqrt();
-        let x322 = x321 - 1.0;
-        let x323 = 2.0 * x321;
-        let x324 = 1.0 / x323;
-        let x325 = x44 * x324;
-        let x326 = x45 * x324;
-        let x327 = x61 * x324;
-        let x328 = 2.0 * x327;
-        let x329 = x324 * x324;
-        let x330 = x328 * x329;
-        let x332 = x74 * x324;
-        let x333 = x61 * x330;
-        let x335 = x332 - x333;
-        let x336 = -x335;
-        phi[0] = x322;
-        phi_q[0] = x325;
-        phi_q[1] = x326;
+        let x45 = q[0] * 2.0;
+        let x46 = q[1] * 2.0;
+        let x59 = x45 * qd[0];
+        let x60 = x46 * qd[1];
+        let x62 = x59 + x60;
+        let x65 = 2.0 * qd[0];
+        let x66 = 2.0 * qd[1];
+        let x72 = qd[0] * x65;
+        let x73 = qd[1] * x66;
+        let x75 = x72 + x73;
+        let x328 = x38.sqrt();
+        let x330 = 2.0 * x328;
+        let x331 = 1.0 / x330;
+        let x332 = x45 * x331;
+        let x333 = x46 * x331;
+        let x334 = x62 * x331;
+        let x335 = 2.0 * x334;
+        let x336 = x331 * x331;
+        let x337 = x335 * x336;
+        let x339 = x75 * x331;
+        let x340 = x62 * x337;
+        let x342 = x339 - x340;
+        let x343 = -x342;
+        let x350 = x328 + k[0];
+        phi[0] = x350;
+        phi_q[0] = x332;
+        phi_q[1] = x333;
         phi_t[0] = 0.0;
-        gamma[0] = x336;
+        gamma[0] = x343;
     }
     /// Potential energy of gravity and springs, written to `out[0]`.
     pub fn potential_into(k: &[f64], q: &[f64], out: &mut [f64]) {
-        let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
         let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
         potential_into_part_0(k, q, out);
     }
     #[inline(never)]
-    fn potential_into_part_0(k: &[f64; 4], q: &[f64; 3], out: &mut [f64; 1]) {
-        let x339 = q[1] * k[0];
-        out[0] = x339;
+    fn potential_into_part_0(k: &[f64; 5], q: &[f64; 3], out: &mut [f64; 1]) {
+        let x347 = q[1] * k[1];
+        out[0] = x347;
     }
     /// Power of the non-conservative loads, written to `out[0]`.
     pub fn power_nc_into(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-        let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
+        let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
         let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
         let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
@@ -1186,7 +1242,7 @@ pub mod reduced {
             dq: &mut [f64],
             dqd: &mut [f64],
         ) {
-            let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
+            let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
             let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
             let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
             let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
@@ -1198,21 +1254,21 @@ pub mod reduced {
         }
         /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
         pub fn mass(k: &[f64], q: &[f64], out: &mut [f64]) {
-            let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
+            let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
             let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
             let out: &mut [f64; 3] = out.try_into().expect("out must have 3 entries");
             let _ = q;
             mass_part_0(k, out);
         }
         #[inline(never)]
-        fn mass_part_0(k: &[f64; 4], out: &mut [f64; 3]) {
-            out[0] = k[2];
-            out[1] = k[2];
-            out[2] = k[3];
+        fn mass_part_0(k: &[f64; 5], out: &mut [f64; 3]) {
+            out[0] = k[3];
+            out[1] = k[3];
+            out[2] = k[4];
         }
         /// Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.
         pub fn force(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-            let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
+            let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
             let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
             let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
             let out: &mut [f64; 3] = out.try_into().expect("out must have 3 entries");
@@ -1222,9 +1278,9 @@ pub mod reduced {
             force_part_0(k, out);
         }
         #[inline(never)]
-        fn force_part_0(k: &[f64; 4], out: &mut [f64; 3]) {
+        fn force_part_0(k: &[f64; 5], out: &mut [f64; 3]) {
             out[0] = 0.0;
-            out[1] = k[1];
+            out[1] = k[2];
             out[2] = 0.0;
         }
         /// Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.
@@ -1238,7 +1294,7 @@ pub mod reduced {
             mass: &mut [f64],
             force: &mut [f64],
         ) {
-            let k: &[f64; 4] = k.try_into().expect("k must have 4 entries");
+            let k: &[f64; 5] = k.try_into().expect("k must have 5 entries");
             let q: &[f64; 3] = q.try_into().expect("q must have n_coords entries");
             let qd: &[f64; 3] = qd.try_into().expect("qd must have n_coords entries");
             let phi: &mut [f64; 1] = phi.try_into().expect("phi must have 1 entries");
@@ -1255,7 +1311,7 @@ pub mod reduced {
         }
         #[inline(never)]
         fn eval_newton_part_0(
-            k: &[f64; 4],
+            k: &[f64; 5],
             q: &[f64; 3],
             phi: &mut [f64; 1],
             phi_q: &mut [f64; 2],
@@ -1265,22 +1321,22 @@ pub mod reduced {
             let x35 = q[0] * q[0];
             let x36 = q[1] * q[1];
             let x38 = x35 + x36;
-            let x44 = q[0] * 2.0;
-            let x45 = q[1] * 2.0;
-            let x321 = x38.sqrt();
-            let x322 = x321 - 1.0;
-            let x323 = 2.0 * x321;
-            let x324 = 1.0 / x323;
-            let x325 = x44 * x324;
-            let x326 = x45 * x324;
-            phi[0] = x322;
-            phi_q[0] = x325;
-            phi_q[1] = x326;
-            mass[0] = k[2];
-            mass[1] = k[2];
-            mass[2] = k[3];
+            let x45 = q[0] * 2.0;
+            let x46 = q[1] * 2.0;
+            let x328 = x38.sqrt();
+            let x330 = 2.0 * x328;
+            let x331 = 1.0 / x330;
+            let x332 = x45 * x331;
+            let x333 = x46 * x331;
+            let x350 = x328 + k[0];
+            phi[0] = x350;
+            phi_q[0] = x332;
+            phi_q[1] = x333;
+            mass[0] = k[3];
+            mass[1] = k[3];
+            mass[2] = k[4];
             force[0] = 0.0;
-            force[1] = k[1];
+            force[1] = k[2];
             force[2] = 0.0;
         }
     }
@@ -1292,16 +1348,16 @@ pub mod reduced {
             &exact::INFO
         }
         fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
-            phi(q, t, out)
+            phi(&K, q, t, out)
         }
         fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
-            phi_q(q, t, out)
+            phi_q(&K, q, t, out)
         }
         fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
-            phi_t(q, t, out)
+            phi_t(&K, q, t, out)
         }
         fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-            gamma(q, qd, t, out)
+            gamma(&K, q, qd, t, out)
         }
         fn mass(&self, q: &[f64], out: &mut [f64]) {
             exact::mass(&K, q, out)
@@ -1335,7 +1391,7 @@ pub mod reduced {
             t: f64,
             out: KinematicOutputs<'_>,
         ) {
-            eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+            eval_kinematics(&K, q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
         }
     }
     /// The reduced model at run-time parameter values.
@@ -1356,16 +1412,16 @@ pub mod reduced {
             &exact::INFO
         }
         fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
-            phi(q, t, out)
+            phi(&self.k, q, t, out)
         }
         fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
-            phi_q(q, t, out)
+            phi_q(&self.k, q, t, out)
         }
         fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
-            phi_t(q, t, out)
+            phi_t(&self.k, q, t, out)
         }
         fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-            gamma(q, qd, t, out)
+            gamma(&self.k, q, qd, t, out)
         }
         fn mass(&self, q: &[f64], out: &mut [f64]) {
             exact::mass(&self.k, q, out)
@@ -1408,7 +1464,7 @@ pub mod reduced {
             t: f64,
             out: KinematicOutputs<'_>,
         ) {
-            eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+            eval_kinematics(&self.k, q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
         }
     }
 }
@@ -1420,16 +1476,16 @@ impl Mechanism for Exact {
         &exact::INFO
     }
     fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        phi(q, t, out)
+        phi(&K, q, t, out)
     }
     fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        phi_q(q, t, out)
+        phi_q(&K, q, t, out)
     }
     fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        phi_t(q, t, out)
+        phi_t(&K, q, t, out)
     }
     fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-        gamma(q, qd, t, out)
+        gamma(&K, q, qd, t, out)
     }
     fn mass(&self, q: &[f64], out: &mut [f64]) {
         exact::mass(&K, q, out)
@@ -1457,7 +1513,7 @@ impl Mechanism for Exact {
         exact::eval_newton(&K, q, qd, t, out.phi, out.phi_q, out.mass, out.force)
     }
     fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
-        eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+        eval_kinematics(&K, q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
     }
 }
 impl Exact {
@@ -1475,16 +1531,16 @@ impl Mechanism for ExactAt {
         &exact::INFO
     }
     fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        phi(q, t, out)
+        phi(&self.0.k, q, t, out)
     }
     fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        phi_q(q, t, out)
+        phi_q(&self.0.k, q, t, out)
     }
     fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        phi_t(q, t, out)
+        phi_t(&self.0.k, q, t, out)
     }
     fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-        gamma(q, qd, t, out)
+        gamma(&self.0.k, q, qd, t, out)
     }
     fn mass(&self, q: &[f64], out: &mut [f64]) {
         exact::mass(&self.0.k, q, out)
@@ -1512,7 +1568,7 @@ impl Mechanism for ExactAt {
         exact::eval_newton(&self.0.k, q, qd, t, out.phi, out.phi_q, out.mass, out.force)
     }
     fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
-        eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+        eval_kinematics(&self.0.k, q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
     }
 }
 /// The formulation listed first in the mechanism file.

@@ -24,15 +24,17 @@ use symbody_runtime::{
     BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
     MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Rotation,
 };
+use symbody_runtime::parameters::{ParameterError, RunTimeParameters};
 /// Constraint residual Φ(q, t).
-pub fn phi(q: &[f64], t: f64, out: &mut [f64]) {
+pub fn phi(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
     let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
     let out: &mut [f64; 4] = out.try_into().expect("out must have 4 entries");
     let _ = t;
-    phi_part_0(q, out);
+    phi_part_0(k, q, out);
 }
 #[inline(never)]
-fn phi_part_0(q: &[f64; 7], out: &mut [f64; 4]) {
+fn phi_part_0(k: &[f64; 8], q: &[f64; 7], out: &mut [f64; 4]) {
     let x9 = q[3] * q[3];
     let x10 = q[4] * q[4];
     let x11 = q[5] * q[5];
@@ -59,100 +61,103 @@ fn phi_part_0(q: &[f64; 7], out: &mut [f64; 4]) {
     let x40 = 2.0 * x38;
     let x45 = x31 - x33;
     let x46 = x37 + x40;
-    let x50 = x16 * 0.00000000000000011102230246251565;
-    let x51 = x29 * 0.9999999999999999;
-    let x52 = x50 + x51;
-    let x53 = x35 * 0.00000000000000011102230246251565;
-    let x54 = x19 * 0.9999999999999999;
-    let x55 = x53 + x54;
-    let x56 = x45 * 0.00000000000000011102230246251565;
-    let x57 = x46 * 0.9999999999999999;
-    let x58 = x56 + x57;
-    let x59 = q[0] + x52;
-    let x60 = q[1] + x55;
-    let x61 = q[2] + x58;
-    let x62 = -x59;
-    let x63 = -x60;
-    let x64 = -x61;
     let x65 = x11 + x13;
     let x66 = x12 + x65;
     let x67 = x66 - 1.0;
-    out[0] = x62;
-    out[1] = x63;
-    out[2] = x64;
+    let x666 = x16 * k[0];
+    let x667 = x29 * k[1];
+    let x668 = x666 + x667;
+    let x669 = x35 * k[0];
+    let x670 = x19 * k[1];
+    let x671 = x669 + x670;
+    let x672 = x45 * k[0];
+    let x673 = x46 * k[1];
+    let x674 = x672 + x673;
+    let x675 = q[0] + x668;
+    let x676 = q[1] + x671;
+    let x677 = q[2] + x674;
+    let x678 = -x675;
+    let x679 = -x676;
+    let x680 = -x677;
+    out[0] = x678;
+    out[1] = x679;
+    out[2] = x680;
     out[3] = x67;
 }
 /// Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.
-pub fn phi_q(q: &[f64], t: f64, out: &mut [f64]) {
+pub fn phi_q(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
     let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
     let out: &mut [f64; 19] = out.try_into().expect("out must have 19 entries");
     let _ = t;
-    phi_q_part_0(q, out);
+    phi_q_part_0(k, q, out);
 }
 #[inline(never)]
-fn phi_q_part_0(q: &[f64; 7], out: &mut [f64; 19]) {
+fn phi_q_part_0(k: &[f64; 8], q: &[f64; 7], out: &mut [f64; 19]) {
     let x68 = q[3] * 2.0;
     let x69 = q[4] * 2.0;
     let x70 = q[5] * 2.0;
     let x71 = q[6] * 2.0;
     let x72 = 2.0 * x68;
-    let x75 = 0.00000000000000011102230246251565 * x72;
-    let x76 = 0.9999999999999999 * x71;
-    let x78 = x75 - x76;
-    let x79 = 0.00000000000000011102230246251565 * x71;
-    let x80 = 0.9999999999999999 * x72;
-    let x81 = x79 + x80;
-    let x82 = 0.00000000000000011102230246251565 * x70;
-    let x83 = -x82;
-    let x84 = 0.9999999999999999 * x69;
-    let x85 = x84 - x82;
-    let x86 = -x78;
-    let x87 = -x81;
-    let x88 = -x85;
     let x89 = 2.0 * x69;
-    let x90 = 0.00000000000000011102230246251565 * x89;
-    let x91 = 0.9999999999999999 * x70;
-    let x92 = x90 + x91;
-    let x93 = 0.9999999999999999 * x68;
-    let x94 = x79 + x93;
-    let x95 = -x92;
-    let x96 = -x94;
     let x97 = 2.0 * x70;
-    let x99 = 0.00000000000000011102230246251565 * x69;
-    let x100 = 0.9999999999999999 * x97;
-    let x101 = x99 + x100;
-    let x102 = 0.00000000000000011102230246251565 * x68;
-    let x103 = -x102;
-    let x104 = x76 - x102;
-    let x105 = -x84;
-    let x106 = -x101;
-    let x107 = -x104;
-    let x109 = x91 + x99;
-    let x110 = -x109;
+    let x681 = x72 * k[0];
+    let x682 = x71 * k[1];
+    let x684 = x681 - x682;
+    let x685 = x71 * k[0];
+    let x686 = x72 * k[1];
+    let x687 = x685 + x686;
+    let x688 = x70 * k[0];
+    let x689 = -x688;
+    let x690 = x69 * k[1];
+    let x691 = x690 - x688;
+    let x692 = -x684;
+    let x693 = -x687;
+    let x694 = -x691;
+    let x695 = x89 * k[0];
+    let x696 = x70 * k[1];
+    let x697 = x695 + x696;
+    let x698 = x68 * k[1];
+    let x699 = x685 + x698;
+    let x700 = -x697;
+    let x701 = -x699;
+    let x702 = x69 * k[0];
+    let x703 = x97 * k[1];
+    let x704 = x702 + x703;
+    let x705 = x68 * k[0];
+    let x706 = -x705;
+    let x707 = x682 - x705;
+    let x708 = -x690;
+    let x709 = -x704;
+    let x710 = -x707;
+    let x711 = x696 + x702;
+    let x712 = -x711;
     out[0] = -1.0;
-    out[1] = x86;
-    out[2] = x95;
-    out[3] = x105;
-    out[4] = x93;
+    out[1] = x692;
+    out[2] = x700;
+    out[3] = x708;
+    out[4] = x698;
     out[5] = -1.0;
-    out[6] = x87;
-    out[7] = x83;
-    out[8] = x106;
-    out[9] = x103;
+    out[6] = x693;
+    out[7] = x689;
+    out[8] = x709;
+    out[9] = x706;
     out[10] = -1.0;
-    out[11] = x88;
-    out[12] = x96;
-    out[13] = x107;
-    out[14] = x110;
+    out[11] = x694;
+    out[12] = x701;
+    out[13] = x710;
+    out[14] = x712;
     out[15] = x68;
     out[16] = x69;
     out[17] = x70;
     out[18] = x71;
 }
 /// Partial time derivative Φt(q, t).
-pub fn phi_t(q: &[f64], t: f64, out: &mut [f64]) {
+pub fn phi_t(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
     let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
     let out: &mut [f64; 4] = out.try_into().expect("out must have 4 entries");
+    let _ = k;
     let _ = q;
     let _ = t;
     phi_t_part_0(out);
@@ -165,16 +170,17 @@ fn phi_t_part_0(out: &mut [f64; 4]) {
     out[3] = 0.0;
 }
 /// Acceleration right-hand side γ(q, q̇, t) = −D²Φ[(q̇,1),(q̇,1)].
-pub fn gamma(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+pub fn gamma(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
     let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
     let qd: &[f64; 7] = qd.try_into().expect("qd must have n_coords entries");
     let out: &mut [f64; 4] = out.try_into().expect("out must have 4 entries");
     let _ = q;
     let _ = t;
-    gamma_part_0(qd, out);
+    gamma_part_0(k, qd, out);
 }
 #[inline(never)]
-fn gamma_part_0(qd: &[f64; 7], out: &mut [f64; 4]) {
+fn gamma_part_0(k: &[f64; 8], qd: &[f64; 7], out: &mut [f64; 4]) {
     let x173 = 2.0 * qd[3];
     let x174 = 2.0 * qd[4];
     let x175 = 2.0 * qd[5];
@@ -209,25 +215,26 @@ fn gamma_part_0(qd: &[f64; 7], out: &mut [f64; 4]) {
     let x205 = 2.0 * x204;
     let x207 = x195 - x198;
     let x208 = x202 + x205;
-    let x209 = 0.00000000000000011102230246251565 * x182;
-    let x210 = 0.9999999999999999 * x192;
-    let x211 = x209 + x210;
-    let x212 = 0.00000000000000011102230246251565 * x199;
-    let x213 = 0.9999999999999999 * x184;
-    let x214 = x212 + x213;
-    let x215 = 0.00000000000000011102230246251565 * x207;
-    let x216 = 0.9999999999999999 * x208;
-    let x217 = x215 + x216;
     let x221 = x179 + x181;
     let x222 = x180 + x221;
     let x223 = -x222;
-    out[0] = x211;
-    out[1] = x214;
-    out[2] = x217;
+    let x713 = x182 * k[0];
+    let x714 = x192 * k[1];
+    let x715 = x713 + x714;
+    let x716 = x199 * k[0];
+    let x717 = x184 * k[1];
+    let x718 = x716 + x717;
+    let x719 = x207 * k[0];
+    let x720 = x208 * k[1];
+    let x721 = x719 + x720;
+    out[0] = x715;
+    out[1] = x718;
+    out[2] = x721;
     out[3] = x223;
 }
 /// Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.
 pub fn eval_kinematics(
+    k: &[f64],
     q: &[f64],
     qd: &[f64],
     t: f64,
@@ -236,6 +243,7 @@ pub fn eval_kinematics(
     phi_t: &mut [f64],
     gamma: &mut [f64],
 ) {
+    let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
     let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
     let qd: &[f64; 7] = qd.try_into().expect("qd must have n_coords entries");
     let phi: &mut [f64; 4] = phi.try_into().expect("phi must have 4 entries");
@@ -243,10 +251,11 @@ pub fn eval_kinematics(
     let phi_t: &mut [f64; 4] = phi_t.try_into().expect("phi_t must have 4 entries");
     let gamma: &mut [f64; 4] = gamma.try_into().expect("gamma must have 4 entries");
     let _ = t;
-    eval_kinematics_part_0(q, qd, phi, phi_q, phi_t, gamma);
+    eval_kinematics_part_0(k, q, qd, phi, phi_q, phi_t, gamma);
 }
 #[inline(never)]
 fn eval_kinematics_part_0(
+    k: &[f64; 8],
     q: &[f64; 7],
     qd: &[f64; 7],
     phi: &mut [f64; 4],
@@ -280,21 +289,6 @@ fn eval_kinematics_part_0(
     let x40 = 2.0 * x38;
     let x45 = x31 - x33;
     let x46 = x37 + x40;
-    let x50 = x16 * 0.00000000000000011102230246251565;
-    let x51 = x29 * 0.9999999999999999;
-    let x52 = x50 + x51;
-    let x53 = x35 * 0.00000000000000011102230246251565;
-    let x54 = x19 * 0.9999999999999999;
-    let x55 = x53 + x54;
-    let x56 = x45 * 0.00000000000000011102230246251565;
-    let x57 = x46 * 0.9999999999999999;
-    let x58 = x56 + x57;
-    let x59 = q[0] + x52;
-    let x60 = q[1] + x55;
-    let x61 = q[2] + x58;
-    let x62 = -x59;
-    let x63 = -x60;
-    let x64 = -x61;
     let x65 = x11 + x13;
     let x66 = x12 + x65;
     let x67 = x66 - 1.0;
@@ -303,39 +297,8 @@ fn eval_kinematics_part_0(
     let x70 = q[5] * 2.0;
     let x71 = q[6] * 2.0;
     let x72 = 2.0 * x68;
-    let x75 = 0.00000000000000011102230246251565 * x72;
-    let x76 = 0.9999999999999999 * x71;
-    let x78 = x75 - x76;
-    let x79 = 0.00000000000000011102230246251565 * x71;
-    let x80 = 0.9999999999999999 * x72;
-    let x81 = x79 + x80;
-    let x82 = 0.00000000000000011102230246251565 * x70;
-    let x83 = -x82;
-    let x84 = 0.9999999999999999 * x69;
-    let x85 = x84 - x82;
-    let x86 = -x78;
-    let x87 = -x81;
-    let x88 = -x85;
     let x89 = 2.0 * x69;
-    let x90 = 0.00000000000000011102230246251565 * x89;
-    let x91 = 0.9999999999999999 * x70;
-    let x92 = x90 + x91;
-    let x93 = 0.9999999999999999 * x68;
-    let x94 = x79 + x93;
-    let x95 = -x92;
-    let x96 = -x94;
     let x97 = 2.0 * x70;
-    let x99 = 0.00000000000000011102230246251565 * x69;
-    let x100 = 0.9999999999999999 * x97;
-    let x101 = x99 + x100;
-    let x102 = 0.00000000000000011102230246251565 * x68;
-    let x103 = -x102;
-    let x104 = x76 - x102;
-    let x105 = -x84;
-    let x106 = -x101;
-    let x107 = -x104;
-    let x109 = x91 + x99;
-    let x110 = -x109;
     let x173 = 2.0 * qd[3];
     let x174 = 2.0 * qd[4];
     let x175 = 2.0 * qd[5];
@@ -370,42 +333,88 @@ fn eval_kinematics_part_0(
     let x205 = 2.0 * x204;
     let x207 = x195 - x198;
     let x208 = x202 + x205;
-    let x209 = 0.00000000000000011102230246251565 * x182;
-    let x210 = 0.9999999999999999 * x192;
-    let x211 = x209 + x210;
-    let x212 = 0.00000000000000011102230246251565 * x199;
-    let x213 = 0.9999999999999999 * x184;
-    let x214 = x212 + x213;
-    let x215 = 0.00000000000000011102230246251565 * x207;
-    let x216 = 0.9999999999999999 * x208;
-    let x217 = x215 + x216;
     let x221 = x179 + x181;
     let x222 = x180 + x221;
     let x223 = -x222;
-    phi[0] = x62;
+    let x666 = x16 * k[0];
+    let x667 = x29 * k[1];
+    let x668 = x666 + x667;
+    let x669 = x35 * k[0];
+    let x670 = x19 * k[1];
+    let x671 = x669 + x670;
+    let x672 = x45 * k[0];
+    let x673 = x46 * k[1];
+    let x674 = x672 + x673;
+    let x675 = q[0] + x668;
+    let x676 = q[1] + x671;
+    let x677 = q[2] + x674;
+    let x678 = -x675;
+    let x679 = -x676;
+    let x680 = -x677;
+    let x681 = x72 * k[0];
+    let x682 = x71 * k[1];
+    let x684 = x681 - x682;
+    let x685 = x71 * k[0];
+    let x686 = x72 * k[1];
+    let x687 = x685 + x686;
+    let x688 = x70 * k[0];
+    let x689 = -x688;
+    let x690 = x69 * k[1];
+    let x691 = x690 - x688;
+    let x692 = -x684;
+    let x693 = -x687;
+    let x694 = -x691;
+    let x695 = x89 * k[0];
+    let x696 = x70 * k[1];
+    let x697 = x695 + x696;
+    let x698 = x68 * k[1];
+    let x699 = x685 + x698;
+    let x700 = -x697;
+    let x701 = -x699;
+    let x702 = x69 * k[0];
+    let x703 = x97 * k[1];
+    let x704 = x702 + x703;
+    let x705 = x68 * k[0];
+    let x706 = -x705;
+    let x707 = x682 - x705;
+    let x708 = -x690;
+    let x709 = -x704;
+    let x710 = -x707;
+    let x711 = x696 + x702;
+    let x712 = -x711;
+    let x713 = x182 * k[0];
+    let x714 = x192 * k[1];
+    let x715 = x713 + x714;
+    let x716 = x199 * k[0];
+    let x717 = x184 * k[1];
+    let x718 = x716 + x717;
+    let x719 = x207 * k[0];
+    let x720 = x208 * k[1];
+    let x721 = x719 + x720;
+    phi[0] = x678;
     phi_q[0] = -1.0;
-    phi_q[1] = x86;
-    phi_q[2] = x95;
-    phi_q[3] = x105;
-    phi_q[4] = x93;
+    phi_q[1] = x692;
+    phi_q[2] = x700;
+    phi_q[3] = x708;
+    phi_q[4] = x698;
     phi_t[0] = 0.0;
-    gamma[0] = x211;
-    phi[1] = x63;
+    gamma[0] = x715;
+    phi[1] = x679;
     phi_q[5] = -1.0;
-    phi_q[6] = x87;
-    phi_q[7] = x83;
-    phi_q[8] = x106;
-    phi_q[9] = x103;
+    phi_q[6] = x693;
+    phi_q[7] = x689;
+    phi_q[8] = x709;
+    phi_q[9] = x706;
     phi_t[1] = 0.0;
-    gamma[1] = x214;
-    phi[2] = x64;
+    gamma[1] = x718;
+    phi[2] = x680;
     phi_q[10] = -1.0;
-    phi_q[11] = x88;
-    phi_q[12] = x96;
-    phi_q[13] = x107;
-    phi_q[14] = x110;
+    phi_q[11] = x694;
+    phi_q[12] = x701;
+    phi_q[13] = x710;
+    phi_q[14] = x712;
     phi_t[2] = 0.0;
-    gamma[2] = x217;
+    gamma[2] = x721;
     phi[3] = x67;
     phi_q[15] = x68;
     phi_q[16] = x69;
@@ -415,21 +424,24 @@ fn eval_kinematics_part_0(
     gamma[3] = x223;
 }
 /// Potential energy of gravity and springs, written to `out[0]`.
-pub fn potential_into(q: &[f64], out: &mut [f64]) {
+pub fn potential_into(k: &[f64], q: &[f64], out: &mut [f64]) {
+    let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
     let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
     let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
-    potential_into_part_0(q, out);
+    potential_into_part_0(k, q, out);
 }
 #[inline(never)]
-fn potential_into_part_0(q: &[f64; 7], out: &mut [f64; 1]) {
-    let x228 = q[1] * 9.81;
-    out[0] = x228;
+fn potential_into_part_0(k: &[f64; 8], q: &[f64; 7], out: &mut [f64; 1]) {
+    let x726 = q[1] * k[4];
+    out[0] = x726;
 }
 /// Power of the non-conservative loads, written to `out[0]`.
-pub fn power_nc_into(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+pub fn power_nc_into(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+    let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
     let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
     let qd: &[f64; 7] = qd.try_into().expect("qd must have n_coords entries");
     let out: &mut [f64; 1] = out.try_into().expect("out must have 1 entries");
+    let _ = k;
     let _ = q;
     let _ = qd;
     let _ = t;
@@ -530,17 +542,182 @@ pub const T_END: f64 = 60f64;
 /// not such a mechanism).
 pub const PLATFORM: Option<PlatformInfo> = None;
 /// Potential energy of gravity and springs.
-pub fn potential(q: &[f64]) -> f64 {
+pub fn potential(k: &[f64], q: &[f64]) -> f64 {
     let mut out = [0.0];
-    potential_into(q, &mut out);
+    potential_into(k, q, &mut out);
     out[0]
 }
 /// Power of the non-conservative loads.
-pub fn power_nc(q: &[f64], qd: &[f64], t: f64) -> f64 {
+pub fn power_nc(k: &[f64], q: &[f64], qd: &[f64], t: f64) -> f64 {
     let mut out = [0.0];
-    power_nc_into(q, qd, t, &mut out);
+    power_nc_into(k, q, qd, t, &mut out);
     out[0]
 }
+/// Number of values `setup` computes from the run-time parameters.
+pub const N_K: usize = 8;
+/// `setup` at the file's parameter values: what the types without parameters read.
+pub static K: [f64; 8] = [
+    0.00000000000000011102230246251565f64,
+    0.9999999999999999f64,
+    0.01f64,
+    0.05f64,
+    9.81f64,
+    -9.81f64,
+    0.14666666666666667f64,
+    1f64,
+];
+/// The values the per-step functions read (`k`), from the run-time parameters `p`.
+pub fn setup(p: &[f64], k: &mut [f64]) {
+    let p: &[f64; 10] = p.try_into().expect("p must have 10 entries");
+    let k: &mut [f64; 8] = k.try_into().expect("k must have 8 entries");
+    setup_part_0(p, k);
+}
+#[inline(never)]
+fn setup_part_0(p: &[f64; 10], k: &mut [f64; 8]) {
+    let x234 = p[3] * 9.81;
+    let x235 = -x234;
+    let x342 = p[0] + p[1];
+    let x343 = p[1] + x342;
+    let x346 = x343 * 4.0;
+    let x348 = x346 * 0.3333333333333333;
+    let x349 = 2.0 * p[3];
+    let x350 = 0.5 * x349;
+    k[0] = p[8];
+    k[1] = p[9];
+    k[2] = p[0];
+    k[3] = p[1];
+    k[4] = x234;
+    k[5] = x235;
+    k[6] = x348;
+    k[7] = x350;
+}
+/// The parameters the generated code takes at run time by name: the file's
+/// `[parameters]` entries that reach only masses, inertias and springs' constants.
+pub static PARAMETERS: [&str; 0] = [];
+/// Their values in the file.
+pub static PARAMETER_VALUES: [f64; 0] = [];
+/// Number of values `p` holds: the parameters by name, then the model's numbers that
+/// the other parameters reach (read off the file loaded at their values: `DATA`).
+pub const N_P: usize = 10;
+/// `p` at the file's values.
+pub static P0: [f64; 10] = [
+    0.01f64,
+    0.05f64,
+    1f64,
+    1f64,
+    1f64,
+    0.05f64,
+    0.01f64,
+    0.05f64,
+    0.00000000000000011102230246251565f64,
+    0.9999999999999999f64,
+];
+/// Where the numbers after the named parameters come from in the model (the
+/// generator's `slots::Slots::encoded`).
+pub static DATA: [u32; 10] = [
+    3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 9u32, 10u32, 20u32, 21u32,
+];
+static OTHER_PARAMETERS: [&str; 6] = ["i_a", "i_t", "l", "m", "omega", "phi"];
+static BODY_NAMES: [&str; 1] = ["bob"];
+static FORCE_NAMES: [&str; 0] = [];
+/// What a new parameter set is checked with.
+pub static RUN_TIME: RunTimeParameters = RunTimeParameters {
+    names: &PARAMETERS,
+    others: &OTHER_PARAMETERS,
+    bodies: &BODY_NAMES,
+    mass_properties,
+    forces: &FORCE_NAMES,
+    force_constants,
+};
+/// Each body's mass and principal inertias at the run-time parameters `p`.
+pub fn mass_properties(p: &[f64], out: &mut [f64]) {
+    let p: &[f64; 10] = p.try_into().expect("p must have 10 entries");
+    let out: &mut [f64; 4] = out.try_into().expect("out must have 4 entries");
+    mass_properties_part_0(p, out);
+}
+#[inline(never)]
+fn mass_properties_part_0(p: &[f64; 10], out: &mut [f64; 4]) {
+    out[0] = p[3];
+    out[1] = p[1];
+    out[2] = p[0];
+    out[3] = p[1];
+}
+/// Each force's stiffness and damping at the run-time parameters `p`.
+pub fn force_constants(p: &[f64], out: &mut [f64]) {
+    let p: &[f64; 10] = p.try_into().expect("p must have 10 entries");
+    let _: &mut [f64; 0] = out.try_into().expect("out must have 0 entries");
+    let _ = p;
+}
+/// One set of run-time parameter values and the values `setup` computed from it.
+#[derive(Debug, Clone)]
+pub struct Parameters {
+    p: [f64; N_P],
+    k: [f64; N_K],
+}
+impl Parameters {
+    /// The file's values.
+    pub fn file_values() -> Self {
+        Parameters { p: P0, k: K }
+    }
+    /// All of `p` at once (`N_P` values: the named parameters, then the model's
+    /// numbers `DATA` names, as the mechanism file loaded at other values gives them),
+    /// checked as [`Parameters::set`] checks.
+    pub fn from_values(values: &[f64]) -> Result<Self, ParameterError> {
+        let mut p = [0.0; N_P];
+        RUN_TIME.assign_all(&mut p, values)?;
+        let (mut props, mut constants) = ([0.0; 4], [0.0; 0]);
+        RUN_TIME.check(&p, &[], &mut props, &mut constants)?;
+        let mut k = [0.0; N_K];
+        setup(&p, &mut k);
+        Ok(Parameters { p, k })
+    }
+    /// The file's values with `set` applied ([`Parameters::set`]).
+    pub fn at(set: &[(&str, f64)]) -> Result<Self, ParameterError> {
+        let mut p = Self::file_values();
+        p.set(set)?;
+        Ok(p)
+    }
+    /// Sets parameters by name. Checked first (known names, finite values, positive
+    /// masses, inertias of a rigid body): a refused set changes nothing. Allocates
+    /// nothing unless it is refused.
+    pub fn set(&mut self, set: &[(&str, f64)]) -> Result<(), ParameterError> {
+        let mut p = self.p;
+        RUN_TIME.assign(&mut p, set)?;
+        let (mut props, mut constants) = ([0.0; 4], [0.0; 0]);
+        RUN_TIME.check(&p, set, &mut props, &mut constants)?;
+        self.p = p;
+        setup(&self.p, &mut self.k);
+        Ok(())
+    }
+    /// The values: those of `PARAMETERS`, then the numbers `DATA` names.
+    pub fn values(&self) -> &[f64] {
+        &self.p
+    }
+}
+fn built(p: Parameters) -> symbody_runtime::registry::Built {
+    vec![
+        (Formulation::Exact, Box::new(ExactAt(p.clone())) as Box < dyn Mechanism + Sync
+        >)
+    ]
+}
+fn at_parameters(
+    set: &[(&str, f64)],
+) -> Result<symbody_runtime::registry::Built, ParameterError> {
+    Parameters::at(set).map(built)
+}
+fn at_values(
+    values: &[f64],
+) -> Result<symbody_runtime::registry::Built, ParameterError> {
+    Parameters::from_values(values).map(built)
+}
+/// This mechanism at other values of its run-time parameters, for the registries.
+pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime::registry::RunTime {
+    parameters: &RUN_TIME,
+    build: at_parameters,
+    build_reduced: None,
+    data: &DATA,
+    build_values: at_values,
+};
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
 pub mod exact {
     use super::*;
@@ -587,28 +764,32 @@ pub mod exact {
     };
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
+        k: &[f64],
         q: &[f64],
         qd: &[f64],
         t: f64,
         dq: &mut [f64],
         dqd: &mut [f64],
     ) {
+        let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
         let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 7] = qd.try_into().expect("qd must have n_coords entries");
         let _: &mut [f64; 0] = dq.try_into().expect("dq must have 0 entries");
         let _: &mut [f64; 0] = dqd.try_into().expect("dqd must have 0 entries");
+        let _ = k;
         let _ = q;
         let _ = qd;
         let _ = t;
     }
     /// Nonzeros of M(q) in the order of `MASS_ROWS`/`MASS_COLS`.
-    pub fn mass(q: &[f64], out: &mut [f64]) {
+    pub fn mass(k: &[f64], q: &[f64], out: &mut [f64]) {
+        let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
         let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
         let out: &mut [f64; 19] = out.try_into().expect("out must have 19 entries");
-        mass_part_0(q, out);
+        mass_part_0(k, q, out);
     }
     #[inline(never)]
-    fn mass_part_0(q: &[f64; 7], out: &mut [f64; 19]) {
+    fn mass_part_0(k: &[f64; 8], q: &[f64; 7], out: &mut [f64; 19]) {
         let x9 = q[3] * q[3];
         let x10 = q[4] * q[4];
         let x11 = q[5] * q[5];
@@ -626,159 +807,160 @@ pub mod exact {
         let x72 = 2.0 * x68;
         let x89 = 2.0 * x69;
         let x97 = 2.0 * x70;
-        let x336 = 2.0 * x71;
-        let x338 = x69 * x89;
-        let x340 = 0.05 * x338;
-        let x342 = x70 * x97;
-        let x344 = 0.01 * x342;
-        let x346 = x71 * x336;
-        let x348 = 0.05 * x346;
-        let x350 = x340 + x344;
-        let x352 = x348 + x350;
-        let x354 = 0.5 * x352;
-        let x356 = x9 * 0.1466666666666667;
-        let x357 = x354 + x356;
-        let x358 = x69 * x72;
-        let x359 = 0.05 * x358;
-        let x360 = x70 * x336;
-        let x362 = 0.01 * x360;
-        let x364 = x71 * x97;
-        let x365 = 0.05 * x364;
-        let x366 = x359 - x362;
-        let x367 = x365 + x366;
-        let x368 = 0.5 * x367;
-        let x370 = x38 * 0.1466666666666667;
-        let x371 = x370 - x368;
-        let x372 = x69 * x336;
-        let x373 = 0.05 * x372;
-        let x374 = x70 * x72;
-        let x375 = 0.01 * x374;
-        let x376 = x71 * x89;
-        let x378 = 0.05 * x376;
-        let x380 = x373 + x375;
-        let x381 = x380 - x378;
-        let x382 = 0.5 * x381;
-        let x384 = x32 * 0.1466666666666667;
-        let x385 = x384 - x382;
-        let x386 = x69 * x97;
-        let x388 = 0.05 * x386;
-        let x390 = x70 * x89;
-        let x391 = 0.01 * x390;
-        let x392 = x71 * x72;
-        let x393 = 0.05 * x392;
-        let x394 = x391 - x388;
-        let x395 = x393 + x394;
-        let x396 = 0.5 * x395;
-        let x398 = x25 * 0.1466666666666667;
-        let x399 = x398 - x396;
-        let x400 = x68 * x89;
-        let x402 = 0.05 * x400;
-        let x405 = 0.01 * x364;
-        let x407 = 0.05 * x360;
-        let x409 = x405 - x402;
-        let x410 = x409 - x407;
-        let x411 = 0.5 * x410;
-        let x412 = x370 + x411;
-        let x413 = x68 * x72;
-        let x414 = 0.05 * x413;
-        let x415 = 0.01 * x346;
-        let x417 = 0.05 * x342;
-        let x418 = x414 + x415;
-        let x419 = x417 + x418;
-        let x420 = 0.5 * x419;
-        let x421 = x10 * 0.1466666666666667;
-        let x422 = x420 + x421;
-        let x423 = x68 * x336;
-        let x424 = 0.05 * x423;
-        let x425 = 0.01 * x392;
-        let x428 = 0.05 * x390;
-        let x430 = x424 - x425;
-        let x431 = x430 - x428;
-        let x432 = 0.5 * x431;
-        let x433 = x23 * 0.1466666666666667;
-        let x434 = x432 + x433;
-        let x435 = x68 * x97;
-        let x437 = 0.05 * x435;
-        let x439 = 0.01 * x376;
-        let x441 = 0.05 * x374;
-        let x442 = x437 + x439;
-        let x444 = x441 - x442;
-        let x445 = 0.5 * x444;
-        let x446 = x30 * 0.1466666666666667;
-        let x447 = x445 + x446;
-        let x448 = 0.01 * x435;
-        let x452 = x378 + x448;
-        let x454 = x373 - x452;
-        let x455 = 0.5 * x454;
-        let x456 = x384 + x455;
-        let x458 = 0.01 * x423;
-        let x460 = x393 - x458;
-        let x461 = x460 - x388;
-        let x462 = 0.5 * x461;
-        let x463 = x433 + x462;
-        let x464 = 0.01 * x413;
-        let x465 = x348 + x464;
-        let x466 = x340 + x465;
-        let x467 = 0.5 * x466;
-        let x468 = x11 * 0.1466666666666667;
-        let x469 = x467 + x468;
-        let x471 = 0.01 * x400;
-        let x473 = x471 - x365;
-        let x474 = x473 - x359;
-        let x475 = 0.5 * x474;
-        let x476 = x36 * 0.1466666666666667;
-        let x477 = x475 + x476;
-        let x478 = 0.01 * x386;
-        let x481 = x428 - x478;
-        let x482 = x481 - x424;
-        let x483 = 0.5 * x482;
-        let x484 = x398 + x483;
-        let x486 = 0.01 * x372;
-        let x488 = x441 + x486;
-        let x490 = x437 - x488;
-        let x491 = 0.5 * x490;
-        let x492 = x446 + x491;
-        let x493 = 0.01 * x358;
-        let x494 = x493 - x407;
-        let x495 = x494 - x402;
-        let x496 = 0.5 * x495;
-        let x497 = x476 + x496;
-        let x499 = 0.01 * x338;
-        let x500 = x417 + x499;
-        let x501 = x414 + x500;
-        let x502 = 0.5 * x501;
-        let x503 = x12 * 0.1466666666666667;
-        let x504 = x502 + x503;
-        out[0] = 1.0;
-        out[1] = 1.0;
-        out[2] = 1.0;
-        out[3] = x357;
-        out[4] = x371;
-        out[5] = x385;
-        out[6] = x399;
-        out[7] = x412;
-        out[8] = x422;
-        out[9] = x434;
-        out[10] = x447;
-        out[11] = x456;
-        out[12] = x463;
-        out[13] = x469;
-        out[14] = x477;
-        out[15] = x484;
-        out[16] = x492;
-        out[17] = x497;
-        out[18] = x504;
+        let x353 = 2.0 * x71;
+        let x355 = x69 * x89;
+        let x359 = x70 * x97;
+        let x363 = x71 * x353;
+        let x375 = x69 * x72;
+        let x377 = x70 * x353;
+        let x381 = x71 * x97;
+        let x389 = x69 * x353;
+        let x391 = x70 * x72;
+        let x393 = x71 * x89;
+        let x403 = x69 * x97;
+        let x407 = x70 * x89;
+        let x409 = x71 * x72;
+        let x417 = x68 * x89;
+        let x430 = x68 * x72;
+        let x440 = x68 * x353;
+        let x452 = x68 * x97;
+        let x729 = x355 * k[3];
+        let x730 = x359 * k[2];
+        let x731 = x363 * k[3];
+        let x732 = x729 + x730;
+        let x733 = x731 + x732;
+        let x734 = 0.5 * x733;
+        let x735 = x9 * k[6];
+        let x736 = x734 + x735;
+        let x737 = x375 * k[3];
+        let x738 = x377 * k[2];
+        let x740 = x381 * k[3];
+        let x741 = x737 - x738;
+        let x742 = x740 + x741;
+        let x743 = 0.5 * x742;
+        let x745 = x38 * k[6];
+        let x746 = x745 - x743;
+        let x747 = x389 * k[3];
+        let x748 = x391 * k[2];
+        let x749 = x393 * k[3];
+        let x751 = x747 + x748;
+        let x752 = x751 - x749;
+        let x753 = 0.5 * x752;
+        let x755 = x32 * k[6];
+        let x756 = x755 - x753;
+        let x757 = x403 * k[3];
+        let x759 = x407 * k[2];
+        let x760 = x409 * k[3];
+        let x761 = x759 - x757;
+        let x762 = x760 + x761;
+        let x763 = 0.5 * x762;
+        let x765 = x25 * k[6];
+        let x766 = x765 - x763;
+        let x767 = x417 * k[3];
+        let x769 = x381 * k[2];
+        let x770 = x377 * k[3];
+        let x772 = x769 - x767;
+        let x773 = x772 - x770;
+        let x774 = 0.5 * x773;
+        let x775 = x745 + x774;
+        let x776 = x430 * k[3];
+        let x777 = x363 * k[2];
+        let x778 = x359 * k[3];
+        let x779 = x776 + x777;
+        let x780 = x778 + x779;
+        let x781 = 0.5 * x780;
+        let x782 = x10 * k[6];
+        let x783 = x781 + x782;
+        let x784 = x440 * k[3];
+        let x785 = x409 * k[2];
+        let x787 = x407 * k[3];
+        let x789 = x784 - x785;
+        let x790 = x789 - x787;
+        let x791 = 0.5 * x790;
+        let x792 = x23 * k[6];
+        let x793 = x791 + x792;
+        let x794 = x452 * k[3];
+        let x795 = x393 * k[2];
+        let x796 = x391 * k[3];
+        let x797 = x794 + x795;
+        let x799 = x796 - x797;
+        let x800 = 0.5 * x799;
+        let x801 = x30 * k[6];
+        let x802 = x800 + x801;
+        let x803 = x452 * k[2];
+        let x804 = x749 + x803;
+        let x806 = x747 - x804;
+        let x807 = 0.5 * x806;
+        let x808 = x755 + x807;
+        let x809 = x440 * k[2];
+        let x811 = x760 - x809;
+        let x812 = x811 - x757;
+        let x813 = 0.5 * x812;
+        let x814 = x792 + x813;
+        let x815 = x430 * k[2];
+        let x816 = x731 + x815;
+        let x817 = x729 + x816;
+        let x818 = 0.5 * x817;
+        let x819 = x11 * k[6];
+        let x820 = x818 + x819;
+        let x822 = x417 * k[2];
+        let x824 = x822 - x740;
+        let x825 = x824 - x737;
+        let x826 = 0.5 * x825;
+        let x827 = x36 * k[6];
+        let x828 = x826 + x827;
+        let x829 = x403 * k[2];
+        let x832 = x787 - x829;
+        let x833 = x832 - x784;
+        let x834 = 0.5 * x833;
+        let x835 = x765 + x834;
+        let x836 = x389 * k[2];
+        let x837 = x796 + x836;
+        let x839 = x794 - x837;
+        let x840 = 0.5 * x839;
+        let x841 = x801 + x840;
+        let x842 = x375 * k[2];
+        let x843 = x842 - x770;
+        let x844 = x843 - x767;
+        let x845 = 0.5 * x844;
+        let x846 = x827 + x845;
+        let x847 = x355 * k[2];
+        let x848 = x778 + x847;
+        let x849 = x776 + x848;
+        let x850 = 0.5 * x849;
+        let x851 = x12 * k[6];
+        let x852 = x850 + x851;
+        out[0] = k[7];
+        out[1] = k[7];
+        out[2] = k[7];
+        out[3] = x736;
+        out[4] = x746;
+        out[5] = x756;
+        out[6] = x766;
+        out[7] = x775;
+        out[8] = x783;
+        out[9] = x793;
+        out[10] = x802;
+        out[11] = x808;
+        out[12] = x814;
+        out[13] = x820;
+        out[14] = x828;
+        out[15] = x835;
+        out[16] = x841;
+        out[17] = x846;
+        out[18] = x852;
     }
     /// Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.
-    pub fn force(q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+    pub fn force(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
         let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 7] = qd.try_into().expect("qd must have n_coords entries");
         let out: &mut [f64; 7] = out.try_into().expect("out must have 7 entries");
         let _ = t;
-        force_part_0(q, qd, out);
+        force_part_0(k, q, qd, out);
     }
     #[inline(never)]
-    fn force_part_0(q: &[f64; 7], qd: &[f64; 7], out: &mut [f64; 7]) {
+    fn force_part_0(k: &[f64; 8], q: &[f64; 7], qd: &[f64; 7], out: &mut [f64; 7]) {
         let x68 = q[3] * 2.0;
         let x69 = q[4] * 2.0;
         let x70 = q[5] * 2.0;
@@ -803,136 +985,137 @@ pub mod exact {
         let x188 = qd[3] * qd[6];
         let x193 = qd[4] * qd[6];
         let x196 = qd[3] * qd[5];
-        let x232 = x150 - x149;
-        let x233 = x145 + x232;
-        let x234 = x233 - x146;
-        let x235 = 2.0 * x234;
-        let x238 = x136 + x140;
-        let x240 = x141 - x238;
-        let x241 = x137 + x240;
-        let x242 = 2.0 * x241;
-        let x245 = x126 - x130;
-        let x246 = x245 - x127;
-        let x247 = x131 + x246;
-        let x248 = 2.0 * x247;
-        let x265 = 2.0 * x235;
-        let x267 = 2.0 * x242;
-        let x269 = 2.0 * x248;
-        let x507 = x193 + x196;
-        let x509 = x196 - x507;
-        let x510 = x193 + x509;
-        let x511 = 2.0 * x510;
-        let x514 = x185 - x188;
-        let x515 = x514 - x185;
-        let x516 = x188 + x515;
-        let x517 = 2.0 * x516;
-        let x518 = 2.0 * x511;
-        let x519 = 2.0 * x517;
-        let x520 = x174 * x265;
-        let x521 = 0.05 * x520;
-        let x522 = x175 * x267;
-        let x523 = x70 * x518;
-        let x524 = x522 + x523;
-        let x525 = 0.01 * x524;
-        let x526 = x176 * x269;
-        let x527 = x71 * x519;
-        let x528 = x526 + x527;
-        let x529 = 0.05 * x528;
-        let x530 = x521 + x525;
-        let x531 = x529 + x530;
-        let x532 = 0.5 * x531;
-        let x534 = x173 * x265;
-        let x535 = 0.05 * x534;
-        let x536 = x176 * x267;
-        let x537 = x71 * x518;
-        let x538 = x536 + x537;
-        let x539 = 0.01 * x538;
-        let x541 = x175 * x269;
-        let x542 = x70 * x519;
-        let x543 = x541 + x542;
-        let x544 = 0.05 * x543;
-        let x545 = x535 - x539;
-        let x546 = x544 + x545;
-        let x547 = 0.5 * x546;
-        let x548 = x176 * x265;
-        let x549 = 0.05 * x548;
-        let x550 = x173 * x267;
-        let x551 = x68 * x518;
-        let x552 = x550 + x551;
-        let x553 = 0.01 * x552;
-        let x554 = x174 * x269;
-        let x555 = x69 * x519;
-        let x556 = x554 + x555;
-        let x557 = 0.05 * x556;
-        let x559 = x549 + x553;
-        let x560 = x559 - x557;
-        let x561 = 0.5 * x560;
-        let x562 = x175 * x265;
-        let x563 = 0.05 * x562;
-        let x565 = x174 * x267;
-        let x566 = x69 * x518;
-        let x567 = x565 + x566;
-        let x568 = 0.01 * x567;
-        let x569 = x173 * x269;
-        let x570 = x68 * x519;
-        let x571 = x569 + x570;
-        let x572 = 0.05 * x571;
-        let x573 = x568 - x563;
-        let x574 = x572 + x573;
-        let x575 = 0.5 * x574;
-        let x576 = qd[3] * qd[3];
-        let x577 = qd[4] * qd[4];
-        let x578 = qd[5] * qd[5];
-        let x579 = qd[6] * qd[6];
-        let x580 = x576 + x577;
-        let x581 = x578 + x580;
-        let x582 = x579 + x581;
-        let x583 = 0.01 * x522;
-        let x584 = 0.05 * x526;
-        let x585 = x521 + x583;
-        let x586 = x584 + x585;
-        let x587 = 0.5 * x586;
-        let x588 = x532 + x587;
-        let x589 = q[3] * 0.1466666666666667;
-        let x590 = x582 * x589;
-        let x592 = x588 - x590;
-        let x599 = 0.01 * x536;
-        let x601 = 0.05 * x541;
-        let x603 = x599 - x535;
-        let x604 = x603 - x601;
-        let x605 = 0.5 * x604;
-        let x607 = x605 - x547;
-        let x608 = q[4] * 0.1466666666666667;
-        let x609 = x582 * x608;
-        let x611 = x607 - x609;
-        let x617 = 0.01 * x550;
-        let x619 = 0.05 * x554;
-        let x620 = x549 + x617;
-        let x622 = x619 - x620;
-        let x623 = 0.5 * x622;
-        let x625 = x623 - x561;
-        let x626 = q[5] * 0.1466666666666667;
-        let x627 = x582 * x626;
-        let x629 = x625 - x627;
-        let x633 = 0.01 * x565;
-        let x636 = 0.05 * x569;
-        let x638 = x563 - x633;
-        let x639 = x638 - x636;
-        let x640 = 0.5 * x639;
-        let x642 = x640 - x575;
-        let x643 = q[6] * 0.1466666666666667;
-        let x644 = x582 * x643;
-        let x646 = x642 - x644;
+        let x240 = x150 - x149;
+        let x241 = x145 + x240;
+        let x242 = x241 - x146;
+        let x243 = 2.0 * x242;
+        let x246 = x136 + x140;
+        let x248 = x141 - x246;
+        let x249 = x137 + x248;
+        let x250 = 2.0 * x249;
+        let x253 = x126 - x130;
+        let x254 = x253 - x127;
+        let x255 = x131 + x254;
+        let x256 = 2.0 * x255;
+        let x277 = 2.0 * x243;
+        let x279 = 2.0 * x250;
+        let x281 = 2.0 * x256;
+        let x524 = x193 + x196;
+        let x526 = x196 - x524;
+        let x527 = x193 + x526;
+        let x528 = 2.0 * x527;
+        let x531 = x185 - x188;
+        let x532 = x531 - x185;
+        let x533 = x188 + x532;
+        let x534 = 2.0 * x533;
+        let x535 = 2.0 * x528;
+        let x536 = 2.0 * x534;
+        let x537 = x174 * x277;
+        let x539 = x175 * x279;
+        let x540 = x70 * x535;
+        let x541 = x539 + x540;
+        let x543 = x176 * x281;
+        let x544 = x71 * x536;
+        let x545 = x543 + x544;
+        let x551 = x173 * x277;
+        let x553 = x176 * x279;
+        let x554 = x71 * x535;
+        let x555 = x553 + x554;
+        let x558 = x175 * x281;
+        let x559 = x70 * x536;
+        let x560 = x558 + x559;
+        let x565 = x176 * x277;
+        let x567 = x173 * x279;
+        let x568 = x68 * x535;
+        let x569 = x567 + x568;
+        let x571 = x174 * x281;
+        let x572 = x69 * x536;
+        let x573 = x571 + x572;
+        let x579 = x175 * x277;
+        let x582 = x174 * x279;
+        let x583 = x69 * x535;
+        let x584 = x582 + x583;
+        let x586 = x173 * x281;
+        let x587 = x68 * x536;
+        let x588 = x586 + x587;
+        let x593 = qd[3] * qd[3];
+        let x594 = qd[4] * qd[4];
+        let x595 = qd[5] * qd[5];
+        let x596 = qd[6] * qd[6];
+        let x597 = x593 + x594;
+        let x598 = x595 + x597;
+        let x599 = x596 + x598;
+        let x853 = x537 * k[3];
+        let x854 = x541 * k[2];
+        let x855 = x545 * k[3];
+        let x856 = x853 + x854;
+        let x857 = x855 + x856;
+        let x858 = 0.5 * x857;
+        let x859 = x551 * k[3];
+        let x860 = x555 * k[2];
+        let x862 = x560 * k[3];
+        let x863 = x859 - x860;
+        let x864 = x862 + x863;
+        let x865 = 0.5 * x864;
+        let x866 = x565 * k[3];
+        let x867 = x569 * k[2];
+        let x868 = x573 * k[3];
+        let x870 = x866 + x867;
+        let x871 = x870 - x868;
+        let x872 = 0.5 * x871;
+        let x873 = x579 * k[3];
+        let x875 = x584 * k[2];
+        let x876 = x588 * k[3];
+        let x877 = x875 - x873;
+        let x878 = x876 + x877;
+        let x879 = 0.5 * x878;
+        let x880 = x539 * k[2];
+        let x881 = x543 * k[3];
+        let x882 = x853 + x880;
+        let x883 = x881 + x882;
+        let x884 = 0.5 * x883;
+        let x885 = x858 + x884;
+        let x886 = q[3] * k[6];
+        let x887 = x599 * x886;
+        let x889 = x885 - x887;
+        let x891 = x553 * k[2];
+        let x892 = x558 * k[3];
+        let x894 = x891 - x859;
+        let x895 = x894 - x892;
+        let x896 = 0.5 * x895;
+        let x898 = x896 - x865;
+        let x899 = q[4] * k[6];
+        let x900 = x599 * x899;
+        let x902 = x898 - x900;
+        let x903 = x567 * k[2];
+        let x904 = x571 * k[3];
+        let x905 = x866 + x903;
+        let x907 = x904 - x905;
+        let x908 = 0.5 * x907;
+        let x910 = x908 - x872;
+        let x911 = q[5] * k[6];
+        let x912 = x599 * x911;
+        let x914 = x910 - x912;
+        let x915 = x582 * k[2];
+        let x917 = x586 * k[3];
+        let x919 = x873 - x915;
+        let x920 = x919 - x917;
+        let x921 = 0.5 * x920;
+        let x923 = x921 - x879;
+        let x924 = q[6] * k[6];
+        let x925 = x599 * x924;
+        let x927 = x923 - x925;
         out[0] = 0.0;
-        out[1] = -9.81;
+        out[1] = k[5];
         out[2] = 0.0;
-        out[3] = x592;
-        out[4] = x611;
-        out[5] = x629;
-        out[6] = x646;
+        out[3] = x889;
+        out[4] = x902;
+        out[5] = x914;
+        out[6] = x927;
     }
     /// Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.
     pub fn eval_newton(
+        k: &[f64],
         q: &[f64],
         qd: &[f64],
         t: f64,
@@ -941,6 +1124,7 @@ pub mod exact {
         mass: &mut [f64],
         force: &mut [f64],
     ) {
+        let k: &[f64; 8] = k.try_into().expect("k must have 8 entries");
         let q: &[f64; 7] = q.try_into().expect("q must have n_coords entries");
         let qd: &[f64; 7] = qd.try_into().expect("qd must have n_coords entries");
         let phi: &mut [f64; 4] = phi.try_into().expect("phi must have 4 entries");
@@ -950,10 +1134,11 @@ pub mod exact {
         let mass: &mut [f64; 19] = mass.try_into().expect("mass must have 19 entries");
         let force: &mut [f64; 7] = force.try_into().expect("force must have 7 entries");
         let _ = t;
-        eval_newton_part_0(q, qd, phi, phi_q, mass, force);
+        eval_newton_part_0(k, q, qd, phi, phi_q, mass, force);
     }
     #[inline(never)]
     fn eval_newton_part_0(
+        k: &[f64; 8],
         q: &[f64; 7],
         qd: &[f64; 7],
         phi: &mut [f64; 4],
@@ -987,21 +1172,6 @@ pub mod exact {
         let x40 = 2.0 * x38;
         let x45 = x31 - x33;
         let x46 = x37 + x40;
-        let x50 = x16 * 0.00000000000000011102230246251565;
-        let x51 = x29 * 0.9999999999999999;
-        let x52 = x50 + x51;
-        let x53 = x35 * 0.00000000000000011102230246251565;
-        let x54 = x19 * 0.9999999999999999;
-        let x55 = x53 + x54;
-        let x56 = x45 * 0.00000000000000011102230246251565;
-        let x57 = x46 * 0.9999999999999999;
-        let x58 = x56 + x57;
-        let x59 = q[0] + x52;
-        let x60 = q[1] + x55;
-        let x61 = q[2] + x58;
-        let x62 = -x59;
-        let x63 = -x60;
-        let x64 = -x61;
         let x65 = x11 + x13;
         let x66 = x12 + x65;
         let x67 = x66 - 1.0;
@@ -1010,39 +1180,8 @@ pub mod exact {
         let x70 = q[5] * 2.0;
         let x71 = q[6] * 2.0;
         let x72 = 2.0 * x68;
-        let x75 = 0.00000000000000011102230246251565 * x72;
-        let x76 = 0.9999999999999999 * x71;
-        let x78 = x75 - x76;
-        let x79 = 0.00000000000000011102230246251565 * x71;
-        let x80 = 0.9999999999999999 * x72;
-        let x81 = x79 + x80;
-        let x82 = 0.00000000000000011102230246251565 * x70;
-        let x83 = -x82;
-        let x84 = 0.9999999999999999 * x69;
-        let x85 = x84 - x82;
-        let x86 = -x78;
-        let x87 = -x81;
-        let x88 = -x85;
         let x89 = 2.0 * x69;
-        let x90 = 0.00000000000000011102230246251565 * x89;
-        let x91 = 0.9999999999999999 * x70;
-        let x92 = x90 + x91;
-        let x93 = 0.9999999999999999 * x68;
-        let x94 = x79 + x93;
-        let x95 = -x92;
-        let x96 = -x94;
         let x97 = 2.0 * x70;
-        let x99 = 0.00000000000000011102230246251565 * x69;
-        let x100 = 0.9999999999999999 * x97;
-        let x101 = x99 + x100;
-        let x102 = 0.00000000000000011102230246251565 * x68;
-        let x103 = -x102;
-        let x104 = x76 - x102;
-        let x105 = -x84;
-        let x106 = -x101;
-        let x107 = -x104;
-        let x109 = x91 + x99;
-        let x110 = -x109;
         let x126 = q[5] * qd[4];
         let x127 = q[4] * qd[5];
         let x130 = q[6] * qd[3];
@@ -1063,298 +1202,344 @@ pub mod exact {
         let x188 = qd[3] * qd[6];
         let x193 = qd[4] * qd[6];
         let x196 = qd[3] * qd[5];
-        let x232 = x150 - x149;
-        let x233 = x145 + x232;
-        let x234 = x233 - x146;
-        let x235 = 2.0 * x234;
-        let x238 = x136 + x140;
-        let x240 = x141 - x238;
-        let x241 = x137 + x240;
-        let x242 = 2.0 * x241;
-        let x245 = x126 - x130;
-        let x246 = x245 - x127;
-        let x247 = x131 + x246;
-        let x248 = 2.0 * x247;
-        let x265 = 2.0 * x235;
-        let x267 = 2.0 * x242;
-        let x269 = 2.0 * x248;
-        let x336 = 2.0 * x71;
-        let x338 = x69 * x89;
-        let x340 = 0.05 * x338;
-        let x342 = x70 * x97;
-        let x344 = 0.01 * x342;
-        let x346 = x71 * x336;
-        let x348 = 0.05 * x346;
-        let x350 = x340 + x344;
-        let x352 = x348 + x350;
-        let x354 = 0.5 * x352;
-        let x356 = x9 * 0.1466666666666667;
-        let x357 = x354 + x356;
-        let x358 = x69 * x72;
-        let x359 = 0.05 * x358;
-        let x360 = x70 * x336;
-        let x362 = 0.01 * x360;
-        let x364 = x71 * x97;
-        let x365 = 0.05 * x364;
-        let x366 = x359 - x362;
-        let x367 = x365 + x366;
-        let x368 = 0.5 * x367;
-        let x370 = x38 * 0.1466666666666667;
-        let x371 = x370 - x368;
-        let x372 = x69 * x336;
-        let x373 = 0.05 * x372;
-        let x374 = x70 * x72;
-        let x375 = 0.01 * x374;
-        let x376 = x71 * x89;
-        let x378 = 0.05 * x376;
-        let x380 = x373 + x375;
-        let x381 = x380 - x378;
-        let x382 = 0.5 * x381;
-        let x384 = x32 * 0.1466666666666667;
-        let x385 = x384 - x382;
-        let x386 = x69 * x97;
-        let x388 = 0.05 * x386;
-        let x390 = x70 * x89;
-        let x391 = 0.01 * x390;
-        let x392 = x71 * x72;
-        let x393 = 0.05 * x392;
-        let x394 = x391 - x388;
-        let x395 = x393 + x394;
-        let x396 = 0.5 * x395;
-        let x398 = x25 * 0.1466666666666667;
-        let x399 = x398 - x396;
-        let x400 = x68 * x89;
-        let x402 = 0.05 * x400;
-        let x405 = 0.01 * x364;
-        let x407 = 0.05 * x360;
-        let x409 = x405 - x402;
-        let x410 = x409 - x407;
-        let x411 = 0.5 * x410;
-        let x412 = x370 + x411;
-        let x413 = x68 * x72;
-        let x414 = 0.05 * x413;
-        let x415 = 0.01 * x346;
-        let x417 = 0.05 * x342;
-        let x418 = x414 + x415;
-        let x419 = x417 + x418;
-        let x420 = 0.5 * x419;
-        let x421 = x10 * 0.1466666666666667;
-        let x422 = x420 + x421;
-        let x423 = x68 * x336;
-        let x424 = 0.05 * x423;
-        let x425 = 0.01 * x392;
-        let x428 = 0.05 * x390;
-        let x430 = x424 - x425;
-        let x431 = x430 - x428;
-        let x432 = 0.5 * x431;
-        let x433 = x23 * 0.1466666666666667;
-        let x434 = x432 + x433;
-        let x435 = x68 * x97;
-        let x437 = 0.05 * x435;
-        let x439 = 0.01 * x376;
-        let x441 = 0.05 * x374;
-        let x442 = x437 + x439;
-        let x444 = x441 - x442;
-        let x445 = 0.5 * x444;
-        let x446 = x30 * 0.1466666666666667;
-        let x447 = x445 + x446;
-        let x448 = 0.01 * x435;
-        let x452 = x378 + x448;
-        let x454 = x373 - x452;
-        let x455 = 0.5 * x454;
-        let x456 = x384 + x455;
-        let x458 = 0.01 * x423;
-        let x460 = x393 - x458;
-        let x461 = x460 - x388;
-        let x462 = 0.5 * x461;
-        let x463 = x433 + x462;
-        let x464 = 0.01 * x413;
-        let x465 = x348 + x464;
-        let x466 = x340 + x465;
-        let x467 = 0.5 * x466;
-        let x468 = x11 * 0.1466666666666667;
-        let x469 = x467 + x468;
-        let x471 = 0.01 * x400;
-        let x473 = x471 - x365;
-        let x474 = x473 - x359;
-        let x475 = 0.5 * x474;
-        let x476 = x36 * 0.1466666666666667;
-        let x477 = x475 + x476;
-        let x478 = 0.01 * x386;
-        let x481 = x428 - x478;
-        let x482 = x481 - x424;
-        let x483 = 0.5 * x482;
-        let x484 = x398 + x483;
-        let x486 = 0.01 * x372;
-        let x488 = x441 + x486;
-        let x490 = x437 - x488;
-        let x491 = 0.5 * x490;
-        let x492 = x446 + x491;
-        let x493 = 0.01 * x358;
-        let x494 = x493 - x407;
-        let x495 = x494 - x402;
-        let x496 = 0.5 * x495;
-        let x497 = x476 + x496;
-        let x499 = 0.01 * x338;
-        let x500 = x417 + x499;
-        let x501 = x414 + x500;
-        let x502 = 0.5 * x501;
-        let x503 = x12 * 0.1466666666666667;
-        let x504 = x502 + x503;
-        let x507 = x193 + x196;
-        let x509 = x196 - x507;
-        let x510 = x193 + x509;
-        let x511 = 2.0 * x510;
-        let x514 = x185 - x188;
-        let x515 = x514 - x185;
-        let x516 = x188 + x515;
-        let x517 = 2.0 * x516;
-        let x518 = 2.0 * x511;
-        let x519 = 2.0 * x517;
-        let x520 = x174 * x265;
-        let x521 = 0.05 * x520;
-        let x522 = x175 * x267;
-        let x523 = x70 * x518;
-        let x524 = x522 + x523;
-        let x525 = 0.01 * x524;
-        let x526 = x176 * x269;
-        let x527 = x71 * x519;
-        let x528 = x526 + x527;
-        let x529 = 0.05 * x528;
-        let x530 = x521 + x525;
-        let x531 = x529 + x530;
-        let x532 = 0.5 * x531;
-        let x534 = x173 * x265;
-        let x535 = 0.05 * x534;
-        let x536 = x176 * x267;
-        let x537 = x71 * x518;
-        let x538 = x536 + x537;
-        let x539 = 0.01 * x538;
-        let x541 = x175 * x269;
-        let x542 = x70 * x519;
-        let x543 = x541 + x542;
-        let x544 = 0.05 * x543;
-        let x545 = x535 - x539;
-        let x546 = x544 + x545;
-        let x547 = 0.5 * x546;
-        let x548 = x176 * x265;
-        let x549 = 0.05 * x548;
-        let x550 = x173 * x267;
-        let x551 = x68 * x518;
-        let x552 = x550 + x551;
-        let x553 = 0.01 * x552;
-        let x554 = x174 * x269;
-        let x555 = x69 * x519;
-        let x556 = x554 + x555;
-        let x557 = 0.05 * x556;
-        let x559 = x549 + x553;
-        let x560 = x559 - x557;
-        let x561 = 0.5 * x560;
-        let x562 = x175 * x265;
-        let x563 = 0.05 * x562;
-        let x565 = x174 * x267;
-        let x566 = x69 * x518;
-        let x567 = x565 + x566;
-        let x568 = 0.01 * x567;
-        let x569 = x173 * x269;
-        let x570 = x68 * x519;
-        let x571 = x569 + x570;
-        let x572 = 0.05 * x571;
-        let x573 = x568 - x563;
-        let x574 = x572 + x573;
-        let x575 = 0.5 * x574;
-        let x576 = qd[3] * qd[3];
-        let x577 = qd[4] * qd[4];
-        let x578 = qd[5] * qd[5];
-        let x579 = qd[6] * qd[6];
-        let x580 = x576 + x577;
-        let x581 = x578 + x580;
-        let x582 = x579 + x581;
-        let x583 = 0.01 * x522;
-        let x584 = 0.05 * x526;
-        let x585 = x521 + x583;
-        let x586 = x584 + x585;
-        let x587 = 0.5 * x586;
-        let x588 = x532 + x587;
-        let x589 = q[3] * 0.1466666666666667;
-        let x590 = x582 * x589;
-        let x592 = x588 - x590;
-        let x599 = 0.01 * x536;
-        let x601 = 0.05 * x541;
-        let x603 = x599 - x535;
-        let x604 = x603 - x601;
-        let x605 = 0.5 * x604;
-        let x607 = x605 - x547;
-        let x608 = q[4] * 0.1466666666666667;
-        let x609 = x582 * x608;
-        let x611 = x607 - x609;
-        let x617 = 0.01 * x550;
-        let x619 = 0.05 * x554;
-        let x620 = x549 + x617;
-        let x622 = x619 - x620;
-        let x623 = 0.5 * x622;
-        let x625 = x623 - x561;
-        let x626 = q[5] * 0.1466666666666667;
-        let x627 = x582 * x626;
-        let x629 = x625 - x627;
-        let x633 = 0.01 * x565;
-        let x636 = 0.05 * x569;
-        let x638 = x563 - x633;
-        let x639 = x638 - x636;
-        let x640 = 0.5 * x639;
-        let x642 = x640 - x575;
-        let x643 = q[6] * 0.1466666666666667;
-        let x644 = x582 * x643;
-        let x646 = x642 - x644;
-        phi[0] = x62;
+        let x240 = x150 - x149;
+        let x241 = x145 + x240;
+        let x242 = x241 - x146;
+        let x243 = 2.0 * x242;
+        let x246 = x136 + x140;
+        let x248 = x141 - x246;
+        let x249 = x137 + x248;
+        let x250 = 2.0 * x249;
+        let x253 = x126 - x130;
+        let x254 = x253 - x127;
+        let x255 = x131 + x254;
+        let x256 = 2.0 * x255;
+        let x277 = 2.0 * x243;
+        let x279 = 2.0 * x250;
+        let x281 = 2.0 * x256;
+        let x353 = 2.0 * x71;
+        let x355 = x69 * x89;
+        let x359 = x70 * x97;
+        let x363 = x71 * x353;
+        let x375 = x69 * x72;
+        let x377 = x70 * x353;
+        let x381 = x71 * x97;
+        let x389 = x69 * x353;
+        let x391 = x70 * x72;
+        let x393 = x71 * x89;
+        let x403 = x69 * x97;
+        let x407 = x70 * x89;
+        let x409 = x71 * x72;
+        let x417 = x68 * x89;
+        let x430 = x68 * x72;
+        let x440 = x68 * x353;
+        let x452 = x68 * x97;
+        let x524 = x193 + x196;
+        let x526 = x196 - x524;
+        let x527 = x193 + x526;
+        let x528 = 2.0 * x527;
+        let x531 = x185 - x188;
+        let x532 = x531 - x185;
+        let x533 = x188 + x532;
+        let x534 = 2.0 * x533;
+        let x535 = 2.0 * x528;
+        let x536 = 2.0 * x534;
+        let x537 = x174 * x277;
+        let x539 = x175 * x279;
+        let x540 = x70 * x535;
+        let x541 = x539 + x540;
+        let x543 = x176 * x281;
+        let x544 = x71 * x536;
+        let x545 = x543 + x544;
+        let x551 = x173 * x277;
+        let x553 = x176 * x279;
+        let x554 = x71 * x535;
+        let x555 = x553 + x554;
+        let x558 = x175 * x281;
+        let x559 = x70 * x536;
+        let x560 = x558 + x559;
+        let x565 = x176 * x277;
+        let x567 = x173 * x279;
+        let x568 = x68 * x535;
+        let x569 = x567 + x568;
+        let x571 = x174 * x281;
+        let x572 = x69 * x536;
+        let x573 = x571 + x572;
+        let x579 = x175 * x277;
+        let x582 = x174 * x279;
+        let x583 = x69 * x535;
+        let x584 = x582 + x583;
+        let x586 = x173 * x281;
+        let x587 = x68 * x536;
+        let x588 = x586 + x587;
+        let x593 = qd[3] * qd[3];
+        let x594 = qd[4] * qd[4];
+        let x595 = qd[5] * qd[5];
+        let x596 = qd[6] * qd[6];
+        let x597 = x593 + x594;
+        let x598 = x595 + x597;
+        let x599 = x596 + x598;
+        let x666 = x16 * k[0];
+        let x667 = x29 * k[1];
+        let x668 = x666 + x667;
+        let x669 = x35 * k[0];
+        let x670 = x19 * k[1];
+        let x671 = x669 + x670;
+        let x672 = x45 * k[0];
+        let x673 = x46 * k[1];
+        let x674 = x672 + x673;
+        let x675 = q[0] + x668;
+        let x676 = q[1] + x671;
+        let x677 = q[2] + x674;
+        let x678 = -x675;
+        let x679 = -x676;
+        let x680 = -x677;
+        let x681 = x72 * k[0];
+        let x682 = x71 * k[1];
+        let x684 = x681 - x682;
+        let x685 = x71 * k[0];
+        let x686 = x72 * k[1];
+        let x687 = x685 + x686;
+        let x688 = x70 * k[0];
+        let x689 = -x688;
+        let x690 = x69 * k[1];
+        let x691 = x690 - x688;
+        let x692 = -x684;
+        let x693 = -x687;
+        let x694 = -x691;
+        let x695 = x89 * k[0];
+        let x696 = x70 * k[1];
+        let x697 = x695 + x696;
+        let x698 = x68 * k[1];
+        let x699 = x685 + x698;
+        let x700 = -x697;
+        let x701 = -x699;
+        let x702 = x69 * k[0];
+        let x703 = x97 * k[1];
+        let x704 = x702 + x703;
+        let x705 = x68 * k[0];
+        let x706 = -x705;
+        let x707 = x682 - x705;
+        let x708 = -x690;
+        let x709 = -x704;
+        let x710 = -x707;
+        let x711 = x696 + x702;
+        let x712 = -x711;
+        let x729 = x355 * k[3];
+        let x730 = x359 * k[2];
+        let x731 = x363 * k[3];
+        let x732 = x729 + x730;
+        let x733 = x731 + x732;
+        let x734 = 0.5 * x733;
+        let x735 = x9 * k[6];
+        let x736 = x734 + x735;
+        let x737 = x375 * k[3];
+        let x738 = x377 * k[2];
+        let x740 = x381 * k[3];
+        let x741 = x737 - x738;
+        let x742 = x740 + x741;
+        let x743 = 0.5 * x742;
+        let x745 = x38 * k[6];
+        let x746 = x745 - x743;
+        let x747 = x389 * k[3];
+        let x748 = x391 * k[2];
+        let x749 = x393 * k[3];
+        let x751 = x747 + x748;
+        let x752 = x751 - x749;
+        let x753 = 0.5 * x752;
+        let x755 = x32 * k[6];
+        let x756 = x755 - x753;
+        let x757 = x403 * k[3];
+        let x759 = x407 * k[2];
+        let x760 = x409 * k[3];
+        let x761 = x759 - x757;
+        let x762 = x760 + x761;
+        let x763 = 0.5 * x762;
+        let x765 = x25 * k[6];
+        let x766 = x765 - x763;
+        let x767 = x417 * k[3];
+        let x769 = x381 * k[2];
+        let x770 = x377 * k[3];
+        let x772 = x769 - x767;
+        let x773 = x772 - x770;
+        let x774 = 0.5 * x773;
+        let x775 = x745 + x774;
+        let x776 = x430 * k[3];
+        let x777 = x363 * k[2];
+        let x778 = x359 * k[3];
+        let x779 = x776 + x777;
+        let x780 = x778 + x779;
+        let x781 = 0.5 * x780;
+        let x782 = x10 * k[6];
+        let x783 = x781 + x782;
+        let x784 = x440 * k[3];
+        let x785 = x409 * k[2];
+        let x787 = x407 * k[3];
+        let x789 = x784 - x785;
+        let x790 = x789 - x787;
+        let x791 = 0.5 * x790;
+        let x792 = x23 * k[6];
+        let x793 = x791 + x792;
+        let x794 = x452 * k[3];
+        let x795 = x393 * k[2];
+        let x796 = x391 * k[3];
+        let x797 = x794 + x795;
+        let x799 = x796 - x797;
+        let x800 = 0.5 * x799;
+        let x801 = x30 * k[6];
+        let x802 = x800 + x801;
+        let x803 = x452 * k[2];
+        let x804 = x749 + x803;
+        let x806 = x747 - x804;
+        let x807 = 0.5 * x806;
+        let x808 = x755 + x807;
+        let x809 = x440 * k[2];
+        let x811 = x760 - x809;
+        let x812 = x811 - x757;
+        let x813 = 0.5 * x812;
+        let x814 = x792 + x813;
+        let x815 = x430 * k[2];
+        let x816 = x731 + x815;
+        let x817 = x729 + x816;
+        let x818 = 0.5 * x817;
+        let x819 = x11 * k[6];
+        let x820 = x818 + x819;
+        let x822 = x417 * k[2];
+        let x824 = x822 - x740;
+        let x825 = x824 - x737;
+        let x826 = 0.5 * x825;
+        let x827 = x36 * k[6];
+        let x828 = x826 + x827;
+        let x829 = x403 * k[2];
+        let x832 = x787 - x829;
+        let x833 = x832 - x784;
+        let x834 = 0.5 * x833;
+        let x835 = x765 + x834;
+        let x836 = x389 * k[2];
+        let x837 = x796 + x836;
+        let x839 = x794 - x837;
+        let x840 = 0.5 * x839;
+        let x841 = x801 + x840;
+        let x842 = x375 * k[2];
+        let x843 = x842 - x770;
+        let x844 = x843 - x767;
+        let x845 = 0.5 * x844;
+        let x846 = x827 + x845;
+        let x847 = x355 * k[2];
+        let x848 = x778 + x847;
+        let x849 = x776 + x848;
+        let x850 = 0.5 * x849;
+        let x851 = x12 * k[6];
+        let x852 = x850 + x851;
+        let x853 = x537 * k[3];
+        let x854 = x541 * k[2];
+        let x855 = x545 * k[3];
+        let x856 = x853 + x854;
+        let x857 = x855 + x856;
+        let x858 = 0.5 * x857;
+        let x859 = x551 * k[3];
+        let x860 = x555 * k[2];
+        let x862 = x560 * k[3];
+        let x863 = x859 - x860;
+        let x864 = x862 + x863;
+        let x865 = 0.5 * x864;
+        let x866 = x565 * k[3];
+        let x867 = x569 * k[2];
+        let x868 = x573 * k[3];
+        let x870 = x866 + x867;
+        let x871 = x870 - x868;
+        let x872 = 0.5 * x871;
+        let x873 = x579 * k[3];
+        let x875 = x584 * k[2];
+        let x876 = x588 * k[3];
+        let x877 = x875 - x873;
+        let x878 = x876 + x877;
+        let x879 = 0.5 * x878;
+        let x880 = x539 * k[2];
+        let x881 = x543 * k[3];
+        let x882 = x853 + x880;
+        let x883 = x881 + x882;
+        let x884 = 0.5 * x883;
+        let x885 = x858 + x884;
+        let x886 = q[3] * k[6];
+        let x887 = x599 * x886;
+        let x889 = x885 - x887;
+        let x891 = x553 * k[2];
+        let x892 = x558 * k[3];
+        let x894 = x891 - x859;
+        let x895 = x894 - x892;
+        let x896 = 0.5 * x895;
+        let x898 = x896 - x865;
+        let x899 = q[4] * k[6];
+        let x900 = x599 * x899;
+        let x902 = x898 - x900;
+        let x903 = x567 * k[2];
+        let x904 = x571 * k[3];
+        let x905 = x866 + x903;
+        let x907 = x904 - x905;
+        let x908 = 0.5 * x907;
+        let x910 = x908 - x872;
+        let x911 = q[5] * k[6];
+        let x912 = x599 * x911;
+        let x914 = x910 - x912;
+        let x915 = x582 * k[2];
+        let x917 = x586 * k[3];
+        let x919 = x873 - x915;
+        let x920 = x919 - x917;
+        let x921 = 0.5 * x920;
+        let x923 = x921 - x879;
+        let x924 = q[6] * k[6];
+        let x925 = x599 * x924;
+        let x927 = x923 - x925;
+        phi[0] = x678;
         phi_q[0] = -1.0;
-        phi_q[1] = x86;
-        phi_q[2] = x95;
-        phi_q[3] = x105;
-        phi_q[4] = x93;
-        phi[1] = x63;
+        phi_q[1] = x692;
+        phi_q[2] = x700;
+        phi_q[3] = x708;
+        phi_q[4] = x698;
+        phi[1] = x679;
         phi_q[5] = -1.0;
-        phi_q[6] = x87;
-        phi_q[7] = x83;
-        phi_q[8] = x106;
-        phi_q[9] = x103;
-        phi[2] = x64;
+        phi_q[6] = x693;
+        phi_q[7] = x689;
+        phi_q[8] = x709;
+        phi_q[9] = x706;
+        phi[2] = x680;
         phi_q[10] = -1.0;
-        phi_q[11] = x88;
-        phi_q[12] = x96;
-        phi_q[13] = x107;
-        phi_q[14] = x110;
+        phi_q[11] = x694;
+        phi_q[12] = x701;
+        phi_q[13] = x710;
+        phi_q[14] = x712;
         phi[3] = x67;
         phi_q[15] = x68;
         phi_q[16] = x69;
         phi_q[17] = x70;
         phi_q[18] = x71;
-        mass[0] = 1.0;
-        mass[1] = 1.0;
-        mass[2] = 1.0;
-        mass[3] = x357;
-        mass[4] = x371;
-        mass[5] = x385;
-        mass[6] = x399;
-        mass[7] = x412;
-        mass[8] = x422;
-        mass[9] = x434;
-        mass[10] = x447;
-        mass[11] = x456;
-        mass[12] = x463;
-        mass[13] = x469;
-        mass[14] = x477;
-        mass[15] = x484;
-        mass[16] = x492;
-        mass[17] = x497;
-        mass[18] = x504;
+        mass[0] = k[7];
+        mass[1] = k[7];
+        mass[2] = k[7];
+        mass[3] = x736;
+        mass[4] = x746;
+        mass[5] = x756;
+        mass[6] = x766;
+        mass[7] = x775;
+        mass[8] = x783;
+        mass[9] = x793;
+        mass[10] = x802;
+        mass[11] = x808;
+        mass[12] = x814;
+        mass[13] = x820;
+        mass[14] = x828;
+        mass[15] = x835;
+        mass[16] = x841;
+        mass[17] = x846;
+        mass[18] = x852;
         force[0] = 0.0;
-        force[1] = -9.81;
+        force[1] = k[5];
         force[2] = 0.0;
-        force[3] = x592;
-        force[4] = x611;
-        force[5] = x629;
-        force[6] = x646;
+        force[3] = x889;
+        force[4] = x902;
+        force[5] = x914;
+        force[6] = x927;
     }
 }
 /// `spherical_pendulum` with the `exact` formulation.
@@ -1365,22 +1550,22 @@ impl Mechanism for Exact {
         &exact::INFO
     }
     fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        phi(q, t, out)
+        phi(&K, q, t, out)
     }
     fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        phi_q(q, t, out)
+        phi_q(&K, q, t, out)
     }
     fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
-        phi_t(q, t, out)
+        phi_t(&K, q, t, out)
     }
     fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-        gamma(q, qd, t, out)
+        gamma(&K, q, qd, t, out)
     }
     fn mass(&self, q: &[f64], out: &mut [f64]) {
-        exact::mass(q, out)
+        exact::mass(&K, q, out)
     }
     fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
-        exact::force(q, qd, t, out)
+        exact::force(&K, q, qd, t, out)
     }
     fn force_jacobian(
         &self,
@@ -1390,19 +1575,74 @@ impl Mechanism for Exact {
         dq: &mut [f64],
         dqd: &mut [f64],
     ) {
-        exact::force_jacobian(q, qd, t, dq, dqd)
+        exact::force_jacobian(&K, q, qd, t, dq, dqd)
     }
     fn potential(&self, q: &[f64]) -> f64 {
-        potential(q)
+        potential(&K, q)
     }
     fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
-        power_nc(q, qd, t)
+        power_nc(&K, q, qd, t)
     }
     fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
-        exact::eval_newton(q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+        exact::eval_newton(&K, q, qd, t, out.phi, out.phi_q, out.mass, out.force)
     }
     fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
-        eval_kinematics(q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+        eval_kinematics(&K, q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
+    }
+}
+impl Exact {
+    /// This formulation with some run-time parameters (`PARAMETERS`) set, the others
+    /// at the file's values; a name or value that is refused changes nothing.
+    pub fn with_parameters(set: &[(&str, f64)]) -> Result<ExactAt, ParameterError> {
+        Parameters::at(set).map(ExactAt)
+    }
+}
+/// `spherical_pendulum` with the `exact` formulation. At run-time parameter values (`Exact::with_parameters`).
+#[derive(Debug, Clone)]
+pub struct ExactAt(pub Parameters);
+impl Mechanism for ExactAt {
+    fn info(&self) -> &'static MechanismInfo {
+        &exact::INFO
+    }
+    fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        phi(&self.0.k, q, t, out)
+    }
+    fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        phi_q(&self.0.k, q, t, out)
+    }
+    fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        phi_t(&self.0.k, q, t, out)
+    }
+    fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        gamma(&self.0.k, q, qd, t, out)
+    }
+    fn mass(&self, q: &[f64], out: &mut [f64]) {
+        exact::mass(&self.0.k, q, out)
+    }
+    fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        exact::force(&self.0.k, q, qd, t, out)
+    }
+    fn force_jacobian(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &mut [f64],
+        dqd: &mut [f64],
+    ) {
+        exact::force_jacobian(&self.0.k, q, qd, t, dq, dqd)
+    }
+    fn potential(&self, q: &[f64]) -> f64 {
+        potential(&self.0.k, q)
+    }
+    fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
+        power_nc(&self.0.k, q, qd, t)
+    }
+    fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+        exact::eval_newton(&self.0.k, q, qd, t, out.phi, out.phi_q, out.mass, out.force)
+    }
+    fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
+        eval_kinematics(&self.0.k, q, qd, t, out.phi, out.phi_q, out.phi_t, out.gamma)
     }
 }
 /// The formulation listed first in the mechanism file.
@@ -1421,5 +1661,5 @@ pub static ENTRY: Entry = Entry {
         hash: 11312270152100685384u64,
         parameters: &[],
     },
-    run_time: None,
+    run_time: Some(&RUN_TIME_ENTRY),
 };

@@ -1,0 +1,243 @@
+//! Compiled code at parameters that reach the model's numbers (joint points and axes,
+//! lengths, drivers' constants: docs/design.md, decision 36): the mechanism file is loaded at
+//! the new values, the numbers the generated code takes at run time are read off it, and the
+//! file derived again gives what the generator decides from numbers (the assembled pose, the
+//! dependent rows, masses, the platform for `fk`); the compiled code evaluates the equations.
+//! Where the new values change a number the code holds as a constant, the file's own
+//! equations run interpreted instead, as they did before.
+
+use crate::scenario::ScenarioError;
+use symbody_codegen::interpret::{self, Loaded};
+use symbody_codegen::slots;
+use symbody_runtime::registry::{Built, Formulations, RunTime};
+use symbody_runtime::{
+    source_hash, Entry, Formulation, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs,
+    Origin,
+};
+
+/// Compiled code with the `MechanismInfo` of the file derived at the same values: its
+/// patterns are the code's, its pose, dependent rows, bodies, joints and platform the file's.
+struct WithInfo {
+    code: Box<dyn Mechanism + Sync>,
+    info: &'static MechanismInfo,
+}
+
+impl Mechanism for WithInfo {
+    fn info(&self) -> &'static MechanismInfo {
+        self.info
+    }
+    fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        self.code.phi(q, t, out)
+    }
+    fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        self.code.phi_q(q, t, out)
+    }
+    fn phi_t(&self, q: &[f64], t: f64, out: &mut [f64]) {
+        self.code.phi_t(q, t, out)
+    }
+    fn gamma(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        self.code.gamma(q, qd, t, out)
+    }
+    fn mass(&self, q: &[f64], out: &mut [f64]) {
+        self.code.mass(q, out)
+    }
+    fn force(&self, q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
+        self.code.force(q, qd, t, out)
+    }
+    fn force_jacobian(&self, q: &[f64], qd: &[f64], t: f64, dq: &mut [f64], dqd: &mut [f64]) {
+        self.code.force_jacobian(q, qd, t, dq, dqd)
+    }
+    fn potential(&self, q: &[f64]) -> f64 {
+        self.code.potential(q)
+    }
+    fn power_nc(&self, q: &[f64], qd: &[f64], t: f64) -> f64 {
+        self.code.power_nc(q, qd, t)
+    }
+    fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>) {
+        self.code.eval_newton(q, qd, t, out)
+    }
+    fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
+        self.code.eval_kinematics(q, qd, t, out)
+    }
+}
+
+/// Where the route applies: `entry`'s compiled code takes numbers of its model at run time,
+/// some value set is not a parameter it takes by name, and its file is here, unchanged since
+/// the code was generated. Its run-time description, file and text.
+fn route(
+    entry: &Entry,
+    parameters: &[(String, f64)],
+) -> Option<(&'static RunTime, &'static str, String)> {
+    let (Some(rt), Origin::Compiled { file, hash, .. }) = (entry.run_time, entry.origin) else {
+        return None;
+    };
+    let by_name = |(k, _): &(String, f64)| rt.parameters.names.contains(&k.as_str());
+    if rt.data.is_empty() || parameters.iter().all(by_name) {
+        return None;
+    }
+    let text = std::fs::read_to_string(file).ok()?;
+    (source_hash(&text) == hash).then_some((rt, file, text))
+}
+
+/// The formulations of `derived` (the file derived at the values) evaluated by `built` (the
+/// compiled code at the same values), or `None` where the two do not describe the same
+/// equations (other sizes or names), and the info each reads (to be kept while they live).
+fn combine(built: Built, derived: &Entry) -> Option<Vec<(Formulation, WithInfo, MechanismInfo)>> {
+    built
+        .into_iter()
+        .map(|(f, code)| {
+            let theirs = derived.mechanism(f)?.info();
+            let ours = code.info();
+            let same = ours.n_coords == theirs.n_coords
+                && ours.n_constraints == theirs.n_constraints
+                && ours.coord_names == theirs.coord_names
+                && ours.row_names == theirs.row_names;
+            let info = MechanismInfo {
+                q0: theirs.q0,
+                qd0: theirs.qd0,
+                redundant_rows: theirs.redundant_rows,
+                bodies: theirs.bodies,
+                joints: theirs.joints,
+                platform: theirs.platform,
+                ..*ours
+            };
+            // Filled in by the caller once the info has its home.
+            same.then_some((f, WithInfo { code, info: ours }, info))
+        })
+        .collect()
+}
+
+/// `p` for `rt` at `parameters`, or `None` where the compiled code cannot take these values
+/// (the file does not load with them, which the file derived again reports, or they change a
+/// number the code holds as a constant).
+fn values(
+    rt: &RunTime,
+    file: &str,
+    text: &str,
+    parameters: &[(String, f64)],
+) -> Result<Option<Built>, ScenarioError> {
+    let Ok((p, _)) = slots::values_at(file, text, parameters, rt.data) else {
+        return Ok(None);
+    };
+    (rt.build_values)(&p)
+        .map(Some)
+        .map_err(|e| ScenarioError::Options(format!("with {}: {e}", shown(parameters))))
+}
+
+fn shown(parameters: &[(String, f64)]) -> String {
+    let set: Vec<String> = parameters
+        .iter()
+        .map(|(k, v)| format!("{k} = {v}"))
+        .collect();
+    set.join(", ")
+}
+
+/// `entry`'s compiled code at `parameters` (the file's values for the others), living as
+/// long as the program, where the route applies ([`route`]) and the values keep the
+/// structure; `None` otherwise. `derived` is the file derived at the same values.
+pub fn compiled_at(
+    entry: &Entry,
+    parameters: &[(String, f64)],
+    derived: impl FnOnce() -> Result<&'static Entry, ScenarioError>,
+) -> Result<Option<&'static Entry>, ScenarioError> {
+    let Some((rt, file, text)) = route(entry, parameters) else {
+        return Ok(None);
+    };
+    let Some(built) = values(rt, file, &text, parameters)? else {
+        return Ok(None);
+    };
+    let derived = derived()?;
+    let Some(forms) = combine(built, derived) else {
+        return Ok(None);
+    };
+    let list: Vec<(Formulation, &'static (dyn Mechanism + Sync))> = forms
+        .into_iter()
+        .map(|(f, mut m, info)| {
+            m.info = Box::leak(Box::new(info));
+            (
+                f,
+                &*Box::leak(Box::new(m)) as &'static (dyn Mechanism + Sync),
+            )
+        })
+        .collect();
+    let set: Vec<(&'static str, f64)> = parameters
+        .iter()
+        .map(|(k, v)| (&*Box::leak(k.clone().into_boxed_str()), *v))
+        .collect();
+    Ok(Some(Box::leak(Box::new(Entry {
+        name: entry.name,
+        t_end: entry.t_end,
+        formulations: Box::leak(list.into_boxed_slice()),
+        reduced: None,
+        origin: Origin::Compiled {
+            file,
+            hash: source_hash(&text),
+            parameters: Box::leak(set.into_boxed_slice()),
+        },
+        run_time: entry.run_time,
+    }))))
+}
+
+/// `f` on what [`compiled_at`] builds, freed when `f` returns (a study's row); on the file
+/// derived at the values and interpreted where the compiled code cannot take them; `None`
+/// where the route does not apply.
+pub fn with_compiled_at<R>(
+    entry: &Entry,
+    parameters: &[(String, f64)],
+    f: impl FnOnce(&Entry) -> R,
+) -> Result<Option<R>, ScenarioError> {
+    let Some((rt, file, text)) = route(entry, parameters) else {
+        return Ok(None);
+    };
+    let built = values(rt, file, &text, parameters)?;
+    let run = |loaded: &Loaded| -> R {
+        let Some(forms) = built.and_then(|b| combine(b, loaded.entry)) else {
+            return f(loaded.entry);
+        };
+        let infos: Vec<MechanismInfo> = forms.iter().map(|(_, _, i)| *i).collect();
+        let mechanisms: Vec<(Formulation, WithInfo)> = forms
+            .into_iter()
+            .zip(&infos)
+            .map(|((form, mut m, _), info)| {
+                // SAFETY: `infos` outlives every use of the mechanisms, which are dropped
+                // before it at the end of this closure, after `f` returns.
+                m.info =
+                    unsafe { std::mem::transmute::<&MechanismInfo, &'static MechanismInfo>(info) };
+                (form, m)
+            })
+            .collect();
+        let refs: Vec<(Formulation, &(dyn Mechanism + Sync))> =
+            mechanisms.iter().map(|(form, m)| (*form, m as _)).collect();
+        let names: Vec<(&str, f64)> = parameters.iter().map(|(k, v)| (k.as_str(), *v)).collect();
+        // SAFETY: the entry and every reference in it are dropped when `f` returns, before
+        // `refs`, `mechanisms`, `infos` and `names`; `f` gets the entry by reference only and
+        // reduces what it records to numbers (the contract of `interpret::load_scoped`).
+        let (formulations, set) = unsafe {
+            (
+                std::mem::transmute::<&[(Formulation, &(dyn Mechanism + Sync))], Formulations>(
+                    &refs,
+                ),
+                std::mem::transmute::<&[(&str, f64)], &'static [(&'static str, f64)]>(&names),
+            )
+        };
+        let scoped = Entry {
+            name: entry.name,
+            t_end: entry.t_end,
+            formulations,
+            reduced: None,
+            origin: Origin::Compiled {
+                file,
+                hash: source_hash(&text),
+                parameters: set,
+            },
+            run_time: entry.run_time,
+        };
+        f(&scoped)
+    };
+    let source = crate::files::source_of(entry)?;
+    // SAFETY: nothing from the loaded entry outlives `run` (as above).
+    let result = unsafe { interpret::load_scoped_with(&source, &text, parameters, false, run) };
+    result
+        .map(Some)
+        .map_err(|e| ScenarioError::Options(format!("with {}: {e}", shown(parameters))))
+}
