@@ -88,9 +88,25 @@ pub fn load_with(
     parameters: &[(String, f64)],
     stale: bool,
 ) -> Result<Loaded, Errors> {
-    let mut model = model::load_with(source, text, parameters)?;
-    // The compiled code's equations (run-time values as variables, hoisted), with this
-    // file's values bound: interpreted and compiled runs agree bit for bit.
+    let model = model::load_with(source, text, parameters)?;
+    let (model, system, assembly) = front_end(source, text, model, parameters)?;
+    let entry = entry(&model, &system, &assembly, (source, stale, parameters));
+    Ok(Loaded {
+        entry,
+        report: assembly.report,
+        parameters: model.parameters,
+    })
+}
+
+/// The equations of `model` (loaded from `text` with `parameters` set) and its assembly: the
+/// compiled code's equations (run-time values as variables, hoisted), with this model's
+/// values bound, so interpreted and compiled runs agree bit for bit.
+fn front_end(
+    source: &str,
+    text: &str,
+    mut model: Model,
+    parameters: &[(String, f64)],
+) -> Result<(Model, System, Assembly), Errors> {
     let marked = crate::slots::mark(source, text, &mut model);
     let mut system = equations::build_parametric(&marked);
     crate::hoist::bound(&mut system, &model.run_time_values());
@@ -107,14 +123,31 @@ pub fn load_with(
         model::blame(&mut e, &set);
         e
     })?;
-    let entry = entry(&model, &system, &assembly, (source, stale, parameters));
-    Ok(Loaded {
-        entry,
-        report: assembly.report,
-        parameters: model.parameters,
-    })
+    Ok((model, system, assembly))
 }
 
+/// What the generator decides from the numbers of `model` (the file `text` loaded with
+/// `parameters` set), without its mass matrix and forces and without tapes: the assembled pose
+/// and velocities, the dependent rows, the bodies, joints and platform, each formulation's
+/// [`MechanismInfo`] with no mass pattern (leaked, or kept as [`scoped`] keeps).
+pub fn describe(
+    source: &str,
+    text: &str,
+    model: Model,
+    parameters: &[(String, f64)],
+) -> Result<Vec<(Formulation, &'static MechanismInfo)>, Errors> {
+    let formulations = model.formulations.clone();
+    let kinematic = Model {
+        formulations: Vec::new(),
+        ..model
+    };
+    let (model, system, assembly) = front_end(source, text, kinematic, parameters)?;
+    let shared = Shared::new(&model, &system, &assembly);
+    Ok(formulations
+        .iter()
+        .map(|&f| (formulation(f), shared.info(&model, &system, f, None)))
+        .collect())
+}
 /// As [`load`], but the entry lives only while `f` runs and is freed when it returns (or
 /// panics): for callers that load many files, such as the fuzzer, where [`load`]'s entries
 /// (tens of kB each) would add up.
@@ -147,7 +180,19 @@ pub unsafe fn load_scoped_with<R>(
     stale: bool,
     f: impl FnOnce(&Loaded) -> R,
 ) -> Result<R, Errors> {
-    /// Frees what the entry kept, also when `load` or `f` panics.
+    let build = || load_with(source, text, parameters, stale);
+    // SAFETY: the same contract.
+    unsafe { scoped(build, |loaded| loaded.map(|l| f(&l))) }
+}
+
+/// `run` on what `build` builds ([`load_with`], [`describe`]), which is kept until `run`
+/// returns (or panics) instead of leaked. What `run` itself loads is leaked as usual.
+///
+/// # Safety
+///
+/// Nothing `build` built may be used after `run` returns (as [`load_scoped`] says).
+pub unsafe fn scoped<T, R>(build: impl FnOnce() -> T, run: impl FnOnce(T) -> R) -> R {
+    /// Frees what was kept, also when `build` or `run` panics.
     struct Freed(Option<Vec<Box<dyn Any>>>);
     impl Drop for Freed {
         fn drop(&mut self) {
@@ -156,11 +201,11 @@ pub unsafe fn load_scoped_with<R>(
         }
     }
     let previous = KEPT.with(|kept| kept.borrow_mut().replace(Vec::new()));
-    assert!(previous.is_none(), "load_scoped does not nest");
+    assert!(previous.is_none(), "scoped loads do not nest");
     let mut freed = Freed(None);
-    let loaded = load_with(source, text, parameters, stale);
+    let built = build();
     freed.0 = KEPT.with(|kept| kept.borrow_mut().take());
-    Ok(f(&loaded?))
+    run(built)
 }
 
 fn kinematic_tapes(sys: &System) -> KinematicTapes {
@@ -190,65 +235,139 @@ fn dynamic_tapes(sys: &System, d: &Dynamics) -> DynamicTapes {
     }
 }
 
+/// What every formulation's [`MechanismInfo`] shares.
+struct Shared {
+    name: &'static str,
+    bodies: &'static [BodyInfo],
+    joints: &'static [JointInfo],
+    platform: Option<PlatformInfo>,
+    phi_q: (&'static [u32], &'static [u32]),
+    coord_names: &'static [&'static str],
+    row_names: &'static [&'static str],
+    q0: &'static [f64],
+    qd0: &'static [f64],
+    redundant_rows: &'static [u32],
+}
+
+impl Shared {
+    fn new(model: &Model, sys: &System, asm: &Assembly) -> Self {
+        let bodies = leak(
+            model
+                .bodies
+                .iter()
+                .map(|b| BodyInfo {
+                    name: leak_str(&b.name),
+                    coord_offset: b.offset,
+                    rotation: match b.rotation {
+                        model::Rotation::Euler => Rotation::Euler,
+                        model::Rotation::Quaternion => Rotation::Quaternion,
+                    },
+                    mass: b.mass,
+                    inertia: b.inertia,
+                })
+                .collect(),
+        );
+        let joints = leak(
+            info::joints(model, sys)
+                .into_iter()
+                .map(|j| JointInfo {
+                    name: leak_str(&j.name),
+                    kind: j.kind,
+                    body1: j.body1,
+                    body2: j.body2,
+                    row_start: j.row_start,
+                    rows: j.rows,
+                    point1: j.point1,
+                    point2: j.point2,
+                    effort_sign: j.effort_sign,
+                    effort_unit: j.effort_unit,
+                })
+                .collect(),
+        );
+        let platform = info::platform(model, sys, asm).map(|(body, legs)| PlatformInfo {
+            body,
+            legs: leak(
+                legs.into_iter()
+                    .map(|l| LegInfo {
+                        driver: leak_str(&l.driver),
+                        base: l.base,
+                        platform: l.platform,
+                        row: l.row,
+                    })
+                    .collect(),
+            ),
+        });
+        Shared {
+            name: leak_str(&model.name),
+            bodies,
+            joints,
+            platform,
+            phi_q: pattern(&sys.phi_q),
+            coord_names: leak_strs(&sys.coord_names),
+            row_names: leak_strs(&sys.row_names),
+            q0: leak(asm.q0.clone()),
+            qd0: leak(model.qd0()),
+            redundant_rows: leak(asm.redundant_rows.clone()),
+        }
+    }
+
+    /// The info of formulation `f` with the patterns of its dynamics `d` (none: empty).
+    fn info(
+        &self,
+        model: &Model,
+        sys: &System,
+        f: model::Formulation,
+        d: Option<&Dynamics>,
+    ) -> &'static MechanismInfo {
+        let none: &[Nonzero] = &[];
+        let (mass, force_q, force_qd) = match d {
+            Some(d) => (&d.mass[..], &d.force_q[..], &d.force_qd[..]),
+            None => (none, none, none),
+        };
+        let (mass_rows, mass_cols) = pattern(mass);
+        let (force_q_rows, force_q_cols) = pattern(force_q);
+        let (force_qd_rows, force_qd_cols) = pattern(force_qd);
+        keep(Box::new(MechanismInfo {
+            name: self.name,
+            n_coords: sys.n_coords,
+            n_constraints: sys.n_constraints,
+            formulation: formulation(f),
+            gravity: model.gravity,
+            phi_q_rows: self.phi_q.0,
+            phi_q_cols: self.phi_q.1,
+            mass_rows,
+            mass_cols,
+            mass_is_constant: d.is_some_and(|d| d.mass_is_constant),
+            force_q_rows,
+            force_q_cols,
+            force_qd_rows,
+            force_qd_cols,
+            bodies: self.bodies,
+            joints: self.joints,
+            coord_names: self.coord_names,
+            row_names: self.row_names,
+            q0: self.q0,
+            qd0: self.qd0,
+            redundant_rows: self.redundant_rows,
+            platform: self.platform,
+        }))
+    }
+}
+
+fn formulation(f: model::Formulation) -> Formulation {
+    match f {
+        model::Formulation::Paper => Formulation::Paper,
+        model::Formulation::Exact => Formulation::Exact,
+    }
+}
+
 fn entry(
     model: &Model,
     sys: &System,
     asm: &Assembly,
     (source, stale, parameters): (&str, bool, &[(String, f64)]),
 ) -> &'static Entry {
-    let name = leak_str(&model.name);
-    let bodies = leak(
-        model
-            .bodies
-            .iter()
-            .map(|b| BodyInfo {
-                name: leak_str(&b.name),
-                coord_offset: b.offset,
-                rotation: match b.rotation {
-                    model::Rotation::Euler => Rotation::Euler,
-                    model::Rotation::Quaternion => Rotation::Quaternion,
-                },
-                mass: b.mass,
-                inertia: b.inertia,
-            })
-            .collect(),
-    );
-    let joints = leak(
-        info::joints(model, sys)
-            .into_iter()
-            .map(|j| JointInfo {
-                name: leak_str(&j.name),
-                kind: j.kind,
-                body1: j.body1,
-                body2: j.body2,
-                row_start: j.row_start,
-                rows: j.rows,
-                point1: j.point1,
-                point2: j.point2,
-                effort_sign: j.effort_sign,
-                effort_unit: j.effort_unit,
-            })
-            .collect(),
-    );
-    let platform = info::platform(model, sys, asm).map(|(body, legs)| PlatformInfo {
-        body,
-        legs: leak(
-            legs.into_iter()
-                .map(|l| LegInfo {
-                    driver: leak_str(&l.driver),
-                    base: l.base,
-                    platform: l.platform,
-                    row: l.row,
-                })
-                .collect(),
-        ),
-    });
-    let (phi_q_rows, phi_q_cols) = pattern(&sys.phi_q);
-    let coord_names = leak_strs(&sys.coord_names);
-    let row_names = leak_strs(&sys.row_names);
-    let q0 = leak(asm.q0.clone());
-    let qd0 = leak(model.qd0());
-    let redundant_rows = leak(asm.redundant_rows.clone());
+    let shared = Shared::new(model, sys, asm);
     let kinematic = Arc::new(kinematic_tapes(sys));
     let formulations: Vec<(Formulation, &'static (dyn Mechanism + Sync))> = model
         .formulations
@@ -259,45 +378,15 @@ fn entry(
                 .iter()
                 .find(|d| d.formulation == f)
                 .expect("the equations hold every formulation the model lists");
-            let formulation = match f {
-                model::Formulation::Paper => Formulation::Paper,
-                model::Formulation::Exact => Formulation::Exact,
-            };
-            let (mass_rows, mass_cols) = pattern(&d.mass);
-            let (force_q_rows, force_q_cols) = pattern(&d.force_q);
-            let (force_qd_rows, force_qd_cols) = pattern(&d.force_qd);
-            let info: &'static MechanismInfo = keep(Box::new(MechanismInfo {
-                name,
-                n_coords: sys.n_coords,
-                n_constraints: sys.n_constraints,
-                formulation,
-                gravity: model.gravity,
-                phi_q_rows,
-                phi_q_cols,
-                mass_rows,
-                mass_cols,
-                mass_is_constant: d.mass_is_constant,
-                force_q_rows,
-                force_q_cols,
-                force_qd_rows,
-                force_qd_cols,
-                bodies,
-                joints,
-                coord_names,
-                row_names,
-                q0,
-                qd0,
-                redundant_rows,
-                platform,
-            }));
+            let info = shared.info(model, sys, f, Some(d));
             let m = Interpreted::new(info, kinematic.clone(), Arc::new(dynamic_tapes(sys, d)));
             let m: &'static (dyn Mechanism + Sync) = keep(Box::new(m));
-            (formulation, m)
+            (formulation(f), m)
         })
         .collect();
     let formulations: Formulations = leak(formulations);
     keep(Box::new(Entry {
-        name,
+        name: shared.name,
         t_end: model.t_end,
         formulations,
         reduced: None,

@@ -437,6 +437,7 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
                 build: at_parameters,
                 build_reduced: #build_reduced,
                 data: &DATA,
+                p0: &P0,
                 build_values: at_values,
             };
     }

@@ -36,6 +36,8 @@ pub struct RunTime {
     /// that the other parameters reach (points, axes, lengths, drivers' constants), read off
     /// the mechanism file loaded at new values (the generator's `slots::values_at`).
     pub data: &'static [u32],
+    /// The whole `p` at the file's values.
+    pub p0: &'static [f64],
     /// Every formulation at a whole `p` (named parameters, then `data`'s numbers).
     pub build_values: fn(p: &[f64]) -> Result<Built, ParameterError>,
 }

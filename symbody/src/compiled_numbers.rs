@@ -7,7 +7,7 @@
 //! equations run interpreted instead, as they did before.
 
 use crate::scenario::ScenarioError;
-use symbody_codegen::interpret::{self, Loaded};
+use symbody_codegen::interpret;
 use symbody_codegen::slots;
 use symbody_runtime::registry::{Built, Formulations, RunTime};
 use symbody_runtime::{
@@ -79,14 +79,17 @@ fn route(
     (source_hash(&text) == hash).then_some((rt, file, text))
 }
 
-/// The formulations of `derived` (the file derived at the values) evaluated by `built` (the
-/// compiled code at the same values), or `None` where the two do not describe the same
-/// equations (other sizes or names), and the info each reads (to be kept while they live).
-fn combine(built: Built, derived: &Entry) -> Option<Vec<(Formulation, WithInfo, MechanismInfo)>> {
+/// The compiled code at the values (`built`) with the info of the file derived at them
+/// (`derived`, [`interpret::describe`]), or `None` where the two do not describe the same
+/// equations (other sizes or names).
+fn combine(
+    built: Built,
+    derived: &[(Formulation, &'static MechanismInfo)],
+) -> Option<Vec<(Formulation, WithInfo, MechanismInfo)>> {
     built
         .into_iter()
         .map(|(f, code)| {
-            let theirs = derived.mechanism(f)?.info();
+            let theirs = derived.iter().find(|(g, _)| *g == f)?.1;
             let ours = code.info();
             let same = ours.n_coords == theirs.n_coords
                 && ours.n_constraints == theirs.n_constraints
@@ -101,27 +104,30 @@ fn combine(built: Built, derived: &Entry) -> Option<Vec<(Formulation, WithInfo, 
                 platform: theirs.platform,
                 ..*ours
             };
-            // Filled in by the caller once the info has its home.
+            // `info` takes its place once it has its home (leaked, or kept for a scope).
             same.then_some((f, WithInfo { code, info: ours }, info))
         })
         .collect()
 }
 
-/// `p` for `rt` at `parameters`, or `None` where the compiled code cannot take these values
-/// (the file does not load with them, which the file derived again reports, or they change a
-/// number the code holds as a constant).
-fn values(
+/// The compiled code at `parameters` and the file derived at them, or `None` where the
+/// compiled code cannot take these values: they change a number the code holds as a constant,
+/// or the file does not load with them (which the file derived again then reports).
+fn at_values(
     rt: &RunTime,
     file: &str,
     text: &str,
     parameters: &[(String, f64)],
-) -> Result<Option<Built>, ScenarioError> {
-    let Ok((p, _)) = slots::values_at(file, text, parameters, rt.data) else {
+) -> Result<Option<Vec<(Formulation, WithInfo, MechanismInfo)>>, ScenarioError> {
+    let Ok((p, model)) = slots::values_at(file, text, parameters, rt.data, rt.p0) else {
         return Ok(None);
     };
-    (rt.build_values)(&p)
-        .map(Some)
-        .map_err(|e| ScenarioError::Options(format!("with {}: {e}", shown(parameters))))
+    let refused = |e: String| ScenarioError::Options(format!("with {}: {e}", shown(parameters)));
+    let built = (rt.build_values)(&p).map_err(|e| refused(e.to_string()))?;
+    let Ok(derived) = interpret::describe(file, text, model, parameters) else {
+        return Ok(None);
+    };
+    Ok(combine(built, &derived))
 }
 
 fn shown(parameters: &[(String, f64)]) -> String {
@@ -134,30 +140,23 @@ fn shown(parameters: &[(String, f64)]) -> String {
 
 /// `entry`'s compiled code at `parameters` (the file's values for the others), living as
 /// long as the program, where the route applies ([`route`]) and the values keep the
-/// structure; `None` otherwise. `derived` is the file derived at the same values.
+/// structure; `None` otherwise.
 pub fn compiled_at(
     entry: &Entry,
     parameters: &[(String, f64)],
-    derived: impl FnOnce() -> Result<&'static Entry, ScenarioError>,
 ) -> Result<Option<&'static Entry>, ScenarioError> {
     let Some((rt, file, text)) = route(entry, parameters) else {
         return Ok(None);
     };
-    let Some(built) = values(rt, file, &text, parameters)? else {
-        return Ok(None);
-    };
-    let derived = derived()?;
-    let Some(forms) = combine(built, derived) else {
+    let source = crate::files::source_of(entry)?;
+    let Some(forms) = at_values(rt, &source, &text, parameters)? else {
         return Ok(None);
     };
     let list: Vec<(Formulation, &'static (dyn Mechanism + Sync))> = forms
         .into_iter()
         .map(|(f, mut m, info)| {
             m.info = Box::leak(Box::new(info));
-            (
-                f,
-                &*Box::leak(Box::new(m)) as &'static (dyn Mechanism + Sync),
-            )
+            (f, &*Box::leak(Box::new(m)) as &'static (dyn Mechanism + Sync))
         })
         .collect();
     let set: Vec<(&'static str, f64)> = parameters
@@ -178,9 +177,8 @@ pub fn compiled_at(
     }))))
 }
 
-/// `f` on what [`compiled_at`] builds, freed when `f` returns (a study's row); on the file
-/// derived at the values and interpreted where the compiled code cannot take them; `None`
-/// where the route does not apply.
+/// `f` on what [`compiled_at`] builds, freed when `f` returns (a study's row); `None` where
+/// the route does not apply or the compiled code cannot take the values.
 pub fn with_compiled_at<R>(
     entry: &Entry,
     parameters: &[(String, f64)],
@@ -189,10 +187,11 @@ pub fn with_compiled_at<R>(
     let Some((rt, file, text)) = route(entry, parameters) else {
         return Ok(None);
     };
-    let built = values(rt, file, &text, parameters)?;
-    let run = |loaded: &Loaded| -> R {
-        let Some(forms) = built.and_then(|b| combine(b, loaded.entry)) else {
-            return f(loaded.entry);
+    let source = crate::files::source_of(entry)?;
+    let build = || at_values(rt, &source, &text, parameters);
+    let run = |forms: Result<Option<Vec<(Formulation, WithInfo, MechanismInfo)>>, _>| {
+        let Some(forms) = forms? else {
+            return Ok(None);
         };
         let infos: Vec<MechanismInfo> = forms.iter().map(|(_, _, i)| *i).collect();
         let mechanisms: Vec<(Formulation, WithInfo)> = forms
@@ -200,7 +199,7 @@ pub fn with_compiled_at<R>(
             .zip(&infos)
             .map(|((form, mut m, _), info)| {
                 // SAFETY: `infos` outlives every use of the mechanisms, which are dropped
-                // before it at the end of this closure, after `f` returns.
+                // before it, after `f` returns.
                 m.info =
                     unsafe { std::mem::transmute::<&MechanismInfo, &'static MechanismInfo>(info) };
                 (form, m)
@@ -232,12 +231,8 @@ pub fn with_compiled_at<R>(
             },
             run_time: entry.run_time,
         };
-        f(&scoped)
+        Ok(Some(f(&scoped)))
     };
-    let source = crate::files::source_of(entry)?;
-    // SAFETY: nothing from the loaded entry outlives `run` (as above).
-    let result = unsafe { interpret::load_scoped_with(&source, &text, parameters, false, run) };
-    result
-        .map(Some)
-        .map_err(|e| ScenarioError::Options(format!("with {}: {e}", shown(parameters))))
+    // SAFETY: nothing `build` built (the derived infos) outlives `run` (as above).
+    unsafe { interpret::scoped(build, run) }
 }

@@ -120,8 +120,7 @@ pub fn reparametrized(
     if let Some(e) = compiled_at(entry, parameters)? {
         return Ok(e);
     }
-    let derived = || derive(entry, parameters).map(|l| l.entry);
-    match crate::compiled_numbers::compiled_at(entry, parameters, derived)? {
+    match crate::compiled_numbers::compiled_at(entry, parameters)? {
         Some(e) => Ok(e),
         None => derive(entry, parameters).map(|l| l.entry),
     }
@@ -393,9 +392,7 @@ pub fn fresh(entry: &'static Entry) -> Result<&'static Entry, ScenarioError> {
 /// compiled code of its current file.
 pub fn note(entry: &Entry) -> Option<String> {
     match entry.origin {
-        Origin::Compiled {
-            file, parameters, ..
-        } if !parameters.is_empty() => {
+        Origin::Compiled { parameters, .. } if !parameters.is_empty() => {
             let set: Vec<String> = parameters
                 .iter()
                 .map(|(k, v)| format!("{k} = {v}"))
@@ -411,7 +408,13 @@ pub fn note(entry: &Entry) -> Option<String> {
                     set.join(", ")
                 ));
             }
-            let changed = structure_change(file, entry)
+            // The structure the generator found for the file's values is the compiled code's.
+            let file_values = entry.run_time.and_then(|rt| (rt.build)(&[]).ok());
+            let changed = file_values
+                .and_then(|b| {
+                    let (_, m) = b.first()?;
+                    structure_change(m.info(), entry.default_mechanism().info())
+                })
                 .map(|c| format!("; with these values {c}"))
                 .unwrap_or_default();
             Some(format!(
@@ -428,7 +431,14 @@ pub fn note(entry: &Entry) -> Option<String> {
                 .iter()
                 .map(|(k, v)| format!("{k} = {v}"))
                 .collect();
-            let changed = structure_change(file, entry)
+            let default = read(Path::new(file))
+                .and_then(|text| load_text(file, &text, false, &[]))
+                .ok();
+            let changed = default
+                .and_then(|d| {
+                    let info = |e: &Entry| e.default_mechanism().info();
+                    structure_change(info(d.entry), info(entry))
+                })
                 .map(|c| format!("; with these values {c}"))
                 .unwrap_or_default();
             Some(format!(
@@ -456,14 +466,11 @@ pub fn note(entry: &Entry) -> Option<String> {
 }
 
 /// How the structure the generator found (dependent rows, degrees of freedom, a platform for
-/// forward kinematics) differs between `entry` and the file `file` with its own values.
-fn structure_change(file: &str, entry: &Entry) -> Option<String> {
-    let text = read(Path::new(file)).ok()?;
-    let default = load_text(file, &text, false, &[]).ok()?.entry;
-    let (a, b) = (
-        default.default_mechanism().info(),
-        entry.default_mechanism().info(),
-    );
+/// forward kinematics) differs from `a` (the file's own values) to `b`.
+fn structure_change(
+    a: &symbody_runtime::MechanismInfo,
+    b: &symbody_runtime::MechanismInfo,
+) -> Option<String> {
     let rows = |i: &symbody_runtime::MechanismInfo| -> Vec<&str> {
         i.redundant_rows
             .iter()

@@ -4843,6 +4843,7 @@ pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime:
     build: at_parameters,
     build_reduced: None,
     data: &DATA,
+    p0: &P0,
     build_values: at_values,
 };
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
