@@ -132,10 +132,10 @@ extern "C" {
 /**
  * As `symbody_mechanism_new`, with parameters of the mechanism's file (its `[parameters]`)
  * set before anything is derived: `names[i]` to `values[i]` for `i < count` (`count` 0:
- * none), as if the file said so, as `symbody simulate --set` does. The file's equations are
- * re-derived for these values and interpreted (nothing compiled; the compiled code keeps the
- * file's values); the initial pose is assembled again, and the dependent rows, degrees of
- * freedom and platform found again.
+ * none), as if the file said so, as `symbody simulate --set` does. Nothing is compiled: the
+ * compiled code takes the numbers the file gives at these values (the file's equations run
+ * interpreted where the values change what the code holds fixed); the initial pose is
+ * assembled again, and the dependent rows, degrees of freedom and platform found again.
  *
  * Errors: those of `symbody_mechanism_new`, and `SYMBODY_STATUS_INVALID_ARGUMENT` for an
  * unknown parameter (the message suggests the closest), a value that is not finite, or
@@ -556,8 +556,7 @@ int symbody_session_from_file(const char *path,
 /**
  * As `symbody_session_new_ex`, with parameters of the mechanism's file set before the
  * session starts: `names[i]` to `values[i]` for `i < count`, as
- * `symbody_mechanism_with_parameters` does (the file re-derived for these values and
- * interpreted). Errors: those of `symbody_session_new_ex` and of
+ * `symbody_mechanism_with_parameters` does (the file loaded at these values). Errors: those of `symbody_session_new_ex` and of
  * `symbody_mechanism_with_parameters`.
  *
  * # Safety

@@ -169,10 +169,10 @@ pub(crate) fn lookup_with(name: &str, f: c_int, params: &[(String, f64)]) -> Fou
 
 /// As `symbody_mechanism_new`, with parameters of the mechanism's file (its `[parameters]`)
 /// set before anything is derived: `names[i]` to `values[i]` for `i < count` (`count` 0:
-/// none), as if the file said so, as `symbody simulate --set` does. The file's equations are
-/// re-derived for these values and interpreted (nothing compiled; the compiled code keeps the
-/// file's values); the initial pose is assembled again, and the dependent rows, degrees of
-/// freedom and platform found again.
+/// none), as if the file said so, as `symbody simulate --set` does. Nothing is compiled: the
+/// compiled code takes the numbers the file gives at these values (the file's equations run
+/// interpreted where the values change what the code holds fixed); the initial pose is
+/// assembled again, and the dependent rows, degrees of freedom and platform found again.
 ///
 /// Errors: those of `symbody_mechanism_new`, and `SYMBODY_STATUS_INVALID_ARGUMENT` for an
 /// unknown parameter (the message suggests the closest), a value that is not finite, or

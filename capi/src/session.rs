@@ -156,8 +156,7 @@ pub unsafe extern "C" fn symbody_session_from_file(
 
 /// As `symbody_session_new_ex`, with parameters of the mechanism's file set before the
 /// session starts: `names[i]` to `values[i]` for `i < count`, as
-/// `symbody_mechanism_with_parameters` does (the file re-derived for these values and
-/// interpreted). Errors: those of `symbody_session_new_ex` and of
+/// `symbody_mechanism_with_parameters` does (the file loaded at these values). Errors: those of `symbody_session_new_ex` and of
 /// `symbody_mechanism_with_parameters`.
 ///
 /// # Safety

@@ -79,8 +79,9 @@ struct Files {
 #[derive(clap::Args)]
 struct SetParameters {
     /// Set a parameter of the mechanism file (`[parameters]`, see `symbody params
-    /// <mechanism>`), as if the file said so; repeat for several. The file's equations are
-    /// re-derived and interpreted (nothing to build).
+    /// <mechanism>`), as if the file said so; repeat for several. Nothing to build: the
+    /// compiled code takes the numbers the file gives at these values (or the file runs
+    /// interpreted where they change its structure).
     #[arg(long = "set", value_name = "NAME=VALUE")]
     set: Vec<String>,
 }

@@ -377,8 +377,7 @@ mod tests {
         let mut m = model::load(src, SLIDER_CRANK).unwrap();
         mark(src, SLIDER_CRANK, &mut m);
         let (expected, p0) = (m.data_slots.clone(), m.run_time_values());
-        let (p, at) =
-            values_at(src, SLIDER_CRANK, &[("r".into(), 0.12)], &expected, &p0).unwrap();
+        let (p, at) = values_at(src, SLIDER_CRANK, &[("r".into(), 0.12)], &expected, &p0).unwrap();
         // The file's slots read off the file loaded at r = 0.12 (whose own slots may differ
         // by numbers that are roundoff at one value and not at the other).
         let again = model::load_with(src, SLIDER_CRANK, &[("r".into(), 0.12)]).unwrap();

@@ -144,8 +144,8 @@ fn load_file(path: &Path) -> PyResult<&'static Entry> {
     })
 }
 
-/// The registry entry `target` names, or its file interpreted; with `params`, the file
-/// re-derived with those parameter values (`symbody --set`).
+/// The registry entry `target` names, or its file interpreted; with `params`, at those
+/// parameter values (`symbody --set`: `files::with_parameters`).
 fn find(target: &Target, params: Option<BTreeMap<String, f64>>) -> PyResult<&'static Entry> {
     let entry = match target {
         Target::Name(name) if symbody::files::is_path(name) => load_file(Path::new(name)),

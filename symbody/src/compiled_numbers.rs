@@ -156,7 +156,10 @@ pub fn compiled_at(
         .into_iter()
         .map(|(f, mut m, info)| {
             m.info = Box::leak(Box::new(info));
-            (f, &*Box::leak(Box::new(m)) as &'static (dyn Mechanism + Sync))
+            (
+                f,
+                &*Box::leak(Box::new(m)) as &'static (dyn Mechanism + Sync),
+            )
         })
         .collect();
     let set: Vec<(&'static str, f64)> = parameters

@@ -112,7 +112,9 @@ pub fn with_parameters(
 
 /// The file `entry` comes from with `parameters` set (the file's values for the others,
 /// whatever `entry` was built with): its compiled code where every one is a run-time
-/// parameter of it ([`compiled_at`]), else the file derived again and interpreted.
+/// parameter of it by name ([`compiled_at`]), or where the code takes the numbers the file
+/// gives at these values ([`crate::compiled_numbers::compiled_at`]), else the file derived
+/// again and interpreted.
 pub fn reparametrized(
     entry: &Entry,
     parameters: &Overrides,

@@ -355,6 +355,11 @@ pub fn require_reduced(entry: &Entry, f: Option<Formulation>) -> Result<(), Erro
              (`cargo xtask generate`) for the planar or substituted model",
             entry.name
         ),
+        symbody_runtime::Origin::Compiled { parameters, .. } if !parameters.is_empty() => format!(
+            "`{}` with parameters set runs its full model: the reduced model holds the file's \
+             values (run it without the reduced model, or at the file's values)",
+            entry.name
+        ),
         symbody_runtime::Origin::Compiled { .. } => format!(
             "`{}` has no reduced model: its file is not planar (`planar = true`, \
              docs/mechanism-files.md) and has no row a·qᵢ + b·qⱼ + g(t) = 0 to substitute",

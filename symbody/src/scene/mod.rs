@@ -31,7 +31,7 @@
 //! cross_singular_positions = false  # pass positions where rows are dependent for an instant
 //!
 //! [parameters]                  # optional: the mechanism file's parameters, other values
-//! r_platform = 0.11             # (the file is re-derived and interpreted: nothing to build)
+//! r_platform = 0.11             # (nothing to build: the compiled code takes the file's numbers)
 //! ```
 
 mod parse;
