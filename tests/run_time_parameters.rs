@@ -12,6 +12,7 @@ use symbody::files;
 use symbody_mechanisms::{oscillators, stewart_6_6, REGISTRY};
 use symbody_runtime::parameters::ParameterError;
 use symbody_runtime::{joint_force, HhtBuilder, Kinematics, Mechanism, NewtonOutputs, Origin};
+use symbody_testkit::common::max_rel;
 
 /// `eval_newton` of `m` at the file's pose, moved a little so that nothing is symmetric,
 /// with velocities (so that every velocity term counts).
@@ -43,15 +44,6 @@ fn newton(m: &dyn Mechanism) -> Vec<f64> {
     out.extend(force);
     out.push(m.potential(&q));
     out
-}
-
-/// Largest |a − b| relative to the largest |b|.
-fn max_rel(a: &[f64], b: &[f64]) -> f64 {
-    assert_eq!(a.len(), b.len());
-    let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    a.iter()
-        .zip(b)
-        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs() / scale))
 }
 
 /// The positions after 0.5 s of HHT from the file's pose.

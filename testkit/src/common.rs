@@ -20,6 +20,15 @@ impl Rng {
     }
 }
 
+/// Largest |a − b| relative to the largest |b|: how far a result is from its reference.
+pub fn max_rel(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    a.iter()
+        .zip(b)
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs() / scale))
+}
+
 /// A dense `shape` matrix from nonzeros `nnz` at `(rows[k], cols[k])`.
 pub fn dense(shape: (usize, usize), rows: &[u32], cols: &[u32], nnz: &[f64]) -> DMatrix<f64> {
     let mut m = DMatrix::zeros(shape.0, shape.1);
