@@ -79,13 +79,14 @@ fn route(
     (source_hash(&text) == hash).then_some((rt, file, text))
 }
 
+/// Each formulation of the compiled code at some values, and the info it is to read (which
+/// takes its place once it has a home: leaked, or kept for a scope).
+type Combined = Vec<(Formulation, WithInfo, MechanismInfo)>;
+
 /// The compiled code at the values (`built`) with the info of the file derived at them
 /// (`derived`, [`interpret::describe`]), or `None` where the two do not describe the same
 /// equations (other sizes or names).
-fn combine(
-    built: Built,
-    derived: &[(Formulation, &'static MechanismInfo)],
-) -> Option<Vec<(Formulation, WithInfo, MechanismInfo)>> {
+fn combine(built: Built, derived: &[(Formulation, &'static MechanismInfo)]) -> Option<Combined> {
     built
         .into_iter()
         .map(|(f, code)| {
@@ -104,7 +105,6 @@ fn combine(
                 platform: theirs.platform,
                 ..*ours
             };
-            // `info` takes its place once it has its home (leaked, or kept for a scope).
             same.then_some((f, WithInfo { code, info: ours }, info))
         })
         .collect()
@@ -118,7 +118,7 @@ fn at_values(
     file: &str,
     text: &str,
     parameters: &[(String, f64)],
-) -> Result<Option<Vec<(Formulation, WithInfo, MechanismInfo)>>, ScenarioError> {
+) -> Result<Option<Combined>, ScenarioError> {
     let Ok((p, model)) = slots::values_at(file, text, parameters, rt.data, rt.p0) else {
         return Ok(None);
     };
@@ -192,7 +192,7 @@ pub fn with_compiled_at<R>(
     };
     let source = crate::files::source_of(entry)?;
     let build = || at_values(rt, &source, &text, parameters);
-    let run = |forms: Result<Option<Vec<(Formulation, WithInfo, MechanismInfo)>>, _>| {
+    let run = |forms: Result<Option<Combined>, ScenarioError>| {
         let Some(forms) = forms? else {
             return Ok(None);
         };
