@@ -318,7 +318,7 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
         let at = ident(&format!("{type_name}At"));
         quote!((#form, Box::new(#at(p.clone())) as Box<dyn Mechanism + Sync>))
     });
-    let (reduced_fn, build_reduced) = match reduced.map(parameter_lengths) {
+    let (reduced_fn, build_reduced, build_reduced_values) = match reduced.map(parameter_lengths) {
         Some((_, nk)) if nk > 0 => {
             let forms = model.formulations.iter().map(|&f| {
                 let (_, type_name, form) = formulation_names(f);
@@ -327,17 +327,25 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
             });
             (
                 quote! {
+                    fn built_reduced(p: Parameters) -> symbody_runtime::registry::Built {
+                        vec![#(#forms),*]
+                    }
                     fn at_parameters_reduced(
                         set: &[(&str, f64)],
                     ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-                        let p = Parameters::at(set)?;
-                        Ok(vec![#(#forms),*])
+                        Parameters::at(set).map(built_reduced)
+                    }
+                    fn at_values_reduced(
+                        values: &[f64],
+                    ) -> Result<symbody_runtime::registry::Built, ParameterError> {
+                        Parameters::from_values(values).map(built_reduced)
                     }
                 },
                 quote!(Some(at_parameters_reduced)),
+                quote!(Some(at_values_reduced)),
             )
         }
-        _ => (quote!(), quote!(None)),
+        _ => (quote!(), quote!(None), quote!(None)),
     };
     let n_named = Literal::usize_unsuffixed(names.len());
     let p0 = model.run_time_values().into_iter().map(float);
@@ -439,6 +447,7 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
                 data: &DATA,
                 p0: &P0,
                 build_values: at_values,
+                build_reduced_values: #build_reduced_values,
             };
     }
 }
@@ -864,6 +873,7 @@ fn reduced_module(
                 rows: &ROWS,
                 substitutions: &SUBSTITUTIONS,
                 offsets: #offsets_name,
+                offsets_read_parameters: #reads_p,
             };
             #offsets_fn
             #offsets_at

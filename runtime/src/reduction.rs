@@ -32,6 +32,9 @@ pub struct Reduction {
     pub substitutions: &'static [Substitution],
     /// `c, ċ, c̈` of each substitution at time `t`, three per substitution.
     pub offsets: fn(f64, &mut [f64]),
+    /// Whether the offsets read numbers of the model that parameters reach (a slider's line
+    /// at y = e): they hold the file's values, so the reduction serves no other values.
+    pub offsets_read_parameters: bool,
 }
 
 impl Reduction {

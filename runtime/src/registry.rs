@@ -39,11 +39,16 @@ pub struct RunTime {
     /// The whole `p` at the file's values.
     pub p0: &'static [f64],
     /// Every formulation at a whole `p` (named parameters, then `data`'s numbers).
-    pub build_values: fn(p: &[f64]) -> Result<Built, ParameterError>,
+    pub build_values: BuildValues,
+    /// The same for the entry's reduced model, where it reads run-time values.
+    pub build_reduced_values: Option<BuildValues>,
 }
 
 /// Builds every formulation at the file's values with `set` applied.
 pub type Build = fn(set: &[(&str, f64)]) -> Result<Built, ParameterError>;
+
+/// Builds every formulation at a whole `p`, checked first.
+pub type BuildValues = fn(p: &[f64]) -> Result<Built, ParameterError>;
 
 /// Mechanisms built at run-time parameter values, one per formulation.
 pub type Built = Vec<(Formulation, Box<dyn Mechanism + Sync>)>;

@@ -9,10 +9,10 @@
 use crate::scenario::ScenarioError;
 use symbody_codegen::interpret;
 use symbody_codegen::slots;
-use symbody_runtime::registry::{Built, Formulations, RunTime};
+use symbody_runtime::registry::{Built, Formulations, Reduced, RunTime};
 use symbody_runtime::{
     source_hash, Entry, Formulation, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs,
-    Origin,
+    Origin, Reduction,
 };
 
 /// Compiled code with the `MechanismInfo` of the file derived at the same values: its
@@ -79,9 +79,46 @@ fn route(
     (source_hash(&text) == hash).then_some((rt, file, text))
 }
 
-/// Each formulation of the compiled code at some values, and the info it is to read (which
-/// takes its place once it has a home: leaked, or kept for a scope).
+/// One formulation of the compiled code at some values, and the info it is to read.
 type Combined = Vec<(Formulation, WithInfo, MechanismInfo)>;
+
+/// The compiled code at some values, every info in a box of its own: the mechanisms read
+/// their infos (and the reduced infos their initial states) by `'static` references that
+/// stay valid as long as this lives (for the program, leaked; or for a scope).
+struct Homed {
+    full: Vec<(Formulation, WithInfo)>,
+    reduced: Option<(Vec<(Formulation, WithInfo)>, &'static Reduction)>,
+    // Boxed one by one: references into them are handed out while the list still grows.
+    #[allow(clippy::vec_box)]
+    _infos: Vec<Box<MechanismInfo>>,
+    _states: Vec<Box<[f64]>>,
+}
+
+impl Homed {
+    /// The formulations, and the reduced model's with its reduction.
+    fn lists(&self) -> Lists<'_> {
+        fn list(l: &[(Formulation, WithInfo)]) -> Vec<Listed<'_>> {
+            l.iter().map(|(f, m)| (*f, m as _)).collect()
+        }
+        let reduced = self.reduced.as_ref().map(|(r, red)| (list(r), *red));
+        (list(&self.full), reduced)
+    }
+}
+
+type Listed<'a> = (Formulation, &'a (dyn Mechanism + Sync));
+type Lists<'a> = (
+    Vec<Listed<'a>>,
+    Option<(Vec<Listed<'a>>, &'static Reduction)>,
+);
+
+/// A place for `v` that outlives the borrow: `'static` while `owner` keeps the box.
+fn home<T: ?Sized>(owner: &mut Vec<Box<T>>, v: Box<T>) -> &'static T {
+    let r: *const T = &*v;
+    owner.push(v);
+    // SAFETY: a box's contents do not move when the box does; `Homed` keeps the box as long
+    // as anything reads the reference (see `Homed`).
+    unsafe { &*r }
+}
 
 /// The compiled code at the values (`built`) with the info of the file derived at them
 /// (`derived`, [`interpret::describe`]), or `None` where the two do not describe the same
@@ -110,15 +147,70 @@ fn combine(built: Built, derived: &[(Formulation, &'static MechanismInfo)]) -> O
         .collect()
 }
 
+/// Largest gap, relative to the pose's size, by which the reduced model's substitutions
+/// (`q[coord] = weight · q[target] + c(0)`) may miss the full model's new initial pose and
+/// still describe it: roundoff of the assembly.
+const SUBSTITUTED: f64 = 1e-12;
+
+/// The entry's compiled reduced model at `p`, where it serves these values: its offsets read
+/// none of the model's numbers, the new initial pose (`full`'s infos) keeps the coordinates it
+/// substitutes where they were, and the full model's dependent rows are the file's.
+fn reduced_at(
+    entry: &Entry,
+    rt: &RunTime,
+    p: &[f64],
+    full: &Combined,
+) -> Result<Option<(Combined, &'static Reduction)>, symbody_runtime::parameters::ParameterError> {
+    let Some(r) = &entry.reduced else {
+        return Ok(None);
+    };
+    let red = r.reduction;
+    let Some((_, code, info)) = full.first() else {
+        return Ok(None);
+    };
+    if red.offsets_read_parameters || info.redundant_rows != code.info.redundant_rows {
+        return Ok(None);
+    }
+    let mut offsets = vec![0.0; 3 * red.substitutions.len()];
+    (red.offsets)(0.0, &mut offsets);
+    let q0 = info.q0;
+    let size = q0.iter().fold(1.0f64, |m, v| m.max(v.abs()));
+    let kept = red.substitutions.iter().enumerate().all(|(k, s)| {
+        let follows = s.target.map_or(0.0, |j| s.weight * q0[j as usize]);
+        (q0[s.coord as usize] - follows - offsets[3 * k]).abs() <= SUBSTITUTED * size
+    });
+    if !kept {
+        return Ok(None);
+    }
+    let built: Built = match rt.build_reduced_values {
+        Some(build) => build(p)?,
+        // A reduced model that reads no run-time values serves any as it is.
+        None => r
+            .formulations
+            .iter()
+            .map(|&(f, m)| (f, Box::new(m) as Box<dyn Mechanism + Sync>))
+            .collect(),
+    };
+    let forms = built
+        .into_iter()
+        .map(|(f, code)| {
+            let ours = code.info();
+            (f, WithInfo { code, info: ours }, *ours)
+        })
+        .collect();
+    Ok(Some((forms, red)))
+}
+
 /// The compiled code at `parameters` and the file derived at them, or `None` where the
 /// compiled code cannot take these values: they change a number the code holds as a constant,
 /// or the file does not load with them (which the file derived again then reports).
 fn at_values(
+    entry: &Entry,
     rt: &RunTime,
     file: &str,
     text: &str,
     parameters: &[(String, f64)],
-) -> Result<Option<Combined>, ScenarioError> {
+) -> Result<Option<Homed>, ScenarioError> {
     let Ok((p, model)) = slots::values_at(file, text, parameters, rt.data, rt.p0) else {
         return Ok(None);
     };
@@ -127,7 +219,48 @@ fn at_values(
     let Ok(derived) = interpret::describe(file, text, model, parameters) else {
         return Ok(None);
     };
-    Ok(combine(built, &derived))
+    let Some(full) = combine(built, &derived) else {
+        return Ok(None);
+    };
+    let reduced = reduced_at(entry, rt, &p, &full).map_err(|e| refused(e.to_string()))?;
+    let (mut infos, mut states) = (Vec::new(), Vec::new());
+    let mut homed = |forms: Combined, red: Option<&Reduction>| -> Vec<(Formulation, WithInfo)> {
+        forms
+            .into_iter()
+            .map(|(f, mut m, mut info)| {
+                if let Some(red) = red {
+                    // The reduced model starts where the full one does at these values.
+                    let full = full_info(&derived, f);
+                    let pick = |v: &[f64]| -> Box<[f64]> {
+                        red.coords.iter().map(|&c| v[c as usize]).collect()
+                    };
+                    if let Some(full) = full {
+                        info.q0 = home(&mut states, pick(full.0));
+                        info.qd0 = home(&mut states, pick(full.1));
+                    }
+                }
+                m.info = home(&mut infos, Box::new(info));
+                (f, m)
+            })
+            .collect()
+    };
+    let full_homed = homed(full, None);
+    let reduced_homed = reduced.map(|(forms, red)| (homed(forms, Some(red)), red));
+    Ok(Some(Homed {
+        full: full_homed,
+        reduced: reduced_homed,
+        _infos: infos,
+        _states: states,
+    }))
+}
+
+/// The initial pose and velocities of formulation `f` in the file derived at the values.
+fn full_info(
+    derived: &[(Formulation, &'static MechanismInfo)],
+    f: Formulation,
+) -> Option<(&'static [f64], &'static [f64])> {
+    let info = derived.iter().find(|(g, _)| *g == f)?.1;
+    Some((info.q0, info.qd0))
 }
 
 fn shown(parameters: &[(String, f64)]) -> String {
@@ -136,6 +269,31 @@ fn shown(parameters: &[(String, f64)]) -> String {
         .map(|(k, v)| format!("{k} = {v}"))
         .collect();
     set.join(", ")
+}
+
+/// `entry` with `homed`'s formulations, its origin the compiled code at `parameters`.
+fn entry_of(
+    entry: &Entry,
+    file: &'static str,
+    text: &str,
+    (full, reduced): (Formulations, Option<(Formulations, &'static Reduction)>),
+    parameters: &'static [(&'static str, f64)],
+) -> Entry {
+    Entry {
+        name: entry.name,
+        t_end: entry.t_end,
+        formulations: full,
+        reduced: reduced.map(|(formulations, reduction)| Reduced {
+            formulations,
+            reduction,
+        }),
+        origin: Origin::Compiled {
+            file,
+            hash: source_hash(text),
+            parameters,
+        },
+        run_time: entry.run_time,
+    }
 }
 
 /// `entry`'s compiled code at `parameters` (the file's values for the others), living as
@@ -149,35 +307,21 @@ pub fn compiled_at(
         return Ok(None);
     };
     let source = crate::files::source_of(entry)?;
-    let Some(forms) = at_values(rt, &source, &text, parameters)? else {
+    let Some(homed) = at_values(entry, rt, &source, &text, parameters)? else {
         return Ok(None);
     };
-    let list: Vec<(Formulation, &'static (dyn Mechanism + Sync))> = forms
-        .into_iter()
-        .map(|(f, mut m, info)| {
-            m.info = Box::leak(Box::new(info));
-            (
-                f,
-                &*Box::leak(Box::new(m)) as &'static (dyn Mechanism + Sync),
-            )
-        })
-        .collect();
+    let homed: &'static Homed = Box::leak(Box::new(homed));
+    let (full, reduced) = homed.lists();
+    let leaked = |l: Vec<Listed<'static>>| -> Formulations { Box::leak(l.into_boxed_slice()) };
+    let lists = (leaked(full), reduced.map(|(r, red)| (leaked(r), red)));
     let set: Vec<(&'static str, f64)> = parameters
         .iter()
         .map(|(k, v)| (&*Box::leak(k.clone().into_boxed_str()), *v))
         .collect();
-    Ok(Some(Box::leak(Box::new(Entry {
-        name: entry.name,
-        t_end: entry.t_end,
-        formulations: Box::leak(list.into_boxed_slice()),
-        reduced: None,
-        origin: Origin::Compiled {
-            file,
-            hash: source_hash(&text),
-            parameters: Box::leak(set.into_boxed_slice()),
-        },
-        run_time: entry.run_time,
-    }))))
+    let set = Box::leak(set.into_boxed_slice());
+    Ok(Some(Box::leak(Box::new(entry_of(
+        entry, file, &text, lists, set,
+    )))))
 }
 
 /// `f` on what [`compiled_at`] builds, freed when `f` returns (a study's row); `None` where
@@ -191,49 +335,26 @@ pub fn with_compiled_at<R>(
         return Ok(None);
     };
     let source = crate::files::source_of(entry)?;
-    let build = || at_values(rt, &source, &text, parameters);
-    let run = |forms: Result<Option<Combined>, ScenarioError>| {
-        let Some(forms) = forms? else {
+    let build = || at_values(entry, rt, &source, &text, parameters);
+    let run = |homed: Result<Option<Homed>, ScenarioError>| {
+        let Some(homed) = homed? else {
             return Ok(None);
         };
-        let infos: Vec<MechanismInfo> = forms.iter().map(|(_, _, i)| *i).collect();
-        let mechanisms: Vec<(Formulation, WithInfo)> = forms
-            .into_iter()
-            .zip(&infos)
-            .map(|((form, mut m, _), info)| {
-                // SAFETY: `infos` outlives every use of the mechanisms, which are dropped
-                // before it, after `f` returns.
-                m.info =
-                    unsafe { std::mem::transmute::<&MechanismInfo, &'static MechanismInfo>(info) };
-                (form, m)
-            })
-            .collect();
-        let refs: Vec<(Formulation, &(dyn Mechanism + Sync))> =
-            mechanisms.iter().map(|(form, m)| (*form, m as _)).collect();
+        let (full, reduced) = homed.lists();
         let names: Vec<(&str, f64)> = parameters.iter().map(|(k, v)| (k.as_str(), *v)).collect();
         // SAFETY: the entry and every reference in it are dropped when `f` returns, before
-        // `refs`, `mechanisms`, `infos` and `names`; `f` gets the entry by reference only and
+        // `full`, `reduced`, `homed` and `names`; `f` gets the entry by reference only and
         // reduces what it records to numbers (the contract of `interpret::load_scoped`).
-        let (formulations, set) = unsafe {
-            (
-                std::mem::transmute::<&[(Formulation, &(dyn Mechanism + Sync))], Formulations>(
-                    &refs,
-                ),
-                std::mem::transmute::<&[(&str, f64)], &'static [(&'static str, f64)]>(&names),
-            )
+        let forever =
+            |l: &[Listed<'_>]| unsafe { std::mem::transmute::<&[Listed<'_>], Formulations>(l) };
+        let set = unsafe {
+            std::mem::transmute::<&[(&str, f64)], &'static [(&'static str, f64)]>(&names)
         };
-        let scoped = Entry {
-            name: entry.name,
-            t_end: entry.t_end,
-            formulations,
-            reduced: None,
-            origin: Origin::Compiled {
-                file,
-                hash: source_hash(&text),
-                parameters: set,
-            },
-            run_time: entry.run_time,
-        };
+        let lists = (
+            forever(&full),
+            reduced.as_ref().map(|(r, red)| (forever(r), *red)),
+        );
+        let scoped = entry_of(entry, file, &text, lists, set);
         Ok(Some(f(&scoped)))
     };
     // SAFETY: nothing `build` built (the derived infos) outlives `run` (as above).

@@ -5956,6 +5956,7 @@ pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime:
     data: &DATA,
     p0: &P0,
     build_values: at_values,
+    build_reduced_values: None,
 };
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
 pub mod exact {

@@ -10476,17 +10476,22 @@ fn at_values(
 ) -> Result<symbody_runtime::registry::Built, ParameterError> {
     Parameters::from_values(values).map(built)
 }
+fn built_reduced(p: Parameters) -> symbody_runtime::registry::Built {
+    vec![
+        (Formulation::Exact, Box::new(reduced::ExactAt::new(& p)) as Box < dyn Mechanism
+        + Sync >), (Formulation::Paper, Box::new(reduced::PaperAt::new(& p)) as Box < dyn
+        Mechanism + Sync >)
+    ]
+}
 fn at_parameters_reduced(
     set: &[(&str, f64)],
 ) -> Result<symbody_runtime::registry::Built, ParameterError> {
-    let p = Parameters::at(set)?;
-    Ok(
-        vec![
-            (Formulation::Exact, Box::new(reduced::ExactAt::new(& p)) as Box < dyn
-            Mechanism + Sync >), (Formulation::Paper, Box::new(reduced::PaperAt::new(&
-            p)) as Box < dyn Mechanism + Sync >)
-        ],
-    )
+    Parameters::at(set).map(built_reduced)
+}
+fn at_values_reduced(
+    values: &[f64],
+) -> Result<symbody_runtime::registry::Built, ParameterError> {
+    Parameters::from_values(values).map(built_reduced)
 }
 /// This mechanism at other values of its run-time parameters, for the registries.
 pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime::registry::RunTime {
@@ -10496,6 +10501,7 @@ pub static RUN_TIME_ENTRY: symbody_runtime::registry::RunTime = symbody_runtime:
     data: &DATA,
     p0: &P0,
     build_values: at_values,
+    build_reduced_values: Some(at_values_reduced),
 };
 /// The `exact` formulation: mass matrix and forces derived from the exact kinetic energy.
 pub mod exact {
@@ -18940,6 +18946,7 @@ pub mod reduced {
         rows: &ROWS,
         substitutions: &SUBSTITUTIONS,
         offsets: offsets_into,
+        offsets_read_parameters: false,
     };
     /// `c, ċ, c̈` of each substitution at time `t`, three per substitution.
     pub fn offsets_into(t: f64, out: &mut [f64]) {
