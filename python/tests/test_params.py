@@ -26,15 +26,20 @@ def test_a_set_parameter_runs_as_the_edited_file(tmp_path):
     assert "r = 0.12" in run.summary["note"]
     reference = symbody.simulate(edited(tmp_path, "slider_crank", "r", 0.12), t_end=0.3)
     base = symbody.simulate("slider_crank", t_end=0.3)
+    # The compiled code on the file's numbers at r = 0.12 against the edited file interpreted:
+    # the same equations, evaluated in another order (roundoff).
     for table in ("bodies", "joints", "drivers"):
         for column in run[table].columns:
-            assert np.array_equal(run[table][column], reference[table][column]), column
+            a, b = np.asarray(run[table][column]), np.asarray(reference[table][column])
+            scale = max(1.0, float(np.max(np.abs(b))))
+            assert np.max(np.abs(a - b)) <= 1e-12 * scale, column
     assert not np.allclose(run["drivers"]["motor"], base["drivers"]["motor"])
 
 
 def test_mechanism_session_and_fk_take_params():
     m = symbody.Mechanism("slider_crank", params={"r": 0.12})
-    assert m.interpreted
+    # The compiled code takes the numbers the file gives at r = 0.12 (nothing interpreted).
+    assert not m.interpreted
     assert not np.allclose(m.q0, symbody.Mechanism("slider_crank").q0)
     s = symbody.Session("slider_crank", params={"r": 0.12})
     s.advance_to(0.1)
