@@ -266,3 +266,26 @@ fn a_set_that_changes_the_structure_says_what_changed() {
     let same = files::reparametrized(base, &set("phi2", 210f64.to_radians())).unwrap();
     assert!(!files::note(same).unwrap().contains("with these values"));
 }
+
+/// A derived parameter set from outside the file stands for its expression, also where the
+/// expression reaches masses and inertias (it used to be expanded there regardless): the run
+/// equals the file with that line replaced by the value, on whichever route takes it.
+#[test]
+fn a_derived_parameter_set_replaces_its_expression() {
+    let dir = temp_dir("derived");
+    for (name, parameter, value) in [
+        ("n_four_bar_2", "i_cross", 0.5),
+        ("stewart_6_6", "i_cyl_xz", 0.003),
+        ("four_bar", "theta0", 1.2),
+    ] {
+        let with = files::with_parameters(&REGISTRY, name, &set(parameter, value)).unwrap();
+        let path = dir.join(format!("{name}_{parameter}.toml"));
+        std::fs::write(&path, edited(name, parameter, value)).unwrap();
+        let reference = files::load(&path).unwrap().entry;
+        let got = run(with);
+        let d = max_rel(&got, &run(reference));
+        assert!(d <= 1e-12, "{name} {parameter} = {value}: {d:e}");
+        let moved = max_rel(&got, &run(REGISTRY.find(name).unwrap()));
+        assert!(moved > 1e-6, "{name} {parameter}: unchanged ({moved:e})");
+    }
+}

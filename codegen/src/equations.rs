@@ -232,8 +232,9 @@ impl MassProps {
 }
 
 /// The file's expression `src` with run-time parameters as `Var::P`, derived parameters
-/// expanded, and the other parameters' values as constants (`None`: it does not parse,
-/// which the validator would have reported).
+/// expanded (unless set from outside the file: then their value stands), and the other
+/// parameters' values as constants (`None`: it does not parse, which the validator would
+/// have reported).
 fn parameter_expr(a: &mut Arena, model: &Model, src: &str) -> Option<Id> {
     let run_time = model.run_time_parameters();
     let mut resolve = |a: &mut Arena, name: &str| -> Option<Id> {
@@ -241,8 +242,8 @@ fn parameter_expr(a: &mut Arena, model: &Model, src: &str) -> Option<Id> {
         Some(
             match (run_time.iter().position(|q| q.name == name), &p.expression) {
                 (Some(i), _) => a.var(Var::P(i as u32)),
-                (None, Some(e)) => parameter_expr(a, model, e)?,
-                (None, None) => a.constant(p.value),
+                (None, Some(e)) if !p.overridden => parameter_expr(a, model, e)?,
+                (None, _) => a.constant(p.value),
             },
         )
     };

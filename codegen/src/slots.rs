@@ -342,7 +342,21 @@ pub fn values_at(
     let slots = Slots(expected.to_vec());
     at.data = data(&at, &slots);
     at.data_slots = slots.encoded();
-    Ok((at.run_time_values(), at))
+    // The code's named parameters are the file's (at these values one may no longer qualify,
+    // a zero inertia: the masses' check after this one sees what that changes).
+    let value = |name: &str| {
+        at.parameters
+            .iter()
+            .find(|q| q.name == name)
+            .map(|q| q.value)
+    };
+    let named: Option<Vec<f64>> = file
+        .run_time_parameters()
+        .iter()
+        .map(|q| value(&q.name))
+        .collect();
+    let p = named.ok_or(Refused::Structure(None))?;
+    Ok((p.into_iter().chain(at.data.iter().copied()).collect(), at))
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@
 
 use crate::scenario::ScenarioError;
 use symbody_codegen::interpret;
+use symbody_codegen::model::{ForceKind, Model};
 use symbody_codegen::slots;
 use symbody_runtime::registry::{Built, Formulations, Reduced, RunTime};
 use symbody_runtime::{
@@ -214,6 +215,9 @@ fn at_values(
     let Ok((p, model)) = slots::values_at(file, text, parameters, rt.data, rt.p0) else {
         return Ok(None);
     };
+    if !same_constants(rt, &p, &model) {
+        return Ok(None);
+    }
     let refused = |e: String| ScenarioError::Options(format!("with {}: {e}", shown(parameters)));
     let built = (rt.build_values)(&p).map_err(|e| refused(e.to_string()))?;
     let Ok(derived) = interpret::describe(file, text, model, parameters) else {
@@ -253,6 +257,38 @@ fn at_values(
         _states: states,
     }))
 }
+
+/// Whether the masses, inertias and springs' constants the compiled code computes from `p`
+/// (through the file's expressions: decision 35) are `model`'s. A derived parameter set from
+/// outside the file stands for its expression, which the compiled code still evaluates.
+fn same_constants(rt: &RunTime, p: &[f64], model: &Model) -> bool {
+    let params = rt.parameters;
+    if p.len() != rt.p0.len() || params.bodies.len() != model.bodies.len() {
+        return false;
+    }
+    let mut props = vec![0.0; 4 * model.bodies.len()];
+    (params.mass_properties)(p, &mut props);
+    let mut constants = vec![0.0; 2 * model.forces.len()];
+    (params.force_constants)(p, &mut constants);
+    let bodies = model
+        .bodies
+        .iter()
+        .flat_map(|b| [b.mass, b.inertia[0], b.inertia[1], b.inertia[2]]);
+    let forces = model.forces.iter().flat_map(|f| match f.kind {
+        ForceKind::Spring {
+            stiffness, damping, ..
+        }
+        | ForceKind::Torsion {
+            stiffness, damping, ..
+        } => [stiffness, damping],
+        _ => [0.0, 0.0],
+    });
+    let close = |(a, b): (&f64, f64)| (a - b).abs() <= SAME_CONSTANT * a.abs().max(b.abs());
+    props.iter().zip(bodies).all(close) && constants.iter().zip(forces).all(close)
+}
+
+/// Roundoff between the loader's evaluation of a mass's expression and the generated code's.
+const SAME_CONSTANT: f64 = 1e-12;
 
 /// The initial pose and velocities of formulation `f` in the file derived at the values.
 fn full_info(
