@@ -547,7 +547,7 @@ fn list_parameters(registry: &Registry, name: &str) -> Result<(), String> {
             false => p.affects.join(", "),
         };
         let compiled = match run_time(&p.name) {
-            true => ", run-time in the compiled code",
+            true => ", by name in the compiled code",
             false => "",
         };
         say!(
