@@ -162,6 +162,24 @@ fn a_set_that_changes_a_held_constant_runs_the_file_interpreted() {
         "{:?}",
         e.origin
     );
+    let note = files::note(e).unwrap();
+    assert!(
+        note.contains("the compiled code does not take them")
+            && note.contains("expression in t, whose terms change"),
+        "{note}"
+    );
+    // The four-bar's initial crank angle is a derived parameter: set, it moves numbers the
+    // code holds fixed, and the note says whose.
+    let e = files::reparametrized(
+        REGISTRY.find("four_bar").unwrap(),
+        &owned(&[("theta0", 1.2)]),
+    )
+    .unwrap();
+    let note = files::note(e).unwrap();
+    assert!(
+        matches!(e.origin, Origin::Interpreted { .. }) && note.contains("holds fixed (joint `a0`)"),
+        "{note}"
+    );
     // A value that does not load is the file's error, naming the parameter.
     let err = files::reparametrized(REGISTRY.find("four_bar").unwrap(), &owned(&[("b", 0.01)]))
         .unwrap_err()

@@ -42,43 +42,75 @@ impl Slots {
     }
 }
 
-/// Every number of `m` that the equation stages read as a field, in a fixed order (the
-/// constants of its expressions in `t` follow, from [`expressions`]).
-fn visit(m: &mut Model, f: &mut dyn FnMut(&mut f64)) {
-    fn frame(fr: &mut Frame, f: &mut dyn FnMut(&mut f64)) {
-        for v in fr.point.iter_mut().chain(&mut fr.x).chain(&mut fr.z) {
-            f(v);
+/// What a number of the model belongs to, as diagnostics name it.
+#[derive(Debug, Clone, Copy)]
+pub enum Item<'a> {
+    Gravity,
+    Parameter(&'a str),
+    Body(&'a str),
+    Joint(&'a str),
+    Driver(&'a str),
+    Force(&'a str),
+}
+
+impl std::fmt::Display for Item<'_> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Item::Gravity => write!(f, "the gravity"),
+            Item::Parameter(n) => write!(f, "parameter `{n}`"),
+            Item::Body(n) => write!(f, "body `{n}`"),
+            Item::Joint(n) => write!(f, "joint `{n}`"),
+            Item::Driver(n) => write!(f, "driver `{n}`"),
+            Item::Force(n) => write!(f, "force `{n}`"),
         }
     }
-    m.gravity.iter_mut().for_each(&mut *f);
+}
+
+type Visitor<'f> = dyn FnMut(Item<'_>, &mut f64) + 'f;
+
+/// Every number of `m` that the equation stages read as a field, in a fixed order, with what
+/// it belongs to (the constants of its expressions in `t` follow, from [`expressions`]).
+fn visit(m: &mut Model, f: &mut Visitor<'_>) {
+    fn frame(fr: &mut Frame, item: Item<'_>, f: &mut Visitor<'_>) {
+        for v in fr.point.iter_mut().chain(&mut fr.x).chain(&mut fr.z) {
+            f(item, v);
+        }
+    }
+    for v in &mut m.gravity {
+        f(Item::Gravity, v);
+    }
     // Parameters' values: the expressions of masses and inertias read them.
     for p in m.parameters.iter_mut().filter(|p| p.expression.is_none()) {
-        f(&mut p.value);
+        f(Item::Parameter(&p.name), &mut p.value);
     }
     for b in &mut m.bodies {
-        f(&mut b.mass);
-        b.inertia.iter_mut().for_each(&mut *f);
+        let item = Item::Body(&b.name);
+        for v in std::iter::once(&mut b.mass).chain(&mut b.inertia) {
+            f(item, v);
+        }
     }
     for j in &mut m.joints {
-        frame(&mut j.f1, f);
-        frame(&mut j.f2, f);
+        let item = Item::Joint(&j.name);
+        frame(&mut j.f1, item, f);
+        frame(&mut j.f2, item, f);
         match &mut j.kind {
-            JointKind::Distance { length } => f(length),
+            JointKind::Distance { length } => f(item, length),
             JointKind::EulerPrismatic { axis, perp } => {
-                axis.iter_mut()
-                    .chain(perp.iter_mut().flatten())
-                    .for_each(&mut *f);
+                for v in axis.iter_mut().chain(perp.iter_mut().flatten()) {
+                    f(item, v);
+                }
             }
             _ => {}
         }
     }
     for d in &mut m.drivers {
         if let DriverTarget::PointDistance { f1, f2 } = &mut d.target {
-            frame(f1, f);
-            frame(f2, f);
+            frame(f1, Item::Driver(&d.name), f);
+            frame(f2, Item::Driver(&d.name), f);
         }
     }
     for force in &mut m.forces {
+        let item = Item::Force(&force.name);
         match &mut force.kind {
             ForceKind::Spring {
                 f1,
@@ -88,10 +120,10 @@ fn visit(m: &mut Model, f: &mut dyn FnMut(&mut f64)) {
                 free_length,
                 ..
             } => {
-                frame(f1, f);
-                frame(f2, f);
+                frame(f1, item, f);
+                frame(f2, item, f);
                 for v in [stiffness, damping, free_length] {
-                    f(v);
+                    f(item, v);
                 }
             }
             ForceKind::Torsion {
@@ -101,29 +133,56 @@ fn visit(m: &mut Model, f: &mut dyn FnMut(&mut f64)) {
                 ..
             } => {
                 for v in [stiffness, damping, free_angle] {
-                    f(v);
+                    f(item, v);
                 }
             }
-            ForceKind::Force { at, .. } => frame(at, f),
+            ForceKind::Force { at, .. } => frame(at, item, f),
             ForceKind::Torque { .. } => {}
         }
     }
 }
 
-/// The roots of `m`'s expressions in `t`: drivers' values, actuators' forces and torques,
-/// applied loads.
-fn expressions(m: &mut Model) -> Vec<&mut Id> {
-    let mut roots: Vec<&mut Id> = m.drivers.iter_mut().map(|d| &mut d.value).collect();
+/// The roots of `m`'s expressions in `t` (drivers' values, actuators' forces and torques,
+/// applied loads), with what each belongs to.
+fn expressions(m: &mut Model) -> Vec<(Item<'_>, &mut Id)> {
+    let mut roots: Vec<(Item<'_>, &mut Id)> = m
+        .drivers
+        .iter_mut()
+        .map(|d| (Item::Driver(&d.name), &mut d.value))
+        .collect();
     for force in &mut m.forces {
+        let item = Item::Force(&force.name);
         match &mut force.kind {
-            ForceKind::Spring { actuator, .. } => roots.push(actuator),
-            ForceKind::Torsion { torque, .. } => roots.push(torque),
+            ForceKind::Spring { actuator, .. } => roots.push((item, actuator)),
+            ForceKind::Torsion { torque, .. } => roots.push((item, torque)),
             ForceKind::Force { value, .. } | ForceKind::Torque { value, .. } => {
-                roots.extend(value.iter_mut())
+                roots.extend(value.iter_mut().map(|v| (item, v)))
             }
         }
     }
     roots
+}
+
+/// What number `i` of [`numbers`] belongs to, as diagnostics name it.
+pub fn owner(m: &Model, i: usize) -> String {
+    let mut copy = m.clone();
+    let (mut k, mut found) = (0, None);
+    visit(&mut copy, &mut |item, _| {
+        if k == i {
+            found = Some(item.to_string());
+        }
+        k += 1;
+    });
+    let arena = copy.arena.clone();
+    for (item, root) in expressions(&mut copy) {
+        let mut values = Vec::new();
+        walk(&arena, *root, &mut Vec::new(), &mut values);
+        if found.is_none() && (k..k + values.len()).contains(&i) {
+            found = Some(item.to_string());
+        }
+        k += values.len();
+    }
+    found.unwrap_or_else(|| format!("number {i}"))
 }
 
 /// The node `n` with its constant's value and children left out: its kind.
@@ -210,10 +269,10 @@ fn rebuild(a: &mut Arena, id: Id, next: &mut dyn FnMut(f64) -> f64) -> Id {
 pub fn numbers(m: &Model) -> (Vec<f64>, Vec<Node>) {
     let mut copy = m.clone();
     let mut values = Vec::new();
-    visit(&mut copy, &mut |v| values.push(*v));
+    visit(&mut copy, &mut |_, v| values.push(*v));
     let mut shape = Vec::new();
     let arena = copy.arena.clone();
-    for root in expressions(&mut copy) {
+    for (_, root) in expressions(&mut copy) {
         walk(&arena, *root, &mut shape, &mut values);
     }
     (values, shape)
@@ -280,9 +339,9 @@ pub fn mark(source: &str, text: &str, model: &mut Model) -> Model {
         position += 1;
         out
     };
-    visit(&mut marked_model, &mut |v| *v = mark_next(*v));
+    visit(&mut marked_model, &mut |_, v| *v = mark_next(*v));
     let mut arena = std::mem::take(&mut marked_model.arena);
-    for root in expressions(&mut marked_model) {
+    for (_, root) in expressions(&mut marked_model) {
         *root = rebuild(&mut arena, *root, &mut mark_next);
     }
     marked_model.arena = arena;
@@ -303,9 +362,9 @@ pub enum Refused {
     /// The generated code's slots do not hold the numbers this generator finds at their
     /// positions: the code is from another version of the generator.
     OtherSlots,
-    /// A number the generated code holds as a constant differs with these values (its
-    /// position in [`numbers`]), or an expression in `t` changes shape (`None`).
-    Structure(Option<usize>),
+    /// A number the generated code holds as a constant differs with these values, or an
+    /// expression in `t` changes its terms: what it belongs to.
+    Structure(String),
 }
 
 /// `p` for the code generated from `text` (its slots `expected`, [`Slots::encoded`], and `p`
@@ -332,12 +391,14 @@ pub fn values_at(
     let mut at = model::load_with(source, text, overrides).map_err(Refused::Load)?;
     let (b, shape_b) = numbers(&at);
     if a.len() != b.len() || shape_a != shape_b {
-        return Err(Refused::Structure(None));
+        return Err(Refused::Structure(
+            "a driver's or load's expression in t, whose terms change".to_string(),
+        ));
     }
     let scale = a.iter().fold(0.0f64, |s, v| s.max(v.abs()));
     let held = |i: usize| expected.binary_search(&(i as u32)).is_err();
     if let Some(i) = (0..a.len()).find(|&i| held(i) && !((a[i] - b[i]).abs() <= SAME * scale)) {
-        return Err(Refused::Structure(Some(i)));
+        return Err(Refused::Structure(owner(&file, i)));
     }
     let slots = Slots(expected.to_vec());
     at.data = data(&at, &slots);
@@ -355,7 +416,7 @@ pub fn values_at(
         .iter()
         .map(|q| value(&q.name))
         .collect();
-    let p = named.ok_or(Refused::Structure(None))?;
+    let p = named.ok_or_else(|| Refused::Structure("the named parameters".to_string()))?;
     Ok((p.into_iter().chain(at.data.iter().copied()).collect(), at))
 }
 

@@ -202,29 +202,49 @@ fn reduced_at(
     Ok(Some((forms, red)))
 }
 
-/// The compiled code at `parameters` and the file derived at them, or `None` where the
-/// compiled code cannot take these values: they change a number the code holds as a constant,
-/// or the file does not load with them (which the file derived again then reports).
+/// Why the compiled code does not take a set of values (`None`: the file does not load with
+/// them, which the file derived again reports), for the note of the run that takes its place.
+pub type Declined = Option<String>;
+
+/// The compiled code at `parameters` and the file derived at them, or why the compiled code
+/// cannot take these values.
 fn at_values(
     entry: &Entry,
     rt: &RunTime,
     file: &str,
     text: &str,
     parameters: &[(String, f64)],
-) -> Result<Option<Homed>, ScenarioError> {
-    let Ok((p, model)) = slots::values_at(file, text, parameters, rt.data, rt.p0) else {
-        return Ok(None);
+) -> Result<Result<Homed, Declined>, ScenarioError> {
+    let (p, model) = match slots::values_at(file, text, parameters, rt.data, rt.p0) {
+        Ok(at) => at,
+        Err(slots::Refused::Load(_)) => return Ok(Err(None)),
+        Err(slots::Refused::OtherSlots) => {
+            return Ok(Err(Some(
+                "its numbers are not where this generator puts them (regenerate it)".into(),
+            )))
+        }
+        Err(slots::Refused::Structure(what)) => {
+            return Ok(Err(Some(format!(
+                "these values change what it holds fixed ({what})"
+            ))))
+        }
     };
     if !same_constants(rt, &p, &model) {
-        return Ok(None);
+        return Ok(Err(Some(
+            "a mass, inertia or spring constant is not what it computes from the parameters (a \
+             derived parameter set)"
+                .into(),
+        )));
     }
     let refused = |e: String| ScenarioError::Options(format!("with {}: {e}", shown(parameters)));
     let built = (rt.build_values)(&p).map_err(|e| refused(e.to_string()))?;
     let Ok(derived) = interpret::describe(file, text, model, parameters) else {
-        return Ok(None);
+        return Ok(Err(None));
     };
     let Some(full) = combine(built, &derived) else {
-        return Ok(None);
+        return Ok(Err(Some(
+            "its coordinates or rows are not the file's at these values".into(),
+        )));
     };
     let reduced = reduced_at(entry, rt, &p, &full).map_err(|e| refused(e.to_string()))?;
     let (mut infos, mut states) = (Vec::new(), Vec::new());
@@ -250,7 +270,7 @@ fn at_values(
     };
     let full_homed = homed(full, None);
     let reduced_homed = reduced.map(|(forms, red)| (homed(forms, Some(red)), red));
-    Ok(Some(Homed {
+    Ok(Ok(Homed {
         full: full_homed,
         reduced: reduced_homed,
         _infos: infos,
@@ -334,17 +354,18 @@ fn entry_of(
 
 /// `entry`'s compiled code at `parameters` (the file's values for the others), living as
 /// long as the program, where the route applies ([`route`]) and the values keep the
-/// structure; `None` otherwise.
+/// structure; otherwise why not (`Err(None)`: the route does not apply).
 pub fn compiled_at(
     entry: &Entry,
     parameters: &[(String, f64)],
-) -> Result<Option<&'static Entry>, ScenarioError> {
+) -> Result<Result<&'static Entry, Declined>, ScenarioError> {
     let Some((rt, file, text)) = route(entry, parameters) else {
-        return Ok(None);
+        return Ok(Err(None));
     };
     let source = crate::files::source_of(entry)?;
-    let Some(homed) = at_values(entry, rt, &source, &text, parameters)? else {
-        return Ok(None);
+    let homed = match at_values(entry, rt, &source, &text, parameters)? {
+        Ok(homed) => homed,
+        Err(why) => return Ok(Err(why)),
     };
     let homed: &'static Homed = Box::leak(Box::new(homed));
     let (full, reduced) = homed.lists();
@@ -355,7 +376,7 @@ pub fn compiled_at(
         .map(|(k, v)| (&*Box::leak(k.clone().into_boxed_str()), *v))
         .collect();
     let set = Box::leak(set.into_boxed_slice());
-    Ok(Some(Box::leak(Box::new(entry_of(
+    Ok(Ok(Box::leak(Box::new(entry_of(
         entry, file, &text, lists, set,
     )))))
 }
@@ -372,8 +393,8 @@ pub fn with_compiled_at<R>(
     };
     let source = crate::files::source_of(entry)?;
     let build = || at_values(entry, rt, &source, &text, parameters);
-    let run = |homed: Result<Option<Homed>, ScenarioError>| {
-        let Some(homed) = homed? else {
+    let run = |homed: Result<Result<Homed, Declined>, ScenarioError>| {
+        let Ok(homed) = homed? else {
             return Ok(None);
         };
         let (full, reduced) = homed.lists();

@@ -123,9 +123,25 @@ pub fn reparametrized(
         return Ok(e);
     }
     match crate::compiled_numbers::compiled_at(entry, parameters)? {
-        Some(e) => Ok(e),
-        None => derive(entry, parameters).map(|l| l.entry),
+        Ok(e) => Ok(e),
+        Err(why) => {
+            let derived = derive(entry, parameters)?.entry;
+            if let Some(why) = why {
+                declined()
+                    .lock()
+                    .unwrap_or_else(|e| e.into_inner())
+                    .insert(derived as *const Entry as usize, why);
+            }
+            Ok(derived)
+        }
     }
+}
+
+/// Why the compiled code did not take the values an interpreted entry was derived with, by
+/// the entry's address (entries live as long as the program), for [`note`].
+fn declined() -> &'static Mutex<HashMap<usize, String>> {
+    static DECLINED: OnceLock<Mutex<HashMap<usize, String>>> = OnceLock::new();
+    DECLINED.get_or_init(Default::default)
 }
 
 /// `f` on `entry`'s compiled code at `parameters`, as [`compiled_at`] (or
@@ -436,13 +452,21 @@ pub fn note(entry: &Entry) -> Option<String> {
             let default = read(Path::new(file))
                 .and_then(|text| load_text(file, &text, false, &[]))
                 .ok();
-            let changed = default
+            let mut changed = default
                 .and_then(|d| {
                     let info = |e: &Entry| e.default_mechanism().info();
                     structure_change(info(d.entry), info(entry))
                 })
                 .map(|c| format!("; with these values {c}"))
                 .unwrap_or_default();
+            let key = entry as *const Entry as usize;
+            if let Some(why) = declined()
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .get(&key)
+            {
+                changed += &format!("; the compiled code does not take them: {why}");
+            }
             Some(format!(
                 "interpreted from {file} with {} (the file's equations re-derived for these \
                  values; compiled code keeps the file's){changed}",
