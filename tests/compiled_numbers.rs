@@ -10,10 +10,8 @@
 
 use symbody::files;
 use symbody_mechanisms::REGISTRY;
-use symbody_runtime::{
-    Entry, HhtBuilder, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs, Origin,
-};
-use symbody_testkit::common::{dense_mass, dense_phi_q, max_rel};
+use symbody_runtime::{Entry, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs, Origin};
+use symbody_testkit::common::{dense_mass, dense_phi_q, hht_positions, max_rel};
 
 fn owned(set: &[(&str, f64)]) -> Vec<(String, f64)> {
     set.iter().map(|(k, v)| (k.to_string(), *v)).collect()
@@ -79,16 +77,7 @@ fn equations(m: &dyn Mechanism) -> Vec<f64> {
 
 /// The positions after 0.3 s of HHT from the file's pose.
 fn run(m: &dyn Mechanism) -> Vec<f64> {
-    let qd0 = m.info().qd0;
-    let mut it = HhtBuilder::new()
-        .alpha(-0.05)
-        .step(1e-3)
-        .qd0(qd0)
-        .project_velocities(true)
-        .build(m)
-        .unwrap();
-    it.advance_to(0.3).unwrap();
-    it.q().to_vec()
+    hht_positions(m, 0.3)
 }
 
 /// `name` with `set` on the compiled route, and the file derived with it.

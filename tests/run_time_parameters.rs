@@ -12,7 +12,7 @@ use symbody::files;
 use symbody_mechanisms::{oscillators, stewart_6_6, REGISTRY};
 use symbody_runtime::parameters::ParameterError;
 use symbody_runtime::{joint_force, HhtBuilder, Kinematics, Mechanism, NewtonOutputs, Origin};
-use symbody_testkit::common::max_rel;
+use symbody_testkit::common::{hht_positions, max_rel};
 
 /// `eval_newton` of `m` at the file's pose, moved a little so that nothing is symmetric,
 /// with velocities (so that every velocity term counts).
@@ -48,16 +48,7 @@ fn newton(m: &dyn Mechanism) -> Vec<f64> {
 
 /// The positions after 0.5 s of HHT from the file's pose.
 fn run(m: impl Mechanism) -> Vec<f64> {
-    let qd0 = m.info().qd0;
-    let mut it = HhtBuilder::new()
-        .alpha(-0.05)
-        .step(1e-3)
-        .qd0(qd0)
-        .project_velocities(true)
-        .build(m)
-        .unwrap();
-    it.advance_to(0.5).unwrap();
-    it.q().to_vec()
+    hht_positions(m, 0.5)
 }
 
 fn owned(set: &[(&str, f64)]) -> Vec<(String, f64)> {

@@ -2,7 +2,7 @@
 //! dense-matrix utilities over the generated sparse outputs.
 
 use nalgebra::{DMatrix, Matrix3, Quaternion, Rotation3, UnitQuaternion, Vector3};
-use symbody_runtime::{BodyInfo, MechanismInfo, Rotation};
+use symbody_runtime::{BodyInfo, HhtBuilder, Mechanism, MechanismInfo, Rotation};
 
 /// splitmix64: deterministic, so a failing configuration reproduces.
 pub struct Rng(pub u64);
@@ -18,6 +18,21 @@ impl Rng {
     pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
         lo + (hi - lo) * (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
     }
+}
+
+/// The positions after `t_end` of HHT (α = −0.05, h = 1 ms, the file's velocities projected)
+/// from the file's pose: one whole run to compare two routes by.
+pub fn hht_positions(m: impl Mechanism, t_end: f64) -> Vec<f64> {
+    let qd0 = m.info().qd0;
+    let mut it = HhtBuilder::new()
+        .alpha(-0.05)
+        .step(1e-3)
+        .qd0(qd0)
+        .project_velocities(true)
+        .build(m)
+        .unwrap();
+    it.advance_to(t_end).unwrap();
+    it.q().to_vec()
 }
 
 /// Largest |a − b| relative to the largest |b|: how far a result is from its reference.
