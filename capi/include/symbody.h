@@ -154,6 +154,34 @@ int symbody_mechanism_with_parameters(const char *name,
                                       struct SymbodyMechanism **out);
 
 /**
+ * Stores in `*count` how many parameters (`[parameters]` entries) the file of mechanism
+ * `name` has (a registered name or a mechanism file, as for `symbody_mechanism_new`); they
+ * are numbered 0 … count − 1 in name order (`symbody_parameter`), and set by name with
+ * `symbody_mechanism_with_parameters` or `symbody_session_with_parameters`.
+ *
+ * Errors: those of `symbody_mechanism_new` for `name`.
+ *
+ * # Safety
+ * `name` is NULL or a NUL-terminated string; `count` is NULL or points to a writable
+ * `size_t`.
+ */
+int symbody_parameter_count(const char *name, size_t *count);
+
+/**
+ * Parameter `i` (0-based, in name order) of the file of mechanism `name`: its name in
+ * `*parameter` (NUL-terminated, valid for the program's life) and its value in the file in
+ * `*value`.
+ *
+ * Errors: those of `symbody_parameter_count`, and `SYMBODY_STATUS_INVALID_ARGUMENT` when `i`
+ * is not below the count.
+ *
+ * # Safety
+ * `name` is NULL or a NUL-terminated string; `parameter` and `value` are NULL or point to
+ * writable storage for one pointer and one `double`.
+ */
+int symbody_parameter(const char *name, size_t i, const char **parameter, double *value);
+
+/**
  * Number of registered mechanisms.
  */
 size_t symbody_mechanism_count(void);

@@ -4,9 +4,10 @@
 
 use crate::status::{arg, arg_mut, guard, guard_value, input, output, string, Failure};
 use crate::status::{SymbodyFormulation, SymbodyStatus};
+use std::collections::HashMap;
 use std::ffi::{c_char, c_int, CString};
 use std::path::Path;
-use std::sync::OnceLock;
+use std::sync::{Mutex, OnceLock};
 use symbody::files;
 use symbody::session::Dyn;
 use symbody_mechanisms::REGISTRY;
@@ -198,6 +199,92 @@ pub unsafe extern "C" fn symbody_mechanism_with_parameters(
     };
     // SAFETY: the same contract.
     unsafe { new_handle(name, "name", formulation, out, &find) }
+}
+
+/// The `[parameters]` of the file of mechanism `name` (see [`find`]), in name order, each
+/// name NUL-terminated with its value in the file; read once per name and kept for the
+/// program (C holds the names).
+fn file_parameters(name: &str) -> Result<&'static [(CString, f64)], Failure> {
+    type Listed = HashMap<String, &'static [(CString, f64)]>;
+    static LISTED: OnceLock<Mutex<Listed>> = OnceLock::new();
+    let listed = LISTED.get_or_init(Default::default);
+    if let Some(&l) = listed.lock().unwrap_or_else(|e| e.into_inner()).get(name) {
+        return Ok(l);
+    }
+    find(name)?;
+    let loaded = files::parameters(&REGISTRY, name)
+        .map_err(|e| Failure::from_session(e, SymbodyStatus::InvalidArgument))?;
+    let list: Vec<(CString, f64)> = loaded
+        .parameters
+        .iter()
+        // A TOML key with a NUL is no parameter anyone could set from C.
+        .filter_map(|p| Some((CString::new(p.name.as_str()).ok()?, p.value)))
+        .collect();
+    let list: &'static [(CString, f64)] = Box::leak(list.into_boxed_slice());
+    listed
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .insert(name.to_string(), list);
+    Ok(list)
+}
+
+/// Stores in `*count` how many parameters (`[parameters]` entries) the file of mechanism
+/// `name` has (a registered name or a mechanism file, as for `symbody_mechanism_new`); they
+/// are numbered 0 … count − 1 in name order (`symbody_parameter`), and set by name with
+/// `symbody_mechanism_with_parameters` or `symbody_session_with_parameters`.
+///
+/// Errors: those of `symbody_mechanism_new` for `name`.
+///
+/// # Safety
+/// `name` is NULL or a NUL-terminated string; `count` is NULL or points to a writable
+/// `size_t`.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_parameter_count(name: *const c_char, count: *mut usize) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        let (name, count) = unsafe { (string(name, "name")?, arg_mut(count, "count")?) };
+        *count = file_parameters(name)?.len();
+        Ok(())
+    })
+}
+
+/// Parameter `i` (0-based, in name order) of the file of mechanism `name`: its name in
+/// `*parameter` (NUL-terminated, valid for the program's life) and its value in the file in
+/// `*value`.
+///
+/// Errors: those of `symbody_parameter_count`, and `SYMBODY_STATUS_INVALID_ARGUMENT` when `i`
+/// is not below the count.
+///
+/// # Safety
+/// `name` is NULL or a NUL-terminated string; `parameter` and `value` are NULL or point to
+/// writable storage for one pointer and one `double`.
+#[no_mangle]
+pub unsafe extern "C" fn symbody_parameter(
+    name: *const c_char,
+    i: usize,
+    parameter: *mut *const c_char,
+    value: *mut f64,
+) -> c_int {
+    guard(|| {
+        // SAFETY: the caller's contract.
+        let (name, parameter, value) = unsafe {
+            (
+                string(name, "name")?,
+                arg_mut(parameter, "parameter")?,
+                arg_mut(value, "value")?,
+            )
+        };
+        let list = file_parameters(name)?;
+        let (n, v) = list.get(i).ok_or_else(|| {
+            Failure::new(
+                SymbodyStatus::InvalidArgument,
+                format!("parameter index {i}: `{name}` has {}", list.len()),
+            )
+        })?;
+        *parameter = n.as_ptr();
+        *value = *v;
+        Ok(())
+    })
 }
 
 /// The file `entry`'s equations are interpreted from, NUL-terminated; `None` for compiled

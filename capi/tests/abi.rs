@@ -1082,6 +1082,33 @@ fn parameters_are_set_before_a_mechanism_or_session_starts() {
     }
 }
 
+/// A file's parameters listed through C, by index: the names and values `symbody params`
+/// shows (the file's `[parameters]`), each settable by name; an index past the end is an
+/// invalid argument, an unknown mechanism an unknown name.
+#[test]
+fn parameters_are_listed_by_index() {
+    let name = cstr("slider_crank");
+    let loaded = symbody::files::parameters(&symbody_mechanisms::REGISTRY, "slider_crank").unwrap();
+    // SAFETY: valid strings and out pointers.
+    unsafe {
+        let mut count = 0;
+        assert_eq!(symbody_parameter_count(name.as_ptr(), &mut count), OK);
+        assert_eq!(count, loaded.parameters.len());
+        for (i, p) in loaded.parameters.iter().enumerate() {
+            let (mut n, mut v) = (std::ptr::null(), 0.0);
+            assert_eq!(symbody_parameter(name.as_ptr(), i, &mut n, &mut v), OK);
+            assert_eq!(std::ffi::CStr::from_ptr(n).to_str().unwrap(), p.name);
+            assert_eq!(v.to_bits(), p.value.to_bits());
+        }
+        let (mut n, mut v) = (std::ptr::null(), 0.0);
+        let rc = symbody_parameter(name.as_ptr(), count, &mut n, &mut v);
+        assert_eq!(rc, status(SymbodyStatus::InvalidArgument));
+        assert!(last_error().contains("has 12"), "{}", last_error());
+        let rc = symbody_parameter_count(cstr("slider").as_ptr(), &mut count);
+        assert_eq!(rc, status(SymbodyStatus::UnknownName));
+    }
+}
+
 /// The four files a new user wrote from published definitions (examples/mechanisms/) run
 /// through the C ABI with nothing built: a session from each file keeps its constraints.
 #[test]
