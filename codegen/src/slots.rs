@@ -36,7 +36,7 @@ impl Slots {
         self.0.is_empty()
     }
 
-    /// The positions, for the generated code to compare with what the run time finds.
+    /// The positions, as the generated code lists them (`DATA`), for [`values_at`].
     pub fn encoded(&self) -> Vec<u32> {
         self.0.clone()
     }
