@@ -6,11 +6,12 @@
 //! Where the new values change a number the code holds as a constant, the file's own
 //! equations run interpreted instead, as they did before.
 
+use crate::files::{compiled_entry, with_scoped_entry, Listed};
 use crate::scenario::ScenarioError;
 use symbody_codegen::interpret;
 use symbody_codegen::model::{ForceKind, Model};
 use symbody_codegen::slots;
-use symbody_runtime::registry::{Built, Formulations, Reduced, RunTime};
+use symbody_runtime::registry::{Built, Formulations, RunTime};
 use symbody_runtime::{
     source_hash, Entry, Formulation, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs,
     Origin, Reduction,
@@ -106,7 +107,6 @@ impl Homed {
     }
 }
 
-type Listed<'a> = (Formulation, &'a (dyn Mechanism + Sync));
 type Lists<'a> = (
     Vec<Listed<'a>>,
     Option<(Vec<Listed<'a>>, &'static Reduction)>,
@@ -327,31 +327,6 @@ fn shown(parameters: &[(String, f64)]) -> String {
     set.join(", ")
 }
 
-/// `entry` with `homed`'s formulations, its origin the compiled code at `parameters`.
-fn entry_of(
-    entry: &Entry,
-    file: &'static str,
-    text: &str,
-    (full, reduced): (Formulations, Option<(Formulations, &'static Reduction)>),
-    parameters: &'static [(&'static str, f64)],
-) -> Entry {
-    Entry {
-        name: entry.name,
-        t_end: entry.t_end,
-        formulations: full,
-        reduced: reduced.map(|(formulations, reduction)| Reduced {
-            formulations,
-            reduction,
-        }),
-        origin: Origin::Compiled {
-            file,
-            hash: source_hash(text),
-            parameters,
-        },
-        run_time: entry.run_time,
-    }
-}
-
 /// `entry`'s compiled code at `parameters` (the file's values for the others), living as
 /// long as the program, where the route applies ([`route`]) and the values keep the
 /// structure; otherwise why not (`Err(None)`: the route does not apply).
@@ -376,8 +351,9 @@ pub fn compiled_at(
         .map(|(k, v)| (&*Box::leak(k.clone().into_boxed_str()), *v))
         .collect();
     let set = Box::leak(set.into_boxed_slice());
-    Ok(Ok(Box::leak(Box::new(entry_of(
-        entry, file, &text, lists, set,
+    let origin = (file, source_hash(&text));
+    Ok(Ok(Box::leak(Box::new(compiled_entry(
+        entry, origin, lists, set,
     )))))
 }
 
@@ -399,20 +375,15 @@ pub fn with_compiled_at<R>(
         };
         let (full, reduced) = homed.lists();
         let names: Vec<(&str, f64)> = parameters.iter().map(|(k, v)| (k.as_str(), *v)).collect();
-        // SAFETY: the entry and every reference in it are dropped when `f` returns, before
-        // `full`, `reduced`, `homed` and `names`; `f` gets the entry by reference only and
-        // reduces what it records to numbers (the contract of `interpret::load_scoped`).
-        let forever =
-            |l: &[Listed<'_>]| unsafe { std::mem::transmute::<&[Listed<'_>], Formulations>(l) };
-        let set = unsafe {
-            std::mem::transmute::<&[(&str, f64)], &'static [(&'static str, f64)]>(&names)
-        };
-        let lists = (
-            forever(&full),
-            reduced.as_ref().map(|(r, red)| (forever(r), *red)),
-        );
-        let scoped = entry_of(entry, file, &text, lists, set);
-        Ok(Some(f(&scoped)))
+        let reduced = reduced.as_ref().map(|(r, red)| (&r[..], *red));
+        let origin = (file, source_hash(&text));
+        Ok(Some(with_scoped_entry(
+            entry,
+            origin,
+            (&full, reduced),
+            &names,
+            f,
+        )))
     };
     // SAFETY: nothing `build` built (the derived infos) outlives `run` (as above).
     unsafe { interpret::scoped(build, run) }

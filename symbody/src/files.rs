@@ -11,7 +11,7 @@ use std::path::Path;
 use std::sync::{Mutex, OnceLock};
 use symbody_codegen::model::Parameter;
 use symbody_runtime::registry::{Built, Formulations, Reduced, RunTime};
-use symbody_runtime::{source_hash, Entry, Formulation, Mechanism, Origin, Registry};
+use symbody_runtime::{source_hash, Entry, Formulation, Mechanism, Origin, Reduction, Registry};
 
 /// Largest mechanism file read: far above any real one (the 13-body Stewart file is 9 KB),
 /// and small enough that a wrong path (a log, a binary) is refused before it is parsed.
@@ -157,40 +157,69 @@ pub fn with_compiled_at<R>(
     };
     let set = static_names(rt, parameters);
     let (built, built_reduced) = build(entry, rt, &set)?;
-    fn refs(
-        b: &[(Formulation, Box<dyn Mechanism + Sync>)],
-    ) -> Vec<(Formulation, &(dyn Mechanism + Sync))> {
+    fn refs(b: &[(Formulation, Box<dyn Mechanism + Sync>)]) -> Vec<Listed<'_>> {
         b.iter().map(|(f, m)| (*f, &**m)).collect()
     }
-    let (formulations, reduced_formulations) = (refs(&built), built_reduced.as_deref().map(refs));
-    // SAFETY: the entry and every reference in it are dropped when `f` returns, before
-    // `built`, `built_reduced`, the lists of references and `set`; `f` gets the entry by
-    // reference only, and the runs reduce what they record to numbers (the same contract as
-    // `interpret::load_scoped`).
-    let forever = |l: &[(Formulation, &(dyn Mechanism + Sync))]| unsafe {
-        std::mem::transmute::<&[(Formulation, &(dyn Mechanism + Sync))], Formulations>(l)
-    };
-    let set_forever = unsafe {
-        std::mem::transmute::<&[(&'static str, f64)], &'static [(&'static str, f64)]>(&set)
-    };
-    let scoped = Entry {
+    let (full, reduced_built) = (refs(&built), built_reduced.as_deref().map(refs));
+    let reduced = entry.reduced.as_ref().map(|r| {
+        let list: &[Listed<'_>] = reduced_built.as_deref().unwrap_or(r.formulations);
+        (list, r.reduction)
+    });
+    Ok(Some(with_scoped_entry(
+        entry,
+        (file, hash),
+        (&full, reduced),
+        &set,
+        f,
+    )))
+}
+
+/// One formulation's mechanism, as an entry lists them.
+pub(crate) type Listed<'a> = (Formulation, &'a (dyn Mechanism + Sync));
+
+/// `entry` over other mechanisms (`full`, and `reduced` with its reduction), its origin the
+/// compiled code of `file` (source hash `hash`) at `parameters`.
+pub(crate) fn compiled_entry(
+    entry: &Entry,
+    (file, hash): (&'static str, u64),
+    (full, reduced): (Formulations, Option<(Formulations, &'static Reduction)>),
+    parameters: &'static [(&'static str, f64)],
+) -> Entry {
+    Entry {
         name: entry.name,
         t_end: entry.t_end,
-        formulations: forever(&formulations),
-        reduced: entry.reduced.as_ref().map(|r| Reduced {
-            formulations: reduced_formulations
-                .as_deref()
-                .map_or(r.formulations, forever),
-            reduction: r.reduction,
+        formulations: full,
+        reduced: reduced.map(|(formulations, reduction)| Reduced {
+            formulations,
+            reduction,
         }),
         origin: Origin::Compiled {
             file,
             hash,
-            parameters: set_forever,
+            parameters,
         },
         run_time: entry.run_time,
+    }
+}
+
+/// `f` on [`compiled_entry`] over borrowed mechanisms and names, which outlive the call.
+pub(crate) fn with_scoped_entry<R>(
+    entry: &Entry,
+    origin: (&'static str, u64),
+    (full, reduced): (&[Listed<'_>], Option<(&[Listed<'_>], &'static Reduction)>),
+    parameters: &[(&str, f64)],
+    f: impl FnOnce(&Entry) -> R,
+) -> R {
+    // SAFETY: the entry and every reference in it are dropped when `f` returns, while the
+    // borrowed lists and names still live; `f` gets the entry by reference only, and the
+    // runs reduce what they record to numbers (the contract of `interpret::load_scoped`).
+    let forever =
+        |l: &[Listed<'_>]| unsafe { std::mem::transmute::<&[Listed<'_>], Formulations>(l) };
+    let set = unsafe {
+        std::mem::transmute::<&[(&str, f64)], &'static [(&'static str, f64)]>(parameters)
     };
-    Ok(Some(f(&scoped)))
+    let lists = (forever(full), reduced.map(|(r, red)| (forever(r), red)));
+    f(&compiled_entry(entry, origin, lists, set))
 }
 
 /// Every formulation of `entry`'s compiled code at `set`, and of its reduced model where it
@@ -258,21 +287,18 @@ pub fn compiled_at(
         let l: Vec<_> = b.into_iter().map(|(f, m)| (f, &*Box::leak(m))).collect();
         Box::leak(l.into_boxed_slice())
     };
-    Ok(Some(Box::leak(Box::new(Entry {
-        name: entry.name,
-        t_end: entry.t_end,
-        formulations: leaked(built),
-        reduced: entry.reduced.as_ref().map(|r| Reduced {
-            formulations: built_reduced.map_or(r.formulations, leaked),
-            reduction: r.reduction,
-        }),
-        origin: Origin::Compiled {
-            file,
-            hash,
-            parameters: Box::leak(set.into_boxed_slice()),
-        },
-        run_time: entry.run_time,
-    }))))
+    let reduced = entry
+        .reduced
+        .as_ref()
+        .map(|r| (built_reduced.map_or(r.formulations, leaked), r.reduction));
+    let lists = (leaked(built), reduced);
+    let set = Box::leak(set.into_boxed_slice());
+    Ok(Some(Box::leak(Box::new(compiled_entry(
+        entry,
+        (file, hash),
+        lists,
+        set,
+    )))))
 }
 
 /// The file `entry` comes from, loaded with `parameters` set.
