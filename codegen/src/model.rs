@@ -337,7 +337,7 @@ pub struct Model {
     /// The numbers of this model that the other parameters reach, as the equations read them
     /// (`Var::P` after the run-time parameters): set by [`crate::slots::mark`], empty before.
     pub data: Vec<f64>,
-    /// Where those numbers are ([`crate::slots::Slots::encoded`]).
+    /// Where those numbers are: their positions in [`crate::slots::numbers`].
     pub data_slots: Vec<u32>,
 }
 

@@ -363,8 +363,8 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
         pub const N_P: usize = #np;
         /// `p` at the file's values.
         pub static P0: [f64; #np] = [#(#p0),*];
-        /// Where the numbers after the named parameters come from in the model (the
-        /// generator's `slots::Slots::encoded`).
+        /// Where the numbers after the named parameters come from in the model (positions in
+        /// the generator's `slots::numbers`).
         pub static DATA: [u32; #n_data] = [#(#data),*];
         static OTHER_PARAMETERS: [&str; #no] = [#(#others),*];
         static BODY_NAMES: [&str; #nb] = [#(#bodies),*];

@@ -35,11 +35,6 @@ impl Slots {
     pub fn is_empty(&self) -> bool {
         self.0.is_empty()
     }
-
-    /// The positions, as the generated code lists them (`DATA`), for [`values_at`].
-    pub fn encoded(&self) -> Vec<u32> {
-        self.0.clone()
-    }
 }
 
 /// What a number of the model belongs to, as diagnostics name it.
@@ -321,7 +316,7 @@ pub fn find(source: &str, text: &str, model: &Model) -> Slots {
 pub fn mark(source: &str, text: &str, model: &mut Model) -> Model {
     let slots = find(source, text, model);
     model.data = data(model, &slots);
-    model.data_slots = slots.encoded();
+    model.data_slots = slots.0.clone();
     let n = model.run_time_parameters().len() as u32;
     let mut marked_model = model.clone();
     let mut position = 0u32;
@@ -367,7 +362,7 @@ pub enum Refused {
     Structure(String),
 }
 
-/// `p` for the code generated from `text` (its slots `expected`, [`Slots::encoded`], and `p`
+/// `p` for the code generated from `text` (its slots `expected`, positions in [`numbers`], and `p`
 /// at the file's values `p0`) with `overrides` set: the run-time parameters' values, then the
 /// slots' numbers of the file loaded at these values; and that model.
 pub fn values_at(
@@ -402,7 +397,7 @@ pub fn values_at(
     }
     let slots = Slots(expected.to_vec());
     at.data = data(&at, &slots);
-    at.data_slots = slots.encoded();
+    at.data_slots = slots.0;
     // The code's named parameters are the file's (at these values one may no longer qualify,
     // a zero inertia: the masses' check after this one sees what that changes).
     let value = |name: &str| {

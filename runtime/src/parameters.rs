@@ -165,12 +165,13 @@ impl RunTimeParameters {
                 given: values.len(),
             });
         }
-        let names = self.names.iter().map(|n| n.to_string());
-        let numbers = (0..).map(|i| format!("model number {i}"));
-        for (name, &value) in names.chain(numbers).zip(values) {
-            if !value.is_finite() {
-                return Err(ParameterError::NotFinite { name, value });
-            }
+        if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+            let name = match self.names.get(i) {
+                Some(n) => n.to_string(),
+                None => format!("model number {}", i - self.names.len()),
+            };
+            let value = values[i];
+            return Err(ParameterError::NotFinite { name, value });
         }
         p.copy_from_slice(values);
         Ok(())

@@ -5503,8 +5503,8 @@ pub static P0: [f64; 22] = [
     0.08416666666666667f64,
     0.08416666666666667f64,
 ];
-/// Where the numbers after the named parameters come from in the model (the
-/// generator's `slots::Slots::encoded`).
+/// Where the numbers after the named parameters come from in the model (positions in
+/// the generator's `slots::numbers`).
 pub static DATA: [u32; 21] = [
     3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 9u32, 10u32, 11u32, 12u32, 13u32, 14u32, 15u32,
     16u32, 17u32, 18u32, 19u32, 20u32, 21u32, 22u32, 23u32,

@@ -2705,8 +2705,8 @@ pub static P0: [f64; 12] = [
     1.281933f64,
     0.771071f64,
 ];
-/// Where the numbers after the named parameters come from in the model (the
-/// generator's `slots::Slots::encoded`).
+/// Where the numbers after the named parameters come from in the model (positions in
+/// the generator's `slots::numbers`).
 pub static DATA: [u32; 12] = [
     3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 121u32, 122u32, 123u32, 124u32, 125u32, 126u32,
 ];

@@ -3712,8 +3712,8 @@ pub static P0: [f64; 33] = [
     -0.3375936831560903f64,
     -0.9412919340423062f64,
 ];
-/// Where the numbers after the named parameters come from in the model (the
-/// generator's `slots::Slots::encoded`).
+/// Where the numbers after the named parameters come from in the model (positions in
+/// the generator's `slots::numbers`).
 pub static DATA: [u32; 32] = [
     3u32, 4u32, 5u32, 6u32, 7u32, 9u32, 10u32, 11u32, 13u32, 14u32, 15u32, 17u32, 18u32,
     19u32, 29u32, 38u32, 47u32, 50u32, 51u32, 56u32, 57u32, 59u32, 60u32, 65u32, 66u32,

@@ -885,8 +885,8 @@ pub static P0: [f64; 33] = [
     3f64,
     0.2f64,
 ];
-/// Where the numbers after the named parameters come from in the model (the
-/// generator's `slots::Slots::encoded`).
+/// Where the numbers after the named parameters come from in the model (positions in
+/// the generator's `slots::numbers`).
 pub static DATA: [u32; 27] = [
     3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 9u32, 10u32, 11u32, 12u32, 13u32, 14u32, 15u32,
     16u32, 17u32, 23u32, 25u32, 79u32, 80u32, 91u32, 92u32, 94u32, 95u32, 96u32, 99u32,

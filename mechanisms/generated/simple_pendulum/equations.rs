@@ -349,8 +349,8 @@ pub static P0: [f64; 8] = [
     0.00004f64,
     1f64,
 ];
-/// Where the numbers after the named parameters come from in the model (the
-/// generator's `slots::Slots::encoded`).
+/// Where the numbers after the named parameters come from in the model (positions in
+/// the generator's `slots::numbers`).
 pub static DATA: [u32; 7] = [3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 27u32];
 static OTHER_PARAMETERS: [&str; 2] = ["ball", "l"];
 static BODY_NAMES: [&str; 1] = ["p1"];

@@ -2735,8 +2735,8 @@ pub static P0: [f64; 34] = [
     0.05f64,
     0.12f64,
 ];
-/// Where the numbers after the named parameters come from in the model (the
-/// generator's `slots::Slots::encoded`).
+/// Where the numbers after the named parameters come from in the model (positions in
+/// the generator's `slots::numbers`).
 pub static DATA: [u32; 33] = [
     3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 10u32, 11u32, 12u32, 14u32, 15u32, 16u32, 30u32,
     31u32, 33u32, 34u32, 38u32, 39u32, 40u32, 48u32, 49u32, 50u32, 66u32, 67u32, 68u32,

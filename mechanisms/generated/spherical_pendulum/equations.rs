@@ -612,8 +612,8 @@ pub static P0: [f64; 10] = [
     0.00000000000000011102230246251565f64,
     0.9999999999999999f64,
 ];
-/// Where the numbers after the named parameters come from in the model (the
-/// generator's `slots::Slots::encoded`).
+/// Where the numbers after the named parameters come from in the model (positions in
+/// the generator's `slots::numbers`).
 pub static DATA: [u32; 10] = [
     3u32, 4u32, 5u32, 6u32, 7u32, 8u32, 9u32, 10u32, 20u32, 21u32,
 ];
