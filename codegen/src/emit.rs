@@ -23,11 +23,24 @@ pub enum Input {
     P,
     /// The values `setup` computed from them, `k` (`Var::K`).
     K,
+    /// The direction of a directional derivative: `dq`, `dqd`, `dp` (`Var::Dq`, …).
+    Dq,
+    Dqd,
+    Dp,
 }
 
 impl Input {
     /// Every input, in the order of generated signatures.
-    const ALL: [Input; 5] = [Input::P, Input::K, Input::Q, Input::Qd, Input::T];
+    const ALL: [Input; 8] = [
+        Input::P,
+        Input::K,
+        Input::Q,
+        Input::Qd,
+        Input::T,
+        Input::Dq,
+        Input::Dqd,
+        Input::Dp,
+    ];
 
     fn name(self) -> &'static str {
         match self {
@@ -36,6 +49,9 @@ impl Input {
             Input::T => "t",
             Input::P => "p",
             Input::K => "k",
+            Input::Dq => "dq",
+            Input::Dqd => "dqd",
+            Input::Dp => "dp",
         }
     }
 
@@ -47,6 +63,9 @@ impl Input {
                 | (Var::T, Input::T)
                 | (Var::P(_), Input::P)
                 | (Var::K(_), Input::K)
+                | (Var::Dq(_), Input::Dq)
+                | (Var::Dqd(_), Input::Dqd)
+                | (Var::Dp(_), Input::Dp)
         )
     }
 }
@@ -99,8 +118,8 @@ pub struct Function<'a> {
 impl Function<'_> {
     fn len(&self, input: Input) -> usize {
         match input {
-            Input::Q | Input::Qd | Input::T => self.n_coords,
-            Input::P => self.n_p,
+            Input::Q | Input::Qd | Input::T | Input::Dq | Input::Dqd => self.n_coords,
+            Input::P | Input::Dp => self.n_p,
             Input::K => self.n_k,
         }
     }
@@ -206,6 +225,18 @@ fn leaf_tokens(arena: &Arena, id: Id, receiver: bool) -> Option<TokenStream> {
         Node::Var(Var::K(i)) => {
             let i = int(i as usize);
             Some(quote!(k[#i]))
+        }
+        Node::Var(Var::Dq(i)) => {
+            let i = int(i as usize);
+            Some(quote!(dq[#i]))
+        }
+        Node::Var(Var::Dqd(i)) => {
+            let i = int(i as usize);
+            Some(quote!(dqd[#i]))
+        }
+        Node::Var(Var::Dp(i)) => {
+            let i = int(i as usize);
+            Some(quote!(dp[#i]))
         }
         _ => None,
     }
@@ -510,7 +541,9 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
         params.push(input_param(inp, f.len(inp), true, false));
         let (name, len) = (ident(inp.name()), int(f.len(inp)));
         let msg = match inp {
-            Input::Q | Input::Qd => format!("{} must have n_coords entries", inp.name()),
+            Input::Q | Input::Qd | Input::Dq | Input::Dqd => {
+                format!("{} must have n_coords entries", inp.name())
+            }
             _ => format!("{} must have {} entries", inp.name(), f.len(inp)),
         };
         if inp != Input::T {

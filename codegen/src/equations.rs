@@ -24,6 +24,8 @@ pub struct Dynamics {
     pub force_q: Vec<Entry>,
     pub force_qd: Vec<Entry>,
     pub mass_is_constant: bool,
+    /// Directional derivatives of `mass` and `force` ([`crate::tangent::add`]).
+    pub tangent: crate::tangent::Dynamic,
 }
 
 impl Dynamics {
@@ -49,6 +51,7 @@ impl Dynamics {
             force_q,
             force_qd,
             mass_is_constant,
+            tangent: Default::default(),
         }
     }
 }
@@ -68,6 +71,9 @@ pub struct System {
     /// Power of the non-conservative loads (dampers, actuators, applied loads in `t`).
     pub power_nc: Id,
     pub dynamics: Vec<Dynamics>,
+    /// Directional derivatives of Φ, Φq, Φt, γ ([`crate::tangent::add`]; `None` before, and
+    /// then no formulation has any either).
+    pub tangent: Option<crate::tangent::Kinematic>,
     /// Each body's mass and principal inertias, as they enter the equations (written in the
     /// run-time parameters by [`build_parametric`]).
     pub mass_props: Vec<[Id; 4]>,
@@ -322,6 +328,7 @@ fn build_with(model: &Model, parametric: bool) -> System {
         potential: loads.potential,
         power_nc: loads.power_nc,
         dynamics,
+        tangent: Default::default(),
         mass_props: props
             .mass
             .iter()
@@ -346,7 +353,7 @@ pub fn derivatives(a: &mut Arena, phi: &[Id], n_coords: usize) -> (Vec<Entry>, V
     let seed = |v: Var| match v {
         Var::Q(i) => Some(qd[i as usize]),
         Var::T => Some(one),
-        Var::Qd(_) | Var::P(_) | Var::K(_) => None,
+        Var::Qd(_) | Var::P(_) | Var::K(_) | Var::Dq(_) | Var::Dqd(_) | Var::Dp(_) => None,
     };
     let phi_dot = a.derivative(phi, &seed);
     let phi_ddot = a.derivative(&phi_dot, &seed);

@@ -32,6 +32,11 @@ pub enum Var {
     /// Hoisted value `k[i]`: a function of the parameters alone, computed once per parameter
     /// set by the generated `setup` ([`crate::hoist`]).
     K(u32),
+    /// Direction of `q[i]`, `qd[i]` and `p[i]` along which the generated `tangents` take
+    /// directional derivatives ([`crate::tangent`]).
+    Dq(u32),
+    Dqd(u32),
+    Dp(u32),
 }
 
 /// Unary functions the engine knows how to evaluate, differentiate and emit.

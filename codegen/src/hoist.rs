@@ -56,11 +56,15 @@ fn rewrite(sys: &mut System, f: impl FnOnce(&mut Arena, &[Id]) -> Vec<Id>) {
     let mut roots: Vec<Id> = vec![sys.potential, sys.power_nc];
     roots.extend(sys.phi.iter().chain(&sys.phi_t).chain(&sys.gamma));
     roots.extend(sys.phi_q.iter().map(|e| e.2));
+    if let Some(t) = &sys.tangent {
+        roots.extend(t.phi.iter().chain(&t.phi_q).chain(&t.phi_t).chain(&t.gamma));
+    }
     for d in &sys.dynamics {
         roots.extend(d.mass.iter().map(|e| e.2));
         roots.extend(&d.force);
         roots.extend(d.force_q.iter().map(|e| e.2));
         roots.extend(d.force_qd.iter().map(|e| e.2));
+        roots.extend(d.tangent.mass.iter().chain(&d.tangent.force));
     }
     let new = f(&mut sys.arena, &roots);
     let mut it = new.into_iter();
@@ -81,20 +85,31 @@ fn rewrite(sys: &mut System, f: impl FnOnce(&mut Arena, &[Id]) -> Vec<Id>) {
         }
     };
     entries(&mut sys.phi_q, &mut next);
+    let ids = |v: &mut Vec<Id>, next: &mut dyn FnMut() -> Id| {
+        for x in v.iter_mut() {
+            *x = next();
+        }
+    };
+    if let Some(t) = &mut sys.tangent {
+        for v in [&mut t.phi, &mut t.phi_q, &mut t.phi_t, &mut t.gamma] {
+            ids(v, &mut next);
+        }
+    }
     for d in &mut sys.dynamics {
         let Dynamics {
             mass,
             force,
             force_q,
             force_qd,
+            tangent,
             ..
         } = d;
         entries(mass, &mut next);
-        for f in force.iter_mut() {
-            *f = next();
-        }
+        ids(force, &mut next);
         entries(force_q, &mut next);
         entries(force_qd, &mut next);
+        ids(&mut tangent.mass, &mut next);
+        ids(&mut tangent.force, &mut next);
     }
 }
 
@@ -182,7 +197,7 @@ mod tests {
             Var::Q(_) => 3.0,
             Var::Qd(_) => 0.5,
             Var::K(_) => 2.0 * 9.81,
-            Var::T => 0.0,
+            Var::T | Var::Dq(_) | Var::Dqd(_) | Var::Dp(_) => 0.0,
         };
         assert_eq!(a.eval(new[0], &env), a.eval(root, &env));
         assert_eq!(a.node(new[1]), Node::Var(Var::K(0)));

@@ -5,7 +5,7 @@
 
 use crate::assembly::Assembly;
 use crate::equations::{self, Dynamics, System};
-use crate::expr::Id;
+use crate::expr::{Id, Var};
 use crate::model::{self, Model};
 use crate::symbolic::Entry as Nonzero;
 use crate::tape::lower;
@@ -89,8 +89,8 @@ pub fn load_with(
     stale: bool,
 ) -> Result<Loaded, Errors> {
     let model = model::load_with(source, text, parameters)?;
-    let (model, system, assembly) = front_end(source, text, model, parameters)?;
-    let entry = entry(&model, &system, &assembly, (source, stale, parameters));
+    let (model, system, assembly) = front_end(source, text, model, parameters, true)?;
+    let entry = entry(&model, system, &assembly, (source, stale, parameters));
     Ok(Loaded {
         entry,
         report: assembly.report,
@@ -100,15 +100,20 @@ pub fn load_with(
 
 /// The equations of `model` (loaded from `text` with `parameters` set) and its assembly: the
 /// compiled code's equations (run-time values as variables, hoisted), with this model's
-/// values bound, so interpreted and compiled runs agree bit for bit.
+/// values bound, so interpreted and compiled runs agree bit for bit; with their directional
+/// derivatives where `tangents` (what the tapes need, not a description).
 fn front_end(
     source: &str,
     text: &str,
     mut model: Model,
     parameters: &[(String, f64)],
+    tangents: bool,
 ) -> Result<(Model, System, Assembly), Errors> {
     let marked = crate::slots::mark(source, text, &mut model);
     let mut system = equations::build_parametric(&marked);
+    if tangents {
+        crate::tangent::add(&mut system);
+    }
     crate::hoist::bound(&mut system, &model.run_time_values());
     let assembly = crate::assembly::assemble(&model, &system, source).map_err(|mut e| {
         // A pose that no longer assembles: say which of the values set it follows from.
@@ -141,7 +146,7 @@ pub fn describe(
         formulations: Vec::new(),
         ..model
     };
-    let (model, system, assembly) = front_end(source, text, kinematic, parameters)?;
+    let (model, system, assembly) = front_end(source, text, kinematic, parameters, false)?;
     let shared = Shared::new(&model, &system, &assembly);
     Ok(formulations
         .iter()
@@ -223,16 +228,60 @@ fn kinematic_tapes(sys: &System) -> KinematicTapes {
     }
 }
 
-fn dynamic_tapes(sys: &System, d: &Dynamics) -> DynamicTapes {
+/// `d`'s tapes; `tangents`: its tangents' roots over the coordinates of
+/// [`tangent_inputs`], and their count.
+fn dynamic_tapes(sys: &System, d: &Dynamics, tangents: (&[Id], usize)) -> DynamicTapes {
     let n = sys.n_coords;
     let a = &sys.arena;
     let (pq, mass) = (values(&sys.phi_q), values(&d.mass));
+    let (t, n_joined) = tangents;
+    let m = sys.n_constraints;
+    let (tk, td) = t.split_at(3 * m + sys.phi_q.len());
+    let (phi, rest) = tk.split_at(m);
+    let (phi_q, rest) = rest.split_at(sys.phi_q.len());
+    let (phi_t, gamma) = rest.split_at(m);
+    let (d_mass, d_force) = td.split_at(d.mass.len());
     DynamicTapes {
         force_jacobian: lower(a, n, &[&values(&d.force_q), &values(&d.force_qd)]),
         mass: lower(a, n, &[&mass]),
         force: lower(a, n, &[&d.force]),
         eval_newton: lower(a, n, &[&sys.phi, &pq, &mass, &d.force]),
+        tangents: lower(a, n_joined, &[phi, phi_q, phi_t, gamma, d_mass, d_force]),
     }
+}
+
+/// The tangents of `sys` (after [`crate::tangent::add`]) with the direction renamed to
+/// coordinates after the point's, as a tape reads them (`q` = `[q, dq, dp]`, `qd` =
+/// `[qd, dqd]`): per formulation, Φ', Φq', Φt', γ', then its M' and Q'; and the count of
+/// those coordinates.
+fn tangent_inputs(sys: &mut System) -> (Vec<Vec<Id>>, usize) {
+    let n = sys.n_coords as u32;
+    let n_p = crate::tangent::n_values(sys);
+    let a = &mut sys.arena;
+    let dq: Vec<Id> = (0..n).map(|i| a.var(Var::Q(n + i))).collect();
+    let dqd: Vec<Id> = (0..n).map(|i| a.var(Var::Qd(n + i))).collect();
+    let dp: Vec<Id> = (0..n_p as u32).map(|i| a.var(Var::Q(2 * n + i))).collect();
+    let map = |v: Var| match v {
+        Var::Dq(i) => Some(dq[i as usize]),
+        Var::Dqd(i) => Some(dqd[i as usize]),
+        Var::Dp(i) => Some(dp[i as usize]),
+        _ => None,
+    };
+    let t = sys
+        .tangent
+        .as_ref()
+        .expect("the tapes' system has tangents");
+    let kinematic = [t.phi.as_slice(), &t.phi_q, &t.phi_t, &t.gamma].concat();
+    let per_formulation = sys
+        .dynamics
+        .iter()
+        .map(|d| [kinematic.as_slice(), &d.tangent.mass, &d.tangent.force].concat())
+        .collect::<Vec<_>>();
+    let renamed = per_formulation
+        .iter()
+        .map(|roots| sys.arena.substitute(roots, &map))
+        .collect();
+    (renamed, 2 * n as usize + n_p)
 }
 
 /// What every formulation's [`MechanismInfo`] shares.
@@ -363,23 +412,28 @@ fn formulation(f: model::Formulation) -> Formulation {
 
 fn entry(
     model: &Model,
-    sys: &System,
+    mut sys: System,
     asm: &Assembly,
     (source, stale, parameters): (&str, bool, &[(String, f64)]),
 ) -> &'static Entry {
+    let (tangents, n_joined) = tangent_inputs(&mut sys);
+    let sys = &sys;
+    let values: Arc<[f64]> = model.run_time_values().into();
     let shared = Shared::new(model, sys, asm);
     let kinematic = Arc::new(kinematic_tapes(sys));
     let formulations: Vec<(Formulation, &'static (dyn Mechanism + Sync))> = model
         .formulations
         .iter()
         .map(|&f| {
-            let d = sys
+            let k = sys
                 .dynamics
                 .iter()
-                .find(|d| d.formulation == f)
+                .position(|d| d.formulation == f)
                 .expect("the equations hold every formulation the model lists");
+            let d = &sys.dynamics[k];
             let info = shared.info(model, sys, f, Some(d));
-            let m = Interpreted::new(info, kinematic.clone(), Arc::new(dynamic_tapes(sys, d)));
+            let tapes = dynamic_tapes(sys, d, (&tangents[k], n_joined));
+            let m = Interpreted::new(info, kinematic.clone(), Arc::new(tapes), values.clone());
             let m: &'static (dyn Mechanism + Sync) = keep(Box::new(m));
             (formulation(f), m)
         })

@@ -32,6 +32,7 @@ pub mod reduce;
 pub mod rust;
 pub mod slots;
 pub mod symbolic;
+pub mod tangent;
 pub mod tape;
 
 pub use assembly::Report;
@@ -50,7 +51,8 @@ pub struct Generated {
 /// messages and in the generated header (use a path relative to the workspace root).
 pub fn generate(source: &str, text: &str) -> Result<Generated, Errors> {
     let mut model = model::load(source, text)?;
-    let system = equations::build_parametric(&slots::mark(source, text, &mut model));
+    let mut system = equations::build_parametric(&slots::mark(source, text, &mut model));
+    tangent::add(&mut system);
     // What the run-time parameters make of the equations at the file's values must be finite,
     // as every literal must (the interpreter folds the same values in, and is checked alike).
     let mut bound = system.clone();

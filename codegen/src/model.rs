@@ -833,7 +833,10 @@ impl Validator<'_> {
                     overridden: overrides.iter().any(|(o, _)| *o == name),
                     line: self.map.position(k.span().start).0,
                     affects: items.into_iter().collect(),
-                    run_time: matches!(v.get_ref(), raw::Scalar::Int(_) | raw::Scalar::Float(_))
+                    // A derived parameter set from outside is a number like the others
+                    // (its value stands, decision 35), so that its derivative is seen.
+                    run_time: (matches!(v.get_ref(), raw::Scalar::Int(_) | raw::Scalar::Float(_))
+                        || overrides.iter().any(|(o, _)| *o == name))
                         && self.reaches_run_time_fields_only(&name),
                     name,
                     value,

@@ -220,7 +220,7 @@ fn eliminate(
     let map = |v: Var| match v {
         Var::Q(i) => Some(q_of[i as usize]),
         Var::Qd(i) => Some(qd_of[i as usize]),
-        Var::T | Var::P(_) | Var::K(_) => None,
+        Var::T | Var::P(_) | Var::K(_) | Var::Dq(_) | Var::Dqd(_) | Var::Dp(_) => None,
     };
 
     let kept: Vec<Id> = rows.iter().map(|&r| sys.phi[r]).collect();
@@ -276,6 +276,7 @@ fn eliminate(
             potential,
             power_nc,
             dynamics,
+            tangent: Default::default(),
             mass_props: sys.mass_props.clone(),
             force_constants: sys.force_constants.clone(),
             row_names: rows.iter().map(|&r| sys.row_names[r].clone()).collect(),

@@ -139,6 +139,16 @@ const QQDT: &[Input] = &[Input::Q, Input::Qd, Input::T];
 const KQQDT: &[Input] = &[Input::K, Input::Q, Input::Qd, Input::T];
 const KQ: &[Input] = &[Input::K, Input::Q];
 const KQT: &[Input] = &[Input::K, Input::Q, Input::T];
+/// The functions of a point and a direction (`tangents`).
+const TANGENT: &[Input] = &[
+    Input::K,
+    Input::Q,
+    Input::Qd,
+    Input::T,
+    Input::Dq,
+    Input::Dqd,
+    Input::Dp,
+];
 
 /// Whether Φ, Φq, Φt or γ of `sys` read hoisted values: the model's numbers that parameters
 /// reach are in the constraints ([`crate::slots`]); masses and springs' constants are not.
@@ -255,7 +265,13 @@ fn reduced_at_type(model: &Model, r: &System, type_name: &Ident, modname: &Ident
     }
     let at = ident(&format!("{type_name}At"));
     let k = quote!(&self.k);
-    let at_impl = mechanism_impl(&at, modname, &k_arg(r, &k), &kinematic_k_arg(r, &k));
+    let at_impl = mechanism_impl(
+        &at,
+        modname,
+        &k_arg(r, &k),
+        &kinematic_k_arg(r, &k),
+        quote!(),
+    );
     quote! {
         /// The reduced model at run-time parameter values.
         #[derive(Debug, Clone)]
@@ -473,7 +489,21 @@ fn kinematic_functions(sys: &System) -> Vec<TokenStream> {
     let row_index: Vec<u32> = (0..sys.n_constraints as u32).collect();
     let pot = [sys.potential];
     let power = [sys.power_nc];
-    vec![
+    let tangents = sys.tangent.as_ref().map(|d| {
+        function(
+            sys,
+            "kinematic_tangents",
+            " Directional derivatives of Φ, Φq's nonzeros, Φt and γ along `(dq, dqd, dp)`.",
+            TANGENT,
+            vec![
+                Output::by_rows("phi", &d.phi, &row_index),
+                Output::by_rows("phi_q", &d.phi_q, &pq_rows),
+                Output::by_rows("phi_t", &d.phi_t, &row_index),
+                Output::by_rows("gamma", &d.gamma, &row_index),
+            ],
+        )
+    });
+    let mut fns = vec![
         function(
             sys,
             "phi",
@@ -528,7 +558,9 @@ fn kinematic_functions(sys: &System) -> Vec<TokenStream> {
             KQQDT,
             vec![Output::new("out", &power)],
         ),
-    ]
+    ];
+    fns.extend(tangents);
+    fns
 }
 
 /// M, Q and their fused evaluation with Φ and Φq, for one formulation.
@@ -538,7 +570,19 @@ fn dynamics_functions(sys: &System, dynamics: &Dynamics) -> Vec<TokenStream> {
     let row_index: Vec<u32> = (0..sys.n_constraints as u32).collect();
     let mass_vals = values(&dynamics.mass);
     let (force_q, force_qd) = (values(&dynamics.force_q), values(&dynamics.force_qd));
-    vec![
+    let tangents = sys.tangent.as_ref().map(|_| {
+        function(
+            sys,
+            "tangents",
+            " Directional derivatives of M's nonzeros and Q along `(dq, dqd, dp)`.",
+            TANGENT,
+            vec![
+                Output::new("mass", &dynamics.tangent.mass),
+                Output::new("force", &dynamics.tangent.force),
+            ],
+        )
+    });
+    let mut fns = vec![
         function(
             sys,
             "force_jacobian",
@@ -572,7 +616,9 @@ fn dynamics_functions(sys: &System, dynamics: &Dynamics) -> Vec<TokenStream> {
                 Output::new("force", &dynamics.force),
             ],
         ),
-    ]
+    ];
+    fns.extend(tangents);
+    fns
 }
 
 /// `impl Mechanism for #type_name`, delegating to the functions of module `#modname` and of
@@ -584,9 +630,11 @@ fn mechanism_impl(
     modname: &Ident,
     k: &TokenStream,
     kk: &TokenStream,
+    extra: TokenStream,
 ) -> TokenStream {
     quote! {
         impl Mechanism for #type_name {
+            #extra
             fn info(&self) -> &'static MechanismInfo { &#modname::INFO }
             fn phi(&self, q: &[f64], t: f64, out: &mut [f64]) { phi(#kk q, t, out) }
             fn phi_q(&self, q: &[f64], t: f64, out: &mut [f64]) { phi_q(#kk q, t, out) }
@@ -609,6 +657,20 @@ fn mechanism_impl(
     }
 }
 
+/// The `Mechanism` methods of a full model's type whose run-time values are `p` (an
+/// expression of `self`) and hoisted values the argument `k`: its values, and `tangents`.
+fn tangent_methods(modname: &Ident, k: &TokenStream, p: TokenStream) -> TokenStream {
+    // `kinematic_tangents` reads `k` wherever the system has hoisted values.
+    quote! {
+        fn run_time_values(&self) -> &[f64] { #p }
+        fn tangents(&self, q: &[f64], qd: &[f64], t: f64, dir: Direction<'_>, out: TangentOutputs<'_>) -> bool {
+            kinematic_tangents(#k q, qd, t, dir.dq, dir.dqd, dir.dp, out.phi, out.phi_q, out.phi_t, out.gamma);
+            #modname::tangents(#k q, qd, t, dir.dq, dir.dqd, dir.dp, out.mass, out.force);
+            true
+        }
+    }
+}
+
 /// The unit type of one formulation (the file's parameter values) and, where the system
 /// has run-time parameters, `<Type>At` (any values) with `<Type>::with_parameters`.
 fn formulation_types(
@@ -618,11 +680,20 @@ fn formulation_types(
     doc: &str,
     with_at: bool,
 ) -> TokenStream {
+    let file_values = match parameter_lengths(sys) {
+        (np, nk) if np > 0 && nk > 0 => quote!(&P0),
+        _ => quote!(&[]),
+    };
+    let tangents = |k: &TokenStream, p: TokenStream| match sys.tangent {
+        Some(_) => tangent_methods(modname, &k_arg(sys, k), p),
+        None => quote!(),
+    };
     let unit_impl = mechanism_impl(
         type_name,
         modname,
         &k_arg(sys, &quote!(&K)),
         &kinematic_k_arg(sys, &quote!(&K)),
+        tangents(&quote!(&K), file_values),
     );
     let unit = quote! {
         #[doc = #doc]
@@ -635,7 +706,13 @@ fn formulation_types(
     }
     let at = ident(&format!("{type_name}At"));
     let k = quote!(&self.0.k);
-    let at_impl = mechanism_impl(&at, modname, &k_arg(sys, &k), &kinematic_k_arg(sys, &k));
+    let at_impl = mechanism_impl(
+        &at,
+        modname,
+        &k_arg(sys, &k),
+        &kinematic_k_arg(sys, &k),
+        tangents(&k, quote!(self.0.values())),
+    );
     let at_doc = format!("{doc} At run-time parameter values (`{type_name}::with_parameters`).");
     quote! {
         #unit
@@ -1115,7 +1192,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
     let entry = registry_entry(model, reduced.as_ref(), np > 0 && nk > 0, source, hash);
     let file = quote! {
         #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]
-        use symbody_runtime::{BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, Origin, PlatformInfo, #reduction_import Rotation};
+        use symbody_runtime::{BodyInfo, Direction, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, #leg_import Mechanism, MechanismInfo, NewtonOutputs, Origin, PlatformInfo, #reduction_import Rotation, TangentOutputs};
         #parameter_import
         #(#items)*
         #(#impls)*

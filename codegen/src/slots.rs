@@ -282,7 +282,8 @@ pub fn find(source: &str, text: &str, model: &Model) -> Slots {
     let set: Vec<(String, f64)> = model
         .parameters
         .iter()
-        .filter(|p| p.expression.is_none())
+        // A derived parameter set from outside is a number of this model like the others.
+        .filter(|p| p.expression.is_none() || p.overridden)
         .enumerate()
         .map(|(i, p)| {
             // Each parameter by its own amount, so that no two moves cancel.

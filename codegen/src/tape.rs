@@ -100,6 +100,9 @@ pub fn lower(arena: &Arena, n_coords: usize, outputs: &[&[Id]]) -> Tape {
                 Var::P(_) | Var::K(_) => {
                     unreachable!("interpreted systems are built with their parameters' values")
                 }
+                Var::Dq(_) | Var::Dqd(_) | Var::Dp(_) => {
+                    unreachable!("a direction is renamed to coordinates before lowering")
+                }
             };
             register.insert(id, r);
         }

@@ -57,6 +57,7 @@ impl Case {
             Var::Qd(_) => 0.0,
             Var::T => t,
             Var::P(_) | Var::K(_) => unreachable!("built with the parameters' values"),
+            Var::Dq(_) | Var::Dqd(_) | Var::Dp(_) => unreachable!("built without tangents"),
         }
     }
     /// Φq·q̇ per row at the start.

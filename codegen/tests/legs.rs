@@ -34,6 +34,7 @@ impl Case {
             Var::Qd(_) => 0.0,
             Var::T => t,
             Var::P(_) | Var::K(_) => unreachable!("Φ reads no run-time parameter"),
+            Var::Dq(_) | Var::Dqd(_) | Var::Dp(_) => unreachable!("built without tangents"),
         };
         self.sys.arena.eval_many(&self.sys.phi, &env)
     }

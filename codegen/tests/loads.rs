@@ -106,6 +106,7 @@ fn eval(
         Var::Qd(i) => qd[i as usize],
         Var::T => t,
         Var::P(_) | Var::K(_) => unreachable!("built with the parameters' values"),
+        Var::Dq(_) | Var::Dqd(_) | Var::Dp(_) => unreachable!("built without tangents"),
     })
 }
 

@@ -26,6 +26,7 @@ fn eval(sys: &System, roots: &[Id], q: &[f64], qd: &[f64], t: f64) -> DVector<f6
         Var::Qd(i) => qd[i as usize],
         Var::T => t,
         Var::P(_) | Var::K(_) => unreachable!("built with the parameters' values"),
+        Var::Dq(_) | Var::Dqd(_) | Var::Dp(_) => unreachable!("built without tangents"),
     }))
 }
 

@@ -136,6 +136,7 @@ impl Interpreted {
             Var::Qd(i) => qd[i as usize],
             Var::T => t,
             Var::P(_) | Var::K(_) => unreachable!("built with the parameters' values"),
+            Var::Dq(_) | Var::Dqd(_) | Var::Dp(_) => unreachable!("built without tangents"),
         };
         out.copy_from_slice(&self.sys.arena.eval_many(roots, &env));
     }

@@ -173,6 +173,9 @@ pub enum Error {
     },
     /// The sparsity patterns in the mechanism info are inconsistent.
     InvalidPattern { reason: String },
+    /// A sensitivity analysis needs the directional derivatives of the equations
+    /// ([`crate::Mechanism::tangents`]), which this mechanism does not provide.
+    NoTangents { mechanism: &'static str },
 }
 
 impl fmt::Display for Error {
@@ -318,6 +321,12 @@ impl fmt::Display for Error {
                 reason,
             } => write!(f, "invalid {what} index {index}: {reason}"),
             Error::InvalidPattern { reason } => write!(f, "invalid sparsity pattern: {reason}"),
+            Error::NoTangents { mechanism } => write!(
+                f,
+                "`{mechanism}` has no directional derivatives of its equations, which \
+                 sensitivities need: regenerate its code (`cargo xtask generate`) or load \
+                 its file"
+            ),
         }
     }
 }

@@ -1,7 +1,9 @@
 //! A mechanism evaluated by the tape interpreter instead of compiled code: the same
 //! functions, behind the same [`Mechanism`] trait, so every solver runs it unchanged.
 
-use crate::mechanism::{KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs};
+use crate::mechanism::{
+    Direction, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs, TangentOutputs,
+};
 use crate::tape::Tape;
 use std::sync::Arc;
 
@@ -27,6 +29,9 @@ pub struct DynamicTapes {
     pub force: Tape,
     /// Outputs Φ, Φq, M, Q.
     pub eval_newton: Tape,
+    /// Outputs the directional derivatives of Φ, Φq, Φt, γ, M, Q; its inputs are
+    /// `q` = `[q, dq, dp]` and `qd` = `[qd, dqd]` ([`Mechanism::tangents`]).
+    pub tangents: Tape,
 }
 
 /// One formulation of an interpreted mechanism.
@@ -35,6 +40,8 @@ pub struct Interpreted {
     info: &'static MechanismInfo,
     kinematic: Arc<KinematicTapes>,
     dynamic: Arc<DynamicTapes>,
+    /// The run-time values the tapes were bound with ([`Mechanism::run_time_values`]).
+    values: Arc<[f64]>,
 }
 
 impl Interpreted {
@@ -44,6 +51,7 @@ impl Interpreted {
         info: &'static MechanismInfo,
         kinematic: Arc<KinematicTapes>,
         dynamic: Arc<DynamicTapes>,
+        values: Arc<[f64]>,
     ) -> Self {
         let (n, m) = (info.n_coords, info.n_constraints);
         let sizes = |t: &Tape| t.output_lens().collect::<Vec<_>>();
@@ -59,10 +67,15 @@ impl Interpreted {
             sizes(&d.force_jacobian),
             [info.force_q_rows.len(), info.force_qd_rows.len()]
         );
+        assert_eq!(
+            sizes(&d.tangents),
+            [m, info.phi_q_nnz(), m, m, info.mass_nnz(), n]
+        );
         Interpreted {
             info,
             kinematic,
             dynamic,
+            values,
         }
     }
 }
@@ -114,5 +127,27 @@ impl Mechanism for Interpreted {
             t,
             &mut [out.phi, out.phi_q, out.phi_t, out.gamma],
         );
+    }
+    fn run_time_values(&self) -> &[f64] {
+        &self.values
+    }
+    fn tangents(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dir: Direction<'_>,
+        out: TangentOutputs<'_>,
+    ) -> bool {
+        assert_eq!(dir.dp.len(), self.values.len(), "dp has the wrong length");
+        self.dynamic.tangents.eval_joined(
+            &[q, dir.dq, dir.dp],
+            &[qd, dir.dqd],
+            t,
+            &mut [
+                out.phi, out.phi_q, out.phi_t, out.gamma, out.mass, out.force,
+            ],
+        );
+        true
     }
 }

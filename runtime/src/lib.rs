@@ -62,8 +62,8 @@ pub use kinematic_path::{
 pub use kinematics::{InitialVelocity, KinematicSettings, Kinematics, PositionReport};
 pub use kkt::{DenseKkt, KktError, KktPattern, KktSolver, Pivots, SchurKkt};
 pub use mechanism::{
-    BodyInfo, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo, Mechanism,
-    MechanismInfo, NewtonOutputs, PlatformInfo, Rotation,
+    BodyInfo, Direction, Formulation, JointInfo, JointKind, KinematicOutputs, LegInfo, Mechanism,
+    MechanismInfo, NewtonOutputs, PlatformInfo, Rotation, TangentOutputs,
 };
 pub use pose::{
     angular_velocity, angular_velocity_jacobian, body_pose, point_world, rotation_matrix,

@@ -257,6 +257,27 @@ pub struct KinematicOutputs<'a> {
     pub gamma: &'a mut [f64],
 }
 
+/// A direction in (q, q̇, p) along which [`Mechanism::tangents`] differentiates: `dq` and
+/// `dqd` have `n_coords` entries, `dp` as many as [`Mechanism::run_time_values`].
+#[derive(Debug, Clone, Copy)]
+pub struct Direction<'a> {
+    pub dq: &'a [f64],
+    pub dqd: &'a [f64],
+    pub dp: &'a [f64],
+}
+
+/// Output slices of [`Mechanism::tangents`]: the directional derivatives of Φ
+/// (`n_constraints`), Φq's nonzeros (`phi_q_nnz`), Φt, γ, M's nonzeros (`mass_nnz`) and Q
+/// (`n_coords`).
+pub struct TangentOutputs<'a> {
+    pub phi: &'a mut [f64],
+    pub phi_q: &'a mut [f64],
+    pub phi_t: &'a mut [f64],
+    pub gamma: &'a mut [f64],
+    pub mass: &'a mut [f64],
+    pub force: &'a mut [f64],
+}
+
 /// A mechanism's equations, implemented by generated code.
 ///
 /// Every method takes plain slices, allocates nothing and writes every entry of its output.
@@ -291,6 +312,26 @@ pub trait Mechanism {
     fn eval_newton(&self, q: &[f64], qd: &[f64], t: f64, out: NewtonOutputs<'_>);
     /// Φ, Φq, Φt, γ at one state, sharing trigonometry: what kinematic analysis needs.
     fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>);
+    /// The run-time values the equations read (the generated code's `p`: named parameters,
+    /// then the model's numbers that other parameters reach), the coordinates of
+    /// [`Direction::dp`]. The default has none.
+    fn run_time_values(&self) -> &[f64] {
+        &[]
+    }
+    /// The exact directional derivatives at `(q, q̇, t)` of Φ, Φq, Φt, γ, M and Q along `dir`
+    /// (time held fixed), from the generator's forward-mode derivatives of the equations.
+    /// `false` (writing nothing): this mechanism has none (the default).
+    fn tangents(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dir: Direction<'_>,
+        out: TangentOutputs<'_>,
+    ) -> bool {
+        let _ = (q, qd, t, dir, out);
+        false
+    }
 }
 
 /// A borrowed mechanism is a mechanism, so solvers that own theirs can also borrow one.
@@ -330,5 +371,18 @@ impl<T: Mechanism + ?Sized> Mechanism for &T {
     }
     fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
         (**self).eval_kinematics(q, qd, t, out)
+    }
+    fn run_time_values(&self) -> &[f64] {
+        (**self).run_time_values()
+    }
+    fn tangents(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dir: Direction<'_>,
+        out: TangentOutputs<'_>,
+    ) -> bool {
+        (**self).tangents(q, qd, t, dir, out)
     }
 }

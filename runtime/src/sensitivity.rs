@@ -1,21 +1,22 @@
 //! Sensitivities of a solution with respect to one parameter of the mechanism file: the
 //! implicit part (positions, velocities, accelerations and multipliers defined by the
 //! saddle-point systems, or by the HHT step equations) differentiated exactly, by solving
-//! with the matrix the solver already factored; the explicit part (how Φ, M, Q, γ and the
-//! outputs change at a fixed state when the parameter moves) from the mechanism built at
-//! four neighbouring values of the parameter, by the fourth-order central difference.
+//! with the matrix the solver already factored; the explicit part (how Φ, Φq, Φt, γ, M and Q
+//! change along the state's and the parameter's direction) from the generator's exact
+//! directional derivatives of the equations ([`Mechanism::tangents`], decision 37).
 //!
-//! Why the explicit part is differenced: the file's parameters reach the equations through
-//! the loader's numeric work (assembled poses, joint frames made local to their bodies), not
-//! as symbols of the DAG. A difference of smooth explicit functions at a fixed state has no
-//! solver tolerance in it, so with the step [`relative_step`] its error is that of the
-//! stencil, (δ⁴ f⁽⁵⁾/30) ≈ 1e-12, plus roundoff ≈ 1e-13 / 1e-3: measured at 1e-10 relative
-//! against whole-run differences in `tests/sensitivities.rs`.
+//! What is differenced: only what the loader makes of the parameter, once per run and
+//! explicitly: the run-time values the equations read (`dp`), the assembled initial pose and
+//! the given velocities, and the joint points outputs are taken at, by the fourth-order
+//! central difference over the mechanism built at four neighbouring values of the parameter
+//! ([`Neighbours`]). Those are smooth functions with no solver tolerance in them, so with the
+//! step [`relative_step`] their error is that of the stencil, (δ⁴ f⁽⁵⁾/30) ≈ 1e-12, plus
+//! roundoff ≈ 1e-13 / 1e-3.
 
 use crate::error::{check_len, Error};
 use crate::kinematics::{mass_times, phi_q_transpose_times, Kinematics};
 use crate::kkt::KktSolver;
-use crate::mechanism::{Mechanism, MechanismInfo};
+use crate::mechanism::{Direction, Mechanism, MechanismInfo, TangentOutputs};
 
 /// Offsets of the stencil in units of the step, and their weights (times 1/step).
 const OFFSETS: [f64; 4] = [-2.0, -1.0, 1.0, 2.0];
@@ -32,17 +33,21 @@ pub fn relative_step(p: f64) -> f64 {
 }
 
 /// One parameter's neighbours: the same mechanism built with the parameter at
-/// `p − 2δ, p − δ, p + δ, p + 2δ`, every other parameter unchanged.
+/// `p − 2δ, p − δ, p + δ, p + 2δ`, every other parameter unchanged; the base mechanism at
+/// `p`, whose tangents the analyses take; and the derivative of its run-time values along
+/// the parameter, the direction `dp` of those tangents.
 pub struct Neighbours<'a> {
     step: f64,
+    base: &'a dyn Mechanism,
     mechs: [&'a dyn Mechanism; 4],
+    dp: Vec<f64>,
 }
 
 impl<'a> Neighbours<'a> {
-    /// Checks that the four share `base`'s structure (sizes, patterns, redundant rows): a
-    /// parameter change that alters it has no derivative at `p`.
+    /// Checks that the four share `base`'s structure (sizes, redundant rows, the layout of
+    /// their run-time values): a parameter change that alters it has no derivative at `p`.
     pub fn new(
-        base: &MechanismInfo,
+        base: &'a dyn Mechanism,
         step: f64,
         mechs: [&'a dyn Mechanism; 4],
     ) -> Result<Self, Error> {
@@ -53,31 +58,50 @@ impl<'a> Neighbours<'a> {
                 reason: "must be positive and finite",
             });
         }
+        let (info, n_p) = (base.info(), base.run_time_values().len());
         for m in &mechs {
             // Patterns may differ: an entry that cancels exactly at the file's value (a
-            // difference of equal numbers, folded away by the generator) is structurally
-            // absent there and present beside it, where it is small. Every evaluation here
-            // goes through each mechanism's own pattern into dense vectors.
+            // difference of equal numbers, folded away by an interpreted load) is
+            // structurally absent there and present beside it, where it is small. Every
+            // evaluation here goes through each mechanism's own pattern into dense vectors.
             let i = m.info();
-            let same = i.n_coords == base.n_coords
-                && i.n_constraints == base.n_constraints
-                && i.redundant_rows == base.redundant_rows;
+            let same = i.n_coords == info.n_coords
+                && i.n_constraints == info.n_constraints
+                && i.redundant_rows == info.redundant_rows
+                && m.run_time_values().len() == n_p;
             if !same {
                 return Err(Error::InvalidPattern {
                     reason: format!(
-                        "the mechanism's structure (coordinates, rows or redundant rows) \
-                         changes within ±{:.3e} of the parameter's value: it has no \
-                         derivative there",
+                        "the mechanism's structure (coordinates, rows, redundant rows or \
+                         run-time values) changes within ±{:.3e} of the parameter's value: \
+                         it has no derivative there",
                         2.0 * step
                     ),
                 });
             }
         }
-        Ok(Neighbours { step, mechs })
+        let mut nb = Neighbours {
+            step,
+            base,
+            mechs,
+            dp: Vec::new(),
+        };
+        let (mut dp, mut tmp) = (vec![0.0; n_p], vec![0.0; n_p]);
+        nb.derivative(&mut dp, &mut tmp, |m, _, v| {
+            v.copy_from_slice(m.run_time_values());
+            Ok(())
+        })?;
+        nb.dp = dp;
+        Ok(nb)
     }
 
     pub fn step(&self) -> f64 {
         self.step
+    }
+
+    /// The derivative of the base mechanism's run-time values along the parameter.
+    pub fn dp(&self) -> &[f64] {
+        &self.dp
     }
 
     /// `out = d/dε f(mechanism at p + ε, ε)` at ε = 0, where `f(mech, ε, tmp)` writes the
@@ -96,6 +120,114 @@ impl<'a> Neighbours<'a> {
             }
         }
         Ok(())
+    }
+}
+
+/// The directional derivatives of a mechanism's functions at one point along one direction
+/// (`d_*`, [`Mechanism::tangents`]), and Φq and M at the point (`phi_q`, `mass`,
+/// [`Jet::values`]), which the product rule needs. Sized once.
+pub(crate) struct Jet {
+    d_phi: Vec<f64>,
+    d_phi_q: Vec<f64>,
+    d_phi_t: Vec<f64>,
+    d_gamma: Vec<f64>,
+    d_mass: Vec<f64>,
+    d_force: Vec<f64>,
+    phi_q: Vec<f64>,
+    mass: Vec<f64>,
+    vec_n: Vec<f64>,
+    vec_m: Vec<f64>,
+}
+
+impl Jet {
+    pub(crate) fn new(info: &MechanismInfo) -> Self {
+        let (n, m) = (info.n_coords, info.n_constraints);
+        let z = |k: usize| vec![0.0; k];
+        Jet {
+            d_phi: z(m),
+            d_phi_q: z(info.phi_q_nnz()),
+            d_phi_t: z(m),
+            d_gamma: z(m),
+            d_mass: z(info.mass_nnz()),
+            d_force: z(n),
+            phi_q: z(info.phi_q_nnz()),
+            mass: z(info.mass_nnz()),
+            vec_n: z(n),
+            vec_m: z(m),
+        }
+    }
+
+    /// The tangents at `(q, q̇, t)` along `(dq, dq̇)` and `nb`'s parameter, of `nb`'s base
+    /// mechanism (the equations of the run's, with run-time values laid out as `dp`).
+    fn at(
+        &mut self,
+        nb: &Neighbours<'_>,
+        t: f64,
+        (q, dq): (&[f64], &[f64]),
+        (qd, dqd): (&[f64], &[f64]),
+    ) -> Result<(), Error> {
+        let (mech, dp) = (nb.base, nb.dp());
+        let out = TangentOutputs {
+            phi: &mut self.d_phi,
+            phi_q: &mut self.d_phi_q,
+            phi_t: &mut self.d_phi_t,
+            gamma: &mut self.d_gamma,
+            mass: &mut self.d_mass,
+            force: &mut self.d_force,
+        };
+        match mech.tangents(q, qd, t, Direction { dq, dqd, dp }, out) {
+            true => Ok(()),
+            false => Err(Error::NoTangents {
+                mechanism: mech.info().name,
+            }),
+        }
+    }
+
+    /// Φq and M at `q`.
+    fn values(&mut self, mech: &dyn Mechanism, q: &[f64], t: f64) {
+        mech.phi_q(q, t, &mut self.phi_q);
+        mech.mass(q, &mut self.mass);
+    }
+
+    /// `out` = the derivative of `[M x + Φqᵀy; Φq x]` with `x` and `y` moving by `dx` and
+    /// `dy` (`None`: held), from the tangents and the values at the point.
+    fn saddle(
+        &mut self,
+        info: &MechanismInfo,
+        (x, dx): (&[f64], Option<&[f64]>),
+        (y, dy): (&[f64], Option<&[f64]>),
+        out: &mut [f64],
+    ) {
+        let (top, bottom) = out.split_at_mut(info.n_coords);
+        mass_times(info, &self.d_mass, x, top);
+        phi_q_transpose_times(info, &self.d_phi_q, y, &mut self.vec_n);
+        add(top, &self.vec_n, 1.0);
+        phi_q_times(info, &self.d_phi_q, x, bottom);
+        if let Some(dx) = dx {
+            mass_times(info, &self.mass, dx, &mut self.vec_n);
+            add(top, &self.vec_n, 1.0);
+            phi_q_times(info, &self.phi_q, dx, &mut self.vec_m);
+            add(bottom, &self.vec_m, 1.0);
+        }
+        if let Some(dy) = dy {
+            phi_q_transpose_times(info, &self.phi_q, dy, &mut self.vec_n);
+            add(top, &self.vec_n, 1.0);
+        }
+    }
+}
+
+/// `out += s·v`.
+fn add(out: &mut [f64], v: &[f64], s: f64) {
+    for (o, x) in out.iter_mut().zip(v) {
+        *o += s * x;
+    }
+}
+
+/// `out = Φq v` from the Jacobian nonzeros.
+fn phi_q_times(info: &MechanismInfo, phi_q: &[f64], v: &[f64], out: &mut [f64]) {
+    out.fill(0.0);
+    for ((&r, &c), &a) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
+        out[r as usize] += a * v[c as usize];
     }
 }
 
@@ -120,153 +252,53 @@ impl StateSensitivity {
     }
 }
 
-/// Scratch of one mechanism's evaluations, sized once.
-pub(crate) struct Scratch {
-    phi_q: Vec<f64>,
-    mass: Vec<f64>,
-    vec_n: Vec<f64>,
-    vec_m: Vec<f64>,
-}
-
-impl Scratch {
-    /// Sizes the sparse buffers for `info`'s patterns (neighbours' may differ from the base's).
-    fn fit(&mut self, info: &MechanismInfo) {
-        self.phi_q.resize(info.phi_q_nnz(), 0.0);
-        self.mass.resize(info.mass_nnz(), 0.0);
-    }
-
-    pub(crate) fn new(info: &MechanismInfo) -> Self {
-        Scratch {
-            phi_q: vec![0.0; info.phi_q_nnz()],
-            mass: vec![0.0; info.mass_nnz()],
-            vec_n: vec![0.0; info.n_coords],
-            vec_m: vec![0.0; info.n_constraints],
-        }
-    }
-}
-
-/// `out = Φq v` from the Jacobian nonzeros.
-fn phi_q_times(info: &MechanismInfo, phi_q: &[f64], v: &[f64], out: &mut [f64]) {
-    out.fill(0.0);
-    for ((&r, &c), &a) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
-        out[r as usize] += a * v[c as usize];
-    }
-}
-
-/// `x + s·dx`, elementwise, into `out`.
-fn moved(x: &[f64], s: f64, dx: &[f64], out: &mut Vec<f64>) {
-    out.clear();
-    out.extend(x.iter().zip(dx).map(|(a, b)| a + s * b));
-}
-
-/// `out = [M x + Φqᵀy; Φq x]` at `q`: the saddle-point matrix of the analyses times `(x, y)`.
-fn saddle_product(
-    mech: &dyn Mechanism,
-    t: f64,
-    q: &[f64],
-    (x, y): (&[f64], &[f64]),
-    s: &mut Scratch,
-    out: &mut [f64],
-) {
-    let info = mech.info();
-    s.fit(info);
-    mech.phi_q(q, t, &mut s.phi_q);
-    mech.mass(q, &mut s.mass);
-    let (top, bottom) = out.split_at_mut(info.n_coords);
-    mass_times(info, &s.mass, x, top);
-    phi_q_transpose_times(info, &s.phi_q, y, &mut s.vec_n);
-    for (a, b) in top.iter_mut().zip(&s.vec_n) {
-        *a += b;
-    }
-    phi_q_times(info, &s.phi_q, x, bottom);
-}
-
-/// The residuals of the saddle-point systems a kinematic analysis solves, at one state:
-/// `[M q̇ + Φqᵀν; Φq q̇ + Φt]` (least-energy velocity) and `[M q̈ + Φqᵀλ − Q; Φq q̈ − γ]`.
-pub(crate) fn velocity_residual(
-    mech: &dyn Mechanism,
-    t: f64,
-    (q, qd, nu): (&[f64], &[f64], &[f64]),
-    s: &mut Scratch,
-    out: &mut [f64],
-) {
-    saddle_product(mech, t, q, (qd, nu), s, out);
-    mech.phi_t(q, t, &mut s.vec_m);
-    for (a, b) in out[mech.info().n_coords..].iter_mut().zip(&s.vec_m) {
-        *a += b;
-    }
-}
-
-/// See [`velocity_residual`].
-pub(crate) fn acceleration_residual(
-    mech: &dyn Mechanism,
-    t: f64,
-    (q, qd, qdd, lambda): (&[f64], &[f64], &[f64], &[f64]),
-    s: &mut Scratch,
-    out: &mut [f64],
-) {
-    saddle_product(mech, t, q, (qdd, lambda), s, out);
-    let (top, bottom) = out.split_at_mut(mech.info().n_coords);
-    mech.force(q, qd, t, &mut s.vec_n);
-    for (a, b) in top.iter_mut().zip(&s.vec_n) {
-        *a -= b;
-    }
-    mech.gamma(q, qd, t, &mut s.vec_m);
-    for (a, b) in bottom.iter_mut().zip(&s.vec_m) {
-        *a -= b;
-    }
-}
-
 /// The derivative with respect to the parameter of a kinematic analysis at time `t`: the
 /// position on Φ(q, t) = 0 (the correction of least kinetic energy, as the position solve
 /// takes it, so free directions the drivers leave get none), the least-energy velocity with
 /// its multipliers `nu`, and the accelerations and multipliers. `kin` must hold the
 /// factorization of `[M Φqᵀ; Φq 0]` at this state, as [`Kinematics::velocity_and_acceleration`]
-/// leaves it.
+/// leaves it; `mech` is the base mechanism of `neighbours`.
 #[allow(clippy::too_many_arguments)]
 pub fn kinematic<K: KktSolver>(
     kin: &mut Kinematics<K>,
+    mech: &dyn Mechanism,
     neighbours: &Neighbours<'_>,
     t: f64,
     (q, qd, qdd, lambda): (&[f64], &[f64], &[f64], &[f64]),
     out: &mut StateSensitivity,
 ) -> Result<(), Error> {
-    let info = neighbours.mechs[0].info();
+    let info = mech.info();
     let (n, m) = (info.n_coords, info.n_constraints);
     check_len("q", n, q.len())?;
     check_len("lambda", m, lambda.len())?;
     let nu = kin.velocity_multipliers().to_vec();
-    let mut s = Scratch::new(info);
-    let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
+    let mut jet = Jet::new(info);
+    jet.values(mech, q, t);
+    let mut rhs = vec![0.0; n + m];
     let zero_n = vec![0.0; n];
     let mut dnu = vec![0.0; m];
-    let (mut qa, mut qda) = (Vec::with_capacity(n), Vec::with_capacity(n));
 
     // Φ(q(p), t; p) = 0  ⇒  Φq dq = −∂Φ/∂p.
-    neighbours.derivative(&mut rhs[n..], &mut tmp[n..], |mech, _, v| {
-        mech.phi(q, t, v);
-        Ok(())
-    })?;
-    negate(&mut rhs[n..]);
+    jet.at(neighbours, t, (q, &zero_n), (qd, &zero_n))?;
+    for (r, d) in rhs[n..].iter_mut().zip(&jet.d_phi) {
+        *r = -d;
+    }
     kin.solve(&zero_n, &rhs[n..], &mut out.dq, &mut dnu, t)?;
 
-    // The velocity system's residual is zero along p: K [dq̇; dν] = −(its change at fixed q̇, ν).
-    neighbours.derivative(&mut rhs, &mut tmp, |mech, e, v| {
-        moved(q, e, &out.dq, &mut qa);
-        velocity_residual(mech, t, (&qa, qd, &nu), &mut s, v);
-        Ok(())
-    })?;
+    // The velocity system's residual [M q̇ + Φqᵀν; Φq q̇ + Φt] is zero along p:
+    // K [dq̇; dν] = −(its change at fixed q̇, ν).
+    jet.at(neighbours, t, (q, &out.dq), (qd, &zero_n))?;
+    jet.saddle(info, (qd, None), (&nu, None), &mut rhs);
+    add(&mut rhs[n..], &jet.d_phi_t, 1.0);
     negate(&mut rhs);
     let (f, g) = rhs.split_at(n);
     kin.solve(f, g, &mut out.dqd, &mut dnu, t)?;
 
-    // Likewise the acceleration system, whose residual also moves with q̇.
-    neighbours.derivative(&mut rhs, &mut tmp, |mech, e, v| {
-        moved(q, e, &out.dq, &mut qa);
-        moved(qd, e, &out.dqd, &mut qda);
-        acceleration_residual(mech, t, (&qa, &qda, qdd, lambda), &mut s, v);
-        Ok(())
-    })?;
+    // Likewise [M q̈ + Φqᵀλ − Q; Φq q̈ − γ], which also moves with q̇.
+    jet.at(neighbours, t, (q, &out.dq), (qd, &out.dqd))?;
+    jet.saddle(info, (qdd, None), (lambda, None), &mut rhs);
+    add(&mut rhs[..n], &jet.d_force, -1.0);
+    add(&mut rhs[n..], &jet.d_gamma, -1.0);
     negate(&mut rhs);
     let (f, g) = rhs.split_at(n);
     kin.solve(f, g, &mut out.dqdd, &mut out.dlambda, t)?;
@@ -313,20 +345,19 @@ pub struct HhtSensitivity<K: KktSolver = crate::kkt::SchurKkt> {
     a: Vec<f64>,
     lambda: Vec<f64>,
     v_tilde: Vec<f64>,
-    s: Scratch,
+    jet: Jet,
     w: Work,
 }
 
 /// Work space of [`HhtSensitivity`], sized once: a step allocates nothing.
 struct Work {
-    /// Right-hand sides and stencil values, `n + m`.
+    /// Right-hand sides, `n + m`.
     rhs: Vec<f64>,
-    tmp: Vec<f64>,
-    /// Moved states inside the stencils.
+    /// The step's base position and velocity, and their directions.
     qa: Vec<f64>,
     va: Vec<f64>,
-    aa: Vec<f64>,
-    la: Vec<f64>,
+    dqa: Vec<f64>,
+    dva: Vec<f64>,
     /// Solutions `(x, y)` of the saddle-point solves.
     x: Vec<f64>,
     y: Vec<f64>,
@@ -336,9 +367,11 @@ struct Work {
     dv_tilde: Vec<f64>,
     da: Vec<f64>,
     dl: Vec<f64>,
-    /// `M (v − ṽ)`'s difference, and the projection's multipliers.
+    /// `v − ṽ` and `−dṽ` of the projection, and its multipliers.
     diff: Vec<f64>,
+    ddiff: Vec<f64>,
     mu: Vec<f64>,
+    vec_n: Vec<f64>,
 }
 
 impl Work {
@@ -346,11 +379,10 @@ impl Work {
         let z = |k: usize| vec![0.0; k];
         Work {
             rhs: z(n + m),
-            tmp: z(n + m),
             qa: z(n),
             va: z(n),
-            aa: z(n),
-            la: z(m),
+            dqa: z(n),
+            dva: z(n),
             x: z(n),
             y: z(m),
             r0: z(n),
@@ -359,7 +391,9 @@ impl Work {
             da: z(n),
             dl: z(m),
             diff: z(n),
+            ddiff: z(n),
             mu: z(m),
+            vec_n: z(n),
         }
     }
 }
@@ -375,7 +409,8 @@ const STAGNATION_LIMIT: f64 = 1e-4;
 impl<K: KktSolver> HhtSensitivity<K> {
     /// At the consistent start `(q, q̇, q̈, λ)` at `t0` that `HhtBuilder::build` made from the
     /// file's pose and velocities (`info.q0`, `info.qd0`, velocities projected): their
-    /// derivatives, from the neighbours' assembled poses and given velocities.
+    /// derivatives, from the neighbours' assembled poses and given velocities. `mech` is the
+    /// base mechanism of `nb`.
     #[allow(clippy::too_many_arguments)]
     pub fn start<M: Mechanism>(
         mech: &M,
@@ -403,11 +438,10 @@ impl<K: KktSolver> HhtSensitivity<K> {
             a: a.to_vec(),
             lambda: lambda.to_vec(),
             v_tilde: v.to_vec(),
-            s: Scratch::new(info),
+            jet: Jet::new(info),
             w: Work::new(n, m),
         };
         me.kin.factor_at(mech, q, t0)?;
-        let (mut rhs, mut tmp) = (vec![0.0; n + m], vec![0.0; n + m]);
         let mut y = vec![0.0; m];
 
         // The assembled pose moves with p; the start's position solve keeps it on Φ = 0
@@ -418,18 +452,12 @@ impl<K: KktSolver> HhtSensitivity<K> {
             out.copy_from_slice(mech.info().q0);
             Ok(())
         })?;
-        nb.derivative(&mut rhs[n..], &mut tmp[n..], |mech, e, out| {
-            let qa: Vec<f64> = q.iter().zip(&dq_given).map(|(a, b)| a + e * b).collect();
-            mech.phi(&qa, t0, out);
-            Ok(())
-        })?;
-        negate(&mut rhs[n..]);
         let zero_n = vec![0.0; n];
+        me.jet.at(nb, t0, (q, &dq_given), (v, &zero_n))?;
+        let rhs: Vec<f64> = me.jet.d_phi.iter().map(|d| -d).collect();
         let mut dq = vec![0.0; n];
-        me.kin.solve(&zero_n, &rhs[n..], &mut dq, &mut y, t0)?;
-        for (d, g) in dq.iter_mut().zip(&dq_given) {
-            *d += g;
-        }
+        me.kin.solve(&zero_n, &rhs, &mut dq, &mut y, t0)?;
+        add(&mut dq, &dq_given, 1.0);
         me.state.dq = dq;
 
         // The given velocities move with p too, and are projected.
@@ -448,7 +476,7 @@ impl<K: KktSolver> HhtSensitivity<K> {
         // `r` at the start is evaluated with the projected velocity.
         me.w.v_tilde.copy_from_slice(&me.v);
         me.w.dv_tilde.copy_from_slice(&me.state.dqd);
-        me.store_dr(nb, t0)?;
+        me.store_dr(mech, nb, t0)?;
         Ok(me)
     }
 
@@ -463,54 +491,35 @@ impl<K: KktSolver> HhtSensitivity<K> {
     ) -> Result<(), Error> {
         let info = mech.info();
         let n = info.n_coords;
-        let w = &mut self.w;
+        let (w, jet) = (&mut self.w, &mut self.jet);
         // The base projection and its multipliers μ: K [Δ; μ] = [0; −(Φq ṽ + Φt)].
-        self.s.fit(info);
-        mech.phi_q(&self.q, t, &mut self.s.phi_q);
-        phi_q_times(info, &self.s.phi_q, &w.v_tilde, &mut w.rhs[n..]);
-        mech.phi_t(&self.q, t, &mut w.tmp[n..]);
-        for (r, p) in w.rhs[n..].iter_mut().zip(&w.tmp[n..]) {
+        jet.values(mech, &self.q, t);
+        phi_q_times(info, &jet.phi_q, &w.v_tilde, &mut w.rhs[n..]);
+        mech.phi_t(&self.q, t, &mut jet.vec_m);
+        for (r, p) in w.rhs[n..].iter_mut().zip(&jet.vec_m) {
             *r = -(*r + p);
         }
-        w.tmp[..n].fill(0.0);
-        self.kin
-            .solve(&w.tmp[..n], &w.rhs[n..], &mut w.x, &mut w.mu, t)?;
+        w.rhs[..n].fill(0.0);
+        let (f, g) = w.rhs.split_at(n);
+        self.kin.solve(f, g, &mut w.x, &mut w.mu, t)?;
         for ((v, a), b) in self.v.iter_mut().zip(&w.v_tilde).zip(&w.x) {
             *v = a + b;
         }
-        // The residual [M (v − ṽ) + Φqᵀμ; Φq v + Φt] stays zero along p.
-        let (q, dq, v) = (&self.q, &self.state.dq, &self.v);
-        let s = &mut self.s;
-        let Work {
-            rhs,
-            tmp,
-            qa,
-            va,
-            diff,
-            mu,
-            v_tilde,
-            dv_tilde,
-            y,
-            ..
-        } = w;
-        nb.derivative(rhs, tmp, |mech, e, out| {
-            moved(q, e, dq, qa);
-            moved(v_tilde, e, dv_tilde, va);
-            for ((d, a), b) in diff.iter_mut().zip(v).zip(va.iter()) {
-                *d = a - b;
-            }
-            velocity_residual(mech, t, (qa, diff, mu), s, out);
-            // velocity_residual's lower half is Φq·(v − ṽ) + Φt; the projection's is Φq·v + Φt.
-            let info = mech.info();
-            phi_q_times(info, &s.phi_q, va, &mut s.vec_m);
-            for (o, x) in out[n..].iter_mut().zip(&s.vec_m) {
-                *o += x;
-            }
-            Ok(())
-        })?;
-        negate(rhs);
-        let (f, g) = rhs.split_at(n);
-        self.kin.solve(f, g, &mut self.state.dqd, y, t)
+        // The residual [M (v − ṽ) + Φqᵀμ; Φq v + Φt] stays zero along p, with q moving by
+        // dq and ṽ by dṽ.
+        jet.at(nb, t, (&self.q, &self.state.dq), (&self.v, &w.dv_tilde))?;
+        for i in 0..n {
+            w.diff[i] = self.v[i] - w.v_tilde[i];
+            w.ddiff[i] = -w.dv_tilde[i];
+        }
+        jet.saddle(info, (&w.diff, Some(&w.ddiff)), (&w.mu, None), &mut w.rhs);
+        // `saddle`'s lower half is the change of Φq·(v − ṽ); the projection's is Φq·v + Φt.
+        let bottom = &mut w.rhs[n..];
+        phi_q_times(info, &jet.d_phi_q, &self.v, bottom);
+        add(bottom, &jet.d_phi_t, 1.0);
+        negate(&mut w.rhs);
+        let (f, g) = w.rhs.split_at(n);
+        self.kin.solve(f, g, &mut self.state.dqd, &mut w.y, t)
     }
 
     /// The saddle-point accelerations and multipliers at `(self.q, self.v)` into `a`, `l`,
@@ -523,53 +532,42 @@ impl<K: KktSolver> HhtSensitivity<K> {
         t: f64,
         [a, l, da, dl]: [&mut [f64]; 4],
     ) -> Result<(), Error> {
-        let n = self.q.len();
-        let w = &mut self.w;
+        let info = mech.info();
+        let n = info.n_coords;
+        let (w, jet) = (&mut self.w, &mut self.jet);
         let (force, gamma) = w.rhs.split_at_mut(n);
         mech.force(&self.q, &self.v, t, force);
         mech.gamma(&self.q, &self.v, t, gamma);
         self.kin.solve(force, gamma, a, l, t)?;
-        let (q, v, dq, dv) = (&self.q, &self.v, &self.state.dq, &self.state.dqd);
-        let s = &mut self.s;
-        let Work {
-            rhs, tmp, qa, va, ..
-        } = w;
-        let (a, l) = (&*a, &*l);
-        nb.derivative(rhs, tmp, |mech, e, out| {
-            moved(q, e, dq, qa);
-            moved(v, e, dv, va);
-            acceleration_residual(mech, t, (qa, va, a, l), s, out);
-            Ok(())
-        })?;
-        negate(rhs);
-        let (f, g) = rhs.split_at(n);
+        jet.values(mech, &self.q, t);
+        let (q, v, d) = (&self.q, &self.v, &self.state);
+        jet.at(nb, t, (q, &d.dq), (v, &d.dqd))?;
+        jet.saddle(info, (a, None), (l, None), &mut w.rhs);
+        add(&mut w.rhs[..n], &jet.d_force, -1.0);
+        add(&mut w.rhs[n..], &jet.d_gamma, -1.0);
+        negate(&mut w.rhs);
+        let (f, g) = w.rhs.split_at(n);
         self.kin.solve(f, g, da, dl, t)
     }
 
     /// `dr` = derivative of `Φqᵀλ − Q(q, ṽ)` at the current base state, ṽ = `w.v_tilde`
     /// (the velocity `r` is evaluated with) moving by `w.dv_tilde`; keeps ṽ for the next step.
-    fn store_dr(&mut self, nb: &Neighbours<'_>, t: f64) -> Result<(), Error> {
-        let n = self.q.len();
-        let (q, l) = (&self.q, &self.lambda);
-        let (dq, dl) = (&self.state.dq, &self.state.dlambda);
-        let s = &mut self.s;
-        let Work {
-            tmp,
-            qa,
-            va,
-            la,
-            v_tilde,
-            dv_tilde,
-            ..
-        } = &mut self.w;
-        nb.derivative(&mut self.dr, &mut tmp[..n], |mech, e, out| {
-            moved(q, e, dq, qa);
-            moved(v_tilde, e, dv_tilde, va);
-            moved(l, e, dl, la);
-            generalized_reaction(mech, t, (qa, va, la), s, out);
-            Ok(())
-        })?;
-        self.v_tilde.copy_from_slice(v_tilde);
+    fn store_dr<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        nb: &Neighbours<'_>,
+        t: f64,
+    ) -> Result<(), Error> {
+        let info = mech.info();
+        let (w, jet) = (&mut self.w, &mut self.jet);
+        jet.values(mech, &self.q, t);
+        let (q, dq) = (&self.q, &self.state.dq);
+        jet.at(nb, t, (q, dq), (&w.v_tilde, &w.dv_tilde))?;
+        phi_q_transpose_times(info, &jet.d_phi_q, &self.lambda, &mut self.dr);
+        phi_q_transpose_times(info, &jet.phi_q, &self.state.dlambda, &mut w.vec_n);
+        add(&mut self.dr, &w.vec_n, 1.0);
+        add(&mut self.dr, &jet.d_force, -1.0);
+        self.v_tilde.copy_from_slice(&w.v_tilde);
         Ok(())
     }
 
@@ -591,35 +589,26 @@ impl<K: KktSolver> HhtSensitivity<K> {
         let c = 1.0 / (1.0 + alpha);
         let inv_bh2 = 1.0 / (beta * h * h);
         self.kin.factor_at(mech, q1, t1)?;
-        // The step's residual as a function of (q̈1, λ1) and the previous state.
+        // The step's residual as a function of (q̈1, λ1) and the previous state:
+        // [Φqᵀλ1 − Q + c M q̈1 − αc r0; Φ/(βh²)] at the Newmark position and velocity.
         let (q0, v0, a0) = (&self.q, &self.v, &self.a);
-        let w = &mut self.w;
+        let (w, jet) = (&mut self.w, &mut self.jet);
         generalized_reaction(
             mech,
             self.t,
             (q0, &self.v_tilde, &self.lambda),
-            &mut self.s,
+            jet,
             &mut w.r0,
         );
+        for i in 0..n {
+            w.qa[i] =
+                q0[i] + h * v0[i] + 0.5 * h * h * ((1.0 - 2.0 * beta) * a0[i] + 2.0 * beta * a1[i]);
+            w.va[i] = v0[i] + h * ((1.0 - gamma) * a0[i] + gamma * a1[i]);
+        }
+        jet.values(mech, &w.qa, t1);
         let d = &self.state;
         w.da.copy_from_slice(&d.dqdd);
         w.dl.copy_from_slice(&d.dlambda);
-        let Work {
-            rhs,
-            tmp,
-            qa,
-            va,
-            aa,
-            la,
-            x,
-            y,
-            r0,
-            da,
-            dl,
-            ..
-        } = w;
-        let s = &mut self.s;
-        let dr = &self.dr;
         let mut converged = false;
         let mut iterations = 0;
         // The derivative's size, from the first change if the guess was zero.
@@ -630,61 +619,58 @@ impl<K: KktSolver> HhtSensitivity<K> {
         let mut last_rel = f64::INFINITY;
         while iterations < SENSITIVITY_ITERATIONS {
             iterations += 1;
-            nb.derivative(rhs, tmp, |mech, e, out| {
-                for i in 0..n {
-                    let (qi, vi) = (q0[i] + e * d.dq[i], v0[i] + e * d.dqd[i]);
-                    let (a0i, a1i) = (a0[i] + e * d.dqdd[i], a1[i] + e * da[i]);
-                    qa[i] =
-                        qi + h * vi + 0.5 * h * h * ((1.0 - 2.0 * beta) * a0i + 2.0 * beta * a1i);
-                    va[i] = vi + h * ((1.0 - gamma) * a0i + gamma * a1i);
-                    aa[i] = a1i;
-                }
-                for (j, l) in la.iter_mut().enumerate() {
-                    *l = l1[j] + e * dl[j];
-                }
-                let info = mech.info();
-                let (top, bottom) = out.split_at_mut(n);
-                generalized_reaction(mech, t1, (qa, va, la), s, top);
-                s.fit(info);
-                mech.mass(qa, &mut s.mass);
-                mass_times(info, &s.mass, aa, &mut s.vec_n);
-                for i in 0..n {
-                    let r_prev_i = r0[i] + e * dr[i];
-                    top[i] += c * s.vec_n[i] - alpha * c * r_prev_i;
-                }
-                mech.phi(qa, t1, bottom);
-                for b in bottom.iter_mut() {
-                    *b *= inv_bh2;
-                }
-                Ok(())
-            })?;
+            for i in 0..n {
+                w.dqa[i] = d.dq[i]
+                    + h * d.dqd[i]
+                    + 0.5 * h * h * ((1.0 - 2.0 * beta) * d.dqdd[i] + 2.0 * beta * w.da[i]);
+                w.dva[i] = d.dqd[i] + h * ((1.0 - gamma) * d.dqdd[i] + gamma * w.da[i]);
+            }
+            jet.at(nb, t1, (&w.qa, &w.dqa), (&w.va, &w.dva))?;
+            // The residual's derivative D: that of Φqᵀλ1 − Q + c M q̈1 − αc r0, and of Φ/(βh²).
+            let (top, bottom) = w.rhs.split_at_mut(n);
+            phi_q_transpose_times(info, &jet.d_phi_q, l1, top);
+            phi_q_transpose_times(info, &jet.phi_q, &w.dl, &mut w.vec_n);
+            add(top, &w.vec_n, 1.0);
+            add(top, &jet.d_force, -1.0);
+            mass_times(info, &jet.d_mass, a1, &mut w.vec_n);
+            add(top, &w.vec_n, c);
+            mass_times(info, &jet.mass, &w.da, &mut w.vec_n);
+            add(top, &w.vec_n, c);
+            add(top, &self.dr, -alpha * c);
+            for (b, p) in bottom.iter_mut().zip(&jet.d_phi) {
+                *b = p * inv_bh2;
+            }
             // [cM Φqᵀ; Φq 0][Δa; Δλ] = −D through [M Φqᵀ; Φq 0][Δa; Δλ/c] = [−D₁/c; −D₂].
-            for r in rhs[..n].iter_mut() {
+            for r in w.rhs[..n].iter_mut() {
                 *r *= -c.recip();
             }
-            negate(&mut rhs[n..]);
-            let (f, g) = rhs.split_at(n);
-            self.kin.solve(f, g, x, y, t1)?;
+            negate(&mut w.rhs[n..]);
+            let (f, g) = w.rhs.split_at(n);
+            self.kin.solve(f, g, &mut w.x, &mut w.y, t1)?;
             let (mut change_a, mut change_l) = (0.0f64, 0.0f64);
-            for (a, dx) in da.iter_mut().zip(x.iter()) {
+            for (a, dx) in w.da.iter_mut().zip(w.x.iter()) {
                 *a += dx;
                 change_a = change_a.max(dx.abs());
             }
-            for (l, dy) in dl.iter_mut().zip(y.iter()) {
+            for (l, dy) in w.dl.iter_mut().zip(w.y.iter()) {
                 *l += c * dy;
                 change_l = change_l.max((c * dy).abs());
             }
             if !(change_a.is_finite() && change_l.is_finite()) {
                 break;
             }
-            scale_a = da.iter().fold(scale_a.max(change_a), |s, v| s.max(v.abs()));
-            scale_l = dl.iter().fold(scale_l.max(change_l), |s, v| s.max(v.abs()));
+            scale_a =
+                w.da.iter()
+                    .fold(scale_a.max(change_a), |s, v| s.max(v.abs()));
+            scale_l =
+                w.dl.iter()
+                    .fold(scale_l.max(change_l), |s, v| s.max(v.abs()));
             let rel = (change_a / scale_a.max(f64::MIN_POSITIVE))
                 .max(change_l / scale_l.max(f64::MIN_POSITIVE));
             // Done at the tolerance, or once the changes stop shrinking: they have reached
-            // the noise of the differenced constraint rows, which the 1/(βh²) scaling lifts
-            // to ≈ ε/(δ·βh²) in q̈ (as it lifts the step's own Newton increments; positions
-            // get βh² of it back). Stagnation far above that is a failure.
+            // the roundoff of the constraint rows, which the 1/(βh²) scaling lifts to
+            // ≈ ε/(βh²) in q̈ (as it lifts the step's own Newton increments; positions get
+            // βh² of it back). Stagnation far above that is a failure.
             if rel <= SENSITIVITY_TOLERANCE || (rel > 0.5 * last_rel && rel <= STAGNATION_LIMIT) {
                 converged = true;
                 break;
@@ -702,7 +688,6 @@ impl<K: KktSolver> HhtSensitivity<K> {
         }
         // Newmark for the new (unprojected) velocity, and the derivatives of the new position
         // and velocity.
-        let w = &mut self.w;
         let st = &mut self.state;
         // Seven vectors in step: an index reads more plainly than a zip of them.
         #[allow(clippy::needless_range_loop)]
@@ -726,7 +711,7 @@ impl<K: KktSolver> HhtSensitivity<K> {
         // The integrator's own (projected) velocity is the state; the projection above is
         // the ideal one of the same constraints, equal to it up to the step's tolerance.
         self.v.copy_from_slice(v1);
-        self.store_dr(nb, t1)
+        self.store_dr(mech, nb, t1)
     }
 
     /// At the current state (after [`HhtSensitivity::start`] or a step): the saddle-point
@@ -747,20 +732,17 @@ impl<K: KktSolver> HhtSensitivity<K> {
     }
 }
 
-/// `out = Φqᵀλ − Q` at `(q, q̇, λ)`.
+/// `out = Φqᵀλ − Q` at `(q, q̇, λ)`, with `jet`'s buffers as scratch.
 fn generalized_reaction(
     mech: &dyn Mechanism,
     t: f64,
     (q, v, lambda): (&[f64], &[f64], &[f64]),
-    s: &mut Scratch,
+    jet: &mut Jet,
     out: &mut [f64],
 ) {
     let info = mech.info();
-    s.fit(info);
-    mech.phi_q(q, t, &mut s.phi_q);
-    phi_q_transpose_times(info, &s.phi_q, lambda, out);
-    mech.force(q, v, t, &mut s.vec_n);
-    for (o, f) in out.iter_mut().zip(&s.vec_n) {
-        *o -= f;
-    }
+    mech.phi_q(q, t, &mut jet.phi_q);
+    phi_q_transpose_times(info, &jet.phi_q, lambda, out);
+    mech.force(q, v, t, &mut jet.vec_n);
+    add(out, &jet.vec_n, -1.0);
 }

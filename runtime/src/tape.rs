@@ -173,6 +173,13 @@ impl Tape {
     /// lengths), using a register file kept per thread: no allocation once a thread has
     /// evaluated its largest tape. An empty `qd` stands for a function without velocities.
     pub fn eval(&self, q: &[f64], qd: &[f64], t: f64, outs: &mut [&mut [f64]]) {
+        self.eval_joined(&[q], &[qd], t, outs);
+    }
+
+    /// [`Tape::eval`] with `q` and `qd` given in pieces, joined in order: a tape over more
+    /// inputs than a mechanism's coordinates (a direction after the point) reads them
+    /// without a copy. Velocities missing at the end are zero.
+    pub fn eval_joined(&self, q: &[&[f64]], qd: &[&[f64]], t: f64, outs: &mut [&mut [f64]]) {
         thread_local! {
             static REGISTERS: RefCell<Vec<f64>> = const { RefCell::new(Vec::new()) };
         }
@@ -185,18 +192,20 @@ impl Tape {
         });
     }
 
-    /// [`Tape::eval`] with the caller's register file of exactly [`Tape::registers`] entries.
+    /// [`Tape::eval_joined`] with the caller's register file of exactly [`Tape::registers`]
+    /// entries.
     pub fn eval_with(
         &self,
         regs: &mut [f64],
-        q: &[f64],
-        qd: &[f64],
+        q: &[&[f64]],
+        qd: &[&[f64]],
         t: f64,
         outs: &mut [&mut [f64]],
     ) {
         let n = self.n_coords;
-        assert_eq!(q.len(), n, "q has the wrong length");
-        assert!(qd.is_empty() || qd.len() == n, "qd has the wrong length");
+        let len = |parts: &[&[f64]]| parts.iter().map(|p| p.len()).sum::<usize>();
+        assert_eq!(len(q), n, "q has the wrong length");
+        assert!(len(qd) <= n, "qd has the wrong length");
         assert_eq!(
             outs.len(),
             self.outputs.len(),
@@ -204,12 +213,16 @@ impl Tape {
         );
         let c = self.consts.len();
         regs[..c].copy_from_slice(&self.consts);
-        regs[c..c + n].copy_from_slice(q);
-        if qd.is_empty() {
-            regs[c + n..c + 2 * n].fill(0.0);
-        } else {
-            regs[c + n..c + 2 * n].copy_from_slice(qd);
+        let mut at = c;
+        for part in q {
+            regs[at..at + part.len()].copy_from_slice(part);
+            at += part.len();
         }
+        for part in qd {
+            regs[at..at + part.len()].copy_from_slice(part);
+            at += part.len();
+        }
+        regs[at..c + 2 * n].fill(0.0);
         regs[c + 2 * n] = t;
         let first = self.first_result();
         run(&self.instrs, &self.runs, regs, first);

@@ -13,8 +13,8 @@ use symbody_codegen::model::{ForceKind, Model};
 use symbody_codegen::slots;
 use symbody_runtime::registry::{Built, Formulations, RunTime};
 use symbody_runtime::{
-    source_hash, Entry, Formulation, KinematicOutputs, Mechanism, MechanismInfo, NewtonOutputs,
-    Origin, Reduction,
+    source_hash, Direction, Entry, Formulation, KinematicOutputs, Mechanism, MechanismInfo,
+    NewtonOutputs, Origin, Reduction, TangentOutputs,
 };
 
 /// Compiled code with the `MechanismInfo` of the file derived at the same values: its
@@ -60,6 +60,19 @@ impl Mechanism for WithInfo {
     }
     fn eval_kinematics(&self, q: &[f64], qd: &[f64], t: f64, out: KinematicOutputs<'_>) {
         self.code.eval_kinematics(q, qd, t, out)
+    }
+    fn run_time_values(&self) -> &[f64] {
+        self.code.run_time_values()
+    }
+    fn tangents(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dir: Direction<'_>,
+        out: TangentOutputs<'_>,
+    ) -> bool {
+        self.code.tangents(q, qd, t, dir, out)
     }
 }
 

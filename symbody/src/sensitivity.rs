@@ -2,7 +2,8 @@
 //! to parameters of the mechanism file, at every output time: `sensitivities.csv`.
 //!
 //! Each parameter's derivative is carried along the run by [`symbody_runtime::sensitivity`]
-//! from the mechanism built at four neighbouring values of the parameter (see there for what
+//! with the equations' exact directional derivatives, and what the loader makes of the
+//! parameter from the mechanism built at four neighbouring values of it (see there for what
 //! is exact and what is differenced). The run itself is the base mechanism's, unchanged.
 
 use std::path::Path;
@@ -10,7 +11,7 @@ use std::path::Path;
 use symbody_runtime::sensitivity::{self, HhtSensitivity, Neighbours, StateSensitivity};
 use symbody_runtime::{
     body_pose, driver_effort, free_bodies, joint_wrench, Entry, Formulation, JointKind,
-    KinematicPath, Mechanism,
+    KinematicPath, Mechanism, Origin,
 };
 
 use crate::files::{self, Overrides};
@@ -253,8 +254,10 @@ pub fn values(
 }
 
 /// The mechanism (formulation `f`) built with parameter `name` at its four neighbouring
-/// values around `value`, every other parameter as in `base`; re-derived on as many threads
-/// (each is a whole load of the file).
+/// values around `value`, every other parameter as in `base`, and at `value` itself;
+/// re-derived on as many threads (each is a whole load of the file). All five are compiled
+/// code or all five interpreted: the run-time values a direction `dp` has are laid out by
+/// the code or by the file's load, and the two are not compared.
 fn neighbours(
     entry: &Entry,
     f: Formulation,
@@ -262,30 +265,44 @@ fn neighbours(
     (name, value): (&str, f64),
 ) -> Result<Neighbours<'static>, ScenarioError> {
     let step = sensitivity::relative_step(value);
-    let load = |k: f64| -> Result<&'static (dyn Mechanism + Sync), ScenarioError> {
-        let set = files::merged(base, &[(name.to_string(), value + k * step)]);
-        let e = files::reparametrized(entry, &set).map_err(|e| {
-            ScenarioError::Options(format!(
-                "--sensitivities: `{name}` = {} (a neighbour of {value} used to differentiate): {e}",
-                value + k * step,
-            ))
-        })?;
-        crate::generic::mechanism(e, Some(f))
+    let at = |k: f64| files::merged(base, &[(name.to_string(), value + k * step)]);
+    let failed = |k: f64, e: ScenarioError| {
+        ScenarioError::Options(format!(
+            "--sensitivities: `{name}` = {} (a neighbour of {value} used to differentiate): {e}",
+            value + k * step,
+        ))
     };
-    let loaded: Vec<Result<&'static (dyn Mechanism + Sync), ScenarioError>> =
-        std::thread::scope(|s| {
-            let handles: Vec<_> = [-2.0, -1.0, 1.0, 2.0]
-                .map(|k| s.spawn(move || load(k)))
-                .into();
-            handles
-                .into_iter()
-                .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
-                .collect()
-        });
-    let mechs = loaded.into_iter().collect::<Result<Vec<_>, _>>()?;
-    let base_mech = crate::generic::mechanism(entry, Some(f))?;
-    let mechs: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[2], mechs[3]];
-    Neighbours::new(base_mech.info(), step, mechs)
+    let offsets = [-2.0, -1.0, 0.0, 1.0, 2.0];
+    let loaded: Vec<Result<&'static Entry, ScenarioError>> = std::thread::scope(|s| {
+        let handles: Vec<_> = offsets
+            .map(|k| {
+                let at = &at;
+                let failed = &failed;
+                s.spawn(move || files::reparametrized(entry, &at(k)).map_err(|e| failed(k, e)))
+            })
+            .into();
+        handles
+            .into_iter()
+            .map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)))
+            .collect()
+    });
+    let mut entries = loaded.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let interpreted = |e: &Entry| matches!(e.origin, Origin::Interpreted { .. });
+    if entries.iter().any(|e| interpreted(e)) && !entries.iter().all(|e| interpreted(e)) {
+        for (e, &k) in entries.iter_mut().zip(&offsets) {
+            if !interpreted(e) {
+                *e = files::derive(entry, &at(k))
+                    .map_err(|e| failed(k, e))?
+                    .entry;
+            }
+        }
+    }
+    let mechs = entries
+        .iter()
+        .map(|e| crate::generic::mechanism(e, Some(f)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let around: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[3], mechs[4]];
+    Neighbours::new(mechs[2], step, around)
         .map_err(|e| ScenarioError::Options(format!("--sensitivities: `{name}`: {e}")))
 }
 

@@ -20,8 +20,9 @@
     clippy::unreadable_literal
 )]
 use symbody_runtime::{
-    BodyInfo, Entry, Formulation, JointInfo, JointKind, KinematicOutputs, Mechanism,
-    MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Reduction, Substitution, Rotation,
+    BodyInfo, Direction, Entry, Formulation, JointInfo, JointKind, KinematicOutputs,
+    Mechanism, MechanismInfo, NewtonOutputs, Origin, PlatformInfo, Reduction,
+    Substitution, Rotation, TangentOutputs,
 };
 use symbody_runtime::parameters::{ParameterError, RunTimeParameters};
 /// Constraint residual Φ(q, t).
@@ -40,8 +41,8 @@ fn phi_part_0(k: &[f64; 6], q: &[f64; 6], out: &mut [f64; 1]) {
     let x38 = x35 + x36;
     let x39 = x37 + x38;
     let x40 = x39.sqrt();
-    let x329 = x40 + k[0];
-    out[0] = x329;
+    let x745 = x40 + k[0];
+    out[0] = x745;
 }
 /// Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.
 pub fn phi_q(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
@@ -198,8 +199,8 @@ fn eval_kinematics_part_0(
     let x79 = x49 * x76;
     let x80 = x79 - x77;
     let x81 = -x80;
-    let x329 = x40 + k[0];
-    phi[0] = x329;
+    let x745 = x40 + k[0];
+    phi[0] = x745;
     phi_q[0] = x50;
     phi_q[1] = x51;
     phi_q[2] = x52;
@@ -215,8 +216,8 @@ pub fn potential_into(k: &[f64], q: &[f64], out: &mut [f64]) {
 }
 #[inline(never)]
 fn potential_into_part_0(k: &[f64; 6], q: &[f64; 6], out: &mut [f64; 1]) {
-    let x333 = q[1] * k[2];
-    out[0] = x333;
+    let x749 = q[1] * k[2];
+    out[0] = x749;
 }
 /// Power of the non-conservative loads, written to `out[0]`.
 pub fn power_nc_into(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
@@ -233,6 +234,144 @@ pub fn power_nc_into(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) 
 #[inline(never)]
 fn power_nc_into_part_0(out: &mut [f64; 1]) {
     out[0] = 0.0;
+}
+/// Directional derivatives of Φ, Φq's nonzeros, Φt and γ along `(dq, dqd, dp)`.
+pub fn kinematic_tangents(
+    k: &[f64],
+    q: &[f64],
+    qd: &[f64],
+    t: f64,
+    dq: &[f64],
+    dqd: &[f64],
+    dp: &[f64],
+    phi: &mut [f64],
+    phi_q: &mut [f64],
+    phi_t: &mut [f64],
+    gamma: &mut [f64],
+) {
+    let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
+    let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
+    let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
+    let dq: &[f64; 6] = dq.try_into().expect("dq must have n_coords entries");
+    let dqd: &[f64; 6] = dqd.try_into().expect("dqd must have n_coords entries");
+    let dp: &[f64; 8] = dp.try_into().expect("dp must have 8 entries");
+    let phi: &mut [f64; 1] = phi.try_into().expect("phi must have 1 entries");
+    let phi_q: &mut [f64; 3] = phi_q.try_into().expect("phi_q must have 3 entries");
+    let phi_t: &mut [f64; 1] = phi_t.try_into().expect("phi_t must have 1 entries");
+    let gamma: &mut [f64; 1] = gamma.try_into().expect("gamma must have 1 entries");
+    let _ = k;
+    let _ = t;
+    kinematic_tangents_part_0(q, qd, dq, dqd, dp, phi, phi_q, phi_t, gamma);
+}
+#[inline(never)]
+fn kinematic_tangents_part_0(
+    q: &[f64; 6],
+    qd: &[f64; 6],
+    dq: &[f64; 6],
+    dqd: &[f64; 6],
+    dp: &[f64; 8],
+    phi: &mut [f64; 1],
+    phi_q: &mut [f64; 3],
+    phi_t: &mut [f64; 1],
+    gamma: &mut [f64; 1],
+) {
+    let x35 = q[0] * q[0];
+    let x36 = q[1] * q[1];
+    let x37 = q[2] * q[2];
+    let x38 = x35 + x36;
+    let x39 = x37 + x38;
+    let x40 = x39.sqrt();
+    let x45 = q[0] * 2.0;
+    let x46 = q[1] * 2.0;
+    let x47 = q[2] * 2.0;
+    let x48 = x40 * 2.0;
+    let x49 = 1.0 / x48;
+    let x59 = x45 * qd[0];
+    let x60 = x46 * qd[1];
+    let x61 = x47 * qd[2];
+    let x62 = x59 + x60;
+    let x63 = x61 + x62;
+    let x64 = x49 * x63;
+    let x65 = 2.0 * qd[0];
+    let x66 = 2.0 * qd[1];
+    let x67 = 2.0 * qd[2];
+    let x68 = 2.0 * x64;
+    let x69 = x49 * x49;
+    let x70 = x68 * x69;
+    let x72 = qd[0] * x65;
+    let x73 = qd[1] * x66;
+    let x74 = qd[2] * x67;
+    let x75 = x72 + x73;
+    let x76 = x74 + x75;
+    let x364 = x45 * dq[0];
+    let x365 = x46 * dq[1];
+    let x366 = x47 * dq[2];
+    let x367 = x364 + x365;
+    let x368 = x366 + x367;
+    let x369 = x49 * x368;
+    let x371 = x369 - dp[7];
+    let x372 = 2.0 * dq[0];
+    let x373 = 2.0 * dq[1];
+    let x374 = 2.0 * dq[2];
+    let x375 = 2.0 * x369;
+    let x376 = x69 * x375;
+    let x378 = x49 * x372;
+    let x379 = x45 * x376;
+    let x381 = x378 - x379;
+    let x382 = x49 * x373;
+    let x383 = x46 * x376;
+    let x385 = x382 - x383;
+    let x386 = x49 * x374;
+    let x387 = x47 * x376;
+    let x389 = x386 - x387;
+    let x390 = qd[0] * x372;
+    let x391 = x45 * dqd[0];
+    let x392 = x390 + x391;
+    let x393 = qd[1] * x373;
+    let x394 = x46 * dqd[1];
+    let x395 = x393 + x394;
+    let x396 = qd[2] * x374;
+    let x397 = x47 * dqd[2];
+    let x398 = x396 + x397;
+    let x399 = x392 + x395;
+    let x400 = x398 + x399;
+    let x401 = x63 * x376;
+    let x403 = x49 * x400;
+    let x404 = x403 - x401;
+    let x405 = 2.0 * dqd[0];
+    let x406 = 2.0 * dqd[1];
+    let x407 = 2.0 * dqd[2];
+    let x408 = 2.0 * x404;
+    let x409 = 2.0 * x49;
+    let x410 = x376 * x409;
+    let x412 = x69 * x408;
+    let x413 = x68 * x410;
+    let x415 = x412 - x413;
+    let x416 = x65 * dqd[0];
+    let x417 = qd[0] * x405;
+    let x418 = x416 + x417;
+    let x419 = x66 * dqd[1];
+    let x420 = qd[1] * x406;
+    let x421 = x419 + x420;
+    let x422 = x67 * dqd[2];
+    let x423 = qd[2] * x407;
+    let x424 = x422 + x423;
+    let x425 = x418 + x421;
+    let x426 = x424 + x425;
+    let x427 = x70 * x400;
+    let x428 = x63 * x415;
+    let x429 = x427 + x428;
+    let x431 = x76 * x376;
+    let x433 = x49 * x426;
+    let x434 = x433 - x431;
+    let x435 = x434 - x429;
+    let x436 = -x435;
+    phi[0] = x371;
+    phi_q[0] = x381;
+    phi_q[1] = x385;
+    phi_q[2] = x389;
+    phi_t[0] = 0.0;
+    gamma[0] = x436;
 }
 /// Number of generalized coordinates.
 pub const N_COORDS: usize = 6usize;
@@ -564,37 +703,37 @@ pub mod exact {
         let x198 = x8 * x164;
         let x202 = x16 * x181;
         let x204 = x17 * x182;
-        let x336 = x164 * k[1];
-        let x337 = 0.5 * x336;
-        let x338 = -x337;
-        let x339 = x173 * k[1];
-        let x340 = x175 * k[1];
-        let x341 = x339 + x340;
-        let x342 = 0.5 * x341;
-        let x343 = x183 * k[1];
-        let x344 = x185 * k[1];
-        let x346 = x343 - x344;
-        let x347 = 0.5 * x346;
-        let x348 = x190 * k[1];
-        let x349 = x192 * k[1];
-        let x351 = x348 - x349;
-        let x352 = 0.5 * x351;
-        let x353 = x198 * k[1];
-        let x354 = x202 * k[1];
-        let x355 = x204 * k[1];
-        let x356 = x353 + x354;
-        let x357 = x355 + x356;
-        let x358 = 0.5 * x357;
+        let x752 = x164 * k[1];
+        let x753 = 0.5 * x752;
+        let x754 = -x753;
+        let x755 = x173 * k[1];
+        let x756 = x175 * k[1];
+        let x757 = x755 + x756;
+        let x758 = 0.5 * x757;
+        let x759 = x183 * k[1];
+        let x760 = x185 * k[1];
+        let x762 = x759 - x760;
+        let x763 = 0.5 * x762;
+        let x764 = x190 * k[1];
+        let x765 = x192 * k[1];
+        let x767 = x764 - x765;
+        let x768 = 0.5 * x767;
+        let x769 = x198 * k[1];
+        let x770 = x202 * k[1];
+        let x771 = x204 * k[1];
+        let x772 = x769 + x770;
+        let x773 = x771 + x772;
+        let x774 = 0.5 * x773;
         out[0] = k[4];
         out[1] = k[4];
         out[2] = k[4];
         out[3] = k[5];
-        out[4] = x338;
-        out[5] = x342;
-        out[6] = x347;
-        out[7] = x338;
-        out[8] = x352;
-        out[9] = x358;
+        out[4] = x754;
+        out[5] = x758;
+        out[6] = x763;
+        out[7] = x754;
+        out[8] = x768;
+        out[9] = x774;
     }
     /// Generalized forces Q(q, q̇, t): gravity and velocity-dependent terms.
     pub fn force(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
@@ -672,38 +811,38 @@ pub mod exact {
         let x306 = x102 * x130;
         let x310 = x131 * x302;
         let x314 = x132 * x304;
-        let x359 = x246 * k[1];
-        let x360 = 0.5 * x359;
-        let x361 = x258 * k[1];
-        let x362 = x263 * k[1];
-        let x364 = x361 - x362;
-        let x365 = 0.5 * x364;
-        let x366 = x271 * k[1];
-        let x368 = x276 * k[1];
-        let x369 = x282 * k[1];
-        let x371 = x368 - x366;
-        let x372 = x371 - x369;
-        let x373 = 0.5 * x372;
-        let x374 = x292 * k[1];
-        let x375 = x294 * k[1];
-        let x377 = x374 - x375;
-        let x378 = 0.5 * x377;
-        let x379 = x360 + x378;
-        let x380 = x306 * k[1];
-        let x381 = x310 * k[1];
-        let x382 = x314 * k[1];
-        let x383 = x380 + x381;
-        let x384 = x382 + x383;
-        let x385 = 0.5 * x384;
-        let x386 = x365 + x385;
-        let x387 = -x386;
-        let x388 = -x373;
+        let x775 = x246 * k[1];
+        let x776 = 0.5 * x775;
+        let x777 = x258 * k[1];
+        let x778 = x263 * k[1];
+        let x780 = x777 - x778;
+        let x781 = 0.5 * x780;
+        let x782 = x271 * k[1];
+        let x784 = x276 * k[1];
+        let x785 = x282 * k[1];
+        let x787 = x784 - x782;
+        let x788 = x787 - x785;
+        let x789 = 0.5 * x788;
+        let x790 = x292 * k[1];
+        let x791 = x294 * k[1];
+        let x793 = x790 - x791;
+        let x794 = 0.5 * x793;
+        let x795 = x776 + x794;
+        let x796 = x306 * k[1];
+        let x797 = x310 * k[1];
+        let x798 = x314 * k[1];
+        let x799 = x796 + x797;
+        let x800 = x798 + x799;
+        let x801 = 0.5 * x800;
+        let x802 = x781 + x801;
+        let x803 = -x802;
+        let x804 = -x789;
         out[0] = 0.0;
         out[1] = k[3];
         out[2] = 0.0;
-        out[3] = x379;
-        out[4] = x387;
-        out[5] = x388;
+        out[3] = x795;
+        out[4] = x803;
+        out[5] = x804;
     }
     /// Φ, Φq, M and Q at one state in one pass: what one Newton iteration needs.
     pub fn eval_newton(
@@ -829,55 +968,55 @@ pub mod exact {
         let x306 = x102 * x130;
         let x310 = x131 * x302;
         let x314 = x132 * x304;
-        let x329 = x40 + k[0];
-        let x336 = x164 * k[1];
-        let x337 = 0.5 * x336;
-        let x338 = -x337;
-        let x339 = x173 * k[1];
-        let x340 = x175 * k[1];
-        let x341 = x339 + x340;
-        let x342 = 0.5 * x341;
-        let x343 = x183 * k[1];
-        let x344 = x185 * k[1];
-        let x346 = x343 - x344;
-        let x347 = 0.5 * x346;
-        let x348 = x190 * k[1];
-        let x349 = x192 * k[1];
-        let x351 = x348 - x349;
-        let x352 = 0.5 * x351;
-        let x353 = x198 * k[1];
-        let x354 = x202 * k[1];
-        let x355 = x204 * k[1];
-        let x356 = x353 + x354;
-        let x357 = x355 + x356;
-        let x358 = 0.5 * x357;
-        let x359 = x246 * k[1];
-        let x360 = 0.5 * x359;
-        let x361 = x258 * k[1];
-        let x362 = x263 * k[1];
-        let x364 = x361 - x362;
-        let x365 = 0.5 * x364;
-        let x366 = x271 * k[1];
-        let x368 = x276 * k[1];
-        let x369 = x282 * k[1];
-        let x371 = x368 - x366;
-        let x372 = x371 - x369;
-        let x373 = 0.5 * x372;
-        let x374 = x292 * k[1];
-        let x375 = x294 * k[1];
-        let x377 = x374 - x375;
-        let x378 = 0.5 * x377;
-        let x379 = x360 + x378;
-        let x380 = x306 * k[1];
-        let x381 = x310 * k[1];
-        let x382 = x314 * k[1];
-        let x383 = x380 + x381;
-        let x384 = x382 + x383;
-        let x385 = 0.5 * x384;
-        let x386 = x365 + x385;
-        let x387 = -x386;
-        let x388 = -x373;
-        phi[0] = x329;
+        let x745 = x40 + k[0];
+        let x752 = x164 * k[1];
+        let x753 = 0.5 * x752;
+        let x754 = -x753;
+        let x755 = x173 * k[1];
+        let x756 = x175 * k[1];
+        let x757 = x755 + x756;
+        let x758 = 0.5 * x757;
+        let x759 = x183 * k[1];
+        let x760 = x185 * k[1];
+        let x762 = x759 - x760;
+        let x763 = 0.5 * x762;
+        let x764 = x190 * k[1];
+        let x765 = x192 * k[1];
+        let x767 = x764 - x765;
+        let x768 = 0.5 * x767;
+        let x769 = x198 * k[1];
+        let x770 = x202 * k[1];
+        let x771 = x204 * k[1];
+        let x772 = x769 + x770;
+        let x773 = x771 + x772;
+        let x774 = 0.5 * x773;
+        let x775 = x246 * k[1];
+        let x776 = 0.5 * x775;
+        let x777 = x258 * k[1];
+        let x778 = x263 * k[1];
+        let x780 = x777 - x778;
+        let x781 = 0.5 * x780;
+        let x782 = x271 * k[1];
+        let x784 = x276 * k[1];
+        let x785 = x282 * k[1];
+        let x787 = x784 - x782;
+        let x788 = x787 - x785;
+        let x789 = 0.5 * x788;
+        let x790 = x292 * k[1];
+        let x791 = x294 * k[1];
+        let x793 = x790 - x791;
+        let x794 = 0.5 * x793;
+        let x795 = x776 + x794;
+        let x796 = x306 * k[1];
+        let x797 = x310 * k[1];
+        let x798 = x314 * k[1];
+        let x799 = x796 + x797;
+        let x800 = x798 + x799;
+        let x801 = 0.5 * x800;
+        let x802 = x781 + x801;
+        let x803 = -x802;
+        let x804 = -x789;
+        phi[0] = x745;
         phi_q[0] = x50;
         phi_q[1] = x51;
         phi_q[2] = x52;
@@ -885,18 +1024,425 @@ pub mod exact {
         mass[1] = k[4];
         mass[2] = k[4];
         mass[3] = k[5];
-        mass[4] = x338;
-        mass[5] = x342;
-        mass[6] = x347;
-        mass[7] = x338;
-        mass[8] = x352;
-        mass[9] = x358;
+        mass[4] = x754;
+        mass[5] = x758;
+        mass[6] = x763;
+        mass[7] = x754;
+        mass[8] = x768;
+        mass[9] = x774;
         force[0] = 0.0;
         force[1] = k[3];
         force[2] = 0.0;
-        force[3] = x379;
-        force[4] = x387;
-        force[5] = x388;
+        force[3] = x795;
+        force[4] = x803;
+        force[5] = x804;
+    }
+    /// Directional derivatives of M's nonzeros and Q along `(dq, dqd, dp)`.
+    pub fn tangents(
+        k: &[f64],
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dq: &[f64],
+        dqd: &[f64],
+        dp: &[f64],
+        mass: &mut [f64],
+        force: &mut [f64],
+    ) {
+        let k: &[f64; 6] = k.try_into().expect("k must have 6 entries");
+        let q: &[f64; 6] = q.try_into().expect("q must have n_coords entries");
+        let qd: &[f64; 6] = qd.try_into().expect("qd must have n_coords entries");
+        let dq: &[f64; 6] = dq.try_into().expect("dq must have n_coords entries");
+        let dqd: &[f64; 6] = dqd.try_into().expect("dqd must have n_coords entries");
+        let dp: &[f64; 8] = dp.try_into().expect("dp must have 8 entries");
+        let mass: &mut [f64; 10] = mass.try_into().expect("mass must have 10 entries");
+        let force: &mut [f64; 6] = force.try_into().expect("force must have 6 entries");
+        let _ = t;
+        tangents_part_0(k, q, qd, dq, dqd, dp, mass, force);
+    }
+    #[inline(never)]
+    fn tangents_part_0(
+        k: &[f64; 6],
+        q: &[f64; 6],
+        qd: &[f64; 6],
+        dq: &[f64; 6],
+        dqd: &[f64; 6],
+        dp: &[f64; 8],
+        mass: &mut [f64; 10],
+        force: &mut [f64; 6],
+    ) {
+        let x6 = q[3].sin();
+        let x7 = q[3].cos();
+        let x8 = q[4].sin();
+        let x9 = q[4].cos();
+        let x16 = x6 * x9;
+        let x17 = x7 * x9;
+        let x100 = x8 * qd[5];
+        let x102 = x9 * qd[5];
+        let x103 = x7 * qd[4];
+        let x104 = x6 * x102;
+        let x105 = x103 + x104;
+        let x106 = x6 * qd[4];
+        let x107 = x7 * x102;
+        let x109 = x107 - x106;
+        let x110 = qd[3] - x100;
+        let x130 = 2.0 * x110;
+        let x131 = 2.0 * x105;
+        let x132 = 2.0 * x109;
+        let x164 = x8 * 2.0;
+        let x170 = x7 * 2.0;
+        let x171 = x6 * 2.0;
+        let x173 = x7 * x170;
+        let x175 = x6 * x171;
+        let x181 = x16 * 2.0;
+        let x182 = x17 * 2.0;
+        let x183 = x7 * x181;
+        let x185 = x6 * x182;
+        let x190 = x16 * x170;
+        let x192 = x17 * x171;
+        let x198 = x8 * x164;
+        let x202 = x16 * x181;
+        let x204 = x17 * x182;
+        let x209 = x7 * qd[3];
+        let x210 = x6 * qd[3];
+        let x212 = x9 * qd[4];
+        let x213 = x8 * qd[4];
+        let x215 = x9 * x209;
+        let x216 = x6 * x213;
+        let x218 = x215 - x216;
+        let x219 = x9 * x210;
+        let x221 = x7 * x213;
+        let x223 = x219 + x221;
+        let x225 = qd[5] * x212;
+        let x227 = qd[5] * x213;
+        let x229 = qd[4] * x210;
+        let x231 = x102 * x209;
+        let x232 = x6 * x227;
+        let x234 = x231 - x232;
+        let x235 = x234 - x229;
+        let x236 = qd[4] * x209;
+        let x237 = x102 * x210;
+        let x239 = x7 * x227;
+        let x241 = x237 + x239;
+        let x244 = x236 + x241;
+        let x246 = 2.0 * x225;
+        let x248 = 2.0 * x235;
+        let x249 = 2.0 * x244;
+        let x255 = x131 * x210;
+        let x257 = x7 * x248;
+        let x258 = x257 - x255;
+        let x260 = x132 * x209;
+        let x261 = x6 * x249;
+        let x263 = x260 - x261;
+        let x268 = x130 * x212;
+        let x269 = x8 * x246;
+        let x271 = x268 - x269;
+        let x274 = x131 * x218;
+        let x275 = x16 * x248;
+        let x276 = x274 + x275;
+        let x278 = x132 * x223;
+        let x280 = x17 * x249;
+        let x282 = x278 + x280;
+        let x292 = x109 * x131;
+        let x294 = x105 * x132;
+        let x302 = x6 * x100;
+        let x304 = x7 * x100;
+        let x306 = x102 * x130;
+        let x310 = x131 * x302;
+        let x314 = x132 * x304;
+        let x348 = x7 * dq[3];
+        let x349 = x6 * dq[3];
+        let x351 = x9 * dq[4];
+        let x352 = x8 * dq[4];
+        let x354 = x9 * x348;
+        let x355 = x6 * x352;
+        let x357 = x354 - x355;
+        let x358 = x9 * x349;
+        let x360 = x7 * x352;
+        let x362 = x358 + x360;
+        let x437 = 0.4 * dp[0];
+        let x438 = 0.01 * x437;
+        let x439 = 0.01 * x438;
+        let x440 = 9.81 * dp[0];
+        let x441 = -x440;
+        let x442 = qd[5] * x351;
+        let x443 = x8 * dqd[5];
+        let x444 = x442 + x443;
+        let x446 = qd[5] * x352;
+        let x448 = x9 * dqd[5];
+        let x449 = x448 - x446;
+        let x450 = qd[4] * x349;
+        let x452 = x7 * dqd[4];
+        let x453 = x452 - x450;
+        let x454 = x102 * x348;
+        let x455 = x6 * x449;
+        let x456 = x454 + x455;
+        let x457 = x453 + x456;
+        let x458 = qd[4] * x348;
+        let x459 = x6 * dqd[4];
+        let x460 = x458 + x459;
+        let x461 = x102 * x349;
+        let x463 = x7 * x449;
+        let x464 = x463 - x461;
+        let x466 = x464 - x460;
+        let x467 = dqd[3] - x444;
+        let x468 = 2.0 * x467;
+        let x469 = 2.0 * x457;
+        let x470 = 2.0 * x466;
+        let x471 = 2.0 * dp[0];
+        let x472 = 0.5 * x471;
+        let x473 = 2.0 * x439;
+        let x474 = 0.5 * x473;
+        let x475 = 2.0 * x351;
+        let x476 = x164 * x439;
+        let x481 = 2.0 * x349;
+        let x483 = 2.0 * x348;
+        let x484 = x170 * x349;
+        let x486 = x7 * x481;
+        let x488 = x484 + x486;
+        let x490 = x173 * x439;
+        let x494 = x171 * x348;
+        let x495 = x6 * x483;
+        let x496 = x494 + x495;
+        let x497 = x175 * x439;
+        let x502 = 2.0 * x357;
+        let x503 = 2.0 * x362;
+        let x505 = x181 * x349;
+        let x507 = x7 * x502;
+        let x508 = x507 - x505;
+        let x509 = x183 * x439;
+        let x512 = x182 * x348;
+        let x513 = x6 * x503;
+        let x515 = x512 - x513;
+        let x516 = x185 * x439;
+        let x522 = x170 * x357;
+        let x523 = x16 * x481;
+        let x525 = x522 - x523;
+        let x526 = x190 * x439;
+        let x529 = x171 * x362;
+        let x531 = x17 * x483;
+        let x532 = x531 - x529;
+        let x533 = x192 * x439;
+        let x539 = x164 * x351;
+        let x540 = x8 * x475;
+        let x541 = x539 + x540;
+        let x542 = x198 * x439;
+        let x545 = x181 * x357;
+        let x546 = x16 * x502;
+        let x547 = x545 + x546;
+        let x548 = x202 * x439;
+        let x551 = x182 * x362;
+        let x553 = x17 * x503;
+        let x555 = x551 + x553;
+        let x557 = x204 * x439;
+        let x564 = qd[3] * x349;
+        let x566 = x7 * dqd[3];
+        let x567 = x566 - x564;
+        let x568 = qd[3] * x348;
+        let x569 = x6 * dqd[3];
+        let x570 = x568 + x569;
+        let x571 = qd[4] * x352;
+        let x573 = x9 * dqd[4];
+        let x574 = x573 - x571;
+        let x575 = qd[4] * x351;
+        let x576 = x8 * dqd[4];
+        let x577 = x575 + x576;
+        let x578 = x209 * x352;
+        let x580 = x9 * x567;
+        let x581 = x580 - x578;
+        let x582 = x213 * x348;
+        let x583 = x6 * x577;
+        let x584 = x582 + x583;
+        let x586 = x581 - x584;
+        let x587 = x210 * x352;
+        let x589 = x9 * x570;
+        let x590 = x589 - x587;
+        let x591 = x213 * x349;
+        let x593 = x7 * x577;
+        let x594 = x593 - x591;
+        let x595 = x590 + x594;
+        let x596 = x212 * dqd[5];
+        let x597 = qd[5] * x574;
+        let x598 = x596 + x597;
+        let x599 = x213 * dqd[5];
+        let x600 = qd[5] * x577;
+        let x601 = x599 + x600;
+        let x602 = x210 * dqd[4];
+        let x603 = qd[4] * x570;
+        let x604 = x602 + x603;
+        let x606 = x209 * x449;
+        let x607 = x102 * x567;
+        let x608 = x606 + x607;
+        let x609 = x227 * x348;
+        let x610 = x6 * x601;
+        let x611 = x609 + x610;
+        let x613 = x608 - x611;
+        let x614 = x613 - x604;
+        let x615 = x209 * dqd[4];
+        let x616 = qd[4] * x567;
+        let x617 = x615 + x616;
+        let x618 = x210 * x449;
+        let x619 = x102 * x570;
+        let x620 = x618 + x619;
+        let x621 = x227 * x349;
+        let x623 = x7 * x601;
+        let x624 = x623 - x621;
+        let x625 = x620 + x624;
+        let x626 = x617 + x625;
+        let x627 = 2.0 * x598;
+        let x628 = 2.0 * x614;
+        let x629 = 2.0 * x626;
+        let x630 = x246 * x439;
+        let x634 = x210 * x469;
+        let x635 = x131 * x570;
+        let x636 = x634 + x635;
+        let x638 = x248 * x349;
+        let x640 = x7 * x628;
+        let x641 = x640 - x638;
+        let x642 = x641 - x636;
+        let x643 = x258 * x439;
+        let x646 = x209 * x470;
+        let x647 = x132 * x567;
+        let x648 = x646 + x647;
+        let x649 = x249 * x348;
+        let x650 = x6 * x629;
+        let x651 = x649 + x650;
+        let x653 = x648 - x651;
+        let x654 = x263 * x439;
+        let x660 = x212 * x468;
+        let x661 = x130 * x574;
+        let x662 = x660 + x661;
+        let x663 = x246 * x351;
+        let x664 = x8 * x627;
+        let x665 = x663 + x664;
+        let x667 = x662 - x665;
+        let x668 = x271 * x439;
+        let x672 = x218 * x469;
+        let x673 = x131 * x586;
+        let x674 = x672 + x673;
+        let x675 = x248 * x357;
+        let x676 = x16 * x628;
+        let x677 = x675 + x676;
+        let x678 = x674 + x677;
+        let x679 = x276 * x439;
+        let x682 = x223 * x470;
+        let x683 = x132 * x595;
+        let x684 = x682 + x683;
+        let x685 = x249 * x362;
+        let x687 = x17 * x629;
+        let x688 = x687 - x685;
+        let x689 = x684 + x688;
+        let x690 = x282 * x439;
+        let x697 = x131 * x466;
+        let x698 = x109 * x469;
+        let x699 = x697 + x698;
+        let x700 = x292 * x439;
+        let x703 = x132 * x457;
+        let x704 = x105 * x470;
+        let x705 = x703 + x704;
+        let x706 = x294 * x439;
+        let x713 = x100 * x348;
+        let x714 = x6 * x444;
+        let x715 = x713 + x714;
+        let x716 = x100 * x349;
+        let x718 = x7 * x444;
+        let x719 = x718 - x716;
+        let x720 = x130 * x449;
+        let x721 = x102 * x468;
+        let x722 = x720 + x721;
+        let x723 = x306 * x439;
+        let x726 = x302 * x469;
+        let x727 = x131 * x715;
+        let x728 = x726 + x727;
+        let x729 = x310 * x439;
+        let x732 = x304 * x470;
+        let x733 = x132 * x719;
+        let x734 = x732 + x733;
+        let x735 = x314 * x439;
+        let x805 = x475 * k[1];
+        let x806 = x476 + x805;
+        let x807 = 0.5 * x806;
+        let x808 = -x807;
+        let x809 = x488 * k[1];
+        let x811 = x490 - x809;
+        let x812 = x496 * k[1];
+        let x813 = x497 + x812;
+        let x814 = x811 + x813;
+        let x815 = 0.5 * x814;
+        let x816 = x508 * k[1];
+        let x817 = x509 + x816;
+        let x818 = x515 * k[1];
+        let x819 = x516 + x818;
+        let x821 = x817 - x819;
+        let x822 = 0.5 * x821;
+        let x823 = x525 * k[1];
+        let x824 = x526 + x823;
+        let x825 = x532 * k[1];
+        let x826 = x533 + x825;
+        let x828 = x824 - x826;
+        let x829 = 0.5 * x828;
+        let x830 = x541 * k[1];
+        let x831 = x542 + x830;
+        let x832 = x547 * k[1];
+        let x833 = x548 + x832;
+        let x834 = x555 * k[1];
+        let x836 = x557 - x834;
+        let x837 = x831 + x833;
+        let x838 = x836 + x837;
+        let x839 = 0.5 * x838;
+        let x840 = x627 * k[1];
+        let x841 = x630 + x840;
+        let x842 = 0.5 * x841;
+        let x843 = x642 * k[1];
+        let x844 = x643 + x843;
+        let x845 = x653 * k[1];
+        let x846 = x654 + x845;
+        let x848 = x844 - x846;
+        let x849 = 0.5 * x848;
+        let x850 = x667 * k[1];
+        let x851 = x668 + x850;
+        let x853 = x678 * k[1];
+        let x854 = x679 + x853;
+        let x855 = x689 * k[1];
+        let x856 = x690 + x855;
+        let x858 = x854 - x851;
+        let x859 = x858 - x856;
+        let x860 = 0.5 * x859;
+        let x861 = x699 * k[1];
+        let x862 = x700 + x861;
+        let x863 = x705 * k[1];
+        let x864 = x706 + x863;
+        let x866 = x862 - x864;
+        let x867 = 0.5 * x866;
+        let x868 = x842 + x867;
+        let x869 = x722 * k[1];
+        let x870 = x723 + x869;
+        let x871 = x728 * k[1];
+        let x872 = x729 + x871;
+        let x873 = x734 * k[1];
+        let x874 = x735 + x873;
+        let x875 = x870 + x872;
+        let x876 = x874 + x875;
+        let x877 = 0.5 * x876;
+        let x878 = x849 + x877;
+        let x879 = -x878;
+        let x880 = -x860;
+        mass[0] = x472;
+        mass[1] = x472;
+        mass[2] = x472;
+        mass[3] = x474;
+        mass[4] = x808;
+        mass[5] = x815;
+        mass[6] = x822;
+        mass[7] = x808;
+        mass[8] = x829;
+        mass[9] = x839;
+        force[0] = 0.0;
+        force[1] = x441;
+        force[2] = 0.0;
+        force[3] = x868;
+        force[4] = x879;
+        force[5] = x880;
     }
 }
 /// The system after substituting rows `a·qᵢ + b·qⱼ + g(t) = 0` away (docs/design.md,
@@ -1019,9 +1565,9 @@ pub mod reduced {
         let x35 = q[0] * q[0];
         let x36 = q[1] * q[1];
         let x38 = x35 + x36;
-        let x328 = x38.sqrt();
-        let x350 = x328 + k[0];
-        out[0] = x350;
+        let x744 = x38.sqrt();
+        let x766 = x744 + k[0];
+        out[0] = x766;
     }
     /// Nonzeros of Φq in the order of `PHI_Q_ROWS`/`PHI_Q_COLS`.
     pub fn phi_q(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
@@ -1039,13 +1585,13 @@ pub mod reduced {
         let x38 = x35 + x36;
         let x45 = q[0] * 2.0;
         let x46 = q[1] * 2.0;
-        let x328 = x38.sqrt();
-        let x330 = 2.0 * x328;
-        let x331 = 1.0 / x330;
-        let x332 = x45 * x331;
-        let x333 = x46 * x331;
-        out[0] = x332;
-        out[1] = x333;
+        let x744 = x38.sqrt();
+        let x746 = 2.0 * x744;
+        let x747 = 1.0 / x746;
+        let x748 = x45 * x747;
+        let x749 = x46 * x747;
+        out[0] = x748;
+        out[1] = x749;
     }
     /// Partial time derivative Φt(q, t).
     pub fn phi_t(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
@@ -1086,18 +1632,18 @@ pub mod reduced {
         let x72 = qd[0] * x65;
         let x73 = qd[1] * x66;
         let x75 = x72 + x73;
-        let x328 = x38.sqrt();
-        let x330 = 2.0 * x328;
-        let x331 = 1.0 / x330;
-        let x334 = x62 * x331;
-        let x335 = 2.0 * x334;
-        let x336 = x331 * x331;
-        let x337 = x335 * x336;
-        let x339 = x75 * x331;
-        let x340 = x62 * x337;
-        let x342 = x339 - x340;
-        let x343 = -x342;
-        out[0] = x343;
+        let x744 = x38.sqrt();
+        let x746 = 2.0 * x744;
+        let x747 = 1.0 / x746;
+        let x750 = x62 * x747;
+        let x751 = 2.0 * x750;
+        let x752 = x747 * x747;
+        let x753 = x751 * x752;
+        let x755 = x75 * x747;
+        let x756 = x62 * x753;
+        let x758 = x755 - x756;
+        let x759 = -x758;
+        out[0] = x759;
     }
     /// Φ, Φq, Φt and γ at one state in one pass, sharing every subexpression.
     pub fn eval_kinematics(
@@ -1143,25 +1689,25 @@ pub mod reduced {
         let x72 = qd[0] * x65;
         let x73 = qd[1] * x66;
         let x75 = x72 + x73;
-        let x328 = x38.sqrt();
-        let x330 = 2.0 * x328;
-        let x331 = 1.0 / x330;
-        let x332 = x45 * x331;
-        let x333 = x46 * x331;
-        let x334 = x62 * x331;
-        let x335 = 2.0 * x334;
-        let x336 = x331 * x331;
-        let x337 = x335 * x336;
-        let x339 = x75 * x331;
-        let x340 = x62 * x337;
-        let x342 = x339 - x340;
-        let x343 = -x342;
-        let x350 = x328 + k[0];
-        phi[0] = x350;
-        phi_q[0] = x332;
-        phi_q[1] = x333;
+        let x744 = x38.sqrt();
+        let x746 = 2.0 * x744;
+        let x747 = 1.0 / x746;
+        let x748 = x45 * x747;
+        let x749 = x46 * x747;
+        let x750 = x62 * x747;
+        let x751 = 2.0 * x750;
+        let x752 = x747 * x747;
+        let x753 = x751 * x752;
+        let x755 = x75 * x747;
+        let x756 = x62 * x753;
+        let x758 = x755 - x756;
+        let x759 = -x758;
+        let x766 = x744 + k[0];
+        phi[0] = x766;
+        phi_q[0] = x748;
+        phi_q[1] = x749;
         phi_t[0] = 0.0;
-        gamma[0] = x343;
+        gamma[0] = x759;
     }
     /// Potential energy of gravity and springs, written to `out[0]`.
     pub fn potential_into(k: &[f64], q: &[f64], out: &mut [f64]) {
@@ -1172,8 +1718,8 @@ pub mod reduced {
     }
     #[inline(never)]
     fn potential_into_part_0(k: &[f64; 5], q: &[f64; 3], out: &mut [f64; 1]) {
-        let x347 = q[1] * k[1];
-        out[0] = x347;
+        let x763 = q[1] * k[1];
+        out[0] = x763;
     }
     /// Power of the non-conservative loads, written to `out[0]`.
     pub fn power_nc_into(k: &[f64], q: &[f64], qd: &[f64], t: f64, out: &mut [f64]) {
@@ -1331,15 +1877,15 @@ pub mod reduced {
             let x38 = x35 + x36;
             let x45 = q[0] * 2.0;
             let x46 = q[1] * 2.0;
-            let x328 = x38.sqrt();
-            let x330 = 2.0 * x328;
-            let x331 = 1.0 / x330;
-            let x332 = x45 * x331;
-            let x333 = x46 * x331;
-            let x350 = x328 + k[0];
-            phi[0] = x350;
-            phi_q[0] = x332;
-            phi_q[1] = x333;
+            let x744 = x38.sqrt();
+            let x746 = 2.0 * x744;
+            let x747 = 1.0 / x746;
+            let x748 = x45 * x747;
+            let x749 = x46 * x747;
+            let x766 = x744 + k[0];
+            phi[0] = x766;
+            phi_q[0] = x748;
+            phi_q[1] = x749;
             mass[0] = k[3];
             mass[1] = k[3];
             mass[2] = k[4];
@@ -1480,6 +2026,33 @@ pub mod reduced {
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Exact;
 impl Mechanism for Exact {
+    fn run_time_values(&self) -> &[f64] {
+        &P0
+    }
+    fn tangents(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dir: Direction<'_>,
+        out: TangentOutputs<'_>,
+    ) -> bool {
+        kinematic_tangents(
+            &K,
+            q,
+            qd,
+            t,
+            dir.dq,
+            dir.dqd,
+            dir.dp,
+            out.phi,
+            out.phi_q,
+            out.phi_t,
+            out.gamma,
+        );
+        exact::tangents(&K, q, qd, t, dir.dq, dir.dqd, dir.dp, out.mass, out.force);
+        true
+    }
     fn info(&self) -> &'static MechanismInfo {
         &exact::INFO
     }
@@ -1535,6 +2108,43 @@ impl Exact {
 #[derive(Debug, Clone)]
 pub struct ExactAt(pub Parameters);
 impl Mechanism for ExactAt {
+    fn run_time_values(&self) -> &[f64] {
+        self.0.values()
+    }
+    fn tangents(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        t: f64,
+        dir: Direction<'_>,
+        out: TangentOutputs<'_>,
+    ) -> bool {
+        kinematic_tangents(
+            &self.0.k,
+            q,
+            qd,
+            t,
+            dir.dq,
+            dir.dqd,
+            dir.dp,
+            out.phi,
+            out.phi_q,
+            out.phi_t,
+            out.gamma,
+        );
+        exact::tangents(
+            &self.0.k,
+            q,
+            qd,
+            t,
+            dir.dq,
+            dir.dqd,
+            dir.dp,
+            out.mass,
+            out.force,
+        );
+        true
+    }
     fn info(&self) -> &'static MechanismInfo {
         &exact::INFO
     }
