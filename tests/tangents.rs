@@ -157,7 +157,8 @@ fn interpreted_tangents_are_the_compiled_ones() {
             continue;
         };
         let text = std::fs::read_to_string(file).unwrap();
-        let loaded = symbody_codegen::interpret::load(file, &text, false).unwrap();
+        let loaded =
+            symbody_codegen::interpret::load_with_tangents(file, &text, &[], false).unwrap();
         for &(f, mech) in entry.formulations {
             let interpreted = loaded.entry.mechanism(f).unwrap();
             assert_eq!(interpreted.run_time_values(), mech.run_time_values());

@@ -88,8 +88,29 @@ pub fn load_with(
     parameters: &[(String, f64)],
     stale: bool,
 ) -> Result<Loaded, Errors> {
+    load_as(source, text, parameters, (stale, false))
+}
+
+/// [`load_with`], the mechanisms also evaluating the equations' directional derivatives
+/// (`Mechanism::tangents`, for sensitivities): their tapes take about as long to build as
+/// all the others, so only a load that needs them builds them.
+pub fn load_with_tangents(
+    source: &str,
+    text: &str,
+    parameters: &[(String, f64)],
+    stale: bool,
+) -> Result<Loaded, Errors> {
+    load_as(source, text, parameters, (stale, true))
+}
+
+fn load_as(
+    source: &str,
+    text: &str,
+    parameters: &[(String, f64)],
+    (stale, tangents): (bool, bool),
+) -> Result<Loaded, Errors> {
     let model = model::load_with(source, text, parameters)?;
-    let (model, system, assembly) = front_end(source, text, model, parameters, true)?;
+    let (model, system, assembly) = front_end(source, text, model, parameters, tangents)?;
     let entry = entry(&model, system, &assembly, (source, stale, parameters));
     Ok(Loaded {
         entry,
@@ -228,33 +249,42 @@ fn kinematic_tapes(sys: &System) -> KinematicTapes {
     }
 }
 
-/// `d`'s tapes; `tangents`: its tangents' roots over the coordinates of
-/// [`tangent_inputs`], and their count.
-fn dynamic_tapes(sys: &System, d: &Dynamics, tangents: (&[Id], usize)) -> DynamicTapes {
+/// `d`'s tapes; `tangents` (where the system has them): their roots over the coordinates
+/// of [`tangent_inputs`], and their count.
+fn dynamic_tapes(sys: &System, d: &Dynamics, tangents: Option<(&[Id], usize)>) -> DynamicTapes {
     let n = sys.n_coords;
     let a = &sys.arena;
     let (pq, mass) = (values(&sys.phi_q), values(&d.mass));
-    let (t, n_joined) = tangents;
-    let m = sys.n_constraints;
-    let (tk, td) = t.split_at(3 * m + sys.phi_q.len());
-    let (phi, rest) = tk.split_at(m);
-    let (phi_q, rest) = rest.split_at(sys.phi_q.len());
-    let (phi_t, gamma) = rest.split_at(m);
-    let (d_mass, d_force) = td.split_at(d.mass.len());
+    let tangents = tangents.map(|(t, n_joined)| {
+        let m = sys.n_constraints;
+        let (tk, td) = t.split_at(3 * m + sys.phi_q.len());
+        let (phi, rest) = tk.split_at(m);
+        let (phi_q, rest) = rest.split_at(sys.phi_q.len());
+        let (phi_t, gamma) = rest.split_at(m);
+        let (d_mass, d_force) = td.split_at(d.mass.len());
+        lower(a, n_joined, &[phi, phi_q, phi_t, gamma, d_mass, d_force])
+    });
     DynamicTapes {
         force_jacobian: lower(a, n, &[&values(&d.force_q), &values(&d.force_qd)]),
         mass: lower(a, n, &[&mass]),
         force: lower(a, n, &[&d.force]),
         eval_newton: lower(a, n, &[&sys.phi, &pq, &mass, &d.force]),
-        tangents: lower(a, n_joined, &[phi, phi_q, phi_t, gamma, d_mass, d_force]),
+        tangents,
     }
 }
 
-/// The tangents of `sys` (after [`crate::tangent::add`]) with the direction renamed to
-/// coordinates after the point's, as a tape reads them (`q` = `[q, dq, dp]`, `qd` =
-/// `[qd, dqd]`): per formulation, Φ', Φq', Φt', γ', then its M' and Q'; and the count of
-/// those coordinates.
-fn tangent_inputs(sys: &mut System) -> (Vec<Vec<Id>>, usize) {
+/// The tangents of `sys` (where [`crate::tangent::add`] made them) with the direction
+/// renamed to coordinates after the point's, as a tape reads them (`q` = `[q, dq, dp]`,
+/// `qd` = `[qd, dqd]`): per formulation, Φ', Φq', Φt', γ', then its M' and Q'; and the
+/// count of those coordinates.
+fn tangent_inputs(sys: &mut System) -> Option<(Vec<Vec<Id>>, usize)> {
+    let t = sys.tangent.as_ref()?;
+    let kinematic = [t.phi.as_slice(), &t.phi_q, &t.phi_t, &t.gamma].concat();
+    let per_formulation: Vec<Vec<Id>> = sys
+        .dynamics
+        .iter()
+        .map(|d| [kinematic.as_slice(), &d.tangent.mass, &d.tangent.force].concat())
+        .collect();
     let n = sys.n_coords as u32;
     let n_p = crate::tangent::n_values(sys);
     let a = &mut sys.arena;
@@ -267,21 +297,11 @@ fn tangent_inputs(sys: &mut System) -> (Vec<Vec<Id>>, usize) {
         Var::Dp(i) => Some(dp[i as usize]),
         _ => None,
     };
-    let t = sys
-        .tangent
-        .as_ref()
-        .expect("the tapes' system has tangents");
-    let kinematic = [t.phi.as_slice(), &t.phi_q, &t.phi_t, &t.gamma].concat();
-    let per_formulation = sys
-        .dynamics
-        .iter()
-        .map(|d| [kinematic.as_slice(), &d.tangent.mass, &d.tangent.force].concat())
-        .collect::<Vec<_>>();
     let renamed = per_formulation
         .iter()
         .map(|roots| sys.arena.substitute(roots, &map))
         .collect();
-    (renamed, 2 * n as usize + n_p)
+    Some((renamed, 2 * n as usize + n_p))
 }
 
 /// What every formulation's [`MechanismInfo`] shares.
@@ -416,7 +436,7 @@ fn entry(
     asm: &Assembly,
     (source, stale, parameters): (&str, bool, &[(String, f64)]),
 ) -> &'static Entry {
-    let (tangents, n_joined) = tangent_inputs(&mut sys);
+    let tangents = tangent_inputs(&mut sys);
     let sys = &sys;
     let values: Arc<[f64]> = model.run_time_values().into();
     let shared = Shared::new(model, sys, asm);
@@ -432,7 +452,8 @@ fn entry(
                 .expect("the equations hold every formulation the model lists");
             let d = &sys.dynamics[k];
             let info = shared.info(model, sys, f, Some(d));
-            let tapes = dynamic_tapes(sys, d, (&tangents[k], n_joined));
+            let t = tangents.as_ref().map(|(t, n)| (t[k].as_slice(), *n));
+            let tapes = dynamic_tapes(sys, d, t);
             let m = Interpreted::new(info, kinematic.clone(), Arc::new(tapes), values.clone());
             let m: &'static (dyn Mechanism + Sync) = keep(Box::new(m));
             (formulation(f), m)

@@ -30,8 +30,9 @@ pub struct DynamicTapes {
     /// Outputs Φ, Φq, M, Q.
     pub eval_newton: Tape,
     /// Outputs the directional derivatives of Φ, Φq, Φt, γ, M, Q; its inputs are
-    /// `q` = `[q, dq, dp]` and `qd` = `[qd, dqd]` ([`Mechanism::tangents`]).
-    pub tangents: Tape,
+    /// `q` = `[q, dq, dp]` and `qd` = `[qd, dqd]` ([`Mechanism::tangents`]). Built only
+    /// for a load that asked for it.
+    pub tangents: Option<Tape>,
 }
 
 /// One formulation of an interpreted mechanism.
@@ -67,10 +68,9 @@ impl Interpreted {
             sizes(&d.force_jacobian),
             [info.force_q_rows.len(), info.force_qd_rows.len()]
         );
-        assert_eq!(
-            sizes(&d.tangents),
-            [m, info.phi_q_nnz(), m, m, info.mass_nnz(), n]
-        );
+        if let Some(t) = &d.tangents {
+            assert_eq!(sizes(t), [m, info.phi_q_nnz(), m, m, info.mass_nnz(), n]);
+        }
         Interpreted {
             info,
             kinematic,
@@ -139,8 +139,11 @@ impl Mechanism for Interpreted {
         dir: Direction<'_>,
         out: TangentOutputs<'_>,
     ) -> bool {
+        let Some(tape) = &self.dynamic.tangents else {
+            return false;
+        };
         assert_eq!(dir.dp.len(), self.values.len(), "dp has the wrong length");
-        self.dynamic.tangents.eval_joined(
+        tape.eval_joined(
             &[q, dir.dq, dir.dp],
             &[qd, dir.dqd],
             t,

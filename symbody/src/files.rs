@@ -36,8 +36,8 @@ pub struct Loaded {
 /// Parameter values set from outside a mechanism file: `(name, value)`.
 pub type Overrides = [(String, f64)];
 
-/// Loaded entries by (file as shown, text, stale, overrides as text).
-type Cache = Mutex<HashMap<(String, String, bool, String), Loaded>>;
+/// Loaded entries by (file as shown, text, (stale, with tangents), overrides as text).
+type Cache = Mutex<HashMap<(String, String, (bool, bool), String), Loaded>>;
 
 fn cache() -> &'static Cache {
     static CACHE: OnceLock<Cache> = OnceLock::new();
@@ -90,7 +90,12 @@ pub fn load(path: &Path) -> Result<Loaded, ScenarioError> {
 /// [`load`] with some of the file's parameters set to other values.
 pub fn load_with(path: &Path, parameters: &Overrides) -> Result<Loaded, ScenarioError> {
     let text = read(path)?;
-    load_text(&path.display().to_string(), &text, false, parameters)
+    load_text(
+        &path.display().to_string(),
+        &text,
+        (false, false),
+        parameters,
+    )
 }
 
 /// The mechanism `name` (a registered name or a file path) with `parameters` set: the
@@ -305,7 +310,31 @@ pub fn compiled_at(
 pub fn derive(entry: &Entry, parameters: &Overrides) -> Result<Loaded, ScenarioError> {
     let file = source_of(entry)?;
     let text = read(Path::new(&file))?;
-    load_text(&file, &text, false, parameters)
+    load_text(&file, &text, (false, false), parameters)
+}
+
+/// [`derive`], the mechanisms also giving the equations' directional derivatives
+/// (`Mechanism::tangents`), as sensitivities need of an interpreted base.
+pub fn derive_with_tangents(
+    entry: &Entry,
+    parameters: &Overrides,
+) -> Result<Loaded, ScenarioError> {
+    let file = source_of(entry)?;
+    let text = read(Path::new(&file))?;
+    load_text(&file, &text, (false, true), parameters)
+}
+
+/// The file `entry` comes from, loaded with `parameters` set as far as its parameters'
+/// values (nothing derived): what listing or checking parameter names needs.
+pub fn model_parameters(
+    entry: &Entry,
+    parameters: &Overrides,
+) -> Result<Vec<symbody_codegen::model::Parameter>, ScenarioError> {
+    let file = source_of(entry)?;
+    let text = read(Path::new(&file))?;
+    symbody_codegen::model::load_with(&file, &text, parameters)
+        .map(|m| m.parameters)
+        .map_err(|e| ScenarioError::Options(e.to_string()))
 }
 
 /// `base` with the values of `over` set on top (replacing those of the same name).
@@ -354,34 +383,37 @@ pub fn parameter_names(entry: &Entry) -> Result<Vec<String>, ScenarioError> {
 fn load_text(
     source: &str,
     text: &str,
-    stale: bool,
+    (stale, tangents): (bool, bool),
     parameters: &Overrides,
 ) -> Result<Loaded, ScenarioError> {
     let key = (
         source.to_string(),
         text.to_string(),
-        stale,
+        (stale, tangents),
         format!("{parameters:?}"),
     );
     if let Some(&l) = cache().lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
         return Ok(l);
     }
-    let loaded =
-        symbody_codegen::interpret::load_with(source, text, parameters, stale).map_err(|e| {
-            let shown = e.to_string();
-            // `main` and the bindings add their own `error:` before the first message.
-            let shown = shown.strip_prefix("error: ").unwrap_or(&shown).to_string();
-            ScenarioError::Options(match parameters.is_empty() {
-                true => shown,
-                false => {
-                    let set: Vec<String> = parameters
-                        .iter()
-                        .map(|(k, v)| format!("{k} = {v}"))
-                        .collect();
-                    format!("with {} set: {shown}", set.join(", "))
-                }
-            })
-        })?;
+    let load = match tangents {
+        true => symbody_codegen::interpret::load_with_tangents,
+        false => symbody_codegen::interpret::load_with,
+    };
+    let loaded = load(source, text, parameters, stale).map_err(|e| {
+        let shown = e.to_string();
+        // `main` and the bindings add their own `error:` before the first message.
+        let shown = shown.strip_prefix("error: ").unwrap_or(&shown).to_string();
+        ScenarioError::Options(match parameters.is_empty() {
+            true => shown,
+            false => {
+                let set: Vec<String> = parameters
+                    .iter()
+                    .map(|(k, v)| format!("{k} = {v}"))
+                    .collect();
+                format!("with {} set: {shown}", set.join(", "))
+            }
+        })
+    })?;
     let report = Box::leak(loaded.report.to_string().into_boxed_str());
     let l = Loaded {
         entry: loaded.entry,
@@ -421,7 +453,7 @@ pub fn fresh(entry: &'static Entry) -> Result<&'static Entry, ScenarioError> {
         .iter()
         .map(|(k, v)| (k.to_string(), *v))
         .collect();
-    load_text(&shown, &text, true, &set)
+    load_text(&shown, &text, (true, false), &set)
         .map(|l| l.entry)
         .map_err(|e| {
             ScenarioError::Options(format!(
@@ -476,7 +508,7 @@ pub fn note(entry: &Entry) -> Option<String> {
                 .map(|(k, v)| format!("{k} = {v}"))
                 .collect();
             let default = read(Path::new(file))
-                .and_then(|text| load_text(file, &text, false, &[]))
+                .and_then(|text| load_text(file, &text, (false, false), &[]))
                 .ok();
             let mut changed = default
                 .and_then(|d| {

@@ -222,42 +222,39 @@ pub fn values(
     base: &Overrides,
     names: &[String],
 ) -> Result<Vec<f64>, ScenarioError> {
-    // Every run asks, most for none: deriving the file to list its parameters costs as much
-    // as the run itself (the 13-body platform: ≈ 25 ms).
     if names.is_empty() {
         return Ok(Vec::new());
     }
-    let loaded = files::derive(entry, base)?;
+    // The file's parameters as loaded, nothing derived (a derivation of the 13-body
+    // platform costs as much as its run).
+    let parameters = files::model_parameters(entry, base)?;
     names
         .iter()
-        .map(
-            |name| match loaded.parameters.iter().find(|p| &p.name == name) {
-                Some(p) => Ok(p.value),
-                None => {
-                    let known: Vec<&str> =
-                        loaded.parameters.iter().map(|p| p.name.as_str()).collect();
-                    let hint = symbody_codegen::diag::closest(name, known.iter().copied())
-                        .map_or(String::new(), |c| format!(" (did you mean `{c}`?)"));
-                    Err(ScenarioError::Options(format!(
-                        "--sensitivities: `{}` has no parameter `{name}`{hint}; its parameters: {}",
-                        entry.name,
-                        if known.is_empty() {
-                            "none".to_string()
-                        } else {
-                            known.join(", ")
-                        }
-                    )))
-                }
-            },
-        )
+        .map(|name| match parameters.iter().find(|p| &p.name == name) {
+            Some(p) => Ok(p.value),
+            None => {
+                let known: Vec<&str> = parameters.iter().map(|p| p.name.as_str()).collect();
+                let hint = symbody_codegen::diag::closest(name, known.iter().copied())
+                    .map_or(String::new(), |c| format!(" (did you mean `{c}`?)"));
+                Err(ScenarioError::Options(format!(
+                    "--sensitivities: `{}` has no parameter `{name}`{hint}; its parameters: {}",
+                    entry.name,
+                    if known.is_empty() {
+                        "none".to_string()
+                    } else {
+                        known.join(", ")
+                    }
+                )))
+            }
+        })
         .collect()
 }
 
 /// The mechanism (formulation `f`) built with parameter `name` at its four neighbouring
-/// values around `value`, every other parameter as in `base`, and at `value` itself;
-/// re-derived on as many threads (each is a whole load of the file). All five are compiled
-/// code or all five interpreted: the run-time values a direction `dp` has are laid out by
-/// the code or by the file's load, and the two are not compared.
+/// values around `value`, every other parameter as in `base` (`entry` is the run's, built
+/// with `base`); re-derived on as many threads (each is a whole load of the file). The base
+/// and the four are all compiled code or all interpreted: the run-time values a direction
+/// `dp` has are laid out by the code or by the file's load, and the two are not compared.
 fn neighbours(
     entry: &Entry,
     f: Formulation,
@@ -272,12 +269,11 @@ fn neighbours(
             value + k * step,
         ))
     };
-    let offsets = [-2.0, -1.0, 0.0, 1.0, 2.0];
+    let offsets = [-2.0, -1.0, 1.0, 2.0];
     let loaded: Vec<Result<&'static Entry, ScenarioError>> = std::thread::scope(|s| {
         let handles: Vec<_> = offsets
             .map(|k| {
-                let at = &at;
-                let failed = &failed;
+                let (at, failed) = (&at, &failed);
                 s.spawn(move || files::reparametrized(entry, &at(k)).map_err(|e| failed(k, e)))
             })
             .into();
@@ -288,22 +284,33 @@ fn neighbours(
     });
     let mut entries = loaded.into_iter().collect::<Result<Vec<_>, _>>()?;
     let interpreted = |e: &Entry| matches!(e.origin, Origin::Interpreted { .. });
-    if entries.iter().any(|e| interpreted(e)) && !entries.iter().all(|e| interpreted(e)) {
-        for (e, &k) in entries.iter_mut().zip(&offsets) {
-            if !interpreted(e) {
-                *e = files::derive(entry, &at(k))
-                    .map_err(|e| failed(k, e))?
-                    .entry;
+    // An interpreted run's loads evaluate no tangents: the base is loaded again with them.
+    let base_entry = match interpreted(entry) || entries.iter().any(|e| interpreted(e)) {
+        false => entry,
+        true => {
+            for (e, &k) in entries.iter_mut().zip(&offsets) {
+                if !interpreted(e) {
+                    *e = files::derive(entry, &at(k))
+                        .map_err(|e| failed(k, e))?
+                        .entry;
+                }
             }
+            files::derive_with_tangents(entry, &at(0.0))
+                .map_err(|e| failed(0.0, e))?
+                .entry
         }
-    }
+    };
     let mechs = entries
         .iter()
         .map(|e| crate::generic::mechanism(e, Some(f)))
         .collect::<Result<Vec<_>, _>>()?;
-    let around: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[3], mechs[4]];
-    Neighbours::new(mechs[2], step, around)
-        .map_err(|e| ScenarioError::Options(format!("--sensitivities: `{name}`: {e}")))
+    let around: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[2], mechs[3]];
+    Neighbours::new(
+        crate::generic::mechanism(base_entry, Some(f))?,
+        step,
+        around,
+    )
+    .map_err(|e| ScenarioError::Options(format!("--sensitivities: `{name}`: {e}")))
 }
 
 /// Every parameter's [`neighbours`].
