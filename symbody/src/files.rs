@@ -308,8 +308,7 @@ pub fn compiled_at(
 
 /// The file `entry` comes from, loaded with `parameters` set.
 pub fn derive(entry: &Entry, parameters: &Overrides) -> Result<Loaded, ScenarioError> {
-    let file = source_of(entry)?;
-    let text = read(Path::new(&file))?;
+    let (file, text) = file_text(entry)?;
     load_text(&file, &text, (false, false), parameters)
 }
 
@@ -319,9 +318,15 @@ pub fn derive_with_tangents(
     entry: &Entry,
     parameters: &Overrides,
 ) -> Result<Loaded, ScenarioError> {
+    let (file, text) = file_text(entry)?;
+    load_text(&file, &text, (false, true), parameters)
+}
+
+/// The path and text of the file `entry` comes from.
+fn file_text(entry: &Entry) -> Result<(String, String), ScenarioError> {
     let file = source_of(entry)?;
     let text = read(Path::new(&file))?;
-    load_text(&file, &text, (false, true), parameters)
+    Ok((file, text))
 }
 
 /// The file `entry` comes from, loaded with `parameters` set as far as its parameters'
@@ -330,11 +335,14 @@ pub fn model_parameters(
     entry: &Entry,
     parameters: &Overrides,
 ) -> Result<Vec<symbody_codegen::model::Parameter>, ScenarioError> {
-    let file = source_of(entry)?;
-    let text = read(Path::new(&file))?;
+    let (file, text) = file_text(entry)?;
     symbody_codegen::model::load_with(&file, &text, parameters)
         .map(|m| m.parameters)
-        .map_err(|e| ScenarioError::Options(e.to_string()))
+        .map_err(|e| {
+            // `main` and the bindings add their own `error:` before the first message.
+            let shown = e.to_string();
+            ScenarioError::Options(shown.strip_prefix("error: ").unwrap_or(&shown).to_string())
+        })
 }
 
 /// `base` with the values of `over` set on top (replacing those of the same name).
@@ -373,10 +381,9 @@ pub fn parameters(registry: &Registry, name: &str) -> Result<Loaded, ScenarioErr
 
 /// The names of the parameters of the file `entry` comes from.
 pub fn parameter_names(entry: &Entry) -> Result<Vec<String>, ScenarioError> {
-    Ok(derive(entry, &[])?
-        .parameters
-        .iter()
-        .map(|p| p.name.clone())
+    Ok(model_parameters(entry, &[])?
+        .into_iter()
+        .map(|p| p.name)
         .collect())
 }
 
