@@ -90,12 +90,22 @@ pub fn joint_wrench(
             reason: "its rows or its body's coordinates lie outside the mechanism",
         });
     }
-    // g = −(Φ^rows_{q_i})ᵀ λ^rows on the body's coordinates.
+    // g = −(Φ^rows_{q_i})ᵀ λ^rows on the body's coordinates. In a row-major pattern (every
+    // generated one) the joint's rows are one run of nonzeros, found by bisection: a
+    // reaction then costs its own entries, not a scan of the whole Jacobian.
+    let all = info.phi_q_rows;
+    let run = match all.is_sorted() {
+        true => {
+            let at = |row: usize| all.partition_point(|&r| (r as usize) < row);
+            at(rows.start)..at(rows.end)
+        }
+        false => 0..all.len(),
+    };
     let mut g = [0.0; 7];
-    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
-        let (r, c) = (r as usize, c as usize);
+    for k in run {
+        let (r, c) = (all[k] as usize, info.phi_q_cols[k] as usize);
         if rows.contains(&r) && cols.contains(&c) {
-            g[c - cols.start] -= v * lambda[r];
+            g[c - cols.start] -= phi_q[k] * lambda[r];
         }
     }
     let force = Vector3::new(g[0], g[1], g[2]);
