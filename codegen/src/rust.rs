@@ -185,10 +185,12 @@ fn function(
     outputs: Vec<Output<'_>>,
 ) -> TokenStream {
     let (n_p, n_k) = parameter_lengths(sys);
+    // `p` reaches the per-step functions only through `k` (hoisting), so without hoisted
+    // values a direction `dp` has nothing to move either.
     let inputs: Vec<Input> = inputs
         .iter()
         .copied()
-        .filter(|&i| i != Input::K || n_k > 0)
+        .filter(|&i| !matches!(i, Input::K | Input::Dp) || n_k > 0)
         .collect();
     emit::function(
         &sys.arena,
@@ -658,14 +660,15 @@ fn mechanism_impl(
 }
 
 /// The `Mechanism` methods of a full model's type whose run-time values are `p` (an
-/// expression of `self`) and hoisted values the argument `k`: its values, and `tangents`.
-fn tangent_methods(modname: &Ident, k: &TokenStream, p: TokenStream) -> TokenStream {
-    // `kinematic_tangents` reads `k` wherever the system has hoisted values.
+/// expression of `self`) and hoisted values the argument `k` (the tokens [`k_arg`] gives):
+/// its values, and `tangents`, which take `dp` where the system has hoisted values.
+fn tangent_methods(sys: &System, modname: &Ident, k: &TokenStream, p: TokenStream) -> TokenStream {
+    let dp = k_arg(sys, &quote!(dir.dp));
     quote! {
         fn run_time_values(&self) -> &[f64] { #p }
         fn tangents(&self, q: &[f64], qd: &[f64], t: f64, dir: Direction<'_>, out: TangentOutputs<'_>) -> bool {
-            kinematic_tangents(#k q, qd, t, dir.dq, dir.dqd, dir.dp, out.phi, out.phi_q, out.phi_t, out.gamma);
-            #modname::tangents(#k q, qd, t, dir.dq, dir.dqd, dir.dp, out.mass, out.force);
+            kinematic_tangents(#k q, qd, t, dir.dq, dir.dqd, #dp out.phi, out.phi_q, out.phi_t, out.gamma);
+            #modname::tangents(#k q, qd, t, dir.dq, dir.dqd, #dp out.mass, out.force);
             true
         }
     }
@@ -685,7 +688,7 @@ fn formulation_types(
         _ => quote!(&[]),
     };
     let tangents = |k: &TokenStream, p: TokenStream| match sys.tangent {
-        Some(_) => tangent_methods(modname, &k_arg(sys, k), p),
+        Some(_) => tangent_methods(sys, modname, &k_arg(sys, k), p),
         None => quote!(),
     };
     let unit_impl = mechanism_impl(
