@@ -188,7 +188,6 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
     ) -> Result<(), Error> {
         crate::sensitivity::kinematic(
             &mut self.kin,
-            &self.mech,
             neighbours,
             self.t,
             (&self.q, &self.qd, &self.qdd, &self.lambda),

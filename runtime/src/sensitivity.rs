@@ -99,6 +99,12 @@ impl<'a> Neighbours<'a> {
         self.step
     }
 
+    /// The mechanism at the parameter's value: the run's equations, with the run-time values
+    /// laid out as `dp`. Every evaluation of the analyses here is its.
+    pub fn base(&self) -> &'a dyn Mechanism {
+        self.base
+    }
+
     /// The derivative of the base mechanism's run-time values along the parameter.
     pub fn dp(&self) -> &[f64] {
         &self.dp
@@ -257,16 +263,15 @@ impl StateSensitivity {
 /// takes it, so free directions the drivers leave get none), the least-energy velocity with
 /// its multipliers `nu`, and the accelerations and multipliers. `kin` must hold the
 /// factorization of `[M Φqᵀ; Φq 0]` at this state, as [`Kinematics::velocity_and_acceleration`]
-/// leaves it; `mech` is the base mechanism of `neighbours`.
-#[allow(clippy::too_many_arguments)]
+/// leaves it (its mechanism has the equations of `neighbours`' base).
 pub fn kinematic<K: KktSolver>(
     kin: &mut Kinematics<K>,
-    mech: &dyn Mechanism,
     neighbours: &Neighbours<'_>,
     t: f64,
     (q, qd, qdd, lambda): (&[f64], &[f64], &[f64], &[f64]),
     out: &mut StateSensitivity,
 ) -> Result<(), Error> {
+    let mech = neighbours.base;
     let info = mech.info();
     let (n, m) = (info.n_coords, info.n_constraints);
     check_len("q", n, q.len())?;
@@ -409,17 +414,17 @@ const STAGNATION_LIMIT: f64 = 1e-4;
 impl<K: KktSolver> HhtSensitivity<K> {
     /// At the consistent start `(q, q̇, q̈, λ)` at `t0` that `HhtBuilder::build` made from the
     /// file's pose and velocities (`info.q0`, `info.qd0`, velocities projected): their
-    /// derivatives, from the neighbours' assembled poses and given velocities. `mech` is the
-    /// base mechanism of `nb`.
+    /// derivatives, from the neighbours' assembled poses and given velocities. Every
+    /// evaluation is of `nb`'s base, which has the run's equations.
     #[allow(clippy::too_many_arguments)]
-    pub fn start<M: Mechanism>(
-        mech: &M,
+    pub fn start(
         nb: &Neighbours<'_>,
         settings: crate::kinematics::KinematicSettings,
         (alpha, project): (f64, bool),
         t0: f64,
         (q, v, a, lambda): (&[f64], &[f64], &[f64], &[f64]),
     ) -> Result<Self, Error> {
+        let mech = nb.base;
         let info = mech.info();
         let (n, m) = (info.n_coords, info.n_constraints);
         check_len("q", n, q.len())?;
@@ -441,7 +446,7 @@ impl<K: KktSolver> HhtSensitivity<K> {
             jet: Jet::new(info),
             w: Work::new(n, m),
         };
-        me.kin.factor_at(mech, q, t0)?;
+        me.kin.factor_at(&mech, q, t0)?;
         let mut y = vec![0.0; m];
 
         // The assembled pose moves with p; the start's position solve keeps it on Φ = 0
@@ -468,27 +473,23 @@ impl<K: KktSolver> HhtSensitivity<K> {
         })?;
         me.w.v_tilde.copy_from_slice(mech.info().qd0);
         me.w.dv_tilde.copy_from_slice(&dv_given);
-        me.project_derivative(mech, nb, t0)?;
+        me.project_derivative(nb, t0)?;
         let (mut a, mut l) = (vec![0.0; n], vec![0.0; m]);
         let (mut da, mut dl) = (vec![0.0; n], vec![0.0; m]);
-        me.accelerations(mech, nb, t0, [&mut a, &mut l, &mut da, &mut dl])?;
+        me.accelerations(nb, t0, [&mut a, &mut l, &mut da, &mut dl])?;
         (me.a, me.lambda, me.state.dqdd, me.state.dlambda) = (a, l, da, dl);
         // `r` at the start is evaluated with the projected velocity.
         me.w.v_tilde.copy_from_slice(&me.v);
         me.w.dv_tilde.copy_from_slice(&me.state.dqd);
-        me.store_dr(mech, nb, t0)?;
+        me.store_dr(nb, t0)?;
         Ok(me)
     }
 
     /// `state.dqd` for `v = ṽ + Δ`, Δ the projection of least kinetic energy of
     /// ṽ = `w.v_tilde` (whose derivative is `w.dv_tilde`) onto the velocity constraints at
     /// `self.q`; `kin` must be factored there. Sets `self.v` to the projected base velocity.
-    fn project_derivative<M: Mechanism>(
-        &mut self,
-        mech: &M,
-        nb: &Neighbours<'_>,
-        t: f64,
-    ) -> Result<(), Error> {
+    fn project_derivative(&mut self, nb: &Neighbours<'_>, t: f64) -> Result<(), Error> {
+        let mech = nb.base;
         let info = mech.info();
         let n = info.n_coords;
         let (w, jet) = (&mut self.w, &mut self.jet);
@@ -525,13 +526,13 @@ impl<K: KktSolver> HhtSensitivity<K> {
     /// The saddle-point accelerations and multipliers at `(self.q, self.v)` into `a`, `l`,
     /// and their derivatives (those of the position and velocity being `state.dq`,
     /// `state.dqd`) into `da`, `dl`; `kin` factored at `self.q`.
-    fn accelerations<M: Mechanism>(
+    fn accelerations(
         &mut self,
-        mech: &M,
         nb: &Neighbours<'_>,
         t: f64,
         [a, l, da, dl]: [&mut [f64]; 4],
     ) -> Result<(), Error> {
+        let mech = nb.base;
         let info = mech.info();
         let n = info.n_coords;
         let (w, jet) = (&mut self.w, &mut self.jet);
@@ -552,12 +553,8 @@ impl<K: KktSolver> HhtSensitivity<K> {
 
     /// `dr` = derivative of `Φqᵀλ − Q(q, ṽ)` at the current base state, ṽ = `w.v_tilde`
     /// (the velocity `r` is evaluated with) moving by `w.dv_tilde`; keeps ṽ for the next step.
-    fn store_dr<M: Mechanism>(
-        &mut self,
-        mech: &M,
-        nb: &Neighbours<'_>,
-        t: f64,
-    ) -> Result<(), Error> {
+    fn store_dr(&mut self, nb: &Neighbours<'_>, t: f64) -> Result<(), Error> {
+        let mech = nb.base;
         let info = mech.info();
         let (w, jet) = (&mut self.w, &mut self.jet);
         jet.values(mech, &self.q, t);
@@ -573,13 +570,13 @@ impl<K: KktSolver> HhtSensitivity<K> {
 
     /// After the integrator accepted a step to `t1` with the state `(q1, q̇1, q̈1, λ1)`: the
     /// derivative of that state. Allocates nothing.
-    pub fn step<M: Mechanism>(
+    pub fn step(
         &mut self,
-        mech: &M,
         nb: &Neighbours<'_>,
         t1: f64,
         (q1, v1, a1, l1): (&[f64], &[f64], &[f64], &[f64]),
     ) -> Result<(), Error> {
+        let mech = nb.base;
         let info = mech.info();
         let (n, m) = (info.n_coords, info.n_constraints);
         check_len("q", n, q1.len())?;
@@ -588,7 +585,7 @@ impl<K: KktSolver> HhtSensitivity<K> {
         let (alpha, beta, gamma) = (self.alpha, self.beta, self.gamma);
         let c = 1.0 / (1.0 + alpha);
         let inv_bh2 = 1.0 / (beta * h * h);
-        self.kin.factor_at(mech, q1, t1)?;
+        self.kin.factor_at(&mech, q1, t1)?;
         // The step's residual as a function of (q̈1, λ1) and the previous state:
         // [Φqᵀλ1 − Q + c M q̈1 − αc r0; Φ/(βh²)] at the Newmark position and velocity.
         let (q0, v0, a0) = (&self.q, &self.v, &self.a);
@@ -704,14 +701,14 @@ impl<K: KktSolver> HhtSensitivity<K> {
         self.a.copy_from_slice(a1);
         self.lambda.copy_from_slice(l1);
         if self.project {
-            self.project_derivative(mech, nb, t1)?;
+            self.project_derivative(nb, t1)?;
         } else {
             self.state.dqd.copy_from_slice(&self.w.dv_tilde);
         }
         // The integrator's own (projected) velocity is the state; the projection above is
         // the ideal one of the same constraints, equal to it up to the step's tolerance.
         self.v.copy_from_slice(v1);
-        self.store_dr(mech, nb, t1)
+        self.store_dr(nb, t1)
     }
 
     /// At the current state (after [`HhtSensitivity::start`] or a step): the saddle-point
@@ -719,16 +716,16 @@ impl<K: KktSolver> HhtSensitivity<K> {
     /// (`EnergyMeter`), into `qdd`, `lambda`, and their derivatives into `dqdd`, `dlambda`;
     /// `state.dq`, `state.dqd` are the position's and velocity's. The step's own state is
     /// left as it was.
-    pub fn recovered<M: Mechanism>(
+    pub fn recovered(
         &mut self,
-        mech: &M,
         nb: &Neighbours<'_>,
         (qdd, lambda): (&mut [f64], &mut [f64]),
         (dqdd, dlambda): (&mut [f64], &mut [f64]),
     ) -> Result<(), Error> {
-        self.kin.factor_at(mech, &self.q, self.t)?;
+        let mech = nb.base;
+        self.kin.factor_at(&mech, &self.q, self.t)?;
         let t = self.t;
-        self.accelerations(mech, nb, t, [qdd, lambda, dqdd, dlambda])
+        self.accelerations(nb, t, [qdd, lambda, dqdd, dlambda])
     }
 }
 

@@ -408,7 +408,6 @@ pub fn integrated(
         .iter()
         .map(|nb| {
             HhtSensitivity::start(
-                &mech,
                 nb,
                 settings,
                 (opts.alpha, project),
@@ -433,18 +432,13 @@ pub fn integrated(
         let t_out = (k as f64 * opts.output_step).min(t_end);
         while it.step_toward(t_out)?.is_some() {
             for (s, nb) in sens.iter_mut().zip(&all) {
-                s.step(&mech, nb, it.t(), (it.q(), it.qd(), it.qdd(), it.lambda()))?;
+                s.step(nb, it.t(), (it.q(), it.qd(), it.qdd(), it.lambda()))?;
             }
         }
         let (t, q) = (it.t(), it.q());
         let mut row = vec![0.0; names.len() * all.len()];
         for (j, (s, nb)) in sens.iter_mut().zip(&all).enumerate() {
-            s.recovered(
-                &mech,
-                nb,
-                (&mut qdd, &mut lambda),
-                (&mut dqdd, &mut dlambda),
-            )?;
+            s.recovered(nb, (&mut qdd, &mut lambda), (&mut dqdd, &mut dlambda))?;
             work.fill(
                 &outputs,
                 nb,
