@@ -416,6 +416,46 @@ pub fn values_at(
     Ok((p.into_iter().chain(at.data.iter().copied()).collect(), at))
 }
 
+/// The run-time values of `base` (the file `text` loaded with some values set and its slots
+/// marked, [`mark`]) as the file loaded with `overrides` gives them, in `base`'s layout: its
+/// named parameters, then the numbers at its slots. Slots are found by a nudge of 1e-7, so
+/// two loads at nearby values may list different numbers whose bits only roundoff moved;
+/// every number `base` holds constant must stay within 1e-14 of the largest here, or the
+/// layout misses a real dependence (`Refused::Structure`).
+pub fn values_like(
+    base: &Model,
+    source: &str,
+    text: &str,
+    overrides: &[(String, f64)],
+) -> Result<Vec<f64>, Refused> {
+    let at = model::load_with(source, text, overrides).map_err(Refused::Load)?;
+    let ((a, shape_a), (b, shape_b)) = (numbers(base), numbers(&at));
+    if a.len() != b.len() || shape_a != shape_b {
+        return Err(Refused::Structure(
+            "a driver's or load's expression in t, whose terms change".to_string(),
+        ));
+    }
+    let scale = a.iter().fold(0.0f64, |s, v| s.max(v.abs()));
+    let held = |i: usize| base.data_slots.binary_search(&(i as u32)).is_err();
+    if let Some(i) = (0..a.len()).find(|&i| held(i) && !((a[i] - b[i]).abs() <= SAME * scale)) {
+        return Err(Refused::Structure(owner(base, i)));
+    }
+    let value = |name: &str| {
+        at.parameters
+            .iter()
+            .find(|q| q.name == name)
+            .map(|q| q.value)
+    };
+    let named: Option<Vec<f64>> = base
+        .run_time_parameters()
+        .iter()
+        .map(|q| value(&q.name))
+        .collect();
+    let named = named.ok_or_else(|| Refused::Structure("the named parameters".to_string()))?;
+    let data = data(&at, &Slots(base.data_slots.clone()));
+    Ok(named.into_iter().chain(data).collect())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

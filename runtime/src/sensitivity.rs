@@ -46,10 +46,25 @@ pub struct Neighbours<'a> {
 impl<'a> Neighbours<'a> {
     /// Checks that the four share `base`'s structure (sizes, redundant rows, the layout of
     /// their run-time values): a parameter change that alters it has no derivative at `p`.
+    /// `dp` is the derivative of their run-time values, which are laid out as the base's (the
+    /// same compiled code).
     pub fn new(
         base: &'a dyn Mechanism,
         step: f64,
         mechs: [&'a dyn Mechanism; 4],
+    ) -> Result<Self, Error> {
+        let values = mechs.map(|m| m.run_time_values());
+        Self::with_values(base, step, mechs, values)
+    }
+
+    /// [`Neighbours::new`] with the base's run-time values at the four neighbouring values
+    /// given in the base's layout (`values`): for mechanisms each loaded with a layout of its
+    /// own (interpreted files, whose slots each load finds again).
+    pub fn with_values(
+        base: &'a dyn Mechanism,
+        step: f64,
+        mechs: [&'a dyn Mechanism; 4],
+        values: [&[f64]; 4],
     ) -> Result<Self, Error> {
         if !(step.is_finite() && step > 0.0) {
             return Err(Error::InvalidSetting {
@@ -59,7 +74,7 @@ impl<'a> Neighbours<'a> {
             });
         }
         let (info, n_p) = (base.info(), base.run_time_values().len());
-        for m in &mechs {
+        for (m, v) in mechs.iter().zip(&values) {
             // Patterns may differ: an entry that cancels exactly at the file's value (a
             // difference of equal numbers, folded away by an interpreted load) is
             // structurally absent there and present beside it, where it is small. Every
@@ -68,7 +83,7 @@ impl<'a> Neighbours<'a> {
             let same = i.n_coords == info.n_coords
                 && i.n_constraints == info.n_constraints
                 && i.redundant_rows == info.redundant_rows
-                && m.run_time_values().len() == n_p;
+                && v.len() == n_p;
             if !same {
                 return Err(Error::InvalidPattern {
                     reason: format!(
@@ -87,8 +102,10 @@ impl<'a> Neighbours<'a> {
             dp: Vec::new(),
         };
         let (mut dp, mut tmp) = (vec![0.0; n_p], vec![0.0; n_p]);
-        nb.derivative(&mut dp, &mut tmp, |m, _, v| {
-            v.copy_from_slice(m.run_time_values());
+        let mut k = 0;
+        nb.derivative(&mut dp, &mut tmp, |_, _, v| {
+            v.copy_from_slice(values[k]);
+            k += 1;
             Ok(())
         })?;
         nb.dp = dp;

@@ -16,6 +16,7 @@ use symbody_runtime::{
 
 use crate::files::{self, Overrides};
 use crate::scenario::{output_count, ScenarioError};
+use symbody_codegen::{model, slots};
 
 /// The derivatives of a run's outputs, one row per output time.
 #[derive(Debug, Clone, PartialEq)]
@@ -284,33 +285,56 @@ fn neighbours(
     });
     let mut entries = loaded.into_iter().collect::<Result<Vec<_>, _>>()?;
     let interpreted = |e: &Entry| matches!(e.origin, Origin::Interpreted { .. });
-    // An interpreted run's loads evaluate no tangents: the base is loaded again with them.
-    let base_entry = match interpreted(entry) || entries.iter().any(|e| interpreted(e)) {
-        false => entry,
-        true => {
-            for (e, &k) in entries.iter_mut().zip(&offsets) {
-                if !interpreted(e) {
-                    *e = files::derive(entry, &at(k))
-                        .map_err(|e| failed(k, e))?
-                        .entry;
-                }
-            }
-            files::derive_with_tangents(entry, &at(0.0))
-                .map_err(|e| failed(0.0, e))?
-                .entry
+    let mechanism = |e: &Entry| crate::generic::mechanism(e, Some(f));
+    let named = |e: String| ScenarioError::Options(format!("--sensitivities: `{name}`: {e}"));
+    if !interpreted(entry) && entries.iter().all(|e| !interpreted(e)) {
+        // One compiled code: its run-time values have one layout at every value.
+        let mechs = entries
+            .iter()
+            .map(|&e| mechanism(e))
+            .collect::<Result<Vec<_>, _>>()?;
+        let around: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[2], mechs[3]];
+        return Neighbours::new(mechanism(entry)?, step, around).map_err(|e| named(e.to_string()));
+    }
+    // Interpreted: the base loaded again with its tangents, the neighbours' run-time values
+    // read in its layout (each load finds its slots again, and roundoff may list others).
+    for (e, &k) in entries.iter_mut().zip(&offsets) {
+        if !interpreted(e) {
+            *e = files::derive(entry, &at(k))
+                .map_err(|e| failed(k, e))?
+                .entry;
         }
+    }
+    let base_entry = files::derive_with_tangents(entry, &at(0.0))
+        .map_err(|e| failed(0.0, e))?
+        .entry;
+    let file = files::source_of(entry)?;
+    let text = files::read(std::path::Path::new(&file))?;
+    let refused = |e: slots::Refused| {
+        named(match e {
+            slots::Refused::Load(e) => e.to_string(),
+            slots::Refused::Structure(what) => format!(
+                "a number the file holds constant at the value ({what}) moves beside it: it has \
+                 no derivative there"
+            ),
+            slots::Refused::OtherSlots => "the file's numbers moved between loads".to_string(),
+        })
     };
+    let mut base_model = model::load_with(&file, &text, &at(0.0))
+        .map_err(|e| failed(0.0, ScenarioError::Options(e.to_string())))?;
+    slots::mark(&file, &text, &mut base_model);
+    let values = offsets
+        .iter()
+        .map(|&k| slots::values_like(&base_model, &file, &text, &at(k)).map_err(refused))
+        .collect::<Result<Vec<_>, _>>()?;
     let mechs = entries
         .iter()
-        .map(|e| crate::generic::mechanism(e, Some(f)))
+        .map(|&e| mechanism(e))
         .collect::<Result<Vec<_>, _>>()?;
     let around: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[2], mechs[3]];
-    Neighbours::new(
-        crate::generic::mechanism(base_entry, Some(f))?,
-        step,
-        around,
-    )
-    .map_err(|e| ScenarioError::Options(format!("--sensitivities: `{name}`: {e}")))
+    let values = [&*values[0], &*values[1], &*values[2], &*values[3]];
+    Neighbours::with_values(mechanism(base_entry)?, step, around, values)
+        .map_err(|e| named(e.to_string()))
 }
 
 /// Every parameter's [`neighbours`].
