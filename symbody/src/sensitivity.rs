@@ -254,8 +254,8 @@ pub fn values(
 /// The mechanism (formulation `f`) built with parameter `name` at its four neighbouring
 /// values around `value`, every other parameter as in `base` (`entry` is the run's, built
 /// with `base`); re-derived on as many threads (each is a whole load of the file). The base
-/// and the four are all compiled code or all interpreted: the run-time values a direction
-/// `dp` has are laid out by the code or by the file's load, and the two are not compared.
+/// and the four are all compiled code or all interpreted: a direction `dp` is laid out by the
+/// code, or by the base's load of the file.
 fn neighbours(
     entry: &Entry,
     f: Formulation,
@@ -287,54 +287,62 @@ fn neighbours(
     let interpreted = |e: &Entry| matches!(e.origin, Origin::Interpreted { .. });
     let mechanism = |e: &Entry| crate::generic::mechanism(e, Some(f));
     let named = |e: String| ScenarioError::Options(format!("--sensitivities: `{name}`: {e}"));
-    if !interpreted(entry) && entries.iter().all(|e| !interpreted(e)) {
-        // One compiled code: its run-time values have one layout at every value.
-        let mechs = entries
-            .iter()
-            .map(|&e| mechanism(e))
-            .collect::<Result<Vec<_>, _>>()?;
-        let around: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[2], mechs[3]];
-        return Neighbours::new(mechanism(entry)?, step, around).map_err(|e| named(e.to_string()));
-    }
-    // Interpreted: the base loaded again with its tangents, the neighbours' run-time values
-    // read in its layout (each load finds its slots again, and roundoff may list others).
-    for (e, &k) in entries.iter_mut().zip(&offsets) {
-        if !interpreted(e) {
-            *e = files::derive(entry, &at(k))
-                .map_err(|e| failed(k, e))?
+    // One compiled code lays its run-time values out alike at every value; interpreted, the
+    // base is loaded again with its tangents and the neighbours' values read in its layout.
+    let (base_entry, values) = match !interpreted(entry) && !entries.iter().any(|e| interpreted(e))
+    {
+        true => (entry, None),
+        false => {
+            for (e, &k) in entries.iter_mut().zip(&offsets) {
+                if !interpreted(e) {
+                    *e = files::derive(entry, &at(k))
+                        .map_err(|e| failed(k, e))?
+                        .entry;
+                }
+            }
+            let base_entry = files::derive_with_tangents(entry, &at(0.0))
+                .map_err(|e| failed(0.0, e))?
                 .entry;
+            let ats: Vec<_> = offsets.iter().map(|&k| at(k)).collect();
+            let values = values_in_base_layout(entry, &at(0.0), &ats).map_err(&named)?;
+            (base_entry, Some(values))
         }
-    }
-    let base_entry = files::derive_with_tangents(entry, &at(0.0))
-        .map_err(|e| failed(0.0, e))?
-        .entry;
-    let file = files::source_of(entry)?;
-    let text = files::read(std::path::Path::new(&file))?;
-    let refused = |e: slots::Refused| {
-        named(match e {
-            slots::Refused::Load(e) => e.to_string(),
-            slots::Refused::Structure(what) => format!(
-                "a number the file holds constant at the value ({what}) moves beside it: it has \
-                 no derivative there"
-            ),
-            slots::Refused::OtherSlots => "the file's numbers moved between loads".to_string(),
-        })
     };
-    let mut base_model = model::load_with(&file, &text, &at(0.0))
-        .map_err(|e| failed(0.0, ScenarioError::Options(e.to_string())))?;
-    slots::mark(&file, &text, &mut base_model);
-    let values = offsets
-        .iter()
-        .map(|&k| slots::values_like(&base_model, &file, &text, &at(k)).map_err(refused))
-        .collect::<Result<Vec<_>, _>>()?;
     let mechs = entries
         .iter()
         .map(|&e| mechanism(e))
         .collect::<Result<Vec<_>, _>>()?;
     let around: [&'static dyn Mechanism; 4] = [mechs[0], mechs[1], mechs[2], mechs[3]];
-    let values = [&*values[0], &*values[1], &*values[2], &*values[3]];
-    Neighbours::with_values(mechanism(base_entry)?, step, around, values)
-        .map_err(|e| named(e.to_string()))
+    let base_mech = mechanism(base_entry)?;
+    match &values {
+        None => Neighbours::new(base_mech, step, around),
+        Some(v) => Neighbours::with_values(base_mech, step, around, [&v[0], &v[1], &v[2], &v[3]]),
+    }
+    .map_err(|e| named(e.to_string()))
+}
+
+/// The run-time values of `entry`'s file loaded with `base` set, as the file loaded with each
+/// of `ats` set gives them, in the layout of the first (`slots::values_like`).
+fn values_in_base_layout(
+    entry: &Entry,
+    base: &Overrides,
+    ats: &[Vec<(String, f64)>],
+) -> Result<Vec<Vec<f64>>, String> {
+    let file = files::source_of(entry).map_err(|e| e.to_string())?;
+    let text = files::read(std::path::Path::new(&file)).map_err(|e| e.to_string())?;
+    let mut base_model = model::load_with(&file, &text, base).map_err(|e| e.to_string())?;
+    slots::mark(&file, &text, &mut base_model);
+    let refused = |e: slots::Refused| match e {
+        slots::Refused::Load(e) => e.to_string(),
+        slots::Refused::Structure(what) => format!(
+            "a number the file holds constant at the value ({what}) moves beside it: it has no \
+             derivative there"
+        ),
+        slots::Refused::OtherSlots => "the file's numbers moved between loads".to_string(),
+    };
+    ats.iter()
+        .map(|at| slots::values_like(&base_model, &file, &text, at).map_err(refused))
+        .collect()
 }
 
 /// Every parameter's [`neighbours`].
