@@ -374,7 +374,7 @@ pub fn values_at(
     p0: &[f64],
 ) -> Result<(Vec<f64>, Model), Refused> {
     let file = model::load(source, text).map_err(Refused::Load)?;
-    let ((a, shape_a), named) = (numbers(&file), file.run_time_parameters().len());
+    let ((a, _), named) = (numbers(&file), file.run_time_parameters().len());
     // The code's slots hold the file's numbers at the positions this generator numbers them.
     let same_slots = p0.len() == named + expected.len()
         && expected.iter().zip(&p0[named..]).all(|(&i, v)| {
@@ -385,35 +385,45 @@ pub fn values_at(
         return Err(Refused::OtherSlots);
     }
     let mut at = model::load_with(source, text, overrides).map_err(Refused::Load)?;
-    let (b, shape_b) = numbers(&at);
+    let p = in_layout(&file, &at, expected)?;
+    at.data = p[p.len() - expected.len()..].to_vec();
+    at.data_slots = expected.to_vec();
+    Ok((p, at))
+}
+
+/// `at`'s run-time values in the layout of `like` (the same file loaded at other values):
+/// `like`'s named parameters, then the numbers at `slots`. Every expression in t must keep
+/// its terms, and every other number stay within 1e-14 of the model's largest; the named
+/// parameters are `like`'s (at these values one may no longer qualify, a zero inertia: the
+/// masses' check after this one sees what that changes).
+fn in_layout(like: &Model, at: &Model, slots: &[u32]) -> Result<Vec<f64>, Refused> {
+    let ((a, shape_a), (b, shape_b)) = (numbers(like), numbers(at));
     if a.len() != b.len() || shape_a != shape_b {
         return Err(Refused::Structure(
             "a driver's or load's expression in t, whose terms change".to_string(),
         ));
     }
     let scale = a.iter().fold(0.0f64, |s, v| s.max(v.abs()));
-    let held = |i: usize| expected.binary_search(&(i as u32)).is_err();
+    let held = |i: usize| slots.binary_search(&(i as u32)).is_err();
     if let Some(i) = (0..a.len()).find(|&i| held(i) && !((a[i] - b[i]).abs() <= SAME * scale)) {
-        return Err(Refused::Structure(owner(&file, i)));
+        return Err(Refused::Structure(owner(like, i)));
     }
-    let slots = Slots(expected.to_vec());
-    at.data = data(&at, &slots);
-    at.data_slots = slots.0;
-    // The code's named parameters are the file's (at these values one may no longer qualify,
-    // a zero inertia: the masses' check after this one sees what that changes).
     let value = |name: &str| {
         at.parameters
             .iter()
             .find(|q| q.name == name)
             .map(|q| q.value)
     };
-    let named: Option<Vec<f64>> = file
+    let named: Option<Vec<f64>> = like
         .run_time_parameters()
         .iter()
         .map(|q| value(&q.name))
         .collect();
-    let p = named.ok_or_else(|| Refused::Structure("the named parameters".to_string()))?;
-    Ok((p.into_iter().chain(at.data.iter().copied()).collect(), at))
+    let named = named.ok_or_else(|| Refused::Structure("the named parameters".to_string()))?;
+    Ok(named
+        .into_iter()
+        .chain(data(at, &Slots(slots.to_vec())))
+        .collect())
 }
 
 /// The run-time values of `base` (the file `text` loaded with some values set and its slots
@@ -429,31 +439,7 @@ pub fn values_like(
     overrides: &[(String, f64)],
 ) -> Result<Vec<f64>, Refused> {
     let at = model::load_with(source, text, overrides).map_err(Refused::Load)?;
-    let ((a, shape_a), (b, shape_b)) = (numbers(base), numbers(&at));
-    if a.len() != b.len() || shape_a != shape_b {
-        return Err(Refused::Structure(
-            "a driver's or load's expression in t, whose terms change".to_string(),
-        ));
-    }
-    let scale = a.iter().fold(0.0f64, |s, v| s.max(v.abs()));
-    let held = |i: usize| base.data_slots.binary_search(&(i as u32)).is_err();
-    if let Some(i) = (0..a.len()).find(|&i| held(i) && !((a[i] - b[i]).abs() <= SAME * scale)) {
-        return Err(Refused::Structure(owner(base, i)));
-    }
-    let value = |name: &str| {
-        at.parameters
-            .iter()
-            .find(|q| q.name == name)
-            .map(|q| q.value)
-    };
-    let named: Option<Vec<f64>> = base
-        .run_time_parameters()
-        .iter()
-        .map(|q| value(&q.name))
-        .collect();
-    let named = named.ok_or_else(|| Refused::Structure("the named parameters".to_string()))?;
-    let data = data(&at, &Slots(base.data_slots.clone()));
-    Ok(named.into_iter().chain(data).collect())
+    in_layout(base, &at, &base.data_slots)
 }
 
 #[cfg(test)]
