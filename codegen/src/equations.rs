@@ -4,7 +4,7 @@
 //! non-conservative loads. Joint rows come from [`crate::primitives`], applied loads from
 //! [`crate::loads`].
 
-use crate::expr::{Arena, Id, Var};
+use crate::expr::{Arena, Id, Node, Var};
 use crate::model::{ForceKind, Formulation, Model, Rotation};
 use crate::primitives::{driver_row, joint_rows};
 use crate::symbolic::{jacobian, jacobian_in, BodySym, Entry, M3s, V3s};
@@ -88,6 +88,21 @@ pub struct System {
     pub driver_signs: Vec<f64>,
     /// Bodies owning a normalization row, in row order.
     pub normalized_bodies: Vec<usize>,
+}
+
+impl System {
+    /// Lengths of `p` and `k`: one past the largest `Var::P` and `Var::K` index in the arena.
+    pub fn value_lengths(&self) -> (usize, usize) {
+        let (mut np, mut nk) = (0, 0);
+        for i in 0..self.arena.len() {
+            match self.arena.node(Id(i as u32)) {
+                Node::Var(Var::P(j)) => np = np.max(j as usize + 1),
+                Node::Var(Var::K(j)) => nk = nk.max(j as usize + 1),
+                _ => {}
+            }
+        }
+        (np, nk)
+    }
 }
 
 fn body_sym(a: &mut Arena, offset: usize, rotation: Rotation) -> BodySym {

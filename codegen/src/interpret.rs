@@ -286,7 +286,7 @@ fn tangent_inputs(sys: &mut System) -> Option<(Vec<Vec<Id>>, usize)> {
         .map(|d| [kinematic.as_slice(), &d.tangent.mass, &d.tangent.force].concat())
         .collect();
     let n = sys.n_coords as u32;
-    let n_p = crate::tangent::n_values(sys);
+    let n_p = sys.value_lengths().0;
     let a = &mut sys.arena;
     let dq: Vec<Id> = (0..n).map(|i| a.var(Var::Q(n + i))).collect();
     let dqd: Vec<Id> = (0..n).map(|i| a.var(Var::Qd(n + i))).collect();

@@ -162,19 +162,6 @@ fn kinematics_read_k(sys: &System) -> bool {
         .any(|(i, &r)| r && matches!(sys.arena.node(Id(i as u32)), Node::Var(Var::K(_))))
 }
 
-/// Lengths of `p` and `k` in `sys`: one past the largest `Var::P` and `Var::K` index.
-fn parameter_lengths(sys: &System) -> (usize, usize) {
-    let (mut np, mut nk) = (0, 0);
-    for i in 0..sys.arena.len() {
-        match sys.arena.node(Id(i as u32)) {
-            Node::Var(Var::P(j)) => np = np.max(j as usize + 1),
-            Node::Var(Var::K(j)) => nk = nk.max(j as usize + 1),
-            _ => {}
-        }
-    }
-    (np, nk)
-}
-
 /// One emitted function of `sys`; one that reads per-step values of the dynamics (`k`
 /// marks it) takes the hoisted values first where the system has any.
 fn function(
@@ -184,7 +171,7 @@ fn function(
     inputs: &[Input],
     outputs: Vec<Output<'_>>,
 ) -> TokenStream {
-    let (n_p, n_k) = parameter_lengths(sys);
+    let (n_p, n_k) = sys.value_lengths();
     // `p` reaches the per-step functions only through `k` (hoisting), so without hoisted
     // values a direction `dp` has nothing to move either.
     let inputs: Vec<Input> = inputs
@@ -208,7 +195,7 @@ fn function(
 
 /// The argument that passes `k` to a function of `sys` (nothing where it has none).
 fn k_arg(sys: &System, k: &TokenStream) -> TokenStream {
-    match parameter_lengths(sys).1 {
+    match sys.value_lengths().1 {
         0 => quote!(),
         _ => quote!(#k,),
     }
@@ -225,7 +212,7 @@ fn kinematic_k_arg(sys: &System, k: &TokenStream) -> TokenStream {
 
 /// The parameter `k` of the helpers that wrap functions reading it (nothing where none do).
 fn k_param(sys: &System) -> TokenStream {
-    match parameter_lengths(sys).1 {
+    match sys.value_lengths().1 {
         0 => quote!(),
         _ => quote!(k: &[f64],),
     }
@@ -262,7 +249,7 @@ fn hoisted_items(sys: &System, hoisted: &[Id], p_values: &[f64]) -> TokenStream 
 /// `<Type>At` of the reduced model (where the mechanism has run-time parameters): the hoisted
 /// values of the reduced system, computed from the full model's `Parameters`.
 fn reduced_at_type(model: &Model, r: &System, type_name: &Ident, modname: &Ident) -> TokenStream {
-    if model.run_time_values().is_empty() || parameter_lengths(r).1 == 0 {
+    if model.run_time_values().is_empty() || r.value_lengths().1 == 0 {
         return quote!();
     }
     let at = ident(&format!("{type_name}At"));
@@ -295,7 +282,7 @@ fn reduced_at_type(model: &Model, r: &System, type_name: &Ident, modname: &Ident
 /// The run-time parameters of the full model: names, the file's values, the checks of a
 /// new set, and `Parameters` (one set and its hoisted values) that the `<Type>At` types hold.
 fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> TokenStream {
-    let (np, nk) = parameter_lengths(sys);
+    let (np, nk) = sys.value_lengths();
     if np == 0 || nk == 0 {
         return quote!();
     }
@@ -336,7 +323,8 @@ fn parameters_items(model: &Model, sys: &System, reduced: Option<&System>) -> To
         let at = ident(&format!("{type_name}At"));
         quote!((#form, Box::new(#at(p.clone())) as Box<dyn Mechanism + Sync>))
     });
-    let (reduced_fn, build_reduced, build_reduced_values) = match reduced.map(parameter_lengths) {
+    let (reduced_fn, build_reduced, build_reduced_values) = match reduced.map(System::value_lengths)
+    {
         Some((_, nk)) if nk > 0 => {
             let forms = model.formulations.iter().map(|&f| {
                 let (_, type_name, form) = formulation_names(f);
@@ -683,7 +671,7 @@ fn formulation_types(
     doc: &str,
     with_at: bool,
 ) -> TokenStream {
-    let file_values = match parameter_lengths(sys) {
+    let file_values = match sys.value_lengths() {
         (np, nk) if np > 0 && nk > 0 => quote!(&P0),
         _ => quote!(&[]),
     };
@@ -704,7 +692,7 @@ fn formulation_types(
         pub struct #type_name;
         #unit_impl
     };
-    if !with_at || parameter_lengths(sys).1 == 0 {
+    if !with_at || sys.value_lengths().1 == 0 {
         return unit;
     }
     let at = ident(&format!("{type_name}At"));
@@ -1180,7 +1168,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
         items.push(reduced_module(model, unhoisted, asm, red, h));
     }
     let reduction_import = reduced.as_ref().map(|_| quote!(Reduction, Substitution,));
-    let parameter_import = match parameter_lengths(sys) {
+    let parameter_import = match sys.value_lengths() {
         (0, _) | (_, 0) => quote!(),
         _ => quote!(
             use symbody_runtime::parameters::{ParameterError, RunTimeParameters};
@@ -1191,7 +1179,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
         Formulation::Exact => "Exact",
     });
 
-    let (np, nk) = parameter_lengths(sys);
+    let (np, nk) = sys.value_lengths();
     let entry = registry_entry(model, reduced.as_ref(), np > 0 && nk > 0, source, hash);
     let file = quote! {
         #![allow(clippy::approx_constant, clippy::excessive_precision, clippy::too_many_arguments, clippy::unreadable_literal)]

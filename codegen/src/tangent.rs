@@ -4,7 +4,7 @@
 //! them; the sensitivity analyses need nothing else from the equations.
 
 use crate::equations::System;
-use crate::expr::{Id, Node, Var};
+use crate::expr::{Id, Var};
 
 /// The directional derivatives of the kinematic functions: Φ, Φq's nonzeros (in the order of
 /// `System::phi_q`), Φt and γ.
@@ -23,17 +23,6 @@ pub struct Dynamic {
     pub force: Vec<Id>,
 }
 
-/// One past the largest `Var::P` index of `sys`'s arena: the length of `p` and `dp`.
-pub fn n_values(sys: &System) -> usize {
-    (0..sys.arena.len())
-        .filter_map(|i| match sys.arena.node(Id(i as u32)) {
-            Node::Var(Var::P(j)) => Some(j as usize + 1),
-            _ => None,
-        })
-        .max()
-        .unwrap_or(0)
-}
-
 /// Fills `sys.tangent` and each formulation's `tangent`: every root differentiated in one
 /// forward pass, with `q[i] ↦ dq[i]`, `qd[i] ↦ dqd[i]`, `p[i] ↦ dp[i]` (time held fixed).
 /// Call it on the parametric system, before hoisting: what depends on `p` alone in a
@@ -43,7 +32,7 @@ pub fn add(sys: &mut System) {
     let n = sys.n_coords as u32;
     let dq: Vec<Id> = (0..n).map(|i| a.var(Var::Dq(i))).collect();
     let dqd: Vec<Id> = (0..n).map(|i| a.var(Var::Dqd(i))).collect();
-    let n_p = n_values(sys) as u32;
+    let n_p = sys.value_lengths().0 as u32;
     let a = &mut sys.arena;
     let dp: Vec<Id> = (0..n_p).map(|i| a.var(Var::Dp(i))).collect();
     let mut roots: Vec<Id> = Vec::new();
