@@ -95,21 +95,23 @@ impl<'a> Neighbours<'a> {
                 });
             }
         }
-        let mut nb = Neighbours {
+        // The stencil of the given values, in the order of `mechs` (OFFSETS).
+        let dp = (0..n_p)
+            .map(|i| {
+                WEIGHTS
+                    .iter()
+                    .zip(&values)
+                    .map(|(w, v)| w * v[i])
+                    .sum::<f64>()
+                    / step
+            })
+            .collect();
+        Ok(Neighbours {
             step,
             base,
             mechs,
-            dp: Vec::new(),
-        };
-        let (mut dp, mut tmp) = (vec![0.0; n_p], vec![0.0; n_p]);
-        let mut k = 0;
-        nb.derivative(&mut dp, &mut tmp, |_, _, v| {
-            v.copy_from_slice(values[k]);
-            k += 1;
-            Ok(())
-        })?;
-        nb.dp = dp;
-        Ok(nb)
+            dp,
+        })
     }
 
     pub fn step(&self) -> f64 {
@@ -490,6 +492,8 @@ impl<K: KktSolver> HhtSensitivity<K> {
         })?;
         me.w.v_tilde.copy_from_slice(mech.info().qd0);
         me.w.dv_tilde.copy_from_slice(&dv_given);
+        // Φq and M at the start, for the projection, the accelerations and `r` alike.
+        me.jet.values(mech, q, t0);
         me.project_derivative(nb, t0)?;
         let (mut a, mut l) = (vec![0.0; n], vec![0.0; m]);
         let (mut da, mut dl) = (vec![0.0; n], vec![0.0; m]);
@@ -504,14 +508,14 @@ impl<K: KktSolver> HhtSensitivity<K> {
 
     /// `state.dqd` for `v = ṽ + Δ`, Δ the projection of least kinetic energy of
     /// ṽ = `w.v_tilde` (whose derivative is `w.dv_tilde`) onto the velocity constraints at
-    /// `self.q`; `kin` must be factored there. Sets `self.v` to the projected base velocity.
+    /// `self.q`; `kin` must be factored there and `jet` hold the values there. Sets `self.v`
+    /// to the projected base velocity.
     fn project_derivative(&mut self, nb: &Neighbours<'_>, t: f64) -> Result<(), Error> {
         let mech = nb.base;
         let info = mech.info();
         let n = info.n_coords;
         let (w, jet) = (&mut self.w, &mut self.jet);
         // The base projection and its multipliers μ: K [Δ; μ] = [0; −(Φq ṽ + Φt)].
-        jet.values(mech, &self.q, t);
         phi_q_times(info, &jet.phi_q, &w.v_tilde, &mut w.rhs[n..]);
         mech.phi_t(&self.q, t, &mut jet.vec_m);
         for (r, p) in w.rhs[n..].iter_mut().zip(&jet.vec_m) {
@@ -542,7 +546,7 @@ impl<K: KktSolver> HhtSensitivity<K> {
 
     /// The saddle-point accelerations and multipliers at `(self.q, self.v)` into `a`, `l`,
     /// and their derivatives (those of the position and velocity being `state.dq`,
-    /// `state.dqd`) into `da`, `dl`; `kin` factored at `self.q`.
+    /// `state.dqd`) into `da`, `dl`; `kin` factored at `self.q`, `jet` holding the values there.
     fn accelerations(
         &mut self,
         nb: &Neighbours<'_>,
@@ -557,7 +561,6 @@ impl<K: KktSolver> HhtSensitivity<K> {
         mech.force(&self.q, &self.v, t, force);
         mech.gamma(&self.q, &self.v, t, gamma);
         self.kin.solve(force, gamma, a, l, t)?;
-        jet.values(mech, &self.q, t);
         let (q, v, d) = (&self.q, &self.v, &self.state);
         jet.at(nb, t, (q, &d.dq), (v, &d.dqd))?;
         jet.saddle(info, (a, None), (l, None), &mut w.rhs);
@@ -570,11 +573,10 @@ impl<K: KktSolver> HhtSensitivity<K> {
 
     /// `dr` = derivative of `Φqᵀλ − Q(q, ṽ)` at the current base state, ṽ = `w.v_tilde`
     /// (the velocity `r` is evaluated with) moving by `w.dv_tilde`; keeps ṽ for the next step.
+    /// `jet` holds the values at `self.q`.
     fn store_dr(&mut self, nb: &Neighbours<'_>, t: f64) -> Result<(), Error> {
-        let mech = nb.base;
-        let info = mech.info();
+        let info = nb.base.info();
         let (w, jet) = (&mut self.w, &mut self.jet);
-        jet.values(mech, &self.q, t);
         let (q, dq) = (&self.q, &self.state.dq);
         jet.at(nb, t, (q, dq), (&w.v_tilde, &w.dv_tilde))?;
         phi_q_transpose_times(info, &jet.d_phi_q, &self.lambda, &mut self.dr);
@@ -717,6 +719,8 @@ impl<K: KktSolver> HhtSensitivity<K> {
         self.q.copy_from_slice(q1);
         self.a.copy_from_slice(a1);
         self.lambda.copy_from_slice(l1);
+        // Φq and M at the new position, for the projection and `r` alike.
+        self.jet.values(mech, q1, t1);
         if self.project {
             self.project_derivative(nb, t1)?;
         } else {
@@ -742,6 +746,7 @@ impl<K: KktSolver> HhtSensitivity<K> {
         let mech = nb.base;
         self.kin.factor_at(&mech, &self.q, self.t)?;
         let t = self.t;
+        self.jet.values(mech, &self.q, t);
         self.accelerations(nb, t, [qdd, lambda, dqdd, dlambda])
     }
 }
