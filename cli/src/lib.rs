@@ -1252,12 +1252,17 @@ fn forward_kinematics(
         let (modes, index, wall) =
             fk::all_modes(&p, &lengths, current.as_ref()).map_err(|e| e.to_string())?;
         say!(
-            "  assembly modes   {} real of {} complex (general platform: 40); {} paths in {} attempt{}, {:.1} ms",
+            "  assembly modes   {} real of {} complex (general platform: 40); {} paths in {} attempt{}{}, {:.1} ms",
             modes.real.len(),
             modes.complex,
             modes.paths,
             modes.attempts,
             if modes.attempts == 1 { "" } else { "s" },
+            if modes.fallback {
+                " (the 40 from the shipped generic platform, then the linear-product start)"
+            } else {
+                " from the shipped generic platform"
+            },
             wall.as_secs_f64() * 1e3
         );
         if modes.real.is_empty() {

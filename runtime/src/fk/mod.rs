@@ -7,16 +7,21 @@
 //! (platform → global); leg `i` joins the base point `aᵢ` (global) to the platform point `bᵢ`
 //! (platform frame), so its length is `|p + R bᵢ − aᵢ|`.
 
+mod linear_product;
 pub mod modes;
+mod parameter;
 pub mod platform;
+mod start;
+mod study;
 pub mod track;
 
 use nalgebra::{Matrix3, Matrix6, Vector3, Vector6};
 
 use crate::error::Error;
 
-pub use modes::{assembly_modes, Mode, Modes};
+pub use modes::{assembly_modes, assembly_modes_seeded, Mode, Modes};
 pub use platform::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
+pub use start::start_table_source;
 pub use track::{track, TrackSettings, Tracked};
 
 /// The six legs' attachment points.

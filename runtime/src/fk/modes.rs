@@ -1,30 +1,23 @@
 //! Every assembly mode of a six-leg platform: all complex solutions of the forward
-//! kinematics by total-degree homotopy continuation, then the real ones polished by Newton.
+//! kinematics (the Study-form quadrics of [`super::study`]) by homotopy continuation, then
+//! the real ones polished by Newton.
 //!
-//! Why this formulation: in Study's kinematic-image coordinates (rotation quaternion `e`,
-//! translation part `g = ½ p e`) a leg's equation `|p + R b − a|² = L²` becomes, multiplied
-//! by `eᵀe`, the quadric `Fᵢ = N(e b − a e + 2g) − L² N(e) = 0` (`N` the quaternion norm),
-//! and the Study condition `e · g = 0` is a quadric too: seven homogeneous quadrics in 8
-//! unknowns, solved on a random affine patch. The differences `Fᵢ − F₁` lose the `N(g)` term,
-//! so five equations are products of a form in `e` and a form in `(e, g)`, the Study
-//! condition a form in `e` times one in `g`, and only `F₁` needs two general forms. A start
-//! system of products of random linear forms with exactly that structure has 84 regular
-//! solutions (against 2⁷ = 128 for a total-degree start: the 44 it saves would all end on
-//! the degenerate set `e = 0`); by the theory of linear-product homotopies its paths reach
-//! every isolated solution, here the general platform's 40 poses (Raghavan 1993). The other
-//! 44 paths end on `e = 0`, recognised and dropped. An elimination to one degree-40 polynomial
-//! is faster but fragile (its coefficients are badly conditioned); continuation needs only
-//! 8 × 8 complex solves. The random complex `γ` in `H = γ(1 − t)G + tF` keeps every path
-//! regular for `t < 1` with probability one.
+//! First the parameter homotopy ([`super::parameter`]): 40 paths from a generic complex
+//! platform whose solutions are shipped ([`super::start`]). When its paths do not all end
+//! on distinct solutions, or a special platform has fewer than 40 and a second attempt with
+//! fresh random choices does not confirm the count, the linear-product homotopy
+//! ([`super::linear_product`]), which needs nothing precomputed, is run as before.
+//! Continuation rather than an elimination to one degree-40 polynomial: the elimination is
+//! faster but fragile (its coefficients are badly conditioned), continuation needs only
+//! 8 × 8 complex solves and every answer is polished by Newton on the leg lengths.
 
-use nalgebra::{Complex, Matrix3, Matrix4, SMatrix, SVector, Vector3};
+use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
 
-use super::{Legs, Pose, Settings};
+use super::linear_product::Homotopy;
+use super::parameter::{End, ParameterHomotopy};
+use super::study::{degenerate, refine, Study, C, Z};
+use super::{start, Legs, Pose, Settings};
 use crate::error::Error;
-
-type C = Complex<f64>;
-type Z = SVector<C, 8>;
-type J = SMatrix<C, 8, 8>;
 
 /// One real assembly mode.
 #[derive(Debug, Clone, Copy)]
@@ -50,15 +43,38 @@ pub struct Modes {
     /// Paths tracked over all attempts.
     pub paths: usize,
     /// Attempts, each with a fresh random `γ` and patch: one when all 40 are found, else
-    /// until an attempt adds nothing new (at most 4).
+    /// until the count is confirmed.
     pub attempts: usize,
+    /// `true` when the parameter homotopy left paths unaccounted for (or could not confirm
+    /// a special platform's count) and the linear-product homotopy was run as well.
+    pub fallback: bool,
 }
 
 /// The general platform's number of complex assembly modes (Raghavan 1993; Husty 1996).
 pub const GENERIC_COUNT: usize = 40;
 
+/// The seed of [`assembly_modes`]' random choices, so its answers are reproducible.
+pub const DEFAULT_SEED: u64 = 0x5eed_0f40;
+
 /// Finds every assembly mode of `legs` at `lengths`.
 pub fn assembly_modes(legs: &Legs, lengths: &[f64; 6]) -> Result<Modes, Error> {
+    assembly_modes_seeded(legs, lengths, DEFAULT_SEED)
+}
+
+/// [`assembly_modes`] with the random choices (the homotopies' `γ` and patches) drawn from
+/// `seed`: the answer does not depend on them, only the work does.
+pub fn assembly_modes_seeded(legs: &Legs, lengths: &[f64; 6], seed: u64) -> Result<Modes, Error> {
+    modes(legs, lengths, seed, true)
+}
+
+/// [`assembly_modes_seeded`], from the shipped generic platform (`parameter`) or by the
+/// linear-product homotopy alone (the method before it, kept to compare with in tests).
+pub(super) fn modes(
+    legs: &Legs,
+    lengths: &[f64; 6],
+    seed: u64,
+    parameter: bool,
+) -> Result<Modes, Error> {
     if !lengths.iter().all(|l| l.is_finite() && *l > 0.0) {
         return Err(Error::InvalidSetting {
             name: "leg length",
@@ -82,40 +98,70 @@ pub fn assembly_modes(legs: &Legs, lengths: &[f64; 6]) -> Result<Modes, Error> {
         base: legs.base.map(|v| v / scale),
         top: legs.top.map(|v| v / scale),
     };
-    let l_unit = lengths.map(|l| l / scale);
-    let mut rng = SplitMix(0x5eed_0f40);
-    let mut found: Vec<[C; 12]> = Vec::new();
-    let mut real: Vec<Pose> = Vec::new();
-    let mut paths = 0;
+    let target = Study::real(&unit, &lengths.map(|l| l / scale));
+    let mut rng = SplitMix(seed);
+    let mut found = Found::default();
     let mut attempts = 0;
-    // A special geometry has fewer than 40 finite solutions; an attempt with a fresh γ and
-    // patch that adds none says the count is complete (a path lost to bad luck in one
-    // attempt is found by the next).
-    let mut added = usize::MAX;
-    while attempts < 4 && found.len() < GENERIC_COUNT && added > 0 {
+
+    // A special platform has fewer than 40 finite solutions: a second attempt with fresh
+    // random choices whose paths all end somewhere known and that adds nothing confirms it.
+    let generic = start::generic();
+    let mut unaccounted = 0;
+    let mut confirmed = false;
+    while parameter && attempts < 2 && found.poses.len() < GENERIC_COUNT {
         attempts += 1;
-        let before = found.len();
-        let h = Homotopy::new(&unit, &l_unit, &mut rng);
-        for start in h.starts() {
-            paths += 1;
-            let Some(z) = h.track(start) else { continue };
-            let Some(z) = h.refine(z) else { continue };
-            let Some(pose) = complex_pose(&z) else {
-                continue;
+        let before = found.poses.len();
+        let h = ParameterHomotopy::new(&generic.study, &target, &mut rng);
+        let mut this_attempt = Found::default();
+        for z in &generic.solutions {
+            found.paths += 1;
+            let ended = match h.track(h.on_patch(z)) {
+                End::Reached(z) => match refine(&target, &h.patch, z) {
+                    Some(z) => Some(Some(z)),
+                    None => degenerate(&z).then_some(None),
+                },
+                End::Degenerate => Some(None),
+                End::Failed => None,
             };
-            if found.iter().any(|f| close(f, &pose, 1e-6)) {
-                continue;
-            }
-            found.push(pose);
-            if pose.iter().all(|c| c.im.abs() < 1e-7) {
-                real.push(Pose {
-                    position: Vector3::new(pose[9].re, pose[10].re, pose[11].re) * scale,
-                    rotation: Matrix3::from_fn(|r, c| pose[3 * r + c].re),
-                });
+            match ended {
+                // Two paths of one attempt at one solution: one of them jumped.
+                Some(Some(z)) if this_attempt.add(&z) => {
+                    found.add(&z);
+                }
+                Some(None) => {}
+                _ => unaccounted += 1,
             }
         }
-        added = found.len() - before;
+        confirmed = attempts == 2 && unaccounted == 0 && found.poses.len() == before;
     }
+    let fallback = found.poses.len() < GENERIC_COUNT && !confirmed;
+    if fallback {
+        // An attempt that adds nothing says the count is complete (a path lost to bad luck
+        // in one attempt is found by the next).
+        let mut added = usize::MAX;
+        let mut more = 0;
+        while more < 4 && found.poses.len() < GENERIC_COUNT && added > 0 {
+            more += 1;
+            let before = found.poses.len();
+            let h = Homotopy::new(&target, &mut rng);
+            for start in h.starts() {
+                found.paths += 1;
+                if let Some(z) = h.track(start).and_then(|z| refine(&target, &h.patch, z)) {
+                    found.add(&z);
+                }
+            }
+            added = found.poses.len() - before;
+        }
+        attempts += more;
+    }
+    let real = found
+        .poses
+        .iter()
+        .filter(|pose| pose.iter().all(|c| c.im.abs() < 1e-7))
+        .map(|pose| Pose {
+            position: Vector3::new(pose[9].re, pose[10].re, pose[11].re) * scale,
+            rotation: Matrix3::from_fn(|r, c| pose[3 * r + c].re),
+        });
     let settings = Settings {
         tolerance: 1e-14 * scale,
         max_iterations: 20,
@@ -157,241 +203,11 @@ pub fn assembly_modes(legs: &Legs, lengths: &[f64; 6]) -> Result<Modes, Error> {
     });
     Ok(Modes {
         real: modes,
-        complex: found.len(),
-        paths,
+        complex: found.poses.len(),
+        paths: found.paths,
         attempts,
+        fallback,
     })
-}
-
-/// The 7 quadrics `F` (5 leg differences, leg 1, Study condition), the start system `G`
-/// and the patch.
-struct Homotopy {
-    /// `e b − a e = M e` for each leg, and `Mᵀ`, both complex once for all evaluations.
-    m: [SMatrix<C, 4, 4>; 6],
-    mt: [SMatrix<C, 4, 4>; 6],
-    l2: [f64; 6],
-    /// `G_k = (A_k · z)(B_k · z)`: the two random linear forms of each start equation, with
-    /// the supports of `F_k`'s structure.
-    forms: [[Z; 2]; 7],
-    patch: Z,
-    gamma: C,
-}
-
-/// Which unknowns a start form may involve.
-#[derive(Clone, Copy, PartialEq)]
-enum Support {
-    E,
-    G,
-    All,
-}
-
-impl Homotopy {
-    fn new(legs: &Legs, lengths: &[f64; 6], rng: &mut SplitMix) -> Self {
-        let m: [SMatrix<C, 4, 4>; 6] = std::array::from_fn(|i| {
-            let (a, b) = (legs.base[i], legs.top[i]);
-            let (d, s) = (b - a, b + a);
-            // e b − a e = (ε·(a − b), e0 (b − a) + ε × (b + a)) for pure a, b.
-            Matrix4::new(
-                0.0, -d.x, -d.y, -d.z, //
-                d.x, 0.0, s.z, -s.y, //
-                d.y, -s.z, 0.0, s.x, //
-                d.z, s.y, -s.x, 0.0,
-            )
-            .map(|x| C::new(x, 0.0))
-        });
-        let mut form = |support: Support| {
-            Z::from_fn(|k, _| match (support, k < 4) {
-                (Support::E, false) | (Support::G, true) => C::new(0.0, 0.0),
-                _ => rng.complex(),
-            })
-        };
-        let forms = std::array::from_fn(|k| match k {
-            0..=4 => [form(Support::E), form(Support::All)],
-            5 => [form(Support::All), form(Support::All)],
-            _ => [form(Support::E), form(Support::G)],
-        });
-        Homotopy {
-            mt: m.map(|m| m.transpose()),
-            m,
-            l2: lengths.map(|l| l * l),
-            forms,
-            patch: Z::from_fn(|_, _| rng.complex()),
-            gamma: rng.complex(),
-        }
-    }
-
-    /// The start points: one factor of each start equation set to zero, with the patch.
-    /// Choices that zero four forms in `e` give `e = 0`, a positive-dimensional solution set
-    /// of `G`, not a start point: 84 of the 128 choices remain.
-    fn starts(&self) -> impl Iterator<Item = Z> + '_ {
-        (0..128u32).filter_map(|choice| {
-            let pick = |k: usize| (choice >> k) as usize & 1;
-            let e_only = (0..5).filter(|&k| pick(k) == 0).count() + usize::from(pick(6) == 0);
-            if e_only > 3 {
-                return None;
-            }
-            let mut a = J::zeros();
-            for k in 0..7 {
-                a.row_mut(k).copy_from(&self.forms[k][pick(k)].transpose());
-            }
-            a.row_mut(7).copy_from(&self.patch.transpose());
-            let mut rhs = Z::zeros();
-            rhs[7] = C::new(1.0, 0.0);
-            a.lu().solve(&rhs)
-        })
-    }
-
-    /// `F(z)` and `∂F/∂z`: rows 0..5 `F_{k+1} − F_0`, row 5 `F_0`, row 6 the Study
-    /// condition, row 7 the patch.
-    fn target(&self, z: &Z) -> (Z, J) {
-        let e = z.fixed_rows::<4>(0).into_owned();
-        let g = z.fixed_rows::<4>(4).into_owned();
-        let ee = e.dot(&e);
-        let mut legs = [C::new(0.0, 0.0); 6];
-        let mut grads = [Z::zeros(); 6];
-        for i in 0..6 {
-            let w = self.m[i] * e + g * C::new(2.0, 0.0);
-            legs[i] = w.dot(&w) - ee * self.l2[i];
-            let de = self.mt[i] * w * C::new(2.0, 0.0) - e * C::new(2.0 * self.l2[i], 0.0);
-            let dg = w * C::new(4.0, 0.0);
-            grads[i].fixed_rows_mut::<4>(0).copy_from(&de);
-            grads[i].fixed_rows_mut::<4>(4).copy_from(&dg);
-        }
-        let mut f = Z::zeros();
-        let mut j = J::zeros();
-        for k in 0..5 {
-            f[k] = legs[k + 1] - legs[0];
-            j.row_mut(k)
-                .copy_from(&(grads[k + 1] - grads[0]).transpose());
-        }
-        f[5] = legs[0];
-        j.row_mut(5).copy_from(&grads[0].transpose());
-        f[6] = e.dot(&g);
-        for k in 0..4 {
-            j[(6, k)] = g[k];
-            j[(6, 4 + k)] = e[k];
-        }
-        f[7] = self.patch.dot(z) - C::new(1.0, 0.0);
-        j.row_mut(7).copy_from(&self.patch.transpose());
-        (f, j)
-    }
-
-    /// `H(z, t)`, `∂H/∂z` and `∂H/∂t`.
-    fn eval(&self, z: &Z, t: f64) -> (Z, J, Z) {
-        let (f, jf) = self.target(z);
-        let mut g = Z::zeros();
-        let mut jg = J::zeros();
-        for k in 0..7 {
-            let [a, b] = &self.forms[k];
-            let (az, bz) = (a.dot(z), b.dot(z));
-            g[k] = az * bz;
-            jg.row_mut(k).copy_from(&(a * bz + b * az).transpose());
-        }
-        let (s, u) = (self.gamma * (1.0 - t), C::new(t, 0.0));
-        let mut h = g * s + f * u;
-        let mut jh = jg * s + jf * u;
-        let mut ht = f - g * self.gamma;
-        h[7] = f[7];
-        jh.row_mut(7).copy_from(&jf.row(7));
-        ht[7] = C::new(0.0, 0.0);
-        (h, jh, ht)
-    }
-
-    /// `dz/dt = −H_z⁻¹ H_t`.
-    fn velocity(&self, z: &Z, t: f64) -> Option<Z> {
-        let (_, jh, ht) = self.eval(z, t);
-        jh.lu().solve(&(-ht))
-    }
-
-    /// Follows one path from `t = 0` to `t = 1`: a fourth-order Runge–Kutta prediction
-    /// and at most three Newton corrections per step, the step halved when they do not
-    /// settle and doubled after a run of easy steps. `None` for a path that ends on the
-    /// degenerate set or cannot be followed.
-    fn track(&self, mut z: Z) -> Option<Z> {
-        let (mut t, mut h, mut easy) = (0.0_f64, 0.02_f64, 0);
-        for _ in 0..20_000 {
-            if t >= 1.0 {
-                return Some(z);
-            }
-            h = h.min(1.0 - t);
-            let Some(predicted) = self.rk4(&z, t, h) else {
-                h /= 2.0;
-                if h < 1e-14 {
-                    return None;
-                }
-                continue;
-            };
-            match self.correct(predicted, t + h) {
-                Some(next) => {
-                    z = next;
-                    t = if h == 1.0 - t { 1.0 } else { t + h };
-                    easy += 1;
-                    if easy >= 3 {
-                        h = (2.0 * h).min(0.1);
-                        easy = 0;
-                    }
-                }
-                None => {
-                    h /= 2.0;
-                    easy = 0;
-                    if h < 1e-14 {
-                        return None;
-                    }
-                }
-            }
-            if t > 0.9 && degenerate(&z) {
-                return None;
-            }
-        }
-        None
-    }
-
-    fn rk4(&self, z: &Z, t: f64, h: f64) -> Option<Z> {
-        let half = C::new(h / 2.0, 0.0);
-        let k1 = self.velocity(z, t)?;
-        let k2 = self.velocity(&(z + k1 * half), t + h / 2.0)?;
-        let k3 = self.velocity(&(z + k2 * half), t + h / 2.0)?;
-        let k4 = self.velocity(&(z + k3 * C::new(h, 0.0)), t + h)?;
-        Some(z + (k1 + (k2 + k3) * C::new(2.0, 0.0) + k4) * C::new(h / 6.0, 0.0))
-    }
-
-    fn correct(&self, mut z: Z, t: f64) -> Option<Z> {
-        for it in 0..3 {
-            let (h, jh, _) = self.eval(&z, t);
-            let dz = jh.lu().solve(&(-h))?;
-            z += dz;
-            let (step, size) = (dz.camax(), 1.0 + z.camax());
-            if step <= 1e-8 * size {
-                return Some(z);
-            }
-            // A first correction this large means the prediction left the path's basin.
-            if it == 0 && step > 0.05 * size {
-                return None;
-            }
-        }
-        None
-    }
-
-    /// Newton on `F` itself at the path's end.
-    fn refine(&self, mut z: Z) -> Option<Z> {
-        for _ in 0..12 {
-            let (f, j) = self.target(&z);
-            let dz = j.lu().solve(&(-f))?;
-            z += dz;
-            if dz.camax() <= 1e-15 * (1.0 + z.camax()) {
-                break;
-            }
-        }
-        let (f, _) = self.target(&z);
-        (f.camax() < 1e-8 && !degenerate(&z)).then_some(z)
-    }
-}
-
-/// On (or next to) the degenerate set where the rotation quaternion's norm `eᵀe` vanishes.
-fn degenerate(z: &Z) -> bool {
-    let e = z.fixed_rows::<4>(0);
-    let size: f64 = z.iter().map(|c| c.norm_sqr()).sum();
-    e.dot(&e).norm() < 1e-6 * size
 }
 
 /// Rotation (row-major, 9) and position (3) of a solution, complex in general; `None` on
@@ -425,16 +241,34 @@ fn complex_pose(z: &Z) -> Option<[C; 12]> {
         .then_some(out)
 }
 
-fn close(a: &[C; 12], b: &[C; 12], tol: f64) -> bool {
-    a.iter().zip(b).all(|(x, y)| (x - y).norm() < tol)
+/// Distinct finite solutions, as complex poses, and the paths that led to them.
+#[derive(Default)]
+struct Found {
+    poses: Vec<[C; 12]>,
+    paths: usize,
+}
+
+impl Found {
+    /// Adds the pose of the solution `z`; `false` when it is not a pose or already there.
+    fn add(&mut self, z: &Z) -> bool {
+        let Some(pose) = complex_pose(z) else {
+            return false;
+        };
+        let close = |f: &[C; 12]| f.iter().zip(&pose).all(|(x, y)| (x - y).norm() < 1e-6);
+        if self.poses.iter().any(close) {
+            return false;
+        }
+        self.poses.push(pose);
+        true
+    }
 }
 
 /// A small deterministic generator (SplitMix64), so runs are reproducible without a
 /// dependency.
-struct SplitMix(u64);
+pub(super) struct SplitMix(pub(super) u64);
 
 impl SplitMix {
-    fn next(&mut self) -> f64 {
+    pub(super) fn next(&mut self) -> f64 {
         self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
         let mut x = self.0;
         x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
@@ -443,14 +277,14 @@ impl SplitMix {
         (x >> 11) as f64 / (1u64 << 53) as f64
     }
     /// A random point on the unit circle.
-    fn complex(&mut self) -> C {
+    pub(super) fn complex(&mut self) -> C {
         C::from_polar(1.0, std::f64::consts::TAU * self.next())
     }
 }
 
 #[cfg(test)]
 pub(super) fn study_residual(legs: &Legs, lengths: &[f64; 6], pose: &Pose) -> f64 {
-    let h = Homotopy::new(legs, lengths, &mut SplitMix(1));
+    let study = Study::real(legs, lengths);
     let q = nalgebra::UnitQuaternion::from_matrix(&pose.rotation);
     let e = nalgebra::Vector4::new(q.w, q.i, q.j, q.k);
     let pq = nalgebra::Quaternion::from_imag(pose.position);
@@ -465,6 +299,6 @@ pub(super) fn study_residual(legs: &Legs, lengths: &[f64; 6], pose: &Pose) -> f6
             0.0,
         )
     });
-    let (f, _) = h.target(&z);
+    let (f, _) = study.eval(&z, &Z::zeros());
     f.rows(0, 7).camax()
 }

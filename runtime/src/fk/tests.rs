@@ -216,3 +216,159 @@ fn tracking_through_a_parallel_singularity_is_reported_with_its_time() {
     assert!(ok.solution.pose.distance(&pose_at(0.8 * s_star), 1.0) < 1e-12);
     assert!(!dependent_legs(&legs, &pose_at(s_star)).is_empty());
 }
+
+/// A random complex point `z` and platform for the Study-form checks.
+fn random_study(rng: &mut super::modes::SplitMix) -> (super::study::Study, super::study::Z) {
+    use super::study::{Study, C, Z};
+    let mut c = || C::new(2.0 * rng.next() - 1.0, 2.0 * rng.next() - 1.0);
+    let a = std::array::from_fn(|_| Vector3::new(c(), c(), c()));
+    let b = std::array::from_fn(|_| Vector3::new(c(), c(), c()));
+    let l2 = std::array::from_fn(|_| c());
+    let z = Z::from_fn(|_, _| c());
+    (Study::complex(a, b, l2), z)
+}
+
+/// The Study-form Jacobian and the rate along a change of the coefficients against
+/// central differences of the equations themselves (complex steps along each unknown; the
+/// equations are holomorphic, so one complex direction gives the whole derivative).
+#[test]
+fn study_jacobian_and_parameter_rate_match_central_differences() {
+    use super::study::{C, Z};
+    let mut rng = super::modes::SplitMix(7);
+    for _ in 0..5 {
+        let (study, z) = random_study(&mut rng);
+        let (other, patch) = random_study(&mut rng);
+        let (_, j) = study.eval(&z, &patch);
+        let h = C::new(1e-6, 1e-6);
+        for c in 0..8 {
+            let mut dz = Z::zeros();
+            dz[c] = h;
+            let (fp, _) = study.eval(&(z + dz), &patch);
+            let (fm, _) = study.eval(&(z - dz), &patch);
+            for r in 0..8 {
+                let fd = (fp[r] - fm[r]) / (h * 2.0);
+                assert!(
+                    (fd - j[c][r]).norm() < 1e-8,
+                    "J[{r},{c}]: {fd} vs {}",
+                    j[c][r]
+                );
+            }
+        }
+        let delta = study.towards(&other);
+        let rate = study.rate(&z, &delta);
+        let (fp, _) = study.moved(&delta, h).eval(&z, &patch);
+        let (fm, _) = study.moved(&delta, -h).eval(&z, &patch);
+        for r in 0..8 {
+            let fd = (fp[r] - fm[r]) / (h * 2.0);
+            assert!(
+                (fd - rate[r]).norm() < 1e-8,
+                "rate[{r}]: {fd} vs {}",
+                rate[r]
+            );
+        }
+    }
+}
+
+/// The shipped start: 40 distinct regular solutions of the shipped platform (the generic
+/// count, so none is missing), and the example that writes the table makes the same set.
+#[test]
+fn shipped_start_solutions_are_the_start_platforms_forty() {
+    use super::study::{size, Lu, Z};
+    let generic = super::start::generic();
+    assert_eq!(generic.solutions.len(), super::modes::GENERIC_COUNT);
+    let mut rng = super::modes::SplitMix(3);
+    let patch = Z::from_fn(|_, _| rng.complex());
+    for (k, z) in generic.solutions.iter().enumerate() {
+        let z = z / patch.dot(z);
+        let (f, j) = generic.study.eval(&z, &patch);
+        assert!(
+            size(&f) < 1e-12 * size(&z).powi(2),
+            "solution {k}: residual {}",
+            size(&f)
+        );
+        assert!(Lu::new(&j).is_some(), "solution {k} is singular");
+        let e = z.fixed_rows::<4>(0);
+        assert!(
+            e.dot(&e).norm() > 1e-3 * size(&z).powi(2),
+            "solution {k} is degenerate"
+        );
+        for (m, w) in generic.solutions[..k].iter().enumerate() {
+            let w = w / patch.dot(w);
+            assert!(size(&(w - z)) > 1e-6, "solutions {m} and {k} are one");
+        }
+    }
+    let made = super::start::start_solutions(START_SEED).unwrap();
+    for (k, z) in generic.solutions.iter().enumerate() {
+        assert!(
+            made.iter().any(|w| super::start::same(w, z)),
+            "shipped solution {k} is not the seed's: regenerate with `cargo run -p \
+             symbody-runtime --example fk_start_table > runtime/src/fk/start_data.rs`"
+        );
+    }
+}
+
+/// The seed `examples/fk_start_table.rs` writes the shipped table with.
+const START_SEED: u64 = 0x0004_0574_7a27;
+
+/// Every call, whatever its random choices, finds all 40 real modes of Dietmaier's platform.
+#[test]
+fn dietmaier_forty_real_modes_in_each_of_a_thousand_calls_with_random_choices() {
+    let (legs, lengths) = dietmaier();
+    let mut fallbacks = 0;
+    for seed in 0..1000 {
+        let modes = assembly_modes_seeded(&legs, &lengths, seed).unwrap();
+        assert_eq!(modes.real.len(), 40, "seed {seed}: real modes found");
+        fallbacks += usize::from(modes.fallback);
+    }
+    eprintln!("1000 calls: {fallbacks} fell back to the linear-product homotopy");
+}
+
+/// On random general platforms, every real mode the linear-product homotopy alone finds is
+/// found from the shipped start, and the complex counts agree.
+#[test]
+fn parameter_homotopy_finds_every_mode_the_linear_product_homotopy_finds() {
+    let mut rng = super::modes::SplitMix(11);
+    let mut point = |r: f64| {
+        Vector3::new(
+            r * (2.0 * rng.next() - 1.0),
+            r * (2.0 * rng.next() - 1.0),
+            r * (2.0 * rng.next() - 1.0),
+        )
+    };
+    let mut real = 0;
+    for k in 0..100 {
+        let legs = Legs {
+            base: std::array::from_fn(|_| point(1.0)),
+            top: std::array::from_fn(|_| point(0.5)),
+        };
+        let p = point(0.3) + Vector3::new(0.0, 0.0, 1.0);
+        let w = point(0.5);
+        let pose = Pose {
+            position: p,
+            rotation: *nalgebra::Rotation3::new(w).matrix(),
+        };
+        let lengths = legs.lengths(&pose);
+        let reference = super::modes::modes(&legs, &lengths, 1, false).unwrap();
+        let modes = assembly_modes_seeded(&legs, &lengths, k).unwrap();
+        assert_eq!(
+            modes.complex, reference.complex,
+            "platform {k}: complex count"
+        );
+        let lc = legs.characteristic_length();
+        for m in &reference.real {
+            assert!(
+                modes
+                    .real
+                    .iter()
+                    .any(|n| n.pose.distance(&m.pose, lc) < 1e-9),
+                "platform {k}: a mode of the linear-product homotopy is missing"
+            );
+        }
+        assert_eq!(modes.real.len(), reference.real.len(), "platform {k}");
+        real += modes.real.len();
+    }
+    assert!(
+        real > 100,
+        "the platforms must have real modes to compare ({real})"
+    );
+}
