@@ -1,5 +1,6 @@
-//! Forward kinematics of six-leg platforms: every assembly mode (homotopy continuation over
-//! 128 paths) on Dietmaier's 40-real-mode geometry and on the paper's platform, and the warm
+//! Forward kinematics of six-leg platforms: every assembly mode (parameter homotopy over 40
+//! paths from the shipped generic platform) on Dietmaier's 40-real-mode geometry and on the
+//! paper's platform, and the warm
 //! tracked solve a controller would run each cycle (Newton on six lengths from the previous
 //! pose). Results: the "Forward kinematics" section of BENCHMARKS.md.
 
