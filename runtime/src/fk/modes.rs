@@ -101,58 +101,13 @@ pub(super) fn modes(
     let target = Study::real(&unit, &lengths.map(|l| l / scale));
     let mut rng = SplitMix(seed);
     let mut found = Found::default();
-    let mut attempts = 0;
-
-    // A special platform has fewer than 40 finite solutions: a second attempt with fresh
-    // random choices whose paths all end somewhere known and that adds nothing confirms it.
-    let generic = start::generic();
-    let mut unaccounted = 0;
-    let mut confirmed = false;
-    while parameter && attempts < 2 && found.poses.len() < GENERIC_COUNT {
-        attempts += 1;
-        let before = found.poses.len();
-        let h = ParameterHomotopy::new(&generic.study, &target, &mut rng);
-        let mut this_attempt = Found::default();
-        for z in &generic.solutions {
-            found.paths += 1;
-            let ended = match h.track(h.on_patch(z)) {
-                End::Reached(z) => match refine(&target, &h.patch, z) {
-                    Some(z) => Some(Some(z)),
-                    None => degenerate(&z).then_some(None),
-                },
-                End::Degenerate => Some(None),
-                End::Failed => None,
-            };
-            match ended {
-                // Two paths of one attempt at one solution: one of them jumped.
-                Some(Some(z)) if this_attempt.add(&z) => {
-                    found.add(&z);
-                }
-                Some(None) => {}
-                _ => unaccounted += 1,
-            }
-        }
-        confirmed = attempts == 2 && unaccounted == 0 && found.poses.len() == before;
+    let (mut attempts, mut confirmed) = (0, false);
+    if parameter {
+        (attempts, confirmed) = from_generic_start(&target, &mut rng, &mut found);
     }
     let fallback = found.poses.len() < GENERIC_COUNT && !confirmed;
     if fallback {
-        // An attempt that adds nothing says the count is complete (a path lost to bad luck
-        // in one attempt is found by the next).
-        let mut added = usize::MAX;
-        let mut more = 0;
-        while more < 4 && found.poses.len() < GENERIC_COUNT && added > 0 {
-            more += 1;
-            let before = found.poses.len();
-            let h = Homotopy::new(&target, &mut rng);
-            for start in h.starts() {
-                found.paths += 1;
-                if let Some(z) = h.track(start).and_then(|z| refine(&target, &h.patch, z)) {
-                    found.add(&z);
-                }
-            }
-            added = found.poses.len() - before;
-        }
-        attempts += more;
+        attempts += from_linear_product(&target, &mut rng, &mut found);
     }
     let real = found
         .poses
@@ -239,6 +194,66 @@ fn complex_pose(z: &Z) -> Option<[C; 12]> {
     out.iter()
         .all(|c| c.re.is_finite() && c.im.is_finite())
         .then_some(out)
+}
+
+/// The parameter homotopy from the shipped generic platform, into `found`: one attempt when
+/// it ends on 40 distinct solutions, else a second with fresh random choices. Returns the
+/// attempts and whether the count is confirmed: a special platform has fewer than 40 finite
+/// solutions, and a second attempt that adds nothing, with every path of both ending
+/// somewhere known (a solution, or the degenerate set), confirms it.
+fn from_generic_start(target: &Study, rng: &mut SplitMix, found: &mut Found) -> (usize, bool) {
+    let generic = start::generic();
+    let (mut attempts, mut unaccounted) = (0, 0);
+    while attempts < 2 && found.poses.len() < GENERIC_COUNT {
+        attempts += 1;
+        let before = found.poses.len();
+        let h = ParameterHomotopy::new(&generic.study, target, rng);
+        let mut this_attempt = Found::default();
+        for z in &generic.solutions {
+            found.paths += 1;
+            let ended = match h.track(h.on_patch(z)) {
+                End::Reached(z) => match refine(target, &h.patch, z) {
+                    Some(z) => Some(Some(z)),
+                    None => degenerate(&z).then_some(None),
+                },
+                End::Degenerate => Some(None),
+                End::Failed => None,
+            };
+            match ended {
+                Some(Some(z)) if this_attempt.add(&z) => {
+                    found.add(&z);
+                }
+                Some(None) => {}
+                // A failed path, or two paths of one attempt at one solution (one jumped).
+                _ => unaccounted += 1,
+            }
+        }
+        if attempts == 2 {
+            return (2, unaccounted == 0 && found.poses.len() == before);
+        }
+    }
+    (attempts, false)
+}
+
+/// The linear-product homotopy into `found`, repeated with fresh random choices until an
+/// attempt adds nothing (a path lost to bad luck in one attempt is found by the next) or
+/// all 40 are there, at most four times. Returns the attempts.
+fn from_linear_product(target: &Study, rng: &mut SplitMix, found: &mut Found) -> usize {
+    let mut attempts = 0;
+    let mut added = usize::MAX;
+    while attempts < 4 && found.poses.len() < GENERIC_COUNT && added > 0 {
+        attempts += 1;
+        let before = found.poses.len();
+        let h = Homotopy::new(target, rng);
+        for start in h.starts() {
+            found.paths += 1;
+            if let Some(z) = h.track(start).and_then(|z| refine(target, &h.patch, z)) {
+                found.add(&z);
+            }
+        }
+        added = found.poses.len() - before;
+    }
+    attempts
 }
 
 /// Distinct finite solutions, as complex poses, and the paths that led to them.
