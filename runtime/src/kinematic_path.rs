@@ -39,10 +39,10 @@ pub struct KinematicPath<M: Mechanism, K: KktSolver = SchurKkt> {
     qd: Vec<f64>,
     qdd: Vec<f64>,
     lambda: Vec<f64>,
-    /// The step to the current output (0 before there is one) and the accelerations before
-    /// it, for the predictor's jerk.
-    previous_step: f64,
-    previous_qdd: Vec<f64>,
+    /// The steps to the current output and to the one before (0 before there are such) and
+    /// the accelerations at those two outputs, for the predictor's jerk and snap.
+    previous_step: [f64; 2],
+    previous_qdd: [Vec<f64>; 2],
     /// The last good position while a new one is sought.
     saved: Vec<f64>,
     stats: PathStats,
@@ -91,8 +91,8 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
             qd: vec![0.0; n],
             qdd: vec![0.0; n],
             lambda: vec![0.0; m],
-            previous_step: 0.0,
-            previous_qdd: vec![0.0; n],
+            previous_step: [0.0; 2],
+            previous_qdd: [vec![0.0; n], vec![0.0; n]],
             saved: vec![0.0; n],
             stats: PathStats::default(),
         };
@@ -138,17 +138,25 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
         result
     }
 
-    /// Taylor prediction of q over `h`: third order once two accelerations are known (the
-    /// jerk differenced from them), which leaves an O(h⁴) residual for the corrector.
+    /// Taylor prediction of q over `h`, with q̈ continued by the polynomial through the last
+    /// three outputs' accelerations (Newton's divided differences d₁, d₂ over the steps h₁, h₂
+    /// back): `q + h q̇ + h²/2 q̈ + d₁ h³/6 + d₂ (h⁴/12 + h₁ h³/6)`. Fourth order once three
+    /// accelerations are known, which leaves an O(h⁵) residual for the corrector.
     fn predict(&mut self, h: f64) {
-        let dt = self.previous_step;
+        let [h1, h2] = self.previous_step;
+        let [a1, a2] = &self.previous_qdd;
+        let (c3, c4) = (h * h * h / 6.0, h * h * h * h / 12.0 + h1 * h * h * h / 6.0);
         for i in 0..self.q.len() {
-            let j = if dt > 0.0 {
-                (self.qdd[i] - self.previous_qdd[i]) / dt
-            } else {
-                0.0
+            let a0 = self.qdd[i];
+            let (d1, d2) = match (h1 > 0.0, h2 > 0.0) {
+                (true, true) => {
+                    let d1 = (a0 - a1[i]) / h1;
+                    (d1, (d1 - (a1[i] - a2[i]) / h2) / (h1 + h2))
+                }
+                (true, false) => ((a0 - a1[i]) / h1, 0.0),
+                _ => (0.0, 0.0),
             };
-            self.q[i] += h * (self.qd[i] + h * (0.5 * self.qdd[i] + h * j / 6.0));
+            self.q[i] += h * (self.qd[i] + 0.5 * h * a0) + c3 * d1 + c4 * d2;
         }
     }
 
@@ -162,8 +170,9 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
     /// Velocity, accelerations and multipliers at the converged position.
     fn analyse(&mut self, t: f64) -> Result<(), Error> {
         if self.stats.outputs > 0 {
-            self.previous_step = t - self.t;
-            self.previous_qdd.copy_from_slice(&self.qdd);
+            self.previous_step = [t - self.t, self.previous_step[0]];
+            self.previous_qdd.swap(0, 1);
+            self.previous_qdd[0].copy_from_slice(&self.qdd);
         }
         self.kin.velocity_and_acceleration(
             &self.mech,

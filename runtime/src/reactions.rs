@@ -90,20 +90,10 @@ pub fn joint_wrench(
             reason: "its rows or its body's coordinates lie outside the mechanism",
         });
     }
-    // g = −(Φ^rows_{q_i})ᵀ λ^rows on the body's coordinates. In a row-major pattern (every
-    // generated one) the joint's rows are one run of nonzeros, found by bisection: a
-    // reaction then costs its own entries, not a scan of the whole Jacobian.
-    let all = info.phi_q_rows;
-    let run = match all.is_sorted() {
-        true => {
-            let at = |row: usize| all.partition_point(|&r| (r as usize) < row);
-            at(rows.start)..at(rows.end)
-        }
-        false => 0..all.len(),
-    };
+    // g = −(Φ^rows_{q_i})ᵀ λ^rows on the body's coordinates.
     let mut g = [0.0; 7];
-    for k in run {
-        let (r, c) = (all[k] as usize, info.phi_q_cols[k] as usize);
+    for k in rows_nonzeros(info, &rows) {
+        let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
         if rows.contains(&r) && cols.contains(&c) {
             g[c - cols.start] -= phi_q[k] * lambda[r];
         }
@@ -199,13 +189,27 @@ pub fn joint_force(
     let rows = j.row_start..j.row_start + j.rows;
     let cols = b.coord_offset..b.coord_offset + 3;
     let mut f = [0.0; 3];
-    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
-        let (r, c) = (r as usize, c as usize);
+    for k in rows_nonzeros(info, &rows) {
+        let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
         if rows.contains(&r) && cols.contains(&c) {
-            f[c - cols.start] -= v * lambda[r];
+            f[c - cols.start] -= phi_q[k] * lambda[r];
         }
     }
     Ok(f)
+}
+
+/// The nonzeros of Φq that may lie in `rows`: in a row-major pattern (every generated one)
+/// one run, found by bisection, so a reaction costs its own entries rather than a scan of
+/// the whole Jacobian; all of them otherwise.
+fn rows_nonzeros(info: &MechanismInfo, rows: &std::ops::Range<usize>) -> std::ops::Range<usize> {
+    let all = info.phi_q_rows;
+    match all.is_sorted() {
+        true => {
+            let at = |row: usize| all.partition_point(|&r| (r as usize) < row);
+            at(rows.start)..at(rows.end)
+        }
+        false => 0..all.len(),
+    }
 }
 
 /// Force of a driver (a one-row joint of kind [`JointKind::Driver`]): `−λ` of its row.

@@ -132,6 +132,8 @@ pub struct ResidualWatch {
     phi_q: Vec<f64>,
     phi_t: Vec<f64>,
     gamma: Vec<f64>,
+    /// Φq q̇ + Φt.
+    velocity: Vec<f64>,
 }
 
 impl ResidualWatch {
@@ -143,6 +145,7 @@ impl ResidualWatch {
             phi_q: vec![0.0; info.phi_q_nnz()],
             phi_t: vec![0.0; m],
             gamma: vec![0.0; m],
+            velocity: vec![0.0; m],
         }
     }
 
@@ -174,14 +177,24 @@ impl ResidualWatch {
                 gamma: &mut self.gamma,
             },
         );
-        // Φt becomes Φq q̇ + Φt in place.
+        self.velocity.copy_from_slice(&self.phi_t);
         for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(&self.phi_q) {
-            self.phi_t[r as usize] += v * qd[c as usize];
+            self.velocity[r as usize] += v * qd[c as usize];
         }
         Ok(Residuals {
             position: inf_norm(&self.phi),
-            velocity: inf_norm(&self.phi_t),
+            velocity: inf_norm(&self.velocity),
         })
+    }
+
+    /// Φq's nonzeros at the state of the last [`ResidualWatch::check`].
+    pub fn phi_q(&self) -> &[f64] {
+        &self.phi_q
+    }
+
+    /// Φt at the state of the last [`ResidualWatch::check`].
+    pub fn phi_t(&self) -> &[f64] {
+        &self.phi_t
     }
 }
 

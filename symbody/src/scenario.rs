@@ -364,8 +364,6 @@ struct Recorder {
     layout: Layout,
     kinematics: Kinematics,
     watch: ResidualWatch,
-    phi_t: Vec<f64>,
-    jac: Vec<f64>,
     qdd: Vec<f64>,
     lambda: Vec<f64>,
 }
@@ -376,8 +374,6 @@ impl Recorder {
             layout,
             kinematics: Kinematics::new(info)?,
             watch: ResidualWatch::new(info),
-            phi_t: vec![0.0; info.n_constraints],
-            jac: vec![0.0; info.phi_q_nnz()],
             qdd: vec![0.0; info.n_coords],
             lambda: vec![0.0; info.n_constraints],
         })
@@ -390,11 +386,11 @@ impl Recorder {
         let residuals = self.watch.check(mech, t, &q, &qd)?;
         run.max_phi = run.max_phi.max(residuals.position);
         run.max_velocity_residual = run.max_velocity_residual.max(residuals.velocity);
-        mech.phi_q(&q, t, &mut self.jac);
-        mech.phi_t(&q, t, &mut self.phi_t);
-        // Φ_D = d(q) − c(t), so each driver's ċ = −Φt on its row.
+        // Φ_D = d(q) − c(t), so each driver's ċ = −Φt on its row; Φq and Φt are the watch's,
+        // evaluated at this state.
+        let (jac, phi_t) = (self.watch.phi_q(), self.watch.phi_t());
         let c_dot: [f64; LEGS] =
-            std::array::from_fn(|i| -self.phi_t[info.joints[layout.drivers[i]].row_start]);
+            std::array::from_fn(|i| -phi_t[info.joints[layout.drivers[i]].row_start]);
         match s.lambda {
             Some(l) => self.lambda.copy_from_slice(l),
             None => {
@@ -412,14 +408,14 @@ impl Recorder {
         for i in 0..LEGS {
             upper[i] = joint_force(
                 info,
-                &self.jac,
+                jac,
                 &self.lambda,
                 layout.upper_joints[i],
                 layout.platform,
             )?;
             lower[i] = joint_force(
                 info,
-                &self.jac,
+                jac,
                 &self.lambda,
                 layout.lower_joints[i],
                 layout.lower_bodies[i],

@@ -712,7 +712,12 @@ impl KktSolver for SchurKkt {
         for (r, &gi) in self.rvec.iter_mut().zip(g) {
             *r = -gi;
         }
-        for b in 0..nb {
+        // f = 0 (a position correction, the least-energy velocity): u = 0 adds nothing to r.
+        let f_nonzero = f.iter().any(|&v| v != 0.0);
+        if !f_nonzero {
+            self.ustore.fill(0.0);
+        }
+        for b in (0..nb).filter(|_| f_nonzero) {
             let (c0, c1) = (self.block_ptr[b], self.block_ptr[b + 1]);
             let s = c1 - c0;
             let u = &mut self.ustore[c0..c1];
