@@ -27,7 +27,8 @@ pub(super) enum End {
     Failed,
 }
 
-/// The start platform, the target, and this attempt's random choices.
+/// The start platform, the direction from it to the target, and this attempt's random
+/// choices (the arc's γ and the affine patch).
 pub(super) struct ParameterHomotopy<'a> {
     start: &'a Study,
     delta: Study,
@@ -42,8 +43,8 @@ const PREDICTOR_ERROR: f64 = 3e-3;
 /// A first correction larger than this (relative) rejects the step: the prediction may have
 /// left its path's basin.
 const MAX_FIRST_CORRECTION: f64 = 5e-2;
-/// Newton on a path stops at this increment (relative): enough to predict from, and the end
-/// is refined to roundoff anyway.
+/// Newton on a path stops when its estimated error (the next increment, from the contraction
+/// so far) is below this (relative): enough to predict from; the end is refined to roundoff.
 const PATH_TOLERANCE: f64 = 1e-7;
 const MAX_CORRECTIONS: usize = 3;
 const MAX_STEPS: usize = 5_000;
