@@ -1244,6 +1244,8 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
 /// flat position), where a fixed floor would leave Newton chasing noise until the step fails.
 #[derive(Debug)]
 struct NoiseProbe {
+    /// The roundoff of the residual's entries, unsigned: the same for every sign pattern.
+    size: Vec<f64>,
     /// The signed right-hand side: roundoff of the residual's entries, and of Φ's.
     f: Vec<f64>,
     g: Vec<f64>,
@@ -1256,6 +1258,7 @@ struct NoiseProbe {
 impl NoiseProbe {
     fn new(n: usize, m: usize) -> Self {
         NoiseProbe {
+            size: vec![0.0; n],
             f: vec![0.0; n],
             g: vec![0.0; m],
             x: vec![0.0; n],
@@ -1276,17 +1279,21 @@ impl NoiseProbe {
         let g0 = NOISE_FACTOR * f64::EPSILON * scale;
         let m = self.g.len();
         let (mut floor_a, mut floor_l) = (g0, g0 * inf_norm(r.mass));
+        mass_times(info, r.mass, r.qdd, &mut self.size);
+        for (i, size) in self.size.iter_mut().enumerate() {
+            *size = NOISE_FACTOR
+                * f64::EPSILON
+                * ((r.c * *size).abs()
+                    + r.reaction[i].abs()
+                    + r.force[i].abs()
+                    + (r.previous_weight * r.previous[i]).abs());
+        }
         for pattern in 0..probe_patterns(m + self.f.len()) {
             for (i, g) in self.g.iter_mut().enumerate() {
                 *g = probe_sign(pattern, i) * g0;
             }
-            mass_times(info, r.mass, r.qdd, &mut self.f);
-            for (i, f) in self.f.iter_mut().enumerate() {
-                let size = (r.c * *f).abs()
-                    + r.reaction[i].abs()
-                    + r.force[i].abs()
-                    + (r.previous_weight * r.previous[i]).abs();
-                *f = probe_sign(pattern, m + i) * NOISE_FACTOR * f64::EPSILON * size;
+            for (i, (f, &size)) in self.f.iter_mut().zip(&self.size).enumerate() {
+                *f = probe_sign(pattern, m + i) * size;
             }
             kkt.solve(&self.f, &self.g, &mut self.x, &mut self.y)?;
             floor_a = floor_a.max(inf_norm(&self.x));
