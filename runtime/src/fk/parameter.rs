@@ -15,7 +15,7 @@
 //! follows the size of the first correction (the predictor's error, O(h⁴)).
 
 use super::modes::SplitMix;
-use super::study::{degenerate, size, Lu, Study, C, Z};
+use super::study::{degenerate, size, LegVectors, Lu, Study, C, Z};
 
 /// How a path ended.
 pub(super) enum End {
@@ -75,18 +75,19 @@ impl<'a> ParameterHomotopy<'a> {
         )
     }
 
-    /// `dz/ds` at `z`, with the factorization `lu` of `∂H/∂z` there.
-    fn tangent(&self, study: &Study, rate: C, z: &Z, lu: &Lu) -> Z {
-        -lu.solve(&(study.rate(z, &self.delta) * rate))
+    /// `dz/ds` at `z`, with its legs' `u` and the factorization `lu` of `∂H/∂z` there.
+    fn tangent(&self, study: &Study, rate: C, z: &Z, us: &LegVectors, lu: &Lu) -> Z {
+        -lu.solve(&(study.rate(z, us, &self.delta) * rate))
     }
 
     /// Follows the path from the start solution `z` (on the patch) to `s = 1`.
     pub(super) fn track(&self, mut z: Z) -> End {
         let (study, rate) = self.at(0.0);
-        let Some(lu) = Lu::new(&study.eval(&z, &self.patch).1) else {
+        let us = study.legs(&z);
+        let Some(lu) = Lu::new(&study.eval_with(&z, &us, &self.patch).1) else {
             return End::Failed;
         };
-        let mut tangent = self.tangent(&study, rate, &z, &lu);
+        let mut tangent = self.tangent(&study, rate, &z, &us, &lu);
         let mut s = 0.0_f64;
         let mut previous: Option<(f64, Z, Z)> = None;
         let mut h = FIRST_STEP;
@@ -131,10 +132,11 @@ impl<'a> ParameterHomotopy<'a> {
         let mut first = 0.0;
         let mut last = f64::INFINITY;
         for it in 0..MAX_CORRECTIONS {
-            let (f, j) = study.eval(&z, &self.patch);
+            let us = study.legs(&z);
+            let (f, j) = study.eval_with(&z, &us, &self.patch);
             let lu = Lu::new(&j)?;
             let dz = -lu.solve(&f);
-            let at = z;
+            let from = z;
             z += dz;
             let (step, scale) = (size(&dz), 1.0 + size(&z));
             if !step.is_finite() {
@@ -153,7 +155,7 @@ impl<'a> ParameterHomotopy<'a> {
             let next = if it == 0 { step } else { step * step / last };
             if next <= PATH_TOLERANCE * scale {
                 // The factorization is one increment old: the tangent's error is O(|dz|).
-                return Some((z, self.tangent(&study, rate, &at, &lu), first));
+                return Some((z, self.tangent(&study, rate, &from, &us, &lu), first));
             }
             last = step;
         }

@@ -19,6 +19,8 @@ pub(super) type Z = SVector<C, 8>;
 /// An 8 × 8 complex matrix as its columns (`j[c][r]`).
 pub(super) type J = [[C; 8]; 8];
 type V3 = [C; 3];
+/// Each leg's `u = M e + 2g` ([`Study::legs`]).
+pub(super) type LegVectors = [[C; 4]; 6];
 
 /// One platform's coefficients: for each leg `dᵢ = bᵢ − aᵢ` and `sᵢ = bᵢ + aᵢ`, which make
 /// `Mᵢ e = (−dᵢ·ε, e₀ dᵢ + ε × sᵢ)` for `e = (e₀, ε)`, and the squared lengths.
@@ -93,8 +95,9 @@ impl Study {
         }
     }
 
-    /// `u = M e + 2g` for each leg at `z`.
-    fn legs(&self, z: &Z) -> [[C; 4]; 6] {
+    /// `u = M e + 2g` for each leg at `z`: what [`Study::eval_with`] and [`Study::rate`]
+    /// share at one point.
+    pub(super) fn legs(&self, z: &Z) -> LegVectors {
         let (e0, ev) = (z[0], [z[1], z[2], z[3]]);
         std::array::from_fn(|i| {
             let me = m_times(&self.d[i], &self.s[i], e0, &ev);
@@ -105,10 +108,14 @@ impl Study {
     /// The equations at `z` and their Jacobian: rows 0..5 `F_{k+1} − F_0`, row 5 `F_0`,
     /// row 6 the Study condition, row 7 the affine patch `patch · z = 1`.
     pub(super) fn eval(&self, z: &Z, patch: &Z) -> (Z, J) {
+        self.eval_with(z, &self.legs(z), patch)
+    }
+
+    /// [`Study::eval`] with the legs' `u` at `z` ([`Study::legs`]) already known.
+    pub(super) fn eval_with(&self, z: &Z, us: &LegVectors, patch: &Z) -> (Z, J) {
         let (e0, ev) = (z[0], [z[1], z[2], z[3]]);
         let gv = [z[5], z[6], z[7]];
         let ee = e0 * e0 + dot3(&ev, &ev);
-        let us = self.legs(z);
         let mut legs = [C::new(0.0, 0.0); 6];
         // Row i of the leg equations' gradient: ∂/∂e = 2Mᵀu − 2L²e, ∂/∂g = 4u.
         let mut grads = [[C::new(0.0, 0.0); 8]; 6];
@@ -150,11 +157,10 @@ impl Study {
     }
 
     /// The rows of [`Study::eval`] differentiated as the coefficients move along `along`
-    /// (the Study condition and the patch do not move).
-    pub(super) fn rate(&self, z: &Z, along: &Study) -> Z {
+    /// (the Study condition and the patch do not move), with the legs' `u` at `z`.
+    pub(super) fn rate(&self, z: &Z, us: &LegVectors, along: &Study) -> Z {
         let (e0, ev) = (z[0], [z[1], z[2], z[3]]);
         let ee = e0 * e0 + dot3(&ev, &ev);
-        let us = self.legs(z);
         let rates: [C; 6] = std::array::from_fn(|i| {
             let (u, de) = (&us[i], m_times(&along.d[i], &along.s[i], e0, &ev));
             2.0 * (u[0] * de[0] + u[1] * de[1] + u[2] * de[2] + u[3] * de[3]) - ee * along.l2[i]

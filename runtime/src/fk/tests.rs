@@ -255,7 +255,7 @@ fn study_jacobian_and_parameter_rate_match_central_differences() {
             }
         }
         let delta = study.towards(&other);
-        let rate = study.rate(&z, &delta);
+        let rate = study.rate(&z, &study.legs(&z), &delta);
         let (fp, _) = study.moved(&delta, h).eval(&z, &patch);
         let (fm, _) = study.moved(&delta, -h).eval(&z, &patch);
         for r in 0..8 {
