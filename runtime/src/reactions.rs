@@ -198,9 +198,10 @@ pub fn joint_force(
     Ok(f)
 }
 
-/// The nonzeros of Φq that may lie in `rows`: in a row-major pattern (every generated one)
-/// one run, found by bisection, so a reaction costs its own entries rather than a scan of
-/// the whole Jacobian; all of them otherwise.
+/// The nonzeros of Φq that may lie in `rows`: in a row-major pattern (as `MechanismInfo`
+/// documents, and every generated one is) one run, found by bisection, so a reaction's sums
+/// cost its own entries; all of them otherwise. Checking the order is one pass of integer
+/// comparisons, kept so that a hand-written pattern out of order is summed right, not fast.
 fn rows_nonzeros(info: &MechanismInfo, rows: &std::ops::Range<usize>) -> std::ops::Range<usize> {
     let all = info.phi_q_rows;
     match all.is_sorted() {
