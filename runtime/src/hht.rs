@@ -1038,16 +1038,21 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                     Some(st) => {
                         self.mech
                             .force_jacobian(&self.q1, &self.qd1, t1, &mut st.dq, &mut st.dqd);
-                        let a = st.assemble(&self.mass, c, beta * h * h, gamma * h);
-                        match self.kkt.factor(a, 1.0, &self.phi_q) {
-                            // A load whose symmetric part is destabilizing (a compressed
-                            // spring's geometric term) outweighed M: Newton with M alone.
-                            Err(KktError::MassNotPositiveDefinite { .. }) => {
-                                let a = st.assemble(&self.mass, c, 0.0, 0.0);
-                                self.kkt.factor(a, 1.0, &self.phi_q)
+                        // A load whose symmetric part is destabilizing can outweigh M: a
+                        // tensioned spring's geometric term along a body's smallest inertia
+                        // (A05's rods spin about their own axis at 2e-5 kg·m²). The damping
+                        // part of a passive load is positive semi-definite, and it is the one
+                        // that limits Newton (γh·c/m ≫ βh²·k/m), so it is kept when the
+                        // stiffness has to go; M alone is the last resort.
+                        let mut result = Err(KktError::NotFactored);
+                        for (kq, kqd) in [(beta * h * h, gamma * h), (0.0, gamma * h), (0.0, 0.0)] {
+                            let a = st.assemble(&self.mass, c, kq, kqd);
+                            result = self.kkt.factor(a, 1.0, &self.phi_q);
+                            if !matches!(result, Err(KktError::MassNotPositiveDefinite { .. })) {
+                                break;
                             }
-                            other => other,
                         }
+                        result
                     }
                 };
                 factored.map_err(|e| {

@@ -7,7 +7,9 @@
 //! problem misses. `--short` runs the shortened lengths the CI test uses
 //! (`mbs_benchmarks_short.*`). `--steps 1e-3,5e-4` runs each problem at each of those steps
 //! (its own α, or `--alpha A`) instead of its own step: error against CPU time,
-//! `mbs_benchmarks_sweep[_<only>].*`, where a miss is a result, not a failure. `--spatial` runs
+//! `mbs_benchmarks_sweep[_<only>].*`, where a miss is a result, not a failure. `--rtols
+//! 1e-4,1e-5` runs each problem with step-size control instead, at each rtol (= atol;
+//! `mbs_benchmarks_control[_<only>].*`). `--spatial` runs
 //! A01 and A02 N = 40 on their spatial models instead of their planar ones
 //! (`mbs_benchmarks_spatial.*`). Not run in CI.
 
@@ -27,18 +29,27 @@ fn main() {
     // The problems that run a planar model (A01, A02 N = 40) on their spatial one instead.
     let spatial = args.iter().any(|a| a == "--spatial");
     let only = value("--only");
-    let steps: Option<Vec<f64>> = match value("--steps").map(|list| {
-        list.split(',')
-            .map(|v| v.trim().parse::<f64>().ok().filter(|h| *h > 0.0))
-            .collect::<Option<Vec<f64>>>()
-    }) {
-        None => None,
-        Some(Some(steps)) if !steps.is_empty() => Some(steps),
-        Some(_) => {
-            eprintln!("error: --steps takes positive step sizes separated by commas, e.g. --steps 1e-3,5e-4");
-            std::process::exit(2);
+    let list = |flag: &str, what: &str, example: &str| -> Option<Vec<f64>> {
+        match value(flag).map(|list| {
+            list.split(',')
+                .map(|v| v.trim().parse::<f64>().ok().filter(|h| *h > 0.0))
+                .collect::<Option<Vec<f64>>>()
+        }) {
+            None => None,
+            Some(Some(values)) if !values.is_empty() => Some(values),
+            Some(_) => {
+                eprintln!("error: {flag} takes positive {what} separated by commas, e.g. {flag} {example}");
+                std::process::exit(2);
+            }
         }
     };
+    let steps = list("--steps", "step sizes", "1e-3,5e-4");
+    let rtols = list("--rtols", "tolerances", "1e-4,1e-5");
+    if steps.is_some() && rtols.is_some() {
+        eprintln!("error: --steps and --rtols are separate sweeps; give one");
+        std::process::exit(2);
+    }
+    let sweep = steps.is_some() || rtols.is_some();
     let alpha: Option<f64> = match value("--alpha").map(|a| a.parse::<f64>()) {
         None => None,
         Some(Ok(a)) if (-1.0 / 3.0..=0.0).contains(&a) => Some(a),
@@ -48,7 +59,7 @@ fn main() {
         }
     };
     let mut csv = String::from(
-        "problem,mechanism,t_end_s,measure,error,tolerance,passed,cpu_s,steps,newton_iterations,step_s,alpha\n",
+        "problem,mechanism,t_end_s,measure,error,tolerance,passed,cpu_s,steps,newton_iterations,step_s,alpha,rtol,rejected_steps,smallest_step_s,largest_step_s\n",
     );
     let mut md = String::from(
         "| problem | t_end | error (measure in the notes) | tolerance | result | CPU (symbody) | steps | published CPU (other codes) |\n|---|---|---|---|---|---|---|---|\n",
@@ -66,9 +77,16 @@ fn main() {
             planar: p.settings.planar && !spatial,
             ..p.settings
         };
-        let runs: Vec<Settings> = match &steps {
-            Some(steps) => steps.iter().map(|&step| Settings { step, ..own }).collect(),
-            None => vec![own],
+        let runs: Vec<Settings> = match (&steps, &rtols) {
+            (Some(steps), _) => steps.iter().map(|&step| Settings { step, ..own }).collect(),
+            (_, Some(rtols)) => rtols
+                .iter()
+                .map(|&r| Settings {
+                    tolerances: Some((r, r)),
+                    ..own
+                })
+                .collect(),
+            _ => vec![own],
         };
         for settings in runs {
             eprintln!(
@@ -78,23 +96,27 @@ fn main() {
             match (p.run)(t_end, settings) {
                 Ok(o) => {
                     failed |= !o.passed(spec);
-                    row(&mut csv, &mut md, spec, &o);
+                    row(&mut csv, &mut md, spec, &o, &settings);
                 }
                 Err(e) => {
                     failed = true;
                     let _ = writeln!(
                         md,
-                        "| {} | {t_end} s | not run | {:.0e} | **failed**: {e} | | (h = {:e}, α = {}) | {} |",
+                        "| {} | {t_end} s | not run | {:.0e} | **failed**: {e} | | ({}) | {} |",
                         spec.id,
                         spec.tolerance,
-                        settings.step,
-                        settings.alpha,
+                        how(&settings, None),
                         published(spec)
                     );
                     let _ = writeln!(
                         csv,
-                        "{},{},{t_end},,,{},false,,,,{:e},{}",
-                        spec.id, spec.mechanism, spec.tolerance, settings.step, settings.alpha
+                        "{},{},{t_end},,,{},false,,,,{:e},{},{}",
+                        spec.id,
+                        spec.mechanism,
+                        spec.tolerance,
+                        settings.step,
+                        settings.alpha,
+                        rtol(&settings)
                     );
                 }
             }
@@ -119,15 +141,16 @@ fn main() {
     let dir = PathBuf::from("bench-results");
     // A sweep of one problem (`--only A05`) gets its own files, so sweeps do not overwrite
     // each other.
-    let only_tag: String = match (&steps, &only) {
-        (Some(_), Some(o)) => format!("_{}", o.replace(|c: char| !c.is_alphanumeric(), "")),
+    let only_tag: String = match (sweep, &only) {
+        (true, Some(o)) => format!("_{}", o.replace(|c: char| !c.is_alphanumeric(), "")),
         _ => String::new(),
     };
     let suffix = format!(
-        "{}{}{}{only_tag}",
+        "{}{}{}{}{only_tag}",
         if short { "_short" } else { "" },
         if spatial { "_spatial" } else { "" },
-        if steps.is_some() { "_sweep" } else { "" }
+        if steps.is_some() { "_sweep" } else { "" },
+        if rtols.is_some() { "_control" } else { "" }
     );
     let written = std::fs::create_dir_all(&dir)
         .and_then(|_| std::fs::write(dir.join(format!("mbs_benchmarks{suffix}.csv")), &csv))
@@ -137,16 +160,16 @@ fn main() {
         std::process::exit(2);
     }
     print!("{md}");
-    if failed && steps.is_none() && alpha.is_none() {
+    if failed && !sweep && alpha.is_none() {
         std::process::exit(1);
     }
 }
 
-fn row(csv: &mut String, md: &mut String, spec: &Spec, o: &Outcome) {
+fn row(csv: &mut String, md: &mut String, spec: &Spec, o: &Outcome, settings: &Settings) {
     let passed = o.passed(spec);
     let _ = writeln!(
         csv,
-        "{},{},{},\"{}\",{:e},{:e},{},{:.6},{},{},{:e},{}",
+        "{},{},{},\"{}\",{:e},{:e},{},{:.6},{},{},{:e},{},{},{},{:e},{:e}",
         spec.id,
         spec.mechanism,
         o.t_end,
@@ -158,11 +181,15 @@ fn row(csv: &mut String, md: &mut String, spec: &Spec, o: &Outcome) {
         o.stats.steps,
         o.stats.newton_iterations,
         o.step,
-        o.alpha
+        o.alpha,
+        rtol(settings),
+        o.stats.rejected_steps,
+        o.stats.smallest_step,
+        o.stats.largest_step
     );
     let _ = writeln!(
         md,
-        "| {} | {} s | {:.2e} | {:.0e} | {} | {:.3} s | {} (h = {:e}, α = {}) | {} |",
+        "| {} | {} s | {:.2e} | {:.0e} | {} | {:.3} s | {} ({}) | {} |",
         spec.id,
         o.t_end,
         o.error,
@@ -170,10 +197,30 @@ fn row(csv: &mut String, md: &mut String, spec: &Spec, o: &Outcome) {
         if passed { "pass" } else { "**fail**" },
         o.cpu.as_secs_f64(),
         o.stats.steps,
-        o.step,
-        o.alpha,
+        how(settings, Some(o)),
         published(spec)
     );
+}
+
+/// The csv's rtol column: empty for a fixed step.
+fn rtol(settings: &Settings) -> String {
+    settings
+        .tolerances
+        .map(|(r, _)| format!("{r:e}"))
+        .unwrap_or_default()
+}
+
+/// How the steps were chosen: the fixed step, or the tolerance and the range of steps taken
+/// (with the rejected attempts).
+fn how(settings: &Settings, o: Option<&Outcome>) -> String {
+    match (settings.tolerances, o) {
+        (None, _) => format!("h = {:e}, α = {}", settings.step, settings.alpha),
+        (Some((r, _)), None) => format!("rtol = atol = {r:e}, α = {}", settings.alpha),
+        (Some((r, _)), Some(o)) => format!(
+            "rtol = atol = {r:e}, h {:.2e}–{:.2e}, {} rejected, α = {}",
+            o.stats.smallest_step, o.stats.largest_step, o.stats.rejected_steps, settings.alpha
+        ),
+    }
 }
 
 fn published(spec: &Spec) -> String {
