@@ -78,7 +78,14 @@ fn main() {
             ..p.settings
         };
         let runs: Vec<Settings> = match (&steps, &rtols) {
-            (Some(steps), _) => steps.iter().map(|&step| Settings { step, ..own }).collect(),
+            (Some(steps), _) => steps
+                .iter()
+                .map(|&step| Settings {
+                    step,
+                    tolerances: None,
+                    ..own
+                })
+                .collect(),
             (_, Some(rtols)) => rtols
                 .iter()
                 .map(|&r| Settings {

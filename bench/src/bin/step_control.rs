@@ -114,6 +114,7 @@ fn main() {
                     format!("fixed,{h:e}"),
                     Settings {
                         step: h,
+                        tolerances: None,
                         ..p.settings
                     },
                 )
