@@ -1038,12 +1038,12 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                     Some(st) => {
                         self.mech
                             .force_jacobian(&self.q1, &self.qd1, t1, &mut st.dq, &mut st.dqd);
-                        // A load whose symmetric part is destabilizing can outweigh M: a
-                        // tensioned spring's geometric term along a body's smallest inertia
-                        // (A05's rods spin about their own axis at 2e-5 kg·m²). The damping
-                        // part of a passive load is positive semi-definite, and it is the one
-                        // that limits Newton (γh·c/m ≫ βh²·k/m), so it is kept when the
-                        // stiffness has to go; M alone is the last resort.
+                        // A load whose symmetric stiffness has a negative part (a spring's
+                        // geometric term) can outweigh M in some direction: A05's governor
+                        // beyond h ≈ 1e-3 s, whose rods have 5e-6 kg·m² about their own
+                        // axis. The damping part of a passive load is positive semi-definite,
+                        // and it is the one that limits Newton (γh·c/m ≫ βh²·k/m), so it is
+                        // kept when the stiffness has to go; M alone is the last resort.
                         let mut result = Err(KktError::NotFactored);
                         for (kq, kqd) in [(beta * h * h, gamma * h), (0.0, gamma * h), (0.0, 0.0)] {
                             let a = st.assemble(&self.mass, c, kq, kqd);
