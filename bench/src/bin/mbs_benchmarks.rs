@@ -3,7 +3,7 @@
 //! pass/fail, our CPU time and the CPU times other codes published.
 //!
 //! `cargo run --release -p symbody-bench --bin mbs_benchmarks [-- --short] [-- --only A01]` writes
-//! `bench-results/mbs_benchmarks.{csv,md}` and prints the Markdown; it exits with 1 when a
+//! `bench-results/mbs_benchmarks[_<only>].{csv,md}` and prints the Markdown; it exits with 1 when a
 //! problem misses. `--short` runs the shortened lengths the CI test uses
 //! (`mbs_benchmarks_short.*`). `--steps 1e-3,5e-4` runs each problem at each of those steps
 //! (its own α, or `--alpha A`) instead of its own step: error against CPU time,
@@ -146,11 +146,11 @@ fn main() {
     md.push('\n');
     md.push_str(&notes);
     let dir = PathBuf::from("bench-results");
-    // A sweep of one problem (`--only A05`) gets its own files, so sweeps do not overwrite
-    // each other.
-    let only_tag: String = match (sweep, &only) {
-        (true, Some(o)) => format!("_{}", o.replace(|c: char| !c.is_alphanumeric(), "")),
-        _ => String::new(),
+    // A run of one problem (`--only A05`) gets its own files, so it neither overwrites the
+    // table of all five nor another problem's sweep.
+    let only_tag: String = match &only {
+        Some(o) => format!("_{}", o.replace(|c: char| !c.is_alphanumeric(), "")),
+        None => String::new(),
     };
     let suffix = format!(
         "{}{}{}{}{only_tag}",
