@@ -60,6 +60,23 @@ fn a05_flyball_governor() {
     check("A05");
 }
 
+/// A05's governor over its first second at a fixed step `h`, α = 0, velocities projected,
+/// with or without the loads' stiffness in Newton's matrix: the integrator's statistics.
+fn flyball_first_second(h: f64, load_stiffness: bool) -> symbody_runtime::Stats {
+    let mech = symbody::generic::find(&symbody_benchmark_mechanisms::REGISTRY, "flyball_governor")
+        .unwrap()
+        .default_mechanism();
+    let mut it = symbody_runtime::HhtBuilder::new()
+        .step(h)
+        .alpha(0.0)
+        .project_velocities(true)
+        .load_stiffness(load_stiffness)
+        .build(mech)
+        .unwrap();
+    it.advance_to(1.0).unwrap();
+    it.stats()
+}
+
 /// A05's damper (c/m ≈ 8000 s⁻¹) does not limit the step once the loads' stiffness and
 /// damping are in HHT's Newton matrix (docs/design.md, decision 28): at the benchmark's
 /// h = 4e-4, α = 0, every step of the first second is accepted at its first attempt
@@ -68,24 +85,10 @@ fn a05_flyball_governor() {
 /// 13 912 steps, 157 235 iterations).
 #[test]
 fn a05_stiff_damper_does_not_limit_the_step() {
-    let mech = symbody::generic::find(&symbody_benchmark_mechanisms::REGISTRY, "flyball_governor")
-        .unwrap()
-        .default_mechanism();
-    let run = |with_loads: bool| {
-        let mut it = symbody_runtime::HhtBuilder::new()
-            .step(4e-4)
-            .alpha(0.0)
-            .project_velocities(true)
-            .load_stiffness(with_loads)
-            .build(mech)
-            .unwrap();
-        it.advance_to(1.0).unwrap();
-        it.stats()
-    };
-    let with = run(true);
+    let with = flyball_first_second(4e-4, true);
     assert_eq!(with.rejected_steps, 0, "{with:?}");
     assert_eq!(with.steps, 2500, "{with:?}");
-    let without = run(false);
+    let without = flyball_first_second(4e-4, false);
     assert!(without.rejected_steps > without.steps / 2, "{without:?}");
     assert!(
         10 * with.newton_iterations < without.newton_iterations,
@@ -101,17 +104,7 @@ fn a05_stiff_damper_does_not_limit_the_step() {
 /// rejections in 9 471 steps with M alone; none now).
 #[test]
 fn a05_an_indefinite_load_stiffness_keeps_the_damping_in_newton() {
-    let mech = symbody::generic::find(&symbody_benchmark_mechanisms::REGISTRY, "flyball_governor")
-        .unwrap()
-        .default_mechanism();
-    let mut it = symbody_runtime::HhtBuilder::new()
-        .step(2e-3)
-        .alpha(0.0)
-        .project_velocities(true)
-        .build(mech)
-        .unwrap();
-    it.advance_to(1.0).unwrap();
-    let s = it.stats();
+    let s = flyball_first_second(2e-3, true);
     assert_eq!(s.rejected_steps, 0, "{s:?}");
     assert_eq!(s.steps, 500, "{s:?}");
     assert!(s.newton_iterations <= 6 * s.steps, "{s:?}");
