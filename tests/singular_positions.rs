@@ -55,12 +55,14 @@ fn total_energy(mech: &dyn Mechanism, q: &[f64], qd: &[f64]) -> f64 {
     symbody_runtime::kinematics::kinetic_energy(info, &mass, qd) + mech.potential(q)
 }
 
-/// `generic::run` of `entry` to `T_END` at step `h`, crossing singular positions: it must
-/// get there across every flat position, holding Φ and the energy.
+/// `generic::run` of `entry` to `T_END` at step `h`, crossing singular positions, outputs
+/// every millisecond: it must get there across every flat position, holding Φ and the energy,
+/// and flag the reactions near each flat position as ill-conditioned.
 fn crossing_run(entry: &Entry, h: f64) -> Recording {
     let opts = Options {
         t_end: Some(T_END),
         step: h,
+        output_step: 1e-3,
         cross_singular: true,
         ..Options::default()
     };
@@ -74,6 +76,20 @@ fn crossing_run(entry: &Entry, h: f64) -> Recording {
         drift < 1e-4 * scale,
         "h = {h}: energy drift {drift} of {scale}"
     );
+    // Each flat position flags the output nearest to it (measured: relative pivots 4e-7 …
+    // 4e-6 there, within 0.5 ms of the flat position), and only those outputs are flagged
+    // (ill-conditioned reactions).
+    let windows = rec.ill_conditioned();
+    assert_eq!(windows.len(), FLATS, "h = {h}: {windows:?}");
+    for w in windows {
+        let k = rec.t.iter().position(|&t| t == w.at).unwrap();
+        let s = crank_sine(rec.info, &rec.q[k]);
+        assert!(
+            s.abs() < 0.05,
+            "h = {h}: flagged at t = {} where sin θ = {s}",
+            w.at
+        );
+    }
     rec
 }
 
@@ -84,20 +100,7 @@ fn simulate_sweep(ks: impl Iterator<Item = usize>) -> Vec<(f64, f64)> {
     let mut finals = Vec::new();
     for h in ks.map(|k| STEPS[k]) {
         let rec = crossing_run(entry, h);
-        let info = rec.info;
-        // Flagged outputs (ill-conditioned reactions) are those near a flat position.
-        let windows = rec.ill_conditioned();
-        assert!(!windows.is_empty(), "h = {h}");
-        for w in windows {
-            let k = rec.t.iter().position(|&t| t == w.at).unwrap();
-            let s = crank_sine(info, &rec.q[k]);
-            assert!(
-                s.abs() < 0.05,
-                "h = {h}: flagged at t = {} where sin θ = {s}",
-                w.at
-            );
-        }
-        finals.push((h, crank_sine(info, rec.q.last().unwrap())));
+        finals.push((h, crank_sine(rec.info, rec.q.last().unwrap())));
     }
     finals
 }
@@ -107,8 +110,8 @@ fn simulate_sweep(ks: impl Iterator<Item = usize>) -> Vec<(f64, f64)> {
 /// noise probe tried several sign patterns, h = 4e-4 and 2.5e-4 stopped at t = 0.714 s: the
 /// one pseudo-random pattern was nearly orthogonal to the direction Φq loses there, so the
 /// Newton noise floor was underestimated 70–300× and the step was cut until it failed.
-#[test]
-fn the_euler_angle_model_crosses_every_flat_position_too() {
+/// The shipped file with `rotation = "euler"` on every body, interpreted.
+fn euler_entry() -> &'static Entry {
     let shipped = concat!(env!("CARGO_MANIFEST_DIR"), "/mechanisms/n_four_bar_2.toml");
     let text = std::fs::read_to_string(shipped).unwrap();
     assert!(
@@ -118,14 +121,71 @@ fn the_euler_angle_model_crosses_every_flat_position_too() {
     let euler = text.replace("[[body]]\n", "[[body]]\nrotation = \"euler\"\n");
     let dir = std::env::temp_dir().join(format!("symbody-euler-a02-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("n_four_bar_2_euler.toml");
+    let path = dir.join(format!(
+        "n_four_bar_2_euler_{:?}.toml",
+        std::thread::current().id()
+    ));
     std::fs::write(&path, euler).unwrap();
     let entry = symbody::files::load(&path).unwrap().entry;
+    let _ = std::fs::remove_file(&path);
+    entry
+}
+
+#[test]
+fn the_euler_angle_model_crosses_every_flat_position_too() {
+    let entry = euler_entry();
     for h in [1e-3, 5e-4, 4e-4, 2.5e-4, 1e-4] {
         let rec = crossing_run(entry, h);
         assert_eq!(rec.info.bodies[0].rotation, Rotation::Euler);
     }
-    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The ill-conditioned-reactions flag reads the smallest relative pivot of the multipliers'
+/// solve. It must measure the mechanism, not its coordinates: at every output of a run
+/// through four flat positions, the quaternion model and the Euler-angle model at the same
+/// physical state give the same smallest pivot and drop the same number of rows.
+/// (Reference: the other model. Before the quaternions' unit rows were eliminated first, the
+/// quaternion model's pivots near the flat positions were 10–34× smaller.)
+#[test]
+fn the_ill_conditioning_measure_does_not_depend_on_the_rotation_coordinates() {
+    let quat = REGISTRY.find(NAME).unwrap();
+    let rec = crossing_run(quat, 1e-3);
+    let euler = euler_entry().default_mechanism();
+    let (qi, ei) = (rec.info, euler.info());
+    let solves = KinematicSettings {
+        drop_dependent_rows: Some(DEFAULT_PIVOT_TOLERANCE),
+        ..KinematicSettings::default()
+    };
+    let mut on_quat: EnergyMeter = EnergyMeter::with_settings(qi, solves).unwrap();
+    let mut on_euler: EnergyMeter = EnergyMeter::with_settings(ei, solves).unwrap();
+    let mut smallest = f64::INFINITY;
+    for (k, &t) in rec.t.iter().enumerate() {
+        let (q, qd) = (&rec.q[k], &rec.qd[k]);
+        // Every body turns about Z: e = (cos γ/2, 0, 0, sin γ/2), ω_z = 2 (e0 ė3 − e3 ė0).
+        let (mut qe, mut qde) = (vec![0.0; ei.n_coords], vec![0.0; ei.n_coords]);
+        for (bq, be) in qi.bodies.iter().zip(ei.bodies) {
+            let (o, p) = (bq.coord_offset, be.coord_offset);
+            qe[p..p + 3].copy_from_slice(&q[o..o + 3]);
+            qde[p..p + 3].copy_from_slice(&qd[o..o + 3]);
+            let (e, ed) = (&q[o + 3..o + 7], &qd[o + 3..o + 7]);
+            assert!(e[1].abs() < 1e-12 && e[2].abs() < 1e-12, "t = {t}: {e:?}");
+            qe[p + 5] = 2.0 * e[3].atan2(e[0]);
+            qde[p + 5] = 2.0 * (e[0] * ed[3] - e[3] * ed[0]);
+        }
+        on_quat.record(&quat.default_mechanism(), t, q, qd).unwrap();
+        on_euler.record(&euler, t, &qe, &qde).unwrap();
+        let (a, b) = (on_quat.pivots().unwrap(), on_euler.pivots().unwrap());
+        assert_eq!(a.dropped, b.dropped, "t = {t}");
+        assert!(
+            (a.smallest - b.smallest).abs() <= 1e-6 * b.smallest,
+            "t = {t}: quaternions {} against Euler angles {}",
+            a.smallest,
+            b.smallest
+        );
+        smallest = smallest.min(b.smallest);
+    }
+    // The run passed close to the flat positions, where the measure is small.
+    assert!(smallest < 1e-4, "{smallest}");
 }
 
 // The sweep in two halves, so the two run side by side.

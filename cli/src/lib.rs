@@ -788,7 +788,7 @@ fn report_named(
         let dropped: usize = windows.iter().map(|w| w.dropped).sum();
         let first = windows[0];
         say!(
-            "  reactions        ill-conditioned near singular positions at {outputs} output(s) in {} window(s), the first t = {:.4} .. {:.4} s; smallest relative pivot {:.1e} at t = {:.4} s (regular positions: ~1e-3 or more){}: there the reactions amplify the motion's error by about 1/pivot (README: singular positions)",
+            "  reactions        ill-conditioned near singular positions at {outputs} output(s) in {} window(s), the first t = {:.4} .. {:.4} s; smallest relative pivot {:.1e} at t = {:.4} s (regular positions: typically 1e-3 or more){}: there the reactions amplify the motion's error by about 1/pivot (README: singular positions)",
             windows.len(),
             first.from,
             first.to,

@@ -27,7 +27,7 @@ pub use schur::SchurKkt;
 use std::fmt;
 
 use crate::error::{ConstraintRow, Error};
-use crate::mechanism::MechanismInfo;
+use crate::mechanism::{JointKind, MechanismInfo};
 
 /// The sizes and sparsity patterns a KKT solver is built for.
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -47,6 +47,11 @@ pub struct KktPattern {
     /// Rows solved as if absent (their `y` is 0): rows the generator found to be linear
     /// combinations of others ([`MechanismInfo::redundant_rows`]). Ascending.
     pub redundant_rows: Vec<u32>,
+    /// Rows that fix a coordinate direction without physical meaning: a quaternion body's
+    /// `eᵀe − 1` ([`JointKind::Normalization`]). [`SchurKkt`] eliminates them first, so
+    /// that its pivots measure the remaining rows' independence in the kinetic metric on
+    /// the configuration space alone, whatever the rotation coordinates. Ascending.
+    pub normalization_rows: Vec<u32>,
     /// `M` is only positive semi-definite (a body has a zero principal inertia, e.g. a
     /// slender rod about its own axis): the saddle point is still regular when the
     /// constraints fix the directions without kinetic energy (the generator checks that),
@@ -65,6 +70,12 @@ impl KktPattern {
             phi_q_rows: info.phi_q_rows.to_vec(),
             phi_q_cols: info.phi_q_cols.to_vec(),
             redundant_rows: info.redundant_rows.to_vec(),
+            normalization_rows: info
+                .joints
+                .iter()
+                .filter(|j| j.kind == JointKind::Normalization)
+                .flat_map(|j| (j.row_start..j.row_start + j.rows).map(|r| r as u32))
+                .collect(),
             mass_semidefinite: info.bodies.iter().any(|b| b.inertia.contains(&0.0)),
         }
     }
@@ -88,12 +99,17 @@ impl KktPattern {
                 return bad(format!("Φq entry ({r}, {c}) outside {}×{}", self.m, self.n));
             }
         }
-        for (i, &r) in self.redundant_rows.iter().enumerate() {
-            if r as usize >= self.m {
-                return bad(format!("redundant row {r} outside {} rows", self.m));
-            }
-            if i > 0 && r <= self.redundant_rows[i - 1] {
-                return bad("redundant rows are not strictly ascending".into());
+        for (what, rows) in [
+            ("redundant", &self.redundant_rows),
+            ("normalization", &self.normalization_rows),
+        ] {
+            for (i, &r) in rows.iter().enumerate() {
+                if r as usize >= self.m {
+                    return bad(format!("{what} row {r} outside {} rows", self.m));
+                }
+                if i > 0 && r <= rows[i - 1] {
+                    return bad(format!("{what} rows are not strictly ascending"));
+                }
             }
         }
         Ok(())
@@ -227,6 +243,9 @@ pub trait KktSolver: Sized {
 pub struct Pivots {
     /// The smallest pivot of `Φq M⁻¹ Φqᵀ` relative to its row's diagonal, over the rows
     /// kept (1 for a row orthogonal to the others, 0 for a dependent one; 1 with no rows).
+    /// The diagonal is taken once the normalization rows are eliminated
+    /// ([`KktPattern::normalization_rows`]), so the measure is the same in quaternions and
+    /// in Euler angles.
     pub smallest: f64,
     /// Rows dropped as dependent ([`KktSolver::drop_dependent_rows`]), declared redundant
     /// rows aside: at such a state the multipliers are one valid choice, with those rows

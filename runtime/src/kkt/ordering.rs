@@ -16,14 +16,15 @@ pub(super) struct Symbolic {
     pub row_idx: Vec<usize>,
 }
 
-/// Minimum-degree ordering on the explicit elimination graph.
+/// Minimum-degree ordering on the explicit elimination graph, after the nodes `first`
+/// (eliminated first, in the order given).
 ///
 /// Eliminating a node joins its neighbours into a clique; those neighbours are exactly the
 /// node's column of `L`, so the ordering and the symbolic factorization come out together.
 /// The graph is explicit (no quotient graph): construction cost is irrelevant at the sizes
 /// of mechanisms (hundreds of rows). Ties go to the lowest index, so the result is
 /// deterministic.
-pub(super) fn minimum_degree(size: usize, edges: &[(usize, usize)]) -> Symbolic {
+pub(super) fn minimum_degree(size: usize, edges: &[(usize, usize)], first: &[usize]) -> Symbolic {
     let mut adj: Vec<BTreeSet<usize>> = vec![BTreeSet::new(); size];
     for &(a, b) in edges {
         if a != b {
@@ -34,11 +35,13 @@ pub(super) fn minimum_degree(size: usize, edges: &[(usize, usize)]) -> Symbolic 
     let mut eliminated = vec![false; size];
     let mut perm = Vec::with_capacity(size);
     let mut columns: Vec<Vec<usize>> = Vec::with_capacity(size);
-    for _ in 0..size {
-        let v = (0..size)
-            .filter(|&i| !eliminated[i])
-            .min_by_key(|&i| (adj[i].len(), i))
-            .expect("a node remains at every step");
+    for step in 0..size {
+        let v = first.get(step).copied().unwrap_or_else(|| {
+            (0..size)
+                .filter(|&i| !eliminated[i])
+                .min_by_key(|&i| (adj[i].len(), i))
+                .expect("a node remains at every step")
+        });
         eliminated[v] = true;
         let nbrs: Vec<usize> = adj[v].iter().copied().collect();
         for &a in &nbrs {
@@ -82,7 +85,7 @@ mod tests {
     fn arrow_matrix_puts_the_hub_last() {
         // A star graph: eliminating the hub first would fill everything.
         let edges: Vec<_> = (1..6).map(|i| (0, i)).collect();
-        let s = minimum_degree(6, &edges);
+        let s = minimum_degree(6, &edges, &[]);
         // (With one leaf left the hub and the leaf tie; either order is fill-free.)
         assert!(s.iperm[0] >= 4);
         // No fill: every leaf's column holds only the hub.
@@ -92,7 +95,7 @@ mod tests {
     #[test]
     fn pattern_rows_are_below_diagonal_and_sorted() {
         let edges = [(0, 3), (1, 3), (2, 4), (3, 4), (0, 1)];
-        let s = minimum_degree(5, &edges);
+        let s = minimum_degree(5, &edges, &[]);
         for k in 0..5 {
             let col = &s.row_idx[s.col_ptr[k]..s.col_ptr[k + 1]];
             assert!(col.windows(2).all(|w| w[0] < w[1]));

@@ -71,8 +71,12 @@ pub struct SchurKkt {
     /// multiply-add of the factorization: 160 kB for the 40-bar chain of IFToMM A02).
     update_ptr: Vec<usize>,
     updates: Vec<[u32; 3]>,
-    /// diag(S) before elimination, the scale of each pivot's rank-loss test.
+    /// The scale of each pivot's rank-loss test: diag(S) once the normalization rows are
+    /// eliminated (the row's own squared length in the kinetic metric on the configuration
+    /// space, so the relative pivots do not depend on the rotation coordinates).
     scale: Vec<f64>,
+    /// Normalization rows, eliminated first ([`KktPattern::normalization_rows`]).
+    n_first: usize,
     work: Vec<f64>,
     rvec: Vec<f64>,
     factored: bool,
@@ -124,7 +128,7 @@ impl SchurKkt {
             phi_q_dest: Vec::new(),
             pair_ptr: vec![0],
             pair_dest: Vec::new(),
-            sym: minimum_degree(0, &[]),
+            sym: minimum_degree(0, &[], &[]),
             lval: Vec::new(),
             diag: Vec::new(),
             dinv: Vec::new(),
@@ -132,6 +136,7 @@ impl SchurKkt {
             update_ptr: vec![0],
             updates: Vec::new(),
             scale: Vec::new(),
+            n_first: 0,
             work: Vec::new(),
             rvec: Vec::new(),
             factored: false,
@@ -528,7 +533,15 @@ impl KktSolver for SchurKkt {
                 }
             }
         }
-        let sym = minimum_degree(m, &edges);
+        // The normalization rows go first: each couples only rows of its own body, which S
+        // couples already, so eliminating them adds no fill, and the rows after them keep
+        // the order they would have in the same model without them (Euler angles).
+        let normalization: Vec<usize> = pattern
+            .normalization_rows
+            .iter()
+            .map(|&r| r as usize)
+            .collect();
+        let sym = minimum_degree(m, &edges, &normalization);
         let slot = |i: usize, j: usize| -> usize {
             // Position of S[i, j] (original indices) in the factor's storage.
             let (pi, pj) = (sym.iperm[i], sym.iperm[j]);
@@ -603,6 +616,7 @@ impl KktSolver for SchurKkt {
             update_ptr,
             updates,
             scale: vec![0.0; m],
+            n_first: normalization.len(),
             work: vec![0.0; m],
             rvec: vec![0.0; m],
             factored: false,
@@ -671,6 +685,9 @@ impl KktSolver for SchurKkt {
         let sym = &self.sym;
         self.scale.copy_from_slice(&self.diag);
         for k in 0..self.m {
+            if k == self.n_first {
+                self.scale[k..].copy_from_slice(&self.diag[k..]);
+            }
             let scale = self.scale[k];
             let col = sym.col_ptr[k]..sym.col_ptr[k + 1];
             let dk = self.diag[k];

@@ -88,6 +88,7 @@ fn random_problem(rng: &mut Rng, n_blocks: usize, m: Option<usize>) -> Problem {
             phi_q_rows,
             phi_q_cols,
             redundant_rows: Vec::new(),
+            normalization_rows: Vec::new(),
             mass_semidefinite: false,
         },
         mass,
@@ -234,6 +235,7 @@ fn pattern_errors_are_reported() {
         phi_q_rows: vec![0],
         phi_q_cols: vec![1],
         redundant_rows: Vec::new(),
+        normalization_rows: Vec::new(),
         mass_semidefinite: false,
     };
     assert!(matches!(
@@ -309,6 +311,7 @@ fn with_combination_rows(
         phi_q_rows: rows,
         phi_q_cols: cols,
         redundant_rows: extra.iter().map(|(at, _)| *at as u32).collect(),
+        normalization_rows: Vec::new(),
         mass_semidefinite: false,
         ..p.pattern.clone()
     };
@@ -381,6 +384,7 @@ fn redundant_rows_are_solved_as_absent_with_zero_multipliers() {
         let undeclared = Problem {
             pattern: KktPattern {
                 redundant_rows: Vec::new(),
+                normalization_rows: Vec::new(),
                 mass_semidefinite: false,
                 ..r.pattern.clone()
             },
@@ -434,6 +438,7 @@ fn a_semidefinite_mass_is_solved_when_the_constraints_fix_its_null_direction() {
         phi_q_rows: vec![0],
         phi_q_cols: vec![1],
         redundant_rows: Vec::new(),
+        normalization_rows: Vec::new(),
         mass_semidefinite: true,
     };
     let (mass, c, phi_q) = ([2.0, 0.0], 0.5, [1.0]);
