@@ -1,5 +1,5 @@
 //! Planar models against the spatial models they come from: the driven `four_bar`, the IFToMM
-//! A01 pendulum and the A02 chain of 40 four-bars integrated both ways with the benchmark's
+//! A01 pendulum and the A02 chains of 2 and 40 four-bars integrated both ways with the benchmark's
 //! settings follow the same motion. The spatial model is the independent
 //! reference here: it holds the plane with its joint rows, where the planar model pins it.
 
@@ -55,6 +55,13 @@ fn the_pendulum_swings_alike_in_its_plane_and_in_space() {
     // 2 s at A01's step: both integrate the same equations for x, y and γ (the plane's rows
     // have no x, y or γ derivative), so they differ by the Newton tolerance, not by h².
     assert!(largest_difference("simple_pendulum", 1.25e-4, 2.0, 40) < 1e-9);
+}
+
+#[test]
+fn two_four_bars_move_alike_through_four_flat_positions() {
+    // A02 with N = 2 at its benchmark's step, across its first four flat positions (0.7, 1.2,
+    // 2.7 and 3.2 s), where each loop's rows are dependent for an instant.
+    assert!(largest_difference("n_four_bar_2", 4e-4, 3.5, 70) < 1e-9);
 }
 
 #[test]

@@ -44,7 +44,7 @@ pub static PROBLEM_2: Problem = Problem {
             source: "rehabenggroup.github.io/MBSbenchmarksInOpenSim, A02",
         }],
     },
-    settings: SETTINGS,
+    settings: SETTINGS_PLANAR,
     run: run_2,
 };
 
@@ -78,9 +78,9 @@ const SETTINGS: Settings = Settings {
     planar: false,
 };
 
-/// N = 40 runs its planar model (`n_four_bar_40.toml` says `planar = true`): 243 coordinates
-/// and 242 rows instead of 486 and 605, the same motion (tests/planar_models.rs). N = 2 stays
-/// spatial, in quaternions, where the singular-position tests run.
+/// Both run their planar models (the files say `planar = true`): 243 coordinates and 242
+/// rows instead of 486 and 605 for N = 40, 15 and 14 instead of 30 and 35 for N = 2, the same
+/// motion (tests/planar_models.rs).
 const SETTINGS_PLANAR: Settings = Settings {
     planar: true,
     ..SETTINGS
