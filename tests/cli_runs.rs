@@ -243,3 +243,35 @@ fn the_readmes_singular_position_example_needs_its_flag() {
     assert!(run(&["--cross-singular-positions"]).status.success());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_run_whose_steps_are_too_long_for_its_motion_says_so() {
+    // A03 (Andrews' squeezer) moves on a time scale of ~1e-5 s: at the default 1 ms step its
+    // energy balance is off by 7 % of the energy scale (the reference: the energy theorem,
+    // which the balance checks), and the summary must warn; with step-size control at rtol
+    // 1e-5 the balance holds to 4.4e-6 and no warning is given.
+    let dir = temp_dir("too-long");
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/mechanisms/benchmarks/andrews_squeezer.toml"
+    );
+    let run = |extra: &[&str]| {
+        let out = Command::new(BIN)
+            .args(["simulate", file, "--no-plots", "--out"])
+            .arg(&dir)
+            .args(extra)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{out:?}");
+        String::from_utf8_lossy(&out.stdout).into_owned()
+    };
+    let coarse = run(&[]);
+    assert!(
+        coarse.contains("warning: the energy balance is off by")
+            && coarse.contains("--rtol (step-size control)"),
+        "{coarse}"
+    );
+    let controlled = run(&["--rtol", "1e-5"]);
+    assert!(!controlled.contains("warning"), "{controlled}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
