@@ -703,12 +703,6 @@ fn report_run(
     }
 }
 
-/// Above this share of the energy scale, the energy balance of a run says its steps were too
-/// long for the motion. Measured over 1 s of each shipped mechanism at the defaults: at most
-/// 3.7e-6 (the pendulum); A03 (`andrews_squeezer`, time scale ~1e-5 s) at the default 1 ms
-/// step is off by 7 % after its 0.05 s.
-const ENERGY_WARNING: f64 = 1e-2;
-
 /// The summary and files of a generic run (`simulate <name>` or a scene with tables);
 /// `method` says how it was solved.
 fn report_named(
@@ -761,15 +755,15 @@ fn report_named(
             "  energy balance   max |dT + dV - W| = {drift:.3e} J on a scale of {scale:.4} J ({:.1e})",
             drift / scale
         );
-        if drift > ENERGY_WARNING * scale {
-            say!(
-                "  warning: the energy balance is off by {:.1}% of the energy scale: the steps are too long for this motion, and the results are not to be trusted; run again with a shorter --step, or with --rtol (step-size control)",
-                100.0 * drift / scale
-            );
-        }
     } else {
         say!(
             "  energy balance   no energy anywhere in the run (max |dT + dV - W| = {drift:.1e} J)"
+        );
+    }
+    if let Some(off) = rec.energy_off() {
+        say!(
+            "  warning: the energy balance is off by {:.1}% of the energy scale: the steps are too long for this motion, and the results are not to be trusted; run again with a shorter --step, or with --rtol (step-size control)",
+            100.0 * off
         );
     }
     if !info.redundant_rows.is_empty() {

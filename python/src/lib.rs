@@ -332,6 +332,17 @@ fn recording_summary<'py>(
         windows.append(item)?;
     }
     d.set_item("ill_conditioned", windows)?;
+    let warnings: Vec<String> = rec
+        .energy_off()
+        .map(|off| {
+            format!(
+                "the energy balance is off by {:.1}% of the energy scale: the steps are too long for this motion, and the results are not to be trusted; run again with a shorter step=, or with rtol= (step-size control)",
+                100.0 * off
+            )
+        })
+        .into_iter()
+        .collect();
+    d.set_item("warnings", warnings)?;
     Ok(d)
 }
 
@@ -497,6 +508,7 @@ fn run<'py>(
             // energy meter over the steps, nor the pivots that flag singular positions.
             summary.set_item("energy_drift", py.None())?;
             summary.set_item("energy_scale", py.None())?;
+            summary.set_item("warnings", PyList::empty(py))?;
             summary.set_item("ill_conditioned", py.None())?;
             (py_tables(py, tables), summary, files)
         }

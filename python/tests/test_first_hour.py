@@ -54,7 +54,7 @@ def test_simulate_writes_the_clis_csvs_and_a_summary(cli, tmp_path):
     assert 0.0 < s["wall_time"] < 60.0
     assert 0.0 <= s["max_phi"] < 1e-8
     assert s["energy_scale"] > 0.0 and s["energy_drift"] <= 1e-6 * s["energy_scale"]
-    assert s["ill_conditioned"] == []
+    assert s["ill_conditioned"] == [] and s["warnings"] == []
     # Without `out`, nothing is written.
     assert symbody.simulate("four_bar", t_end=0.01).files == []
     # A folder that cannot be made fails before the run, naming the argument.
@@ -74,6 +74,23 @@ def test_summary_names_the_ill_conditioned_windows():
     for w in windows:
         assert w["outputs"] >= 1 and w["smallest"] < 1e-5 and w["from"] <= w["at"] <= w["to"]
     assert symbody.simulate("n_four_bar_2", t_end=0.5).summary["ill_conditioned"] == []
+
+
+def test_a_run_whose_steps_are_too_long_for_its_motion_warns():
+    # A03 (Andrews' squeezer) moves on a time scale of ~1e-5 s: at the default 1 ms step its
+    # energy balance is off by 7 % of the energy scale (the reference: the energy theorem,
+    # which the balance checks), so the summary carries a warning, issued as a
+    # RuntimeWarning; with step-size control the balance holds and nothing is said.
+    path = REPO / "mechanisms" / "benchmarks" / "andrews_squeezer.toml"
+    with pytest.warns(RuntimeWarning, match="energy balance is off by"):
+        run = symbody.simulate(path)
+    assert len(run.summary["warnings"]) == 1 and "rtol=" in run.summary["warnings"][0]
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        run = symbody.simulate(path, rtol=1e-5)
+    assert run.summary["warnings"] == []
 
 
 def test_run_equals_the_clis_scene_run(cli, tmp_path):

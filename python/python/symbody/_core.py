@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 import os
+import warnings
 from typing import TYPE_CHECKING, Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -88,6 +89,9 @@ class Results(Dict[str, Table]):
     ``from``, ``to`` (s), ``outputs``, ``smallest`` (relative pivot), ``at`` (s),
     ``dropped`` (outputs at which dependent rows were dropped). The paper scenario's tables
     (a scene with ``files = "paper"``) record neither: those three are ``None``.
+    ``warnings``: what the run says not to trust, in words (today: an energy balance off by
+    more than 1 % of the energy scale, the steps too long for the motion); each is also
+    issued as a :class:`RuntimeWarning`.
 
     For :func:`simulate` also ``source`` (the mechanism file the equations were interpreted
     from, ``None`` for compiled code) and ``note``.
@@ -106,6 +110,9 @@ class Results(Dict[str, Table]):
 
 def _results(answer: Tuple[Any, Any, Any]) -> Results:
     tables, summary, files = answer
+    for message in summary.get("warnings", []):
+        # stacklevel 3: the caller of simulate() or run(), not this module.
+        warnings.warn(message, RuntimeWarning, stacklevel=3)
     return Results(
         {stem: Table(stem, list(columns), data) for stem, columns, data in tables},
         dict(summary),
