@@ -140,7 +140,7 @@ fn a03_a04_a05_with_step_control_meet_their_tolerances() {
 /// A02 (N = 2) with step-size control through all 20 flat positions of its 20 s. Near a flat
 /// position the accelerations Newton reaches carry roundoff amplified by 1/σ (σ: Φq's
 /// vanishing singular value), which grows as the step shrinks; before the error estimate
-/// took that floor (measured through the step's factorization, as Newton's test does), rtol
+/// took that roundoff (measured through the step's factorization, as Newton's test does), rtol
 /// 1e-7 stopped at t = 2.66 s and 1e-6 at 10.4 s with steps of 5e-8 s. The error is measured
 /// against the problem's independent reference (the parallelogram branch's one-coordinate
 /// equation of motion).

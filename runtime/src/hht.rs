@@ -429,7 +429,6 @@ impl HhtBuilder {
             dl: vec![0.0; m],
             reaction1: vec![0.0; n],
             noise: NoiseProbe::new(n, m),
-            accel_noise: 0.0,
             noise_measured: false,
             stiffness,
             stats: Stats::default(),
@@ -549,11 +548,9 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     /// Φqᵀλ of the current iterate: in the residual and in the convergence test.
     reaction1: Vec<f64>,
     noise: NoiseProbe,
-    /// The noise floor of q̈ at the last converged attempt (the increments' floor), and
-    /// whether the probe measured it coordinate by coordinate in that attempt
-    /// (`NoiseProbe::accel`): the local error estimate, built on differences of q̈, does not
-    /// ask for less than it.
-    accel_noise: f64,
+    /// Whether the probe measured the roundoff of q̈ coordinate by coordinate in the last
+    /// attempt (`NoiseProbe::accel`): the local error estimate, built on differences of q̈,
+    /// then does not ask for less than it.
     noise_measured: bool,
     /// The loads' stiffness and damping in the Newton matrix (`None`: M alone).
     stiffness: Option<LoadStiffness>,
@@ -997,7 +994,6 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         }
         let mut last_err = f64::INFINITY;
         let mut residual = f64::NAN;
-        let mut accel_noise = 0.0;
         self.noise_measured = false;
         let q_scale = inf_norm(&self.q).max(1.0);
         if !self.settings.reuse_factorization {
@@ -1032,7 +1028,6 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 if !inf_norm(&self.q1).is_finite() || !inf_norm(&self.qd1).is_finite() {
                     return Err(Failure::NotFinite);
                 }
-                self.accel_noise = accel_noise;
                 return Ok(StepReport {
                     h,
                     iterations: iter,
@@ -1100,7 +1095,6 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             if !err.is_finite() {
                 return Err(Failure::NotFinite);
             }
-            accel_noise = floor_a;
             let mut stalled = iter >= 1 && err > SLOW_RATE * last_err;
             if stalled && err > 1.0 {
                 // Stalled above the tolerance: if what is left is what roundoff alone makes
@@ -1184,9 +1178,9 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     /// It is the predictor–corrector difference `qₙ₊₁ − (qₙ + h q̇ₙ + h²/2 q̈ₙ) = βh² Δq̈`
     /// rescaled to the error it measures. On the first step (no history) `Δā` is `Δq̈`.
     ///
-    /// The weights take the floor of q̈ Newton could reach (roundoff through the
-    /// factorization, `accel_noise` and where measured `NoiseProbe::accel`), as the Newton
-    /// test's do (decision 27). Near a singular position it grows like 1/(σh²) along the
+    /// Where the probe measured it (`NoiseProbe::accel`), the weights take the roundoff of q̈
+    /// through the factorization, coordinate by coordinate, as the Newton test takes its
+    /// floor (decision 27). Near a singular position it grows like 1/(σh²) along the
     /// direction Φq loses, so an estimate that counted it as error would grow as the step
     /// shrinks and never pass (A02 at rtol 1e-6 stopped at a flat position).
     fn local_error(&self, h: f64, (rtol, atol): (f64, f64)) -> LocalError {
@@ -1206,9 +1200,9 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 d1
             };
             let noise = if self.noise_measured {
-                self.accel_noise.max(self.noise.accel[i])
+                self.noise.accel[i]
             } else {
-                self.accel_noise
+                0.0
             };
             let wq = atol + rtol * self.q[i].abs().max(self.q1[i].abs()) + cq * noise;
             let wv = atol + rtol * self.qd[i].abs().max(self.qd1[i].abs()) + cv * noise;
@@ -1294,8 +1288,8 @@ struct NoiseProbe {
     y: Vec<f64>,
     /// Floors of the acceleration and Φqᵀλ increments.
     floor: (f64, f64),
-    /// The acceleration floor coordinate by coordinate: near a singular position the
-    /// roundoff grows along the direction Φq loses, not in every coordinate.
+    /// The roundoff's largest answer in each acceleration, without the floor's base: near
+    /// a singular position it grows along the direction Φq loses, not in every coordinate.
     accel: Vec<f64>,
 }
 
@@ -1324,7 +1318,7 @@ impl NoiseProbe {
         let g0 = NOISE_FACTOR * f64::EPSILON * scale;
         let m = self.g.len();
         let (mut floor_a, mut floor_l) = (g0, g0 * inf_norm(r.mass));
-        self.accel.fill(g0);
+        self.accel.fill(0.0);
         mass_times(info, r.mass, r.qdd, &mut self.size);
         for (i, size) in self.size.iter_mut().enumerate() {
             *size = NOISE_FACTOR
