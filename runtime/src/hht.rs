@@ -838,16 +838,11 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                         return self.commit(report, h, t1);
                     };
                     let mut e = self.local_error(h, tol);
-                    if e.norm() > 1.0 && !self.noise_measured {
-                        // Near a singular position the q̈ Newton reached carries roundoff
-                        // amplified by about 1/σ, which Newton's own test need not have
-                        // measured: measured here, the estimate does not count it as error.
-                        let c = 1.0 / (1.0 + self.settings.alpha);
-                        let scale = inf_norm(&self.q).max(1.0) / (self.beta * h * h);
-                        if self.measure_noise(c, scale).is_ok() {
-                            self.noise_measured = true;
-                            e = self.local_error(h, tol);
-                        }
+                    // Near a singular position the q̈ Newton reached carries roundoff amplified
+                    // by about 1/σ, which Newton's own test need not have measured: measured
+                    // here, the estimate does not count it as error.
+                    if e.norm() > 1.0 && !self.noise_measured && self.measure_noise(h).is_ok() {
+                        e = self.local_error(h, tol);
                     }
                     if e.norm() <= 1.0 {
                         let next = self.next_step(h, e, shortened, cut, h_before);
@@ -1099,10 +1094,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             if stalled && err > 1.0 {
                 // Stalled above the tolerance: if what is left is what roundoff alone makes
                 // of an increment through this factorization, Newton is done.
-                let (noise_a, noise_l) = self
-                    .measure_noise(c, q_scale * inv_bh2)
-                    .map_err(Failure::Kkt)?;
-                self.noise_measured = true;
+                let (noise_a, noise_l) = self.measure_noise(h).map_err(Failure::Kkt)?;
                 let at_noise = self.weighted_increment(floor_a.max(noise_a), floor_l.max(noise_l));
                 if at_noise <= 1.0 {
                     err = at_noise;
@@ -1136,8 +1128,12 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
 
 impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     /// The roundoff floors of the increments of q̈ and of Φqᵀλ through the current
-    /// factorization, at the last iterate (`NoiseProbe`); `scale`: |q|/(βh²).
-    fn measure_noise(&mut self, c: f64, scale: f64) -> Result<(f64, f64), KktError> {
+    /// factorization of a step of size `h`, at the last iterate (`NoiseProbe`; it keeps them
+    /// coordinate by coordinate for the local error estimate, `noise_measured`).
+    fn measure_noise(&mut self, h: f64) -> Result<(f64, f64), KktError> {
+        let c = 1.0 / (1.0 + self.settings.alpha);
+        // |q|/(βh²): the right-hand side of a unit error in Φ.
+        let scale = inf_norm(&self.q).max(1.0) * (1.0 / (self.beta * h * h));
         let parts = ResidualParts {
             mass: &self.mass,
             c,
@@ -1149,6 +1145,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         };
         self.noise
             .measure(&mut self.kkt, self.info, &self.phi_q, &parts, scale)?;
+        self.noise_measured = true;
         Ok(self.noise.floor)
     }
 
