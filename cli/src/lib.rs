@@ -760,11 +760,8 @@ fn report_named(
             "  energy balance   no energy anywhere in the run (max |dT + dV - W| = {drift:.1e} J)"
         );
     }
-    if let Some(off) = rec.energy_off() {
-        say!(
-            "  warning: the energy balance is off by {:.1}% of the energy scale: the steps are too long for this motion, and the results are not to be trusted; run again with a shorter --step, or with --rtol (step-size control)",
-            100.0 * off
-        );
+    if let Some(w) = rec.energy_warning("--step", "--rtol") {
+        say!("  warning: {w}");
     }
     if !info.redundant_rows.is_empty() {
         // A long list (the 40-bar chain has 120) would bury the summary: the first few, then

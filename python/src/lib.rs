@@ -332,16 +332,7 @@ fn recording_summary<'py>(
         windows.append(item)?;
     }
     d.set_item("ill_conditioned", windows)?;
-    let warnings: Vec<String> = rec
-        .energy_off()
-        .map(|off| {
-            format!(
-                "the energy balance is off by {:.1}% of the energy scale: the steps are too long for this motion, and the results are not to be trusted; run again with a shorter step=, or with rtol= (step-size control)",
-                100.0 * off
-            )
-        })
-        .into_iter()
-        .collect();
+    let warnings: Vec<String> = rec.energy_warning("step=", "rtol=").into_iter().collect();
     d.set_item("warnings", warnings)?;
     Ok(d)
 }

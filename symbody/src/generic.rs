@@ -154,7 +154,7 @@ pub struct Recording {
 pub const ILL_CONDITIONED_PIVOT: f64 = 1e-5;
 
 /// Above this share of the energy scale, the energy balance of a run says its steps were too
-/// long for the motion ([`Recording::energy_off`]). Measured over 1 s of each shipped
+/// long for the motion ([`Recording::energy_warning`]). Measured over 1 s of each shipped
 /// mechanism at the defaults: at most 3.7e-6 (the pendulum); A03 (`andrews_squeezer`, time
 /// scale ~1e-5 s) at the default 1 ms step is off by 7 % after its 0.05 s.
 pub const ENERGY_WARNING: f64 = 1e-2;
@@ -209,11 +209,17 @@ impl Recording {
         windows
     }
 
-    /// The energy balance's share of the energy scale when it exceeds [`ENERGY_WARNING`]
-    /// (the steps were too long for the motion: the summary must warn), else `None`.
-    pub fn energy_off(&self) -> Option<f64> {
+    /// The warning a summary must give when the energy balance is off by more than
+    /// [`ENERGY_WARNING`] of the energy scale (the steps were too long for the motion),
+    /// naming the caller's settings for the step and for step-size control.
+    pub fn energy_warning(&self, step: &str, rtol: &str) -> Option<String> {
         let (drift, scale) = self.energy_balance();
-        (scale > 0.0 && drift > ENERGY_WARNING * scale).then(|| drift / scale)
+        (scale > 0.0 && drift > ENERGY_WARNING * scale).then(|| {
+            format!(
+                "the energy balance is off by {:.1}% of the energy scale: the steps are too long for this motion, and the results are not to be trusted; run again with a shorter {step}, or with {rtol} (step-size control)",
+                100.0 * drift / scale
+            )
+        })
     }
 
     /// Largest |ΔT + ΔV − W| since the start, and the energy scale max(|T| + |V|).
