@@ -6,6 +6,9 @@
 //! about a minute) times every step on its own, with the Newton iterations and factorizations
 //! it took, and, as the machine's own noise, the same number of repetitions of a fixed piece
 //! of work of about a step's length (evaluations at one state: no branch depends on data).
+//! Each step's thread CPU time and the context switches during it are read too: a step
+//! during which the thread was switched out (the VM preempted it, or it waited on a page)
+//! is the machine's tail, one without a switch is the step's own.
 //! Prints a Markdown table and writes `bench-results/step_tail.csv`.
 
 use std::collections::BTreeMap;
@@ -15,6 +18,29 @@ use std::time::Instant;
 use symbody_bench::{fail, NewtonBuffers};
 use symbody_benchmark_mechanisms::stewart_6_6::Exact;
 use symbody_runtime::{HhtBuilder, Mechanism};
+
+/// CPU time of the calling thread (s).
+fn thread_cpu_time() -> f64 {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: writes only `ts`, which lives on this stack.
+    if unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) } != 0 {
+        fail("the thread's CPU time cannot be read");
+    }
+    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
+}
+
+/// The calling thread's context switches so far, voluntary and involuntary.
+fn context_switches() -> i64 {
+    // SAFETY: writes only `ru`, which lives on this stack (all-zero is a valid `rusage`).
+    let mut ru: libc::rusage = unsafe { std::mem::zeroed() };
+    if unsafe { libc::getrusage(libc::RUSAGE_THREAD, &mut ru) } != 0 {
+        fail("the thread's context switches cannot be read");
+    }
+    ru.ru_nvcsw + ru.ru_nivcsw
+}
 
 /// The `q`-quantile of sorted `v` (nearest rank).
 fn quantile(v: &[f64], q: f64) -> f64 {
@@ -49,15 +75,26 @@ fn main() {
     it.advance_to(1.0).unwrap_or_else(|e| fail(&e.to_string()));
 
     let mut times = Vec::with_capacity(steps);
+    let mut cpu = Vec::with_capacity(steps);
+    let mut unswitched = Vec::with_capacity(steps);
     let mut kinds = Vec::with_capacity(steps);
     for _ in 0..steps {
         let before = it.stats();
+        // Nested: the CPU clock brackets the wall clock only, the switch count both.
+        let switches0 = context_switches();
+        let cpu0 = thread_cpu_time();
         let t0 = Instant::now();
         it.step()
             .unwrap_or_else(|e| fail(&format!("at t = {}: {e}", it.t())));
         let dt = t0.elapsed().as_secs_f64();
+        let cpu1 = thread_cpu_time();
+        let switches1 = context_switches();
         let after = it.stats();
         times.push(dt);
+        cpu.push(cpu1 - cpu0);
+        if switches1 == switches0 {
+            unswitched.push(dt);
+        }
         kinds.push((
             after.newton_iterations - before.newton_iterations,
             after.factorizations - before.factorizations,
@@ -116,6 +153,14 @@ fn main() {
         ));
     };
     row("HHT step", &sorted);
+    let switched = steps - unswitched.len();
+    unswitched.sort_by(f64::total_cmp);
+    row(
+        &format!("steps the thread was not switched out of ({switched} were)"),
+        &unswitched,
+    );
+    cpu.sort_by(f64::total_cmp);
+    row("HHT step, thread CPU time", &cpu);
     row(
         &format!("fixed work ({reps} eval_newton at one state)"),
         &fixed,
