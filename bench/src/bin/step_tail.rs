@@ -6,9 +6,10 @@
 //! about a minute) times every step on its own, with the Newton iterations and factorizations
 //! it took, and, as the machine's own noise, the same number of repetitions of a fixed piece
 //! of work of about a step's length (evaluations at one state: no branch depends on data).
-//! Each step's thread CPU time and the context switches during it are read too: a step
-//! during which the thread was switched out (the VM preempted it, or it waited on a page)
-//! is the machine's tail, one without a switch is the step's own.
+//! Each step's thread CPU time and the context switches during it are read too. A switch
+//! marks a step the guest's own scheduler interrupted; a hypervisor's pause of the virtual
+//! CPU shows no switch (and partly counts as the thread's CPU time), so on a VM the slow
+//! steps without one are told from the step's own work only by the fixed work's tail.
 //! Prints a Markdown table and writes `bench-results/step_tail.csv`.
 
 use std::collections::BTreeMap;
