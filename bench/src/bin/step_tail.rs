@@ -8,14 +8,19 @@
 //! of work of about a step's length (evaluations at one state: no branch depends on data).
 //! Each step's thread CPU time and the context switches during it are read too. A switch
 //! marks a step the guest's own scheduler interrupted; a hypervisor's pause of the virtual
-//! CPU shows no switch (and partly counts as the thread's CPU time), so on a VM the slow
-//! steps without one are told from the step's own work only by the fixed work's tail.
-//! Prints a Markdown table and writes `bench-results/step_tail.csv`.
+//! CPU shows no switch (and partly counts as the thread's CPU time). Where the kernel lets a
+//! program read the processor's counters (`perf_event_open`; a VM must pass its PMU through),
+//! each step's user-mode instructions and cycles are read as well: the instructions are the
+//! step's work, whatever the machine does, and the cycles its time on the processor, which
+//! stop while the hypervisor has the virtual CPU. Prints a Markdown table and writes
+//! `bench-results/step_tail.csv`.
 
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::time::Instant;
 
+use perf_event::events::Hardware;
+use perf_event::{Builder, Counter, Group};
 use symbody_bench::{fail, NewtonBuffers};
 use symbody_benchmark_mechanisms::stewart_6_6::Exact;
 use symbody_runtime::{HhtBuilder, Mechanism};
@@ -41,6 +46,43 @@ fn context_switches() -> i64 {
         fail("the thread's context switches cannot be read");
     }
     ru.ru_nvcsw + ru.ru_nivcsw
+}
+
+/// This thread's user-mode instructions and cycles, read together.
+struct Counters {
+    group: Group,
+    instructions: Counter,
+    cycles: Counter,
+}
+
+impl Counters {
+    /// `None` where the kernel refuses the counters (`perf_event_paranoid` above 2, or a VM
+    /// without a virtual PMU): the run then goes on with the clocks alone.
+    fn new() -> Option<Self> {
+        let open = || -> std::io::Result<Self> {
+            let mut group = Group::new()?;
+            let instructions = group.add(&Builder::new(Hardware::INSTRUCTIONS))?;
+            let cycles = group.add(&Builder::new(Hardware::CPU_CYCLES))?;
+            group.enable()?;
+            Ok(Counters {
+                group,
+                instructions,
+                cycles,
+            })
+        };
+        open()
+            .map_err(|e| eprintln!("no hardware counters ({e}): the clocks alone"))
+            .ok()
+    }
+
+    /// `[instructions, cycles]` so far.
+    fn read(&mut self) -> [u64; 2] {
+        let data = self
+            .group
+            .read()
+            .unwrap_or_else(|e| fail(&format!("reading the hardware counters: {e}")));
+        [data[&self.instructions], data[&self.cycles]]
+    }
 }
 
 /// The `q`-quantile of sorted `v` (nearest rank).
@@ -79,16 +121,26 @@ fn main() {
     let mut cpu = Vec::with_capacity(steps);
     let mut unswitched = Vec::with_capacity(steps);
     let mut kinds = Vec::with_capacity(steps);
+    let mut counters = Counters::new();
+    let mut counts: [Vec<f64>; 2] = Default::default();
     for _ in 0..steps {
         let before = it.stats();
-        // Nested: the CPU clock brackets the wall clock only, the switch count both.
+        // Nested: the CPU clock brackets the wall clock only, the counters both, the switch
+        // count all three.
         let switches0 = context_switches();
+        let counted0 = counters.as_mut().map(Counters::read);
         let cpu0 = thread_cpu_time();
         let t0 = Instant::now();
         it.step()
             .unwrap_or_else(|e| fail(&format!("at t = {}: {e}", it.t())));
         let dt = t0.elapsed().as_secs_f64();
         let cpu1 = thread_cpu_time();
+        if let (Some(c), Some(c0)) = (counters.as_mut(), counted0) {
+            let c1 = c.read();
+            for k in 0..2 {
+                counts[k].push((c1[k] - c0[k]) as f64);
+            }
+        }
         let switches1 = context_switches();
         let after = it.stats();
         times.push(dt);
@@ -117,12 +169,17 @@ fn main() {
     let per_eval = t0.elapsed().as_secs_f64() / 1000.0;
     let reps = ((median / per_eval).round() as usize).max(1);
     let mut fixed = Vec::with_capacity(steps);
+    let mut fixed_cycles = Vec::with_capacity(steps);
     for _ in 0..steps {
+        let counted0 = counters.as_mut().map(Counters::read);
         let t0 = Instant::now();
         for _ in 0..reps {
             eval();
         }
         fixed.push(t0.elapsed().as_secs_f64());
+        if let (Some(c), Some(c0)) = (counters.as_mut(), counted0) {
+            fixed_cycles.push((c.read()[1] - c0[1]) as f64);
+        }
     }
     fixed.sort_by(f64::total_cmp);
 
@@ -140,38 +197,74 @@ fn main() {
     );
     println!("|---|{}---|", "---|".repeat(QUANTILES.len()));
     let mut csv = String::from("series,count,p50,p90,p99,p99.9,p99.99,max\n");
-    let mut row = |name: &str, v: &[f64]| {
+    // Times in µs; counts (the table says which) in thousands, and as counted in the CSV.
+    let mut row_in = |name: &str, v: &[f64], time: bool| {
         let qs = QUANTILES.map(|(_, q)| quantile(v, q));
+        let cell = |x: f64| match time {
+            true => format!("{:.1} µs", us(x)),
+            false => format!("{:.1} k", x * 1e-3),
+        };
         println!(
             "| {name} | {} | {:.1} |",
-            qs.map(|x| format!("{:.1} µs", us(x))).join(" | "),
+            qs.map(cell).join(" | "),
             qs[5] / qs[0]
         );
         csv.push_str(&format!(
             "{name},{},{}\n",
             v.len(),
-            qs.map(|x| format!("{:.3}", us(x))).join(",")
+            qs.map(|x| match time {
+                true => format!("{:.3}", us(x)),
+                false => format!("{x:.0}"),
+            })
+            .join(",")
         ));
     };
-    row("HHT step", &sorted);
+    row_in("HHT step", &sorted, true);
     let switched = steps - unswitched.len();
     unswitched.sort_by(f64::total_cmp);
-    row(
+    row_in(
         &format!("steps the thread was not switched out of ({switched} were)"),
         &unswitched,
+        true,
     );
     cpu.sort_by(f64::total_cmp);
-    row("HHT step, thread CPU time", &cpu);
-    row(
+    row_in("HHT step, thread CPU time", &cpu, true);
+    row_in(
         &format!("fixed work ({reps} eval_newton at one state)"),
         &fixed,
+        true,
     );
+    let [mut instructions, mut cycles] = counts;
+    let mut slowest_note = None;
+    if !instructions.is_empty() {
+        // Whether the counters ran through the slowest step's wall time or stopped with the
+        // virtual CPU.
+        let slowest = (0..steps)
+            .max_by(|&a, &b| times[a].total_cmp(&times[b]))
+            .unwrap_or(0);
+        slowest_note = Some(format!(
+            "\nThe slowest step: {:.1} µs wall, {:.1} k cycles, {:.1} k instructions.",
+            us(times[slowest]),
+            cycles[slowest] * 1e-3,
+            instructions[slowest] * 1e-3
+        ));
+        for v in [&mut instructions, &mut cycles, &mut fixed_cycles] {
+            v.sort_by(f64::total_cmp);
+        }
+        row_in("HHT step, user-mode instructions", &instructions, false);
+        row_in("HHT step, user-mode cycles", &cycles, false);
+        row_in("fixed work, user-mode cycles", &fixed_cycles, false);
+    }
     for ((iterations, factorizations), mut v) in by_kind {
         v.sort_by(f64::total_cmp);
-        row(
+        row_in(
             &format!("steps with {iterations} Newton iterations, {factorizations} factorizations"),
             &v,
+            true,
         );
+    }
+    if let Some(note) = slowest_note {
+        println!("{note}");
     }
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../bench-results");
     std::fs::create_dir_all(&dir).unwrap_or_else(|e| fail(&e.to_string()));
