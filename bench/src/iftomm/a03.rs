@@ -46,8 +46,8 @@ const SAMPLE: f64 = 1e-4;
 /// body; the file says `planar = true`), α = 0 (trapezoidal: the smallest error constant of
 /// the family). The time scale changes over the run (the crank speeds up from rest against
 /// the spring), so the control takes fewer steps than the best fixed step of equal
-/// tolerance: measured over 0.05 s, 3 958 steps (152 rejected, 1.2e-6 to 5.8e-5 s) and
-/// 2.8e-5 rad, where the largest fixed step that meets 1e-4 (1e-4/11 s; 1e-5 s gives
+/// tolerance: measured over 0.05 s, 3 953 steps (132 rejected, 2.1e-6 to 5.8e-5 s) and
+/// 3.3e-5 rad, where the largest fixed step that meets 1e-4 (1e-4/11 s; 1e-5 s gives
 /// 1.1e-4) takes 5 500. At a fixed step the error falls as h² (6.7e-6 at 2.5e-6 s, 2.7e-5
 /// at 5e-6, 9.2e-5 at 9.1e-6). `step` is the first step tried.
 const SETTINGS: Settings = Settings {
