@@ -191,19 +191,20 @@ fn whole_run(entry: &Entry, opts: &Options) -> (Box<generic::Recording>, Option<
 
 #[test]
 fn whole_runs_agree_with_the_compiled_code() {
+    const SPAN: f64 = 0.5;
     let opts = Options {
-        t_end: Some(0.5),
+        t_end: Some(SPAN),
         ..Options::default()
     };
     for entry in REGISTRY.iter() {
         let interp = interpreted(entry);
         let (want, want_stop) = whole_run(entry, &opts);
         let (got, got_stop) = whole_run(interp, &opts);
-        // 0.5 s is beyond A03's own 0.05 s, where its crank outruns the default step and the
+        // SPAN is beyond A03's own 0.05 s, where its crank outruns the default step and the
         // run stops (a step below the minimum without convergence): both routes must stop
         // there alike. Within its file's span every run must reach the end.
         if let Some(e) = &want_stop {
-            assert!(entry.t_end < 0.5, "{}: {e}", entry.name);
+            assert!(entry.t_end < SPAN, "{}: {e}", entry.name);
         }
         assert_eq!(
             got_stop.is_some(),

@@ -85,6 +85,12 @@ impl Counters {
     }
 }
 
+/// `[instructions, cycles]` counted since `start` (`None` without counters).
+fn counted_since(counters: &mut Option<Counters>, start: Option<[u64; 2]>) -> Option<[f64; 2]> {
+    let (c1, c0) = (counters.as_mut()?.read(), start?);
+    Some([(c1[0] - c0[0]) as f64, (c1[1] - c0[1]) as f64])
+}
+
 /// The `q`-quantile of sorted `v` (nearest rank).
 fn quantile(v: &[f64], q: f64) -> f64 {
     let k = ((v.len() as f64 * q).ceil() as usize).clamp(1, v.len()) - 1;
@@ -122,7 +128,7 @@ fn main() {
     let mut unswitched = Vec::with_capacity(steps);
     let mut kinds = Vec::with_capacity(steps);
     let mut counters = Counters::new();
-    let mut counts: [Vec<f64>; 2] = Default::default();
+    let (mut instructions, mut cycles) = (Vec::new(), Vec::new());
     for _ in 0..steps {
         let before = it.stats();
         // Nested: the CPU clock brackets the wall clock only, the counters both, the switch
@@ -135,11 +141,9 @@ fn main() {
             .unwrap_or_else(|e| fail(&format!("at t = {}: {e}", it.t())));
         let dt = t0.elapsed().as_secs_f64();
         let cpu1 = thread_cpu_time();
-        if let (Some(c), Some(c0)) = (counters.as_mut(), counted0) {
-            let c1 = c.read();
-            for k in 0..2 {
-                counts[k].push((c1[k] - c0[k]) as f64);
-            }
+        if let Some([i, c]) = counted_since(&mut counters, counted0) {
+            instructions.push(i);
+            cycles.push(c);
         }
         let switches1 = context_switches();
         let after = it.stats();
@@ -177,8 +181,8 @@ fn main() {
             eval();
         }
         fixed.push(t0.elapsed().as_secs_f64());
-        if let (Some(c), Some(c0)) = (counters.as_mut(), counted0) {
-            fixed_cycles.push((c.read()[1] - c0[1]) as f64);
+        if let Some([_, c]) = counted_since(&mut counters, counted0) {
+            fixed_cycles.push(c);
         }
     }
     fixed.sort_by(f64::total_cmp);
@@ -234,20 +238,20 @@ fn main() {
         &fixed,
         true,
     );
-    let [mut instructions, mut cycles] = counts;
-    let mut slowest_note = None;
-    if !instructions.is_empty() {
-        // Whether the counters ran through the slowest step's wall time or stopped with the
-        // virtual CPU.
+    // Whether the counters ran through the slowest step's wall time or stopped with the
+    // virtual CPU.
+    let slowest_note = (!instructions.is_empty()).then(|| {
         let slowest = (0..steps)
             .max_by(|&a, &b| times[a].total_cmp(&times[b]))
             .unwrap_or(0);
-        slowest_note = Some(format!(
+        format!(
             "\nThe slowest step: {:.1} µs wall, {:.1} k cycles, {:.1} k instructions.",
             us(times[slowest]),
             cycles[slowest] * 1e-3,
             instructions[slowest] * 1e-3
-        ));
+        )
+    });
+    if !instructions.is_empty() {
         for v in [&mut instructions, &mut cycles, &mut fixed_cycles] {
             v.sort_by(f64::total_cmp);
         }
