@@ -57,6 +57,7 @@ pub struct HhtBuilder {
     abs_tol_lambda: f64,
     phi_tol: f64,
     reuse_factorization: bool,
+    rate_test: bool,
     /// `(rtol, atol)` of the step-size control; `None`: fixed step.
     tolerances: Option<(f64, f64)>,
     max_step: f64,
@@ -81,6 +82,7 @@ impl Default for HhtBuilder {
             abs_tol_lambda: 1e-6,
             phi_tol: 1e-10,
             reuse_factorization: false,
+            rate_test: true,
             tolerances: None,
             max_step: f64::INFINITY,
             project_velocities: false,
@@ -142,7 +144,7 @@ impl HhtBuilder {
         self
     }
 
-    /// Newton iterations allowed per attempt (default 8; a healthy step needs 2).
+    /// Newton iterations allowed per attempt (default 8; a healthy step needs 1 or 2).
     pub fn max_iterations(mut self, n: usize) -> Self {
         self.max_iterations = n;
         self
@@ -181,6 +183,19 @@ impl HhtBuilder {
     /// and damping, on `h`; a kept one is refreshed as soon as convergence slows.
     pub fn reuse_factorization(mut self, reuse: bool) -> Self {
         self.reuse_factorization = reuse;
+        self
+    }
+
+    /// Accept a Newton iterate by its convergence rate (default on), as DASSL and IDA do:
+    /// once an increment `δ` was applied, the error left is about `ρ/(1 − ρ)·‖δ‖` for the
+    /// contraction rate ρ of the iteration, so the iterate passes when that is below a third
+    /// of the tolerances (`rel_tol`, `abs_tol_*`) without taking (and evaluating) one more
+    /// increment. ρ is measured whenever a step takes two increments through one
+    /// factorization, and a step's first increment is judged by the rate of an earlier step
+    /// for at most a few steps before it is measured again. Off: an iterate passes only after
+    /// an increment within the tolerances was applied, one more increment per step.
+    pub fn rate_test(mut self, on: bool) -> Self {
+        self.rate_test = on;
         self
     }
 
@@ -403,6 +418,8 @@ impl HhtBuilder {
             h: self.step,
             successes_since_cut: 0,
             need_factor: true,
+            rate: f64::NAN,
+            rate_age: 0,
             t: self.t0,
             q,
             qd,
@@ -515,6 +532,10 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     h: f64,
     successes_since_cut: usize,
     need_factor: bool,
+    /// Newton's contraction rate as last measured (NaN: none to go by, `rate_test`), and
+    /// the steps accepted on it since.
+    rate: f64,
+    rate_age: usize,
     // Accepted state.
     t: f64,
     q: Vec<f64>,
@@ -610,6 +631,13 @@ const GROWTH_DELAY: usize = 3;
 /// An iteration that shrinks the weighted increment by less than this factor asks for a
 /// fresh factorization.
 const SLOW_RATE: f64 = 0.5;
+/// The rate test's bound on the estimated error left in an iterate, relative to Newton's
+/// tolerances (IDA's 0.33: the test is an estimate, and a rate carried over from an earlier
+/// step can be optimistic).
+const RATE_TOL: f64 = 0.33;
+/// Steps that may accept their first increment on a rate measured in an earlier step; the
+/// next one takes a second increment and so measures the rate again.
+const RATE_AGE_MAX: usize = 10;
 /// Multiple of machine epsilon (times the coordinate scale) taken as the roundoff of Φ.
 const NOISE_FACTOR: f64 = 100.0;
 
@@ -854,6 +882,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                     self.stats.rejected_steps += 1;
                     self.stats.error_test_failures += 1;
                     self.need_factor = true;
+                    self.rate = f64::NAN;
                     fresh_every_iteration = false;
                     (shortened, cut) = (false, true);
                     h *= e.factor().max(FAC_MIN);
@@ -876,6 +905,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             };
             self.stats.rejected_steps += 1;
             self.need_factor = true;
+            self.rate = f64::NAN;
             if !fresh_every_iteration {
                 fresh_every_iteration = true;
                 continue;
@@ -988,6 +1018,13 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             self.lambda1.copy_from_slice(&self.lambda);
         }
         let mut last_err = f64::INFINITY;
+        // The rate test's estimate of the error left in the current iterate (`rate_test`).
+        let mut left = f64::INFINITY;
+        let carried_rate = if self.settings.rate_test && self.rate_age < RATE_AGE_MAX {
+            self.rate
+        } else {
+            f64::NAN
+        };
         let mut residual = f64::NAN;
         self.noise_measured = false;
         let q_scale = inf_norm(&self.q).max(1.0);
@@ -1018,10 +1055,13 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             if residual.is_nan() {
                 return Err(Failure::NotFinite);
             }
-            if iter > 0 && last_err <= 1.0 && residual <= phi_tol {
+            if iter > 0 && (last_err <= 1.0 || left <= RATE_TOL) && residual <= phi_tol {
                 // Φ and the increments can be finite while a coordinate no row holds is not.
                 if !inf_norm(&self.q1).is_finite() || !inf_norm(&self.qd1).is_finite() {
                     return Err(Failure::NotFinite);
+                }
+                if iter == 1 && last_err > 1.0 {
+                    self.rate_age += 1;
                 }
                 return Ok(StepReport {
                     h,
@@ -1044,7 +1084,8 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             for (r, &p) in self.res2.iter_mut().zip(&self.phi) {
                 *r = -p * inv_bh2;
             }
-            if self.need_factor || fresh_every_iteration {
+            let fresh = self.need_factor || fresh_every_iteration;
+            if fresh {
                 let factored = match &mut self.stiffness {
                     None => self.kkt.factor(&self.mass, c, &self.phi_q),
                     Some(st) => {
@@ -1091,6 +1132,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 return Err(Failure::NotFinite);
             }
             let mut stalled = iter >= 1 && err > SLOW_RATE * last_err;
+            let mut noise_limited = false;
             if stalled && err > 1.0 {
                 // Stalled above the tolerance: if what is left is what roundoff alone makes
                 // of an increment through this factorization, Newton is done.
@@ -1099,9 +1141,27 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 if at_noise <= 1.0 {
                     err = at_noise;
                     stalled = false;
+                    noise_limited = true;
                     self.stats.noise_limited += 1;
                 }
             }
+            // ρ from two increments through one factorization (across a refactorization it
+            // measures the change of matrix); after the first increment, an earlier step's.
+            let rate = if iter >= 1 && !fresh && !noise_limited {
+                let rho = err / last_err;
+                self.rate = rho;
+                self.rate_age = 0;
+                rho
+            } else if iter == 0 {
+                carried_rate
+            } else {
+                f64::NAN
+            };
+            left = if !self.settings.rate_test || noise_limited || !(rate < 1.0) {
+                f64::INFINITY
+            } else {
+                rate / (1.0 - rate) * err
+            };
             if stalled {
                 if err > 4.0 * last_err && iter >= 2 {
                     return Err(Failure::NotConverged {

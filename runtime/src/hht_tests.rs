@@ -267,6 +267,44 @@ fn statistics_and_factorization_reuse() {
 }
 
 #[test]
+fn the_rate_test_saves_newton_iterations_within_the_tolerance() {
+    // The reference is the same step equations solved far below the default tolerances
+    // without the rate test: the limit both default runs approximate.
+    let run = |rate: bool, tol: f64| {
+        let mut hht = HhtBuilder::new()
+            .rate_test(rate)
+            .rel_tol(tol)
+            .abs_tol_acceleration(tol)
+            .abs_tol_lambda(tol)
+            .q0(&planar_q0(1.2))
+            .build(Pendulum::exact())
+            .unwrap();
+        hht.advance_to(1.0).unwrap();
+        (hht.stats(), hht.q().to_vec())
+    };
+    let (_, exact) = run(false, 1e-11);
+    let off_by = |q: &[f64]| -> f64 {
+        q.iter()
+            .zip(&exact)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max)
+    };
+    let (on, q_on) = run(true, 1e-6);
+    let (off, q_off) = run(false, 1e-6);
+    // Without the test every step takes a second increment to show the first was enough.
+    assert_eq!(off.newton_iterations, 2 * off.steps, "{off:?}");
+    // With it, one increment per step, and a second in every tenth step (`RATE_AGE_MAX`)
+    // to measure the rate again.
+    assert!(10 * on.newton_iterations <= 12 * on.steps, "{on:?}");
+    assert_eq!(on.evaluations, on.newton_iterations + on.steps + 1);
+    // An accepted q̈ may be off by the tolerance, rel 1e-6 of |q̈| ≲ 20 rad/s², which moves
+    // q by βh² times that per step (β = 0.276 at α = −0.05): over 1000 steps at most
+    // 5.5e-9. The second increment of the runs without the test converges to roundoff.
+    assert!(off_by(&q_off) < 1e-13, "{}", off_by(&q_off));
+    assert!(off_by(&q_on) < 5.5e-9, "{}", off_by(&q_on));
+}
+
+#[test]
 fn dense_and_structured_solvers_give_the_same_trajectory() {
     let q0 = [0.0, 0.0, 0.0, 0.6, 0.4, -0.5];
     let mut a = HhtBuilder::new().q0(&q0).build(Pendulum::exact()).unwrap();
