@@ -89,7 +89,7 @@ fn first_second(
 /// A05's damper (c/m ≈ 8000 s⁻¹) does not limit the step once the loads' stiffness and
 /// damping are in HHT's Newton matrix (docs/design.md, decision 28): at the benchmark's
 /// h = 4e-4, α = 0, every step of the first second is accepted at its first attempt
-/// (measured: 7 503 iterations for 2 500 steps). Left out (`load_stiffness(false)`, the
+/// (measured: 4 404 iterations for 2 500 steps; 7 503 before the rate test, decision 40). Left out (`load_stiffness(false)`, the
 /// earlier Newton matrix), most attempts fail and are halved (measured: 9 272 rejections in
 /// 13 912 steps, 157 235 iterations).
 #[test]
@@ -103,6 +103,40 @@ fn a05_stiff_damper_does_not_limit_the_step() {
         10 * with.newton_iterations < without.newton_iterations,
         "{with:?} {without:?}"
     );
+}
+
+/// A fixed 1 ms is far too long for A03's motion past its own 0.05 s (the spring spins the
+/// crank up until the energy balance is off by its whole scale): Newton stops settling at a
+/// step where Φ already holds to roundoff. The error must say what did not settle, not only
+/// the residual, which alone would point at a joint that is satisfied.
+#[test]
+fn a03_at_a_fixed_step_too_long_names_what_did_not_settle() {
+    let mech = symbody::generic::find(&symbody_benchmark_mechanisms::REGISTRY, "andrews_squeezer")
+        .unwrap()
+        .default_mechanism();
+    let mut it = symbody_runtime::HhtBuilder::new()
+        .step(1e-3)
+        .build(mech)
+        .unwrap();
+    let err = it.advance_to(0.5).unwrap_err();
+    let text = err.to_string();
+    eprintln!("{text}");
+    match err {
+        symbody_runtime::Error::StepSizeTooSmall {
+            time,
+            residual,
+            increment: Some(inc),
+            ..
+        } => {
+            assert!(time > 0.05 && time < 0.5, "{text}");
+            assert!(residual < 1e-12, "{text}");
+            assert!(inc.size > 1.0, "{text}");
+            assert!(mech.info().coord_names.contains(&inc.coord), "{text}");
+            assert!(text.contains("Newton's last increment"), "{text}");
+            assert!(text.contains(&format!("`{}`", inc.coord)), "{text}");
+        }
+        other => panic!("expected a step below the minimum with Newton's increment, got {other}"),
+    }
 }
 
 /// Beyond h ≈ 1e-3 s the springs' symmetric stiffness made A05's Newton block indefinite in

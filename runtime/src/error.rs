@@ -5,6 +5,19 @@ use std::fmt;
 
 use crate::mechanism::{JointKind, MechanismInfo};
 
+/// Newton's last increment in a step that did not converge: how far from its tolerance it
+/// stayed, and in which unknown.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NewtonIncrement {
+    /// The largest weighted increment (1 = the tolerances `rel_tol`, `abs_tol_*`).
+    pub size: f64,
+    /// The coordinate where it is largest ([`MechanismInfo::coord_names`]).
+    pub coord: &'static str,
+    /// Whether in the constraint force Φqᵀλ on that coordinate; otherwise in its
+    /// acceleration.
+    pub constraint_force: bool,
+}
+
 /// A constraint row named for a report.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct ConstraintRow {
@@ -99,6 +112,10 @@ pub enum Error {
         /// The row where that residual is largest (what could not be satisfied), when the
         /// attempt got far enough to evaluate Φ.
         row: Option<ConstraintRow>,
+        /// Newton's last increment, when the attempt got as far as one: with Φ satisfied it
+        /// says what did not settle (an acceleration or a constraint force). Boxed: it is
+        /// rare, and every `Result` carrying an `Error` would otherwise grow by its size.
+        increment: Option<Box<NewtonIncrement>>,
     },
     /// Step-size control cut the step below the minimum without meeting the tolerances:
     /// the local error estimate (weighted RMS, 1 = the tolerance) stayed above 1.
@@ -203,12 +220,30 @@ impl fmt::Display for Error {
                 step,
                 residual,
                 row,
+                increment,
             } => {
                 write!(
                     f,
-                    "HHT step size {step:e} s at t = {time:.6} s is below the minimum without \
-                     convergence, constraint residual |Φ|∞ = {residual:e}"
+                    "HHT step size {step:.3e} s at t = {time:.6} s is below the minimum \
+                     without convergence"
                 )?;
+                if let Some(inc) = increment {
+                    let NewtonIncrement {
+                        size,
+                        coord,
+                        constraint_force,
+                    } = **inc;
+                    let what = match constraint_force {
+                        true => "constraint force on",
+                        false => "acceleration of",
+                    };
+                    write!(
+                        f,
+                        ": Newton's last increment is {size:.3e} times its tolerance, largest \
+                         in the {what} `{coord}`"
+                    )?;
+                }
+                write!(f, "; constraint residual |Φ|∞ = {residual:.3e}")?;
                 match row {
                     Some(r) => write!(f, ", largest in {r}"),
                     None => Ok(()),

@@ -34,7 +34,7 @@
 //! step is retried with a fresh factorization at every iteration, then halved; below the
 //! minimum step the integrator returns an error and keeps the last accepted state.
 
-use crate::error::{check_len, ConstraintRow, Error};
+use crate::error::{check_len, ConstraintRow, Error, NewtonIncrement};
 use crate::kinematics::{
     inf_norm, largest_row, mass_times, phi_q_transpose_times, InitialVelocity, KinematicSettings,
     Kinematics,
@@ -510,10 +510,12 @@ pub struct StepReport {
 /// Why one attempt failed; the caller decides whether to retry.
 #[derive(Debug, Clone, Copy)]
 enum Failure {
-    /// `row`: the constraint row with the largest |Φ| at the last iterate.
+    /// `row`: the constraint row with the largest |Φ| at the last iterate; `increment`: the
+    /// last weighted increment, the coordinate where it is largest and whether in Φqᵀλ.
     NotConverged {
         residual: f64,
         row: usize,
+        increment: Option<(f64, usize, bool)>,
     },
     Kkt(KktError),
     NotFinite,
@@ -924,17 +926,29 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                     | Failure::Kkt(e @ KktError::MassNotPositiveDefinite { .. }) => {
                         e.to_error(self.info, self.t)
                     }
-                    Failure::NotConverged { residual, row } => Error::StepSizeTooSmall {
+                    Failure::NotConverged {
+                        residual,
+                        row,
+                        increment,
+                    } => Error::StepSizeTooSmall {
                         time: self.t,
                         step: h,
                         residual,
                         row: Some(ConstraintRow::new(self.info, row)),
+                        increment: increment.map(|(size, c, constraint_force)| {
+                            Box::new(NewtonIncrement {
+                                size,
+                                coord: self.info.coord_names.get(c).copied().unwrap_or("?"),
+                                constraint_force,
+                            })
+                        }),
                     },
                     Failure::Kkt(_) | Failure::NotFinite => Error::StepSizeTooSmall {
                         time: self.t,
                         step: h,
                         residual: f64::NAN,
                         row: None,
+                        increment: None,
                     },
                 });
             }
@@ -1026,6 +1040,8 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             f64::NAN
         };
         let mut residual = f64::NAN;
+        // The last iteration's floors of the increments, for a report when Newton fails.
+        let mut floors = None;
         self.noise_measured = false;
         let q_scale = inf_norm(&self.q).max(1.0);
         if !self.settings.reuse_factorization {
@@ -1124,6 +1140,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             // floor is ~1e-7, below the default tolerances; it matters only for tiny steps).
             let floor_a = NOISE_FACTOR * f64::EPSILON * q_scale * inv_bh2;
             let floor_l = floor_a * inf_norm(&self.mass);
+            floors = Some((floor_a, floor_l));
             // The multipliers are judged by the forces they apply, Φqᵀλ (see
             // `abs_tol_lambda`); the right-hand side is consumed, so res1 takes Φqᵀ·Δλ.
             phi_q_transpose_times(self.info, &self.phi_q, &self.dl, &mut self.res1);
@@ -1167,6 +1184,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                     return Err(Failure::NotConverged {
                         residual,
                         row: largest_row(&self.phi),
+                        increment: floors.map(|f| self.largest_increment(f)),
                     });
                 }
                 self.need_factor = true;
@@ -1182,6 +1200,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         Err(Failure::NotConverged {
             residual,
             row: largest_row(&self.phi),
+            increment: floors.map(|f| self.largest_increment(f)),
         })
     }
 }
@@ -1322,6 +1341,26 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             .zip(&self.reaction1)
             .map(|(d, l)| d.abs() / (s.abs_tol_lambda.max(floor_l) + s.rel_tol * l.abs()));
         acc.chain(force).fold(0.0, f64::max)
+    }
+
+    /// [`Integrator::weighted_increment`] with where it is largest: the coordinate, and
+    /// whether in Φqᵀλ (for the error of a failed step; off the hot path).
+    fn largest_increment(&self, (floor_a, floor_l): (f64, f64)) -> (f64, usize, bool) {
+        let s = &self.settings;
+        let mut worst = (0.0, 0, false);
+        for i in 0..self.da.len() {
+            let acc =
+                self.da[i].abs() / (s.abs_tol_acc.max(floor_a) + s.rel_tol * self.qdd1[i].abs());
+            let force = self.res1[i].abs()
+                / (s.abs_tol_lambda.max(floor_l) + s.rel_tol * self.reaction1[i].abs());
+            if acc > worst.0 {
+                worst = (acc, i, false);
+            }
+            if force > worst.0 {
+                worst = (force, i, true);
+            }
+        }
+        worst
     }
 }
 

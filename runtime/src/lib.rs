@@ -52,7 +52,7 @@ mod testmodels;
 pub mod watch;
 
 pub use energy::{EnergyMeter, EnergySample};
-pub use error::{ConstraintRow, Error, RowOwner};
+pub use error::{ConstraintRow, Error, NewtonIncrement, RowOwner};
 pub use hht::{HhtBuilder, Integrator, Stats, StepReport};
 pub use interpreted::Interpreted;
 pub use kinematic_path::{
