@@ -1144,7 +1144,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             // The multipliers are judged by the forces they apply, Φqᵀλ (see
             // `abs_tol_lambda`); the right-hand side is consumed, so res1 takes Φqᵀ·Δλ.
             phi_q_transpose_times(self.info, &self.phi_q, &self.dl, &mut self.res1);
-            let mut err = self.weighted_increment(floor_a, floor_l);
+            let mut err = self.weighted_increment((floor_a, floor_l)).0;
             if !err.is_finite() {
                 return Err(Failure::NotFinite);
             }
@@ -1154,7 +1154,9 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                 // Stalled above the tolerance: if what is left is what roundoff alone makes
                 // of an increment through this factorization, Newton is done.
                 let (noise_a, noise_l) = self.measure_noise(h).map_err(Failure::Kkt)?;
-                let at_noise = self.weighted_increment(floor_a.max(noise_a), floor_l.max(noise_l));
+                let at_noise = self
+                    .weighted_increment((floor_a.max(noise_a), floor_l.max(noise_l)))
+                    .0;
                 if at_noise <= 1.0 {
                     err = at_noise;
                     stalled = false;
@@ -1184,7 +1186,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
                     return Err(Failure::NotConverged {
                         residual,
                         row: largest_row(&self.phi),
-                        increment: floors.map(|f| self.largest_increment(f)),
+                        increment: floors.map(|f| self.weighted_increment(f)),
                     });
                 }
                 self.need_factor = true;
@@ -1200,7 +1202,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         Err(Failure::NotConverged {
             residual,
             row: largest_row(&self.phi),
-            increment: floors.map(|f| self.largest_increment(f)),
+            increment: floors.map(|f| self.weighted_increment(f)),
         })
     }
 }
@@ -1327,25 +1329,10 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     }
 
     /// The largest increment of `q̈` (`self.da`) and of Φqᵀλ (`self.res1`), each relative to
-    /// its tolerance, with the absolute tolerances raised to the given noise floors.
-    fn weighted_increment(&self, floor_a: f64, floor_l: f64) -> f64 {
-        let s = &self.settings;
-        let acc = self
-            .da
-            .iter()
-            .zip(&self.qdd1)
-            .map(|(d, a)| d.abs() / (s.abs_tol_acc.max(floor_a) + s.rel_tol * a.abs()));
-        let force = self
-            .res1
-            .iter()
-            .zip(&self.reaction1)
-            .map(|(d, l)| d.abs() / (s.abs_tol_lambda.max(floor_l) + s.rel_tol * l.abs()));
-        acc.chain(force).fold(0.0, f64::max)
-    }
-
-    /// [`Integrator::weighted_increment`] with where it is largest: the coordinate, and
-    /// whether in Φqᵀλ (for the error of a failed step; off the hot path).
-    fn largest_increment(&self, (floor_a, floor_l): (f64, f64)) -> (f64, usize, bool) {
+    /// its tolerance, with the absolute tolerances raised to the noise floors `(floor_a,
+    /// floor_l)`; with it, the coordinate where it is largest and whether in Φqᵀλ (for the
+    /// error of a failed step).
+    fn weighted_increment(&self, (floor_a, floor_l): (f64, f64)) -> (f64, usize, bool) {
         let s = &self.settings;
         let mut worst = (0.0, 0, false);
         for i in 0..self.da.len() {
