@@ -89,9 +89,9 @@ fn first_second(
 /// A05's damper (c/m ≈ 8000 s⁻¹) does not limit the step once the loads' stiffness and
 /// damping are in HHT's Newton matrix (docs/design.md, decision 28): at the benchmark's
 /// h = 4e-4, α = 0, every step of the first second is accepted at its first attempt
-/// (measured: 4 404 iterations for 2 500 steps; 7 503 before the rate test, decision 40). Left out (`load_stiffness(false)`, the
-/// earlier Newton matrix), most attempts fail and are halved (measured: 9 272 rejections in
-/// 13 912 steps, 157 235 iterations).
+/// (measured: 4 404 iterations for 2 500 steps; 7 503 before the rate test, decision 40).
+/// Left out (`load_stiffness(false)`, the earlier Newton matrix), most attempts fail and are
+/// halved (measured: 9 272 rejections in 13 912 steps, 157 235 iterations).
 #[test]
 fn a05_stiff_damper_does_not_limit_the_step() {
     let with = flyball_first_second(4e-4, true);

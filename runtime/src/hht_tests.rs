@@ -293,8 +293,8 @@ fn the_rate_test_saves_newton_iterations_within_the_tolerance() {
     let (off, q_off) = run(false, 1e-6);
     // Without the test every step takes a second increment to show the first was enough.
     assert_eq!(off.newton_iterations, 2 * off.steps, "{off:?}");
-    // With it, one increment per step, and a second in every tenth step (`RATE_AGE_MAX`)
-    // to measure the rate again.
+    // With it, one increment per step, and a second in every eleventh (after `RATE_AGE_MAX`
+    // steps on a borrowed rate) to measure the rate again.
     assert!(10 * on.newton_iterations <= 12 * on.steps, "{on:?}");
     assert_eq!(on.evaluations, on.newton_iterations + on.steps + 1);
     // An accepted q̈ may be off by the tolerance, rel 1e-6 of |q̈| ≲ 20 rad/s², which moves
