@@ -23,6 +23,7 @@ pub mod geometry;
 pub mod hoist;
 pub mod info;
 pub mod interpret;
+pub mod kkt;
 pub mod legs;
 pub mod loads;
 pub mod model;

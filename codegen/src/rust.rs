@@ -9,6 +9,8 @@ use crate::model::{DriverTarget, Formulation, Model, Rotation};
 use crate::symbolic::Entry;
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
+use symbody_runtime::kkt::KktPattern;
+use symbody_runtime::JointKind;
 
 fn ident(s: &str) -> Ident {
     Ident::new(s, Span::call_site())
@@ -728,6 +730,14 @@ fn formulation_names(f: Formulation) -> (Ident, Ident, TokenStream) {
     }
 }
 
+/// What a model's KKT pattern takes besides its Φq and mass patterns (as
+/// `KktPattern::from_info` reads them from `INFO`).
+struct KktRows {
+    redundant: Vec<u32>,
+    normalization: Vec<u32>,
+    semidefinite: bool,
+}
+
 /// `pub mod exact` / `pub mod paper`: one formulation's mass pattern, `INFO` and functions.
 /// `bodies`, `joints` and `platform` are the tokens of those `MechanismInfo` fields.
 #[allow(clippy::too_many_arguments)]
@@ -740,9 +750,28 @@ fn formulation_module(
     bodies: TokenStream,
     joints: TokenStream,
     platform: TokenStream,
+    rows: &KktRows,
 ) -> TokenStream {
     let (modname, _, form) = formulation_names(dynamics.formulation);
     let (m_rows, m_cols) = pattern(&dynamics.mass);
+    let (pq_rows, pq_cols) = pattern(&sys.phi_q);
+    // The pattern `KktPattern::from_info` builds from this module's `INFO`.
+    let kkt = crate::kkt::kernels(&KktPattern {
+        n: sys.n_coords,
+        m: sys.n_constraints,
+        mass_rows: m_rows.clone(),
+        mass_cols: m_cols.clone(),
+        phi_q_rows: pq_rows,
+        phi_q_cols: pq_cols,
+        redundant_rows: rows.redundant.clone(),
+        normalization_rows: rows.normalization.clone(),
+        mass_semidefinite: rows.semidefinite,
+        kernels: None,
+    });
+    let kkt_field = match kkt {
+        Some(_) => quote!(Some(&KKT)),
+        None => quote!(None),
+    };
     let mnnz = m_rows.len();
     let (fq_rows, fq_cols) = pattern(&dynamics.force_q);
     let (fqd_rows, fqd_cols) = pattern(&dynamics.force_qd);
@@ -787,7 +816,9 @@ fn formulation_module(
                 qd0: &QD0,
                 redundant_rows: &REDUNDANT_ROWS,
                 platform: #platform,
+                kkt: #kkt_field,
             };
+            #kkt
             #(#fns)*
         }
     }
@@ -899,6 +930,11 @@ fn reduced_module(
             quote!(&[]),
             quote!(&[]),
             quote!(None),
+            &KktRows {
+                redundant: redundant.clone(),
+                normalization: Vec::new(),
+                semidefinite: false,
+            },
         ));
         forms.push(formulation_types(r, &type_name, &modname, &type_doc, false));
         forms.push(reduced_at_type(model, r, &type_name, &modname));
@@ -1134,6 +1170,15 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
         reduced_hoisted.as_ref().map(|(r, _)| r),
     ));
 
+    let kkt_rows = KktRows {
+        redundant: redundant.clone(),
+        normalization: crate::info::joints(model, sys)
+            .iter()
+            .filter(|j| j.kind == JointKind::Normalization)
+            .flat_map(|j| (j.row_start..j.row_start + j.rows).map(|r| r as u32))
+            .collect(),
+        semidefinite: model.bodies.iter().any(|b| b.inertia.contains(&0.0)),
+    };
     let mut impls = Vec::new();
     for dynamics in &sys.dynamics {
         let (modname, type_name, _) = formulation_names(dynamics.formulation);
@@ -1159,6 +1204,7 @@ pub fn module(model: &Model, sys: &System, asm: &Assembly, source: &str, hash: u
             quote!(&BODIES),
             quote!(&JOINTS),
             quote!(PLATFORM),
+            &kkt_rows,
         ));
         impls.push(formulation_types(
             sys, &type_name, &modname, &type_doc, true,

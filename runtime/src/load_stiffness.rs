@@ -121,6 +121,7 @@ mod tests {
             qd0: &[0.0; 2],
             redundant_rows: &[],
             platform: None,
+            kkt: None,
         };
         let mut s = LoadStiffness::new(&INFO).unwrap();
         assert_eq!(s.rows, [0, 0, 1, 1]);

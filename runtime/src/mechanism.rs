@@ -178,6 +178,10 @@ pub struct MechanismInfo {
     /// Detected by the generator: the body held to the ground by six legs of driven length,
     /// for forward kinematics. `None` when the mechanism is not such a platform.
     pub platform: Option<PlatformInfo>,
+    /// The KKT factor and solve the generator emitted for this model's pattern (`None`:
+    /// none were, e.g. an interpreted model or one too large for straight-line code); see
+    /// [`KktKernels`](crate::kkt::KktKernels).
+    pub kkt: Option<&'static crate::kkt::KktKernels>,
 }
 
 /// One leg of a platform held to the ground by legs of driven length (forward kinematics).

@@ -160,6 +160,7 @@ static PENDULUM_PAPER: MechanismInfo = MechanismInfo {
     qd0: &[0.0; 6],
     redundant_rows: &[],
     platform: None,
+    kkt: None,
 };
 
 static PENDULUM_EXACT: MechanismInfo = MechanismInfo {
@@ -399,6 +400,7 @@ static CIRCLE: MechanismInfo = MechanismInfo {
     qd0: &[0.0; 6],
     redundant_rows: &[],
     platform: None,
+    kkt: None,
 };
 
 /// Rows: `X − d`, `Z`, `θ`, `β`, `γ` (the guide), then `√(X² + Y²) − c(t)` (the driver),
@@ -717,6 +719,7 @@ static QUAT_PENDULUM: MechanismInfo = MechanismInfo {
     qd0: &[0.0; 7],
     redundant_rows: &[],
     platform: None,
+    kkt: None,
 };
 
 /// The exact pendulum with Euler parameters: body point `(0, L, 0)` held at the origin,

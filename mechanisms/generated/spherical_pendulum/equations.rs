@@ -1106,7 +1106,518 @@ pub mod exact {
         qd0: &QD0,
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
+        kkt: Some(&KKT),
     };
+    use symbody_runtime::kkt::{
+        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+    };
+    /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
+    pub static KKT: KktKernels = KktKernels {
+        pattern: 0xcbae71240afc4a04,
+        storage: 42,
+        factor: kkt_factor,
+        solve: kkt_solve,
+    };
+    #[allow(
+        unused_variables,
+        clippy::neg_cmp_op_on_partial_ord,
+        clippy::nonminimal_bool
+    )]
+    fn kkt_factor(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        let mass: &[f64; 19] = mass
+            .try_into()
+            .map_err(|_| length_error(19, mass.len()))?;
+        let phi_q: &[f64; 19] = phi_q
+            .try_into()
+            .map_err(|_| length_error(19, phi_q.len()))?;
+        let st_len = st.len();
+        let st: &mut [f64; 42] = st.try_into().map_err(|_| length_error(42, st_len))?;
+        let v0 = c * mass[0];
+        let v1 = c * mass[1];
+        let v2 = c * mass[2];
+        let v3 = c * mass[3];
+        let v4 = c * mass[4];
+        let v5 = c * mass[5];
+        let v6 = c * mass[6];
+        let v7 = c * mass[7];
+        let v8 = c * mass[8];
+        let v9 = c * mass[9];
+        let v10 = c * mass[10];
+        let v11 = c * mass[11];
+        let v12 = c * mass[12];
+        let v13 = c * mass[13];
+        let v14 = c * mass[14];
+        let v15 = c * mass[15];
+        let v16 = c * mass[16];
+        let v17 = c * mass[17];
+        let v18 = c * mass[18];
+        let v19 = phi_q[0];
+        let v20 = phi_q[1];
+        let v21 = phi_q[2];
+        let v22 = phi_q[3];
+        let v23 = phi_q[4];
+        let v24 = phi_q[5];
+        let v25 = phi_q[6];
+        let v26 = phi_q[7];
+        let v27 = phi_q[8];
+        let v28 = phi_q[9];
+        let v29 = phi_q[10];
+        let v30 = phi_q[11];
+        let v31 = phi_q[12];
+        let v32 = phi_q[13];
+        let v33 = phi_q[14];
+        let v34 = phi_q[15];
+        let v35 = phi_q[16];
+        let v36 = phi_q[17];
+        let v37 = phi_q[18];
+        if !(v0 > 0.0) || !v0.is_finite() {
+            return Err(mass_pivot_error(v0, 0));
+        }
+        let v38 = v0.sqrt();
+        let v39 = 1.0 / v38;
+        if !(v1 > 0.0) || !v1.is_finite() {
+            return Err(mass_pivot_error(v1, 1));
+        }
+        let v40 = v1.sqrt();
+        let v41 = 1.0 / v40;
+        if !(v2 > 0.0) || !v2.is_finite() {
+            return Err(mass_pivot_error(v2, 2));
+        }
+        let v42 = v2.sqrt();
+        let v43 = 1.0 / v42;
+        if !(v3 > 0.0) || !v3.is_finite() {
+            return Err(mass_pivot_error(v3, 3));
+        }
+        let v44 = v3.sqrt();
+        let v45 = 1.0 / v44;
+        let v46 = v7 * v45;
+        let v47 = v11 * v45;
+        let v48 = v15 * v45;
+        let v49 = v8 - v46 * v46;
+        if !(v49 > 0.0) || !v49.is_finite() {
+            return Err(mass_pivot_error(v49, 4));
+        }
+        let v50 = v49.sqrt();
+        let v51 = 1.0 / v50;
+        let v52 = v12 - v47 * v46;
+        let v53 = v52 * v51;
+        let v54 = v16 - v48 * v46;
+        let v55 = v54 * v51;
+        let v56 = v13 - v47 * v47;
+        let v57 = v56 - v53 * v53;
+        if !(v57 > 0.0) || !v57.is_finite() {
+            return Err(mass_pivot_error(v57, 5));
+        }
+        let v58 = v57.sqrt();
+        let v59 = 1.0 / v58;
+        let v60 = v17 - v48 * v47;
+        let v61 = v60 - v55 * v53;
+        let v62 = v61 * v59;
+        let v63 = v18 - v48 * v48;
+        let v64 = v63 - v55 * v55;
+        let v65 = v64 - v62 * v62;
+        if !(v65 > 0.0) || !v65.is_finite() {
+            return Err(mass_pivot_error(v65, 6));
+        }
+        let v66 = v65.sqrt();
+        let v67 = 1.0 / v66;
+        let v68 = v19 * v39;
+        let v69 = v20 * v45;
+        let v70 = v21 - v46 * v69;
+        let v71 = v70 * v51;
+        let v72 = v22 - v47 * v69;
+        let v73 = v72 - v53 * v71;
+        let v74 = v73 * v59;
+        let v75 = v23 - v48 * v69;
+        let v76 = v75 - v55 * v71;
+        let v77 = v76 - v62 * v74;
+        let v78 = v77 * v67;
+        let v79 = v24 * v41;
+        let v80 = v25 * v45;
+        let v81 = v26 - v46 * v80;
+        let v82 = v81 * v51;
+        let v83 = v27 - v47 * v80;
+        let v84 = v83 - v53 * v82;
+        let v85 = v84 * v59;
+        let v86 = v28 - v48 * v80;
+        let v87 = v86 - v55 * v82;
+        let v88 = v87 - v62 * v85;
+        let v89 = v88 * v67;
+        let v90 = v29 * v43;
+        let v91 = v30 * v45;
+        let v92 = v31 - v46 * v91;
+        let v93 = v92 * v51;
+        let v94 = v32 - v47 * v91;
+        let v95 = v94 - v53 * v93;
+        let v96 = v95 * v59;
+        let v97 = v33 - v48 * v91;
+        let v98 = v97 - v55 * v93;
+        let v99 = v98 - v62 * v96;
+        let v100 = v99 * v67;
+        let v101 = v34 * v45;
+        let v102 = v35 - v46 * v101;
+        let v103 = v102 * v51;
+        let v104 = v36 - v47 * v101;
+        let v105 = v104 - v53 * v103;
+        let v106 = v105 * v59;
+        let v107 = v37 - v48 * v101;
+        let v108 = v107 - v55 * v103;
+        let v109 = v108 - v62 * v106;
+        let v110 = v109 * v67;
+        let v111 = v68 * v68;
+        let v112 = v69 * v69;
+        let v113 = v111 + v112;
+        let v114 = v71 * v71;
+        let v115 = v113 + v114;
+        let v116 = v74 * v74;
+        let v117 = v115 + v116;
+        let v118 = v78 * v78;
+        let v119 = v117 + v118;
+        let v120 = v80 * v69;
+        let v121 = v82 * v71;
+        let v122 = v120 + v121;
+        let v123 = v85 * v74;
+        let v124 = v122 + v123;
+        let v125 = v89 * v78;
+        let v126 = v124 + v125;
+        let v127 = v79 * v79;
+        let v128 = v80 * v80;
+        let v129 = v127 + v128;
+        let v130 = v82 * v82;
+        let v131 = v129 + v130;
+        let v132 = v85 * v85;
+        let v133 = v131 + v132;
+        let v134 = v89 * v89;
+        let v135 = v133 + v134;
+        let v136 = v91 * v69;
+        let v137 = v93 * v71;
+        let v138 = v136 + v137;
+        let v139 = v96 * v74;
+        let v140 = v138 + v139;
+        let v141 = v100 * v78;
+        let v142 = v140 + v141;
+        let v143 = v91 * v80;
+        let v144 = v93 * v82;
+        let v145 = v143 + v144;
+        let v146 = v96 * v85;
+        let v147 = v145 + v146;
+        let v148 = v100 * v89;
+        let v149 = v147 + v148;
+        let v150 = v90 * v90;
+        let v151 = v91 * v91;
+        let v152 = v150 + v151;
+        let v153 = v93 * v93;
+        let v154 = v152 + v153;
+        let v155 = v96 * v96;
+        let v156 = v154 + v155;
+        let v157 = v100 * v100;
+        let v158 = v156 + v157;
+        let v159 = v101 * v69;
+        let v160 = v103 * v71;
+        let v161 = v159 + v160;
+        let v162 = v106 * v74;
+        let v163 = v161 + v162;
+        let v164 = v110 * v78;
+        let v165 = v163 + v164;
+        let v166 = v101 * v80;
+        let v167 = v103 * v82;
+        let v168 = v166 + v167;
+        let v169 = v106 * v85;
+        let v170 = v168 + v169;
+        let v171 = v110 * v89;
+        let v172 = v170 + v171;
+        let v173 = v101 * v91;
+        let v174 = v103 * v93;
+        let v175 = v173 + v174;
+        let v176 = v106 * v96;
+        let v177 = v175 + v176;
+        let v178 = v110 * v100;
+        let v179 = v177 + v178;
+        let v180 = v101 * v101;
+        let v181 = v103 * v103;
+        let v182 = v180 + v181;
+        let v183 = v106 * v106;
+        let v184 = v182 + v183;
+        let v185 = v110 * v110;
+        let v186 = v184 + v185;
+        let (v187, v188) = piv.pivot(v186, v186, 3, false)?;
+        let v189 = v165 * v187;
+        let v190 = v119 - v189 * v188 * v189;
+        let v191 = v172 * v187;
+        let v192 = v135 - v191 * v188 * v191;
+        let v193 = v179 * v187;
+        let v194 = v158 - v193 * v188 * v193;
+        let v195 = v126 - v191 * v188 * v189;
+        let v196 = v142 - v193 * v188 * v189;
+        let v197 = v149 - v193 * v188 * v191;
+        let (v198, v199) = piv.pivot(v190, v190, 0, false)?;
+        let v200 = v195 * v198;
+        let v201 = v192 - v200 * v199 * v200;
+        let v202 = v196 * v198;
+        let v203 = v194 - v202 * v199 * v202;
+        let v204 = v197 - v202 * v199 * v200;
+        let (v205, v206) = piv.pivot(v201, v192, 1, false)?;
+        let v207 = v204 * v205;
+        let v208 = v203 - v207 * v206 * v207;
+        let (v209, v210) = piv.pivot(v208, v194, 2, false)?;
+        st[0] = v46;
+        st[1] = v47;
+        st[2] = v53;
+        st[3] = v48;
+        st[4] = v55;
+        st[5] = v62;
+        st[6] = v39;
+        st[7] = v41;
+        st[8] = v43;
+        st[9] = v45;
+        st[10] = v51;
+        st[11] = v59;
+        st[12] = v67;
+        st[13] = v68;
+        st[14] = v69;
+        st[15] = v71;
+        st[16] = v74;
+        st[17] = v78;
+        st[18] = v79;
+        st[19] = v80;
+        st[20] = v82;
+        st[21] = v85;
+        st[22] = v89;
+        st[23] = v90;
+        st[24] = v91;
+        st[25] = v93;
+        st[26] = v96;
+        st[27] = v100;
+        st[28] = v101;
+        st[29] = v103;
+        st[30] = v106;
+        st[31] = v110;
+        st[32] = v189;
+        st[33] = v191;
+        st[34] = v193;
+        st[35] = v200;
+        st[36] = v202;
+        st[37] = v207;
+        st[38] = v187;
+        st[39] = v198;
+        st[40] = v205;
+        st[41] = v209;
+        Ok(())
+    }
+    #[allow(
+        unused_variables,
+        clippy::neg_cmp_op_on_partial_ord,
+        clippy::nonminimal_bool
+    )]
+    fn kkt_solve(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        let f: &[f64; 7] = f.try_into().map_err(|_| length_error(7, f.len()))?;
+        let g: &[f64; 4] = g.try_into().map_err(|_| length_error(4, g.len()))?;
+        let x_len = x.len();
+        let x: &mut [f64; 7] = x.try_into().map_err(|_| length_error(7, x_len))?;
+        let y_len = y.len();
+        let y: &mut [f64; 4] = y.try_into().map_err(|_| length_error(4, y_len))?;
+        let st: &[f64; 42] = st.try_into().map_err(|_| length_error(42, st.len()))?;
+        if f.iter().any(|&v| v != 0.0) {
+            let v0 = -g[0];
+            let v1 = -g[1];
+            let v2 = -g[2];
+            let v3 = -g[3];
+            let v4 = f[0];
+            let v5 = f[1];
+            let v6 = f[2];
+            let v7 = f[3];
+            let v8 = f[4];
+            let v9 = f[5];
+            let v10 = f[6];
+            let v11 = v4 * st[6];
+            let v12 = v5 * st[7];
+            let v13 = v6 * st[8];
+            let v14 = v7 * st[9];
+            let v15 = v8 - st[0] * v14;
+            let v16 = v15 * st[10];
+            let v17 = v9 - st[1] * v14;
+            let v18 = v17 - st[2] * v16;
+            let v19 = v18 * st[11];
+            let v20 = v10 - st[3] * v14;
+            let v21 = v20 - st[4] * v16;
+            let v22 = v21 - st[5] * v19;
+            let v23 = v22 * st[12];
+            let v24 = st[13] * v11;
+            let v25 = st[14] * v14;
+            let v26 = v24 + v25;
+            let v27 = st[15] * v16;
+            let v28 = v26 + v27;
+            let v29 = st[16] * v19;
+            let v30 = v28 + v29;
+            let v31 = st[17] * v23;
+            let v32 = v30 + v31;
+            let v33 = v0 + v32;
+            let v34 = st[18] * v12;
+            let v35 = st[19] * v14;
+            let v36 = v34 + v35;
+            let v37 = st[20] * v16;
+            let v38 = v36 + v37;
+            let v39 = st[21] * v19;
+            let v40 = v38 + v39;
+            let v41 = st[22] * v23;
+            let v42 = v40 + v41;
+            let v43 = v1 + v42;
+            let v44 = st[23] * v13;
+            let v45 = st[24] * v14;
+            let v46 = v44 + v45;
+            let v47 = st[25] * v16;
+            let v48 = v46 + v47;
+            let v49 = st[26] * v19;
+            let v50 = v48 + v49;
+            let v51 = st[27] * v23;
+            let v52 = v50 + v51;
+            let v53 = v2 + v52;
+            let v54 = st[28] * v14;
+            let v55 = st[29] * v16;
+            let v56 = v54 + v55;
+            let v57 = st[30] * v19;
+            let v58 = v56 + v57;
+            let v59 = st[31] * v23;
+            let v60 = v58 + v59;
+            let v61 = v3 + v60;
+            let v62 = v33 - st[32] * v61;
+            let v63 = v43 - st[33] * v61;
+            let v64 = v53 - st[34] * v61;
+            let v65 = v63 - st[35] * v62;
+            let v66 = v64 - st[36] * v62;
+            let v67 = v66 - st[37] * v65;
+            let v68 = v61 * st[38];
+            let v69 = v62 * st[39];
+            let v70 = v65 * st[40];
+            let v71 = v67 * st[41];
+            let v72 = v70 - st[37] * v71;
+            let v73 = v69 - st[35] * v72;
+            let v74 = v73 - st[36] * v71;
+            let v75 = v68 - st[32] * v74;
+            let v76 = v75 - st[33] * v72;
+            let v77 = v76 - st[34] * v71;
+            y[3] = v77;
+            y[0] = v74;
+            y[1] = v72;
+            y[2] = v71;
+            let v78 = v11 - st[13] * v74;
+            let v79 = v14 - st[14] * v74;
+            let v80 = v16 - st[15] * v74;
+            let v81 = v19 - st[16] * v74;
+            let v82 = v23 - st[17] * v74;
+            let v83 = v12 - st[18] * v72;
+            let v84 = v79 - st[19] * v72;
+            let v85 = v80 - st[20] * v72;
+            let v86 = v81 - st[21] * v72;
+            let v87 = v82 - st[22] * v72;
+            let v88 = v13 - st[23] * v71;
+            let v89 = v84 - st[24] * v71;
+            let v90 = v85 - st[25] * v71;
+            let v91 = v86 - st[26] * v71;
+            let v92 = v87 - st[27] * v71;
+            let v93 = v89 - st[28] * v77;
+            let v94 = v90 - st[29] * v77;
+            let v95 = v91 - st[30] * v77;
+            let v96 = v92 - st[31] * v77;
+            let v97 = v96 * st[12];
+            let v98 = v95 - st[5] * v97;
+            let v99 = v98 * st[11];
+            let v100 = v94 - st[2] * v99;
+            let v101 = v100 - st[4] * v97;
+            let v102 = v101 * st[10];
+            let v103 = v93 - st[0] * v102;
+            let v104 = v103 - st[1] * v99;
+            let v105 = v104 - st[3] * v97;
+            let v106 = v105 * st[9];
+            let v107 = v88 * st[8];
+            let v108 = v83 * st[7];
+            let v109 = v78 * st[6];
+            x[0] = v109;
+            x[1] = v108;
+            x[2] = v107;
+            x[3] = v106;
+            x[4] = v102;
+            x[5] = v99;
+            x[6] = v97;
+        } else {
+            let v0 = -g[0];
+            let v1 = -g[1];
+            let v2 = -g[2];
+            let v3 = -g[3];
+            let v4 = v0 - st[32] * v3;
+            let v5 = v1 - st[33] * v3;
+            let v6 = v2 - st[34] * v3;
+            let v7 = v5 - st[35] * v4;
+            let v8 = v6 - st[36] * v4;
+            let v9 = v8 - st[37] * v7;
+            let v10 = v3 * st[38];
+            let v11 = v4 * st[39];
+            let v12 = v7 * st[40];
+            let v13 = v9 * st[41];
+            let v14 = v12 - st[37] * v13;
+            let v15 = v11 - st[35] * v14;
+            let v16 = v15 - st[36] * v13;
+            let v17 = v10 - st[32] * v16;
+            let v18 = v17 - st[33] * v14;
+            let v19 = v18 - st[34] * v13;
+            y[3] = v19;
+            y[0] = v16;
+            y[1] = v14;
+            y[2] = v13;
+            let v20 = -(st[13] * v16);
+            let v21 = -(st[14] * v16);
+            let v22 = -(st[15] * v16);
+            let v23 = -(st[16] * v16);
+            let v24 = -(st[17] * v16);
+            let v25 = -(st[18] * v14);
+            let v26 = v21 - st[19] * v14;
+            let v27 = v22 - st[20] * v14;
+            let v28 = v23 - st[21] * v14;
+            let v29 = v24 - st[22] * v14;
+            let v30 = -(st[23] * v13);
+            let v31 = v26 - st[24] * v13;
+            let v32 = v27 - st[25] * v13;
+            let v33 = v28 - st[26] * v13;
+            let v34 = v29 - st[27] * v13;
+            let v35 = v31 - st[28] * v19;
+            let v36 = v32 - st[29] * v19;
+            let v37 = v33 - st[30] * v19;
+            let v38 = v34 - st[31] * v19;
+            let v39 = v38 * st[12];
+            let v40 = v37 - st[5] * v39;
+            let v41 = v40 * st[11];
+            let v42 = v36 - st[2] * v41;
+            let v43 = v42 - st[4] * v39;
+            let v44 = v43 * st[10];
+            let v45 = v35 - st[0] * v44;
+            let v46 = v45 - st[1] * v41;
+            let v47 = v46 - st[3] * v39;
+            let v48 = v47 * st[9];
+            let v49 = v30 * st[8];
+            let v50 = v25 * st[7];
+            let v51 = v20 * st[6];
+            x[0] = v51;
+            x[1] = v50;
+            x[2] = v49;
+            x[3] = v48;
+            x[4] = v44;
+            x[5] = v41;
+            x[6] = v39;
+        }
+        Ok(())
+    }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
         k: &[f64],

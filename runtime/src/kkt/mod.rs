@@ -18,11 +18,13 @@
 //! dense LU.
 
 mod dense;
+mod kernels;
 mod ordering;
 mod schur;
 
 pub use dense::DenseKkt;
-pub use schur::SchurKkt;
+pub use kernels::{length_error, mass_pivot_error, KktKernels, Pivoting};
+pub use schur::{SchurKkt, SchurPlan};
 
 use std::fmt;
 
@@ -57,6 +59,10 @@ pub struct KktPattern {
     /// constraints fix the directions without kinetic energy (the generator checks that),
     /// but `M` has no inverse, so [`SchurKkt`] solves it as [`DenseKkt`] does.
     pub mass_semidefinite: bool,
+    /// Straight-line factor and solve emitted by the generator for this pattern
+    /// ([`MechanismInfo::kkt`]); [`SchurKkt`] runs them when the pattern is still the one
+    /// they were emitted for, and its own loops otherwise.
+    pub kernels: Option<&'static KktKernels>,
 }
 
 impl KktPattern {
@@ -77,6 +83,7 @@ impl KktPattern {
                 .flat_map(|j| (j.row_start..j.row_start + j.rows).map(|r| r as u32))
                 .collect(),
             mass_semidefinite: info.bodies.iter().any(|b| b.inertia.contains(&0.0)),
+            kernels: info.kkt,
         }
     }
 

@@ -14,7 +14,8 @@
 
 use super::ordering::{minimum_degree, Symbolic};
 use super::{
-    check_kkt_len, DenseKkt, KktError, KktPattern, KktSolver, Pivots, DEFAULT_PIVOT_TOLERANCE,
+    check_kkt_len, DenseKkt, KktError, KktKernels, KktPattern, KktSolver, Pivoting, Pivots,
+    DEFAULT_PIVOT_TOLERANCE,
 };
 use crate::error::Error;
 
@@ -86,6 +87,47 @@ pub struct SchurKkt {
     pivots: Pivots,
     /// The solver for a semi-definite `M`; every other field is then empty.
     dense: Option<Box<DenseKkt>>,
+    /// The generator's straight-line factor and solve for this pattern, when it emitted them,
+    /// and the state they keep between the two ([`KktKernels`]).
+    kernels: Option<&'static KktKernels>,
+    state: Vec<f64>,
+}
+
+/// The symbolic analysis of a [`SchurKkt`]: what the generator needs to emit its numeric
+/// factorization and solve as straight-line code ([`KktKernels`]). Slots index the solver's
+/// work arrays as `SchurKkt::factor` uses them.
+#[derive(Debug, Clone, Copy)]
+pub struct SchurPlan<'a> {
+    /// Group `b` holds the coordinates `block_coords[block_ptr[b]..block_ptr[b + 1]]`.
+    pub block_ptr: &'a [usize],
+    pub block_coords: &'a [usize],
+    /// Offset of group `b`'s dense `s × s` block (row-major) in the Cholesky array.
+    pub chol_off: &'a [usize],
+    /// Length of the Cholesky array.
+    pub chol_len: usize,
+    /// For each mass nonzero, its slot in the Cholesky array (lower triangle).
+    pub mass_dest: &'a [usize],
+    /// Rows of Φq touching group `b`: `brows[brow_ptr[b]..brow_ptr[b + 1]]`.
+    pub brow_ptr: &'a [usize],
+    pub brows: &'a [usize],
+    /// Offset of group `b`'s `rows × s` slice of `W` in the `W` array.
+    pub p_off: &'a [usize],
+    /// Length of the `W` array; its last slot is the dummy that takes redundant rows' entries.
+    pub w_len: usize,
+    /// For each Φq nonzero, its slot in the `W` array.
+    pub phi_q_dest: &'a [usize],
+    /// Destinations of group `b`'s products `W_aᵀ W_b` (see `SchurKkt::factor`).
+    pub pair_ptr: &'a [usize],
+    pub pair_dest: &'a [usize],
+    /// Pivot order: position `k` eliminates row `perm[k]`.
+    pub perm: &'a [usize],
+    /// Strictly-lower pattern of L, column by column, in pivot positions.
+    pub col_ptr: &'a [usize],
+    pub row_idx: &'a [usize],
+    /// By pivot position: a declared redundant row.
+    pub redundant: &'a [bool],
+    /// Number of normalization rows, eliminated first.
+    pub n_first: usize,
 }
 
 impl SchurKkt {
@@ -104,6 +146,34 @@ impl SchurKkt {
     /// Whether this solver runs the dense LU because `M` is only semi-definite.
     pub fn is_dense(&self) -> bool {
         self.dense.is_some()
+    }
+
+    /// Whether factor and solve run the generator's straight-line kernels for this pattern.
+    pub fn runs_kernels(&self) -> bool {
+        self.kernels.is_some()
+    }
+
+    /// The symbolic analysis, for the generator; `None` when `M` is solved densely.
+    pub fn plan(&self) -> Option<SchurPlan<'_>> {
+        self.dense.is_none().then_some(SchurPlan {
+            block_ptr: &self.block_ptr,
+            block_coords: &self.block_coords,
+            chol_off: &self.chol_off,
+            chol_len: self.chol.len(),
+            mass_dest: &self.mass_dest,
+            brow_ptr: &self.brow_ptr,
+            brows: &self.brows,
+            p_off: &self.p_off,
+            w_len: self.wmat.len(),
+            phi_q_dest: &self.phi_q_dest,
+            pair_ptr: &self.pair_ptr,
+            pair_dest: &self.pair_dest,
+            perm: &self.sym.perm,
+            col_ptr: &self.sym.col_ptr,
+            row_idx: &self.sym.row_idx,
+            redundant: &self.redundant,
+            n_first: self.n_first,
+        })
     }
 
     /// The solver for a semi-definite `M`: a [`DenseKkt`] and nothing else.
@@ -142,6 +212,8 @@ impl SchurKkt {
             drop_dependent: false,
             pivots: Pivots::default(),
             dense: Some(Box::new(DenseKkt::new(pattern)?)),
+            kernels: None,
+            state: Vec::new(),
         })
     }
 }
@@ -605,6 +677,9 @@ impl KktSolver for SchurKkt {
             "update slots lie in the factor"
         );
         let redundant = sym.perm.iter().map(|&r| is_redundant[r]).collect();
+        let kernels = pattern
+            .kernels
+            .filter(|k| k.pattern == pattern.fingerprint());
         Ok(SchurKkt {
             n,
             m,
@@ -639,6 +714,8 @@ impl KktSolver for SchurKkt {
             drop_dependent: false,
             pivots: Pivots::default(),
             dense: None,
+            kernels,
+            state: vec![0.0; kernels.map_or(0, |k| k.storage)],
         })
     }
 
@@ -649,6 +726,13 @@ impl KktSolver for SchurKkt {
         self.factored = false;
         check_kkt_len(self.mass_dest.len(), mass.len())?;
         check_kkt_len(self.phi_q_dest.len(), phi_q.len())?;
+        if let Some(kernels) = self.kernels {
+            let mut pivoting = Pivoting::new(self.pivot_tol, self.drop_dependent);
+            (kernels.factor)(mass, mass_scale, phi_q, &mut self.state, &mut pivoting)?;
+            self.pivots = pivoting.finish()?;
+            self.factored = true;
+            return Ok(());
+        }
 
         // Per group: Cholesky of c·M_b (lower triangle, row-major), W_b = L_b⁻¹ Φq_bᵀ and
         // S += W_bᵀ W_b.
@@ -690,57 +774,24 @@ impl KktSolver for SchurKkt {
         // Right-looking LDLᵀ of S in place: column k, once final, updates the later columns
         // through its precomputed list. Rank loss shows as a pivot that is tiny relative to
         // the row's own diag(S).
-        let mut bad = [0usize; 4];
-        let mut nbad = 0;
-        let mut worst = f64::INFINITY;
-        // The smallest kept pivot relative to its row's diag(S), as the pair (D, diag) so
-        // the loop compares by multiplication instead of dividing every row.
-        let (mut small_d, mut small_scale) = (1.0, 1.0);
-        let mut dropped = 0;
+        let mut pivoting = Pivoting::new(self.pivot_tol, self.drop_dependent);
         let sym = &self.sym;
         self.scale.copy_from_slice(&self.diag);
         for k in 0..self.m {
             if k == self.n_first {
                 self.scale[k..].copy_from_slice(&self.diag[k..]);
             }
-            let scale = self.scale[k];
             let col = sym.col_ptr[k]..sym.col_ptr[k + 1];
-            let dk = self.diag[k];
-            if dk.is_nan() {
-                return Err(KktError::NotFinite);
-            }
-            if !(dk > self.pivot_tol * scale) {
-                if self.redundant[k] {
-                    // Isolated in S (no L entries either way): a unit pivot with 1/D = 0
-                    // solves the row as absent and gives it y = 0.
-                    self.diag[k] = 1.0;
-                    self.dinv[k] = 0.0;
-                    continue;
-                }
-                if self.drop_dependent {
-                    dropped += 1;
-                    // As a redundant row, once its column of L is cleared below. (Clamping the
-                    // pivot instead keeps the row corrected, but Newton then converges too
-                    // slowly along the nearly dependent direction to finish a step.)
-                    self.diag[k] = 1.0;
-                } else {
-                    worst = worst.min(if scale > 0.0 { dk / scale } else { 0.0 });
-                    if nbad < bad.len() {
-                        bad[nbad] = sym.perm[k];
-                    }
-                    nbad += 1;
-                    // Dropped too, so the remaining pivots can name further dependent rows.
-                    self.diag[k] = 0.0;
-                }
-                self.dinv[k] = 0.0;
+            let (inv, dk) =
+                pivoting.pivot(self.diag[k], self.scale[k], sym.perm[k], self.redundant[k])?;
+            self.dinv[k] = inv;
+            if inv == 0.0 {
+                // Dropped: solved as absent (y = 0), as a redundant row. (Clamping the pivot
+                // instead keeps the row corrected, but Newton then converges too slowly along
+                // the nearly dependent direction to finish a step.)
                 self.lval[col].fill(0.0);
                 continue;
             }
-            if dk * small_scale < small_d * scale {
-                (small_d, small_scale) = (dk, scale);
-            }
-            let inv = 1.0 / dk;
-            self.dinv[k] = inv;
             let lcol = &mut self.lval[col.clone()];
             for (l, &r) in lcol.iter_mut().zip(&sym.row_idx[col]) {
                 *l *= inv;
@@ -757,17 +808,7 @@ impl KktSolver for SchurKkt {
                 }
             }
         }
-        if nbad > 0 {
-            return Err(KktError::RankDeficient {
-                rows: bad,
-                count: nbad.min(bad.len()),
-                pivot: worst,
-            });
-        }
-        self.pivots = Pivots {
-            smallest: small_d / small_scale,
-            dropped,
-        };
+        self.pivots = pivoting.finish()?;
         self.factored = true;
         Ok(())
     }
@@ -793,6 +834,9 @@ impl KktSolver for SchurKkt {
         check_kkt_len(self.m, g.len())?;
         check_kkt_len(self.n, x.len())?;
         check_kkt_len(self.m, y.len())?;
+        if let Some(kernels) = self.kernels {
+            return (kernels.solve)(f, g, x, y, &self.state);
+        }
         let nb = self.chol_off.len();
 
         // With u_b = L_b⁻¹ f_b: Φq M⁻¹ f = Σ_b W_bᵀ u_b, so r = Φq M⁻¹ f − g needs only

@@ -1,0 +1,424 @@
+//! The KKT factor and solve of one model as straight-line Rust: `SchurKkt`'s numeric
+//! factorization and solve, replayed on the model's fixed pattern with every index a
+//! constant and every multiply-add by a structural zero left out
+//! (`symbody_runtime::kkt::KktKernels`).
+//!
+//! The replay follows `SchurKkt::factor` and `SchurKkt::solve` operation by operation (the
+//! same sums in the same order), on values that are either a structural zero or a named
+//! local: a term with a zero factor is skipped, which changes no result but the sign of a
+//! zero. What the factorization leaves for the solves (the block factors, `W`, `L`, `1/D`)
+//! is stored once, in a state array whose slots the solve reads.
+
+use std::collections::HashMap;
+use std::fmt::Write;
+
+use proc_macro2::TokenStream;
+use symbody_runtime::kkt::{KktPattern, KktSolver, SchurKkt, SchurPlan};
+
+/// Above this many emitted operations the kernels are not emitted: the model runs
+/// `SchurKkt`'s loops, whose per-entry overhead matters least on long chains, and the
+/// generated crate stays quick to compile.
+const MAX_OPS: usize = 30_000;
+
+/// A value of the replay: a structural zero, a local `v{n}`, or a slot `st[n]` of the
+/// state the factorization left.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum V {
+    Zero,
+    Var(u32),
+    Slot(u32),
+}
+
+impl std::fmt::Display for V {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            V::Zero => write!(f, "0.0"),
+            V::Var(i) => write!(f, "v{i}"),
+            V::Slot(i) => write!(f, "st[{i}]"),
+        }
+    }
+}
+
+/// Straight-line code under construction.
+#[derive(Default)]
+struct Code {
+    text: String,
+    next: u32,
+    ops: usize,
+}
+
+impl Code {
+    fn line(&mut self, s: &str) {
+        self.text.push_str(s);
+        self.text.push('\n');
+    }
+
+    fn bind(&mut self, expr: std::fmt::Arguments<'_>) -> V {
+        let id = self.next;
+        self.next += 1;
+        self.ops += 1;
+        let _ = writeln!(self.text, "let v{id} = {expr};");
+        V::Var(id)
+    }
+
+    /// `acc − a·b` (`acc −= a * b` in the loops).
+    fn sub_mul(&mut self, acc: V, a: V, b: V) -> V {
+        match (acc, a, b) {
+            (_, V::Zero, _) | (_, _, V::Zero) => acc,
+            (V::Zero, ..) => self.bind(format_args!("-({a} * {b})")),
+            _ => self.bind(format_args!("{acc} - {a} * {b}")),
+        }
+    }
+
+    /// `acc − a·d·b` (the `LDLᵀ` updates).
+    fn sub_mul3(&mut self, acc: V, a: V, d: V, b: V) -> V {
+        match (acc, a, b) {
+            (_, V::Zero, _) | (_, _, V::Zero) => acc,
+            (V::Zero, ..) => self.bind(format_args!("-({a} * {d} * {b})")),
+            _ => self.bind(format_args!("{acc} - {a} * {d} * {b}")),
+        }
+    }
+
+    fn add(&mut self, acc: V, a: V) -> V {
+        match (acc, a) {
+            (_, V::Zero) => acc,
+            (V::Zero, _) => a,
+            _ => self.bind(format_args!("{acc} + {a}")),
+        }
+    }
+
+    fn mul(&mut self, a: V, b: V) -> V {
+        match (a, b) {
+            (V::Zero, _) | (_, V::Zero) => V::Zero,
+            _ => self.bind(format_args!("{a} * {b}")),
+        }
+    }
+
+    /// `Σ a[i]·b[i]` summed in order from zero, as the loops' dot products.
+    fn dot(&mut self, a: &[V], b: &[V]) -> V {
+        let mut t = V::Zero;
+        for (&x, &y) in a.iter().zip(b) {
+            let p = self.mul(x, y);
+            t = self.add(t, p);
+        }
+        t
+    }
+}
+
+/// The emitted kernels: items for the model's module (`KKT`, `kkt_factor`, `kkt_solve`), or
+/// `None` when the pattern's `M` is solved densely or the code would be too long.
+pub fn kernels(pattern: &KktPattern) -> Option<TokenStream> {
+    let pattern = KktPattern {
+        kernels: None,
+        ..pattern.clone()
+    };
+    let solver = SchurKkt::new(&pattern).ok()?;
+    let plan = solver.plan()?;
+    let mut factor = Code::default();
+    let stored = replay_factor(&plan, &pattern, &mut factor);
+    let mut solve_f = Code::default();
+    let mut solve_0 = Code::default();
+    replay_solve(&plan, &pattern, &stored, true, &mut solve_f);
+    replay_solve(&plan, &pattern, &stored, false, &mut solve_0);
+    if factor.ops + solve_f.ops + solve_0.ops > MAX_OPS {
+        return None;
+    }
+    let (n, m) = (pattern.n, pattern.m);
+    let (nm, np) = (pattern.mass_rows.len(), pattern.phi_q_rows.len());
+    let ns = stored.slots;
+    let fingerprint = pattern.fingerprint();
+    let text = format!(
+        "use symbody_runtime::kkt::{{length_error, mass_pivot_error, KktError, KktKernels, Pivoting}};
+/// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
+pub static KKT: KktKernels = KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor, solve: kkt_solve }};
+#[allow(unused_variables, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
+fn kkt_factor(mass: &[f64], c: f64, phi_q: &[f64], st: &mut [f64], piv: &mut Pivoting) -> Result<(), KktError> {{
+let mass: &[f64; {nm}] = mass.try_into().map_err(|_| length_error({nm}, mass.len()))?;
+let phi_q: &[f64; {np}] = phi_q.try_into().map_err(|_| length_error({np}, phi_q.len()))?;
+let st_len = st.len();
+let st: &mut [f64; {ns}] = st.try_into().map_err(|_| length_error({ns}, st_len))?;
+{}
+Ok(())
+}}
+#[allow(unused_variables, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
+fn kkt_solve(f: &[f64], g: &[f64], x: &mut [f64], y: &mut [f64], st: &[f64]) -> Result<(), KktError> {{
+let f: &[f64; {n}] = f.try_into().map_err(|_| length_error({n}, f.len()))?;
+let g: &[f64; {m}] = g.try_into().map_err(|_| length_error({m}, g.len()))?;
+let x_len = x.len();
+let x: &mut [f64; {n}] = x.try_into().map_err(|_| length_error({n}, x_len))?;
+let y_len = y.len();
+let y: &mut [f64; {m}] = y.try_into().map_err(|_| length_error({m}, y_len))?;
+let st: &[f64; {ns}] = st.try_into().map_err(|_| length_error({ns}, st.len()))?;
+// f = 0 (a position correction, the least-energy velocity) skips M⁻¹ f.
+if f.iter().any(|&v| v != 0.0) {{
+{}
+}} else {{
+{}
+}}
+Ok(())
+}}
+",
+        factor.text, solve_f.text, solve_0.text
+    );
+    Some(text.parse().expect("emitted kernels are Rust tokens"))
+}
+
+/// What the factorization stores for the solves: the value of each block-factor entry
+/// (strict lower triangle), reciprocal block diagonal, `W`, `L` and `1/D` entry, as a slot
+/// of the state or a structural zero.
+struct Stored {
+    chol: Vec<V>,
+    inv_diag: Vec<V>,
+    wmat: Vec<V>,
+    lval: Vec<V>,
+    dinv: Vec<V>,
+    slots: usize,
+}
+
+fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) -> Stored {
+    let mut chol = vec![V::Zero; plan.chol_len];
+    for (i, &d) in plan.mass_dest.iter().enumerate() {
+        // Both triangles land on the same slot; the later write wins, as in the loop.
+        chol[d] = code.bind(format_args!("c * mass[{i}]"));
+    }
+    let dummy = plan.w_len - 1;
+    let mut wmat = vec![V::Zero; plan.w_len];
+    for (i, &d) in plan.phi_q_dest.iter().enumerate() {
+        if d == dummy {
+            // A redundant row's entry: read by nothing else, so tested for finiteness here
+            // (every other entry reaches a pivot, which is tested).
+            code.line(&format!(
+                "if !phi_q[{i}].is_finite() {{ return Err(KktError::NotFinite); }}"
+            ));
+        } else {
+            wmat[d] = code.bind(format_args!("phi_q[{i}]"));
+        }
+    }
+    let n_rows = pattern.m;
+    let mut diag = vec![V::Zero; n_rows];
+    let mut lval = vec![V::Zero; plan.row_idx.len()];
+    let mut inv_diag = vec![V::Zero; plan.block_coords.len()];
+    let nb = plan.chol_off.len();
+    for b in 0..nb {
+        let (c0, c1) = (plan.block_ptr[b], plan.block_ptr[b + 1]);
+        let s = c1 - c0;
+        let off = plan.chol_off[b];
+        // Cholesky of the block (lower, row-major).
+        for j in 0..s {
+            let mut d = chol[off + j * s + j];
+            assert!(d != V::Zero, "the mass pattern holds its diagonal");
+            for k in 0..j {
+                let a = chol[off + j * s + k];
+                d = code.sub_mul(d, a, a);
+            }
+            let coord = plan.block_coords[c0 + j];
+            code.line(&format!(
+                "if !({d} > 0.0) || !{d}.is_finite() {{ return Err(mass_pivot_error({d}, {coord})); }}"
+            ));
+            let root = code.bind(format_args!("{d}.sqrt()"));
+            chol[off + j * s + j] = root;
+            let r = code.bind(format_args!("1.0 / {root}"));
+            inv_diag[c0 + j] = r;
+            for i in j + 1..s {
+                let mut t = chol[off + i * s + j];
+                for k in 0..j {
+                    t = code.sub_mul(t, chol[off + i * s + k], chol[off + j * s + k]);
+                }
+                chol[off + i * s + j] = code.mul(t, r);
+            }
+        }
+        // W = L⁻¹ Φq_bᵀ, row by row.
+        let rows = plan.brow_ptr[b + 1] - plan.brow_ptr[b];
+        let w0 = plan.p_off[b];
+        for row in 0..rows {
+            let v = w0 + row * s;
+            for i in 0..s {
+                let mut t = wmat[v + i];
+                for j in 0..i {
+                    t = code.sub_mul(t, chol[off + i * s + j], wmat[v + j]);
+                }
+                wmat[v + i] = code.mul(t, inv_diag[c0 + i]);
+            }
+        }
+        // S += WᵀW through the pair destinations: row i's products with the rows before
+        // it go to L, its square to D.
+        let dest = &plan.pair_dest[plan.pair_ptr[b]..plan.pair_ptr[b + 1]];
+        let mut at = 0;
+        for i in 0..rows {
+            let wi: Vec<V> = wmat[w0 + i * s..w0 + i * s + s].to_vec();
+            for j in 0..i {
+                let p = code.dot(&wi, &wmat[w0 + j * s..w0 + j * s + s]);
+                lval[dest[at + j]] = code.add(lval[dest[at + j]], p);
+            }
+            let p = code.dot(&wi, &wi);
+            diag[dest[at + i]] = code.add(diag[dest[at + i]], p);
+            at += i + 1;
+        }
+    }
+
+    // LDLᵀ of S, right-looking, with the pivot test of the loops.
+    let mut scale = diag.clone();
+    let mut dinv = vec![V::Zero; n_rows];
+    // (a, b, dest) updates of column k, as SchurKkt lists them: every pair of entries.
+    let mut position: HashMap<(usize, usize), usize> = HashMap::new();
+    for k in 0..n_rows {
+        for a in plan.col_ptr[k]..plan.col_ptr[k + 1] {
+            position.insert((plan.row_idx[a], k), a);
+        }
+    }
+    for k in 0..n_rows {
+        if k == plan.n_first {
+            scale[k..].copy_from_slice(&diag[k..]);
+        }
+        let inv = code.next;
+        let dk = inv + 1;
+        code.next += 2;
+        code.ops += 1;
+        code.line(&format!(
+            "let (v{inv}, v{dk}) = piv.pivot({}, {}, {}, {})?;",
+            diag[k], scale[k], plan.perm[k], plan.redundant[k]
+        ));
+        let (inv, dk) = (V::Var(inv), V::Var(dk));
+        dinv[k] = inv;
+        let col = plan.col_ptr[k]..plan.col_ptr[k + 1];
+        for a in col.clone() {
+            lval[a] = code.mul(lval[a], inv);
+            let r = plan.row_idx[a];
+            diag[r] = code.sub_mul3(diag[r], lval[a], dk, lval[a]);
+        }
+        for a in col.clone() {
+            for b in col.start..a {
+                let (ra, rb) = (plan.row_idx[a], plan.row_idx[b]);
+                let dest = position[&(ra, rb)];
+                lval[dest] = code.sub_mul3(lval[dest], lval[a], dk, lval[b]);
+            }
+        }
+    }
+
+    // Store what the solves read.
+    let mut slots = 0;
+    let mut store = |code: &mut Code, v: &mut V| {
+        if *v != V::Zero {
+            code.line(&format!("st[{slots}] = {v};"));
+            *v = V::Slot(slots as u32);
+            slots += 1;
+        }
+    };
+    for b in 0..nb {
+        let s = plan.block_ptr[b + 1] - plan.block_ptr[b];
+        let off = plan.chol_off[b];
+        for i in 0..s {
+            for j in 0..i {
+                store(code, &mut chol[off + i * s + j]);
+            }
+        }
+    }
+    for v in inv_diag
+        .iter_mut()
+        .chain(&mut wmat[..dummy])
+        .chain(&mut lval)
+        .chain(&mut dinv)
+    {
+        store(code, v);
+    }
+    Stored {
+        chol,
+        inv_diag,
+        wmat,
+        lval,
+        dinv,
+        slots,
+    }
+}
+
+fn replay_solve(
+    plan: &SchurPlan<'_>,
+    pattern: &KktPattern,
+    st: &Stored,
+    f_nonzero: bool,
+    code: &mut Code,
+) {
+    let (n, m) = (pattern.n, pattern.m);
+    let nb = plan.chol_off.len();
+    let mut rvec: Vec<V> = (0..m).map(|r| code.bind(format_args!("-g[{r}]"))).collect();
+    let mut ustore = vec![V::Zero; n];
+    for b in (0..nb).filter(|_| f_nonzero) {
+        let (c0, c1) = (plan.block_ptr[b], plan.block_ptr[b + 1]);
+        let s = c1 - c0;
+        let off = plan.chol_off[b];
+        for l in 0..s {
+            ustore[c0 + l] = code.bind(format_args!("f[{}]", plan.block_coords[c0 + l]));
+        }
+        forward(
+            code,
+            &st.chol[off..off + s * s],
+            &st.inv_diag[c0..c1],
+            &mut ustore[c0..c1],
+        );
+        let rows = &plan.brows[plan.brow_ptr[b]..plan.brow_ptr[b + 1]];
+        let w0 = plan.p_off[b];
+        for (k, &r) in rows.iter().enumerate() {
+            let p = code.dot(&st.wmat[w0 + k * s..w0 + k * s + s], &ustore[c0..c1]);
+            rvec[r] = code.add(rvec[r], p);
+        }
+    }
+    let mut z: Vec<V> = plan.perm.iter().map(|&r| rvec[r]).collect();
+    for j in 0..m {
+        let zj = z[j];
+        for a in plan.col_ptr[j]..plan.col_ptr[j + 1] {
+            let r = plan.row_idx[a];
+            z[r] = code.sub_mul(z[r], st.lval[a], zj);
+        }
+    }
+    for (zj, &d) in z.iter_mut().zip(&st.dinv) {
+        *zj = code.mul(*zj, d);
+    }
+    for j in (0..m).rev() {
+        let mut t = z[j];
+        for a in plan.col_ptr[j]..plan.col_ptr[j + 1] {
+            t = code.sub_mul(t, st.lval[a], z[plan.row_idx[a]]);
+        }
+        z[j] = t;
+    }
+    let mut y = vec![V::Zero; m];
+    for (k, &zk) in z.iter().enumerate() {
+        y[plan.perm[k]] = zk;
+        code.line(&format!("y[{}] = {zk};", plan.perm[k]));
+    }
+    for b in 0..nb {
+        let (c0, c1) = (plan.block_ptr[b], plan.block_ptr[b + 1]);
+        let s = c1 - c0;
+        let off = plan.chol_off[b];
+        let rows = &plan.brows[plan.brow_ptr[b]..plan.brow_ptr[b + 1]];
+        let w0 = plan.p_off[b];
+        let v = &mut ustore[c0..c1];
+        for (k, &r) in rows.iter().enumerate() {
+            for (vi, &w) in v.iter_mut().zip(&st.wmat[w0 + k * s..w0 + k * s + s]) {
+                *vi = code.sub_mul(*vi, w, y[r]);
+            }
+        }
+        let (l, inv) = (&st.chol[off..off + s * s], &st.inv_diag[c0..c1]);
+        for i in (0..s).rev() {
+            let mut t = v[i];
+            for j in i + 1..s {
+                t = code.sub_mul(t, l[j * s + i], v[j]);
+            }
+            v[i] = code.mul(t, inv[i]);
+        }
+        for (l, &vi) in v.iter().enumerate() {
+            code.line(&format!("x[{}] = {vi};", plan.block_coords[c0 + l]));
+        }
+    }
+}
+
+/// `v ← L⁻¹ v` for one block (`forward` in the loops).
+fn forward(code: &mut Code, l: &[V], inv: &[V], v: &mut [V]) {
+    let s = v.len();
+    for i in 0..s {
+        let mut t = v[i];
+        for j in 0..i {
+            t = code.sub_mul(t, l[i * s + j], v[j]);
+        }
+        v[i] = code.mul(t, inv[i]);
+    }
+}

@@ -1,0 +1,186 @@
+//! The generated straight-line KKT kernels (`MechanismInfo::kkt`) on every shipped model:
+//! they run wherever the runtime builds the model's pattern, and they compute what
+//! `SchurKkt`'s loops compute (the same operations in the same order, less the terms with a
+//! structural zero: equal to the last bit) and what the dense LU computes (an independent
+//! factorization), including the failures (rank loss, dropped rows, NaN, a mass matrix that
+//! is not positive definite).
+
+use symbody_runtime::kkt::{DenseKkt, KktError, KktPattern, KktSolver, SchurKkt};
+use symbody_runtime::Mechanism;
+use symbody_testkit::common::{random_state_for, Rng};
+
+/// Every compiled model: each mechanism's formulations and its reduced (or planar) ones.
+fn models() -> Vec<(String, &'static (dyn Mechanism + Sync))> {
+    let mut out = Vec::new();
+    for registry in [
+        &symbody_mechanisms::REGISTRY,
+        &symbody_benchmark_mechanisms::REGISTRY,
+    ] {
+        for entry in registry.iter() {
+            for &(f, m) in entry.formulations {
+                out.push((format!("{} {}", entry.name, f.name()), m));
+                if let Some((r, _)) = entry.reduced(f) {
+                    out.push((format!("{} {} reduced", entry.name, f.name()), r));
+                }
+            }
+        }
+    }
+    out
+}
+
+fn without_kernels(p: &KktPattern) -> KktPattern {
+    KktPattern {
+        kernels: None,
+        ..p.clone()
+    }
+}
+
+/// Both solvers' results for one right-hand side, or both errors.
+type Solved = Result<(Vec<f64>, Vec<f64>), KktError>;
+
+fn solve<K: KktSolver>(k: &mut K, f: &[f64], g: &[f64]) -> Solved {
+    let (mut x, mut y) = (vec![0.0; f.len()], vec![0.0; g.len()]);
+    k.solve(f, g, &mut x, &mut y)?;
+    Ok((x, y))
+}
+
+/// Exactly equal, reading `-0.0 == 0.0` (a skipped zero term may flip a zero's sign).
+fn assert_same(what: &str, a: &Solved, b: &Solved) {
+    match (a, b) {
+        (Ok((xa, ya)), Ok((xb, yb))) => {
+            for (u, v) in xa.iter().zip(xb).chain(ya.iter().zip(yb)) {
+                assert!(u == v, "{what}: {u:e} against {v:e}");
+            }
+        }
+        _ => assert_eq!(a, b, "{what}"),
+    }
+}
+
+#[test]
+fn every_model_small_enough_runs_its_kernels_and_they_equal_the_loops_and_the_dense_lu() {
+    let mut rng = Rng(0x5eed_c0de);
+    let mut with = Vec::new();
+    for (name, m) in models() {
+        let info = m.info();
+        let pattern = KktPattern::from_info(info);
+        let mut kern = SchurKkt::new(&pattern).unwrap();
+        // The kernels are emitted for the pattern the runtime builds from the model's INFO,
+        // for every model but the spatial 40-bar chain (too long for straight-line code:
+        // 605 rows; its planar model has them).
+        assert_eq!(kern.runs_kernels(), info.kkt.is_some(), "{name}");
+        assert_eq!(kern.runs_kernels(), name != "n_four_bar_40 exact", "{name}");
+        if !kern.runs_kernels() {
+            continue;
+        }
+        with.push(name.clone());
+        let mut loops = SchurKkt::new(&without_kernels(&pattern)).unwrap();
+        assert!(!loops.runs_kernels());
+        let mut dense = DenseKkt::new(&pattern).unwrap();
+        let (n, m_rows) = (info.n_coords, info.n_constraints);
+        let (mut mass, mut phi_q) = (vec![0.0; info.mass_nnz()], vec![0.0; info.phi_q_nnz()]);
+        for trial in 0..3 {
+            let (q, t) = match trial {
+                0 => (info.q0.to_vec(), 0.0),
+                _ => {
+                    let (q, _, t) = random_state_for(&mut rng, info);
+                    (q, t)
+                }
+            };
+            m.mass(&q, &mut mass);
+            m.phi_q(&q, t, &mut phi_q);
+            let c = rng.uniform(0.5, 2.0);
+            let a = kern.factor(&mass, c, &phi_q);
+            assert_eq!(a, loops.factor(&mass, c, &phi_q), "{name} trial {trial}");
+            if a.is_err() {
+                continue;
+            }
+            assert_eq!(kern.pivots(), loops.pivots(), "{name} trial {trial}");
+            dense.factor(&mass, c, &phi_q).unwrap();
+            let f: Vec<f64> = (0..n).map(|_| rng.uniform(-1.0, 1.0)).collect();
+            let g: Vec<f64> = (0..m_rows).map(|_| rng.uniform(-1.0, 1.0)).collect();
+            for f in [f, vec![0.0; n]] {
+                let what = format!("{name} trial {trial} |f| {}", f[0].abs());
+                let ours = solve(&mut kern, &f, &g);
+                assert_same(&what, &ours, &solve(&mut loops, &f, &g));
+                let (x, y) = ours.unwrap();
+                let (xd, yd) = solve(&mut dense, &f, &g).unwrap();
+                let scale = xd.iter().chain(&yd).fold(1e-300f64, |a, b| a.max(b.abs()));
+                for (u, v) in x.iter().zip(&xd).chain(y.iter().zip(&yd)) {
+                    assert!(
+                        (u - v).abs() <= 1e-8 * scale,
+                        "{what}: {u:e} vs dense {v:e}"
+                    );
+                }
+            }
+        }
+    }
+    with.sort();
+    with.dedup();
+    assert_eq!(with.len(), 23, "models with kernels: {with:?}");
+}
+
+#[test]
+fn kernels_fail_as_the_loops_do() {
+    let m = symbody_mechanisms::REGISTRY
+        .find("stewart_6_6")
+        .unwrap()
+        .default_mechanism();
+    let info = m.info();
+    let pattern = KktPattern::from_info(info);
+    let (mut mass, mut phi_q) = (vec![0.0; info.mass_nnz()], vec![0.0; info.phi_q_nnz()]);
+    m.mass(info.q0, &mut mass);
+    m.phi_q(info.q0, 0.0, &mut phi_q);
+    let row = |r: u32| info.phi_q_rows.iter().map(move |&i| i == r);
+    // Row 7 emptied: rank loss, named; then dropped when asked to.
+    let mut lost = phi_q.clone();
+    for (v, hit) in lost.iter_mut().zip(row(7)) {
+        if hit {
+            *v = 0.0;
+        }
+    }
+    let mut nan = phi_q.clone();
+    nan[11] = f64::NAN;
+    let mut negative = mass.clone();
+    let diagonal = (0..mass.len())
+        .find(|&k| info.mass_rows[k] == 40 && info.mass_cols[k] == 40)
+        .unwrap();
+    negative[diagonal] = -1.0;
+    let cases = [
+        ("rank loss", mass.clone(), lost.clone()),
+        ("NaN in Φq", mass.clone(), nan),
+        ("negative mass", negative, phi_q.clone()),
+    ];
+    for (what, mass, phi_q) in &cases {
+        let mut kern = SchurKkt::new(&pattern).unwrap();
+        let mut loops = SchurKkt::new(&without_kernels(&pattern)).unwrap();
+        assert!(kern.runs_kernels());
+        let a = kern.factor(mass, 1.0, phi_q);
+        assert!(a.is_err(), "{what}");
+        assert_eq!(a, loops.factor(mass, 1.0, phi_q), "{what}");
+    }
+    assert!(matches!(
+        SchurKkt::new(&pattern).unwrap().factor(&mass, 1.0, &lost),
+        Err(KktError::RankDeficient {
+            rows: [7, ..],
+            count: 1,
+            ..
+        })
+    ));
+    let mut kern = SchurKkt::new(&pattern).unwrap();
+    let mut loops = SchurKkt::new(&without_kernels(&pattern)).unwrap();
+    assert!(kern.drop_dependent_rows(1e-10) && loops.drop_dependent_rows(1e-10));
+    kern.factor(&mass, 1.0, &lost).unwrap();
+    loops.factor(&mass, 1.0, &lost).unwrap();
+    assert_eq!(kern.pivots().unwrap().dropped, 1);
+    assert_eq!(kern.pivots(), loops.pivots());
+    let f: Vec<f64> = (0..info.n_coords).map(|i| (i as f64).sin()).collect();
+    let g: Vec<f64> = (0..info.n_constraints).map(|i| (i as f64).cos()).collect();
+    let ours = solve(&mut kern, &f, &g);
+    assert_same("dropped row", &ours, &solve(&mut loops, &f, &g));
+    assert_eq!(ours.unwrap().1[7], 0.0, "a dropped row carries nothing");
+    // Inputs of the wrong length are errors, not panics.
+    assert!(matches!(
+        kern.factor(&mass[1..], 1.0, &phi_q),
+        Err(KktError::Dimension { .. })
+    ));
+}
