@@ -5,9 +5,10 @@
 //! factorization), including the failures (rank loss, dropped rows, NaN, a mass matrix that
 //! is not positive definite).
 
+use nalgebra::DVector;
 use symbody_runtime::kkt::{DenseKkt, KktError, KktPattern, KktSolver, SchurKkt};
-use symbody_runtime::Mechanism;
-use symbody_testkit::common::{random_state_for, Rng};
+use symbody_runtime::{Mechanism, MechanismInfo};
+use symbody_testkit::common::{dense_phi_q, random_state_for, Rng};
 
 /// Every compiled model: each mechanism's formulations and its reduced (or planar) ones.
 fn models() -> Vec<(String, &'static (dyn Mechanism + Sync))> {
@@ -56,6 +57,31 @@ fn assert_same(what: &str, a: &Solved, b: &Solved) {
     }
 }
 
+/// The generated `Φqᵀ y` against the dense `Φq` transposed (nalgebra), and offered only for
+/// the model's own pattern statics.
+fn transpose_matches_dense(name: &str, info: &MechanismInfo, phi_q: &[f64], rng: &mut Rng) {
+    let kernels = info.kkt.unwrap();
+    let t = kernels
+        .transpose_for(info.phi_q_rows, info.phi_q_cols)
+        .unwrap_or_else(|| panic!("{name}: no Φqᵀ y for its own pattern"));
+    let copy = info.phi_q_rows.to_vec();
+    assert!(kernels.transpose_for(&copy, info.phi_q_cols).is_none());
+    let y: Vec<f64> = (0..info.n_constraints)
+        .map(|_| rng.uniform(-1.0, 1.0))
+        .collect();
+    let mut out = vec![f64::NAN; info.n_coords];
+    t(phi_q, &y, &mut out).unwrap();
+    let dense = dense_phi_q(info, phi_q).transpose() * DVector::from_column_slice(&y);
+    let scale = phi_q.iter().fold(1e-300f64, |a, b| a.max(b.abs())) * y.len() as f64;
+    for (u, v) in out.iter().zip(dense.iter()) {
+        assert!(
+            (u - v).abs() <= 1e-14 * scale,
+            "{name}: Φqᵀy {u:e} vs dense {v:e}"
+        );
+    }
+    assert!(t(&phi_q[1..], &y, &mut out).is_err());
+}
+
 #[test]
 fn every_model_small_enough_runs_its_kernels_and_they_equal_the_loops_and_the_dense_lu() {
     let mut rng = Rng(0x5eed_c0de);
@@ -88,6 +114,7 @@ fn every_model_small_enough_runs_its_kernels_and_they_equal_the_loops_and_the_de
             };
             m.mass(&q, &mut mass);
             m.phi_q(&q, t, &mut phi_q);
+            transpose_matches_dense(&name, info, &phi_q, &mut rng);
             let c = rng.uniform(0.5, 2.0);
             let a = kern.factor(&mass, c, &phi_q);
             assert_eq!(a, loops.factor(&mass, c, &phi_q), "{name} trial {trial}");

@@ -130,7 +130,7 @@ pub fn kernels(pattern: &KktPattern) -> Option<TokenStream> {
     let text = format!(
         "use symbody_runtime::kkt::{{length_error, mass_pivot_error, KktError, KktKernels, Pivoting}};
 /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-pub static KKT: KktKernels = KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor, solve: kkt_solve }};
+pub static KKT: KktKernels = KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor, solve: kkt_solve, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times }};
 #[allow(unused_variables, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
 fn kkt_factor(mass: &[f64], c: f64, phi_q: &[f64], st: &mut [f64], piv: &mut Pivoting) -> Result<(), KktError> {{
 let mass: &[f64; {nm}] = mass.try_into().map_err(|_| length_error({nm}, mass.len()))?;
@@ -157,10 +157,42 @@ if f.iter().any(|&v| v != 0.0) {{
 }}
 Ok(())
 }}
+fn kkt_transpose_times(phi_q: &[f64], y: &[f64], out: &mut [f64]) -> Result<(), KktError> {{
+let phi_q: &[f64; {np}] = phi_q.try_into().map_err(|_| length_error({np}, phi_q.len()))?;
+let y: &[f64; {m}] = y.try_into().map_err(|_| length_error({m}, y.len()))?;
+let out_len = out.len();
+let out: &mut [f64; {n}] = out.try_into().map_err(|_| length_error({n}, out_len))?;
+{}
+Ok(())
+}}
 ",
-        factor.text, solve_f.text, solve_0.text
+        factor.text, solve_f.text, solve_0.text, transpose(&pattern)
     );
     Some(text.parse().expect("emitted kernels are Rust tokens"))
+}
+
+/// `out[c] = Σ phi_q[k]·y[row k]` over column `c`'s nonzeros in their order, as
+/// `phi_q_transpose_times`'s loop adds them (from zero).
+fn transpose(pattern: &KktPattern) -> String {
+    let mut terms: Vec<Vec<String>> = vec![Vec::new(); pattern.n];
+    for (k, (&r, &c)) in pattern
+        .phi_q_rows
+        .iter()
+        .zip(&pattern.phi_q_cols)
+        .enumerate()
+    {
+        terms[c as usize].push(format!("phi_q[{k}] * y[{r}]"));
+    }
+    let mut text = String::new();
+    for (c, t) in terms.iter().enumerate() {
+        let sum = if t.is_empty() {
+            "0.0".to_string()
+        } else {
+            t.join(" + ")
+        };
+        let _ = writeln!(text, "out[{c}] = {sum};");
+    }
+    text
 }
 
 /// What the factorization stores for the solves: the value of each block-factor entry

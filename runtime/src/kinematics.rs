@@ -130,6 +130,12 @@ pub(crate) fn phi_q_transpose_times(
     y: &[f64],
     out: &mut [f64],
 ) {
+    let generated = info
+        .kkt
+        .and_then(|k| k.transpose_for(info.phi_q_rows, info.phi_q_cols));
+    if let Some(Ok(())) = generated.map(|t| t(phi_q, y, out)) {
+        return;
+    }
     out.fill(0.0);
     for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
         out[c as usize] += v * y[r as usize];

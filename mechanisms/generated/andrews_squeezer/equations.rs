@@ -22014,6 +22014,9 @@ pub mod exact {
         storage: 655,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -30692,6 +30695,122 @@ pub mod exact {
             x[40] = v1012;
             x[41] = v1010;
         }
+        Ok(())
+    }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 260] = phi_q
+            .try_into()
+            .map_err(|_| length_error(260, phi_q.len()))?;
+        let y: &[f64; 50] = y.try_into().map_err(|_| length_error(50, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 42] = out.try_into().map_err(|_| length_error(42, out_len))?;
+        out[0] = phi_q[0] * y[0] + phi_q[17] * y[5];
+        out[1] = phi_q[4] * y[1] + phi_q[24] * y[6];
+        out[2] = phi_q[8] * y[2] + phi_q[31] * y[7];
+        out[3] = phi_q[1] * y[0] + phi_q[5] * y[1] + phi_q[9] * y[2] + phi_q[11] * y[3]
+            + phi_q[14] * y[4] + phi_q[18] * y[5] + phi_q[25] * y[6] + phi_q[32] * y[7]
+            + phi_q[36] * y[8] + phi_q[42] * y[9];
+        out[4] = phi_q[2] * y[0] + phi_q[6] * y[1] + phi_q[10] * y[2] + phi_q[12] * y[3]
+            + phi_q[15] * y[4] + phi_q[19] * y[5] + phi_q[26] * y[6] + phi_q[33] * y[7]
+            + phi_q[37] * y[8] + phi_q[43] * y[9];
+        out[5] = phi_q[3] * y[0] + phi_q[7] * y[1] + phi_q[13] * y[3] + phi_q[16] * y[4]
+            + phi_q[20] * y[5] + phi_q[27] * y[6] + phi_q[38] * y[8] + phi_q[44] * y[9];
+        out[6] = phi_q[21] * y[5] + phi_q[48] * y[10] + phi_q[79] * y[15]
+            + phi_q[110] * y[20];
+        out[7] = phi_q[28] * y[6] + phi_q[55] * y[11] + phi_q[86] * y[16]
+            + phi_q[117] * y[21];
+        out[8] = phi_q[34] * y[7] + phi_q[62] * y[12] + phi_q[93] * y[17]
+            + phi_q[124] * y[22];
+        out[9] = phi_q[39] * y[8] + phi_q[45] * y[9] + phi_q[67] * y[13]
+            + phi_q[73] * y[14] + phi_q[98] * y[18] + phi_q[104] * y[19]
+            + phi_q[129] * y[23] + phi_q[135] * y[24];
+        out[10] = phi_q[22] * y[5] + phi_q[29] * y[6] + phi_q[35] * y[7]
+            + phi_q[40] * y[8] + phi_q[46] * y[9] + phi_q[49] * y[10] + phi_q[56] * y[11]
+            + phi_q[63] * y[12] + phi_q[68] * y[13] + phi_q[74] * y[14]
+            + phi_q[80] * y[15] + phi_q[87] * y[16] + phi_q[94] * y[17]
+            + phi_q[99] * y[18] + phi_q[105] * y[19] + phi_q[111] * y[20]
+            + phi_q[118] * y[21] + phi_q[125] * y[22] + phi_q[130] * y[23]
+            + phi_q[136] * y[24];
+        out[11] = phi_q[23] * y[5] + phi_q[30] * y[6] + phi_q[41] * y[8]
+            + phi_q[47] * y[9] + phi_q[50] * y[10] + phi_q[57] * y[11]
+            + phi_q[69] * y[13] + phi_q[75] * y[14] + phi_q[81] * y[15]
+            + phi_q[88] * y[16] + phi_q[100] * y[18] + phi_q[106] * y[19]
+            + phi_q[112] * y[20] + phi_q[119] * y[21] + phi_q[131] * y[23]
+            + phi_q[137] * y[24];
+        out[12] = phi_q[51] * y[10] + phi_q[141] * y[25];
+        out[13] = phi_q[58] * y[11] + phi_q[145] * y[26];
+        out[14] = phi_q[64] * y[12] + phi_q[149] * y[27];
+        out[15] = phi_q[52] * y[10] + phi_q[59] * y[11] + phi_q[65] * y[12]
+            + phi_q[70] * y[13] + phi_q[76] * y[14] + phi_q[142] * y[25]
+            + phi_q[146] * y[26] + phi_q[150] * y[27] + phi_q[152] * y[28]
+            + phi_q[155] * y[29];
+        out[16] = phi_q[53] * y[10] + phi_q[60] * y[11] + phi_q[66] * y[12]
+            + phi_q[71] * y[13] + phi_q[77] * y[14] + phi_q[143] * y[25]
+            + phi_q[147] * y[26] + phi_q[151] * y[27] + phi_q[153] * y[28]
+            + phi_q[156] * y[29];
+        out[17] = phi_q[54] * y[10] + phi_q[61] * y[11] + phi_q[72] * y[13]
+            + phi_q[78] * y[14] + phi_q[144] * y[25] + phi_q[148] * y[26]
+            + phi_q[154] * y[28] + phi_q[157] * y[29];
+        out[18] = phi_q[82] * y[15] + phi_q[158] * y[30];
+        out[19] = phi_q[89] * y[16] + phi_q[166] * y[31];
+        out[20] = phi_q[95] * y[17] + phi_q[174] * y[32];
+        out[21] = phi_q[83] * y[15] + phi_q[90] * y[16] + phi_q[96] * y[17]
+            + phi_q[101] * y[18] + phi_q[107] * y[19] + phi_q[159] * y[30]
+            + phi_q[167] * y[31] + phi_q[175] * y[32] + phi_q[180] * y[33]
+            + phi_q[186] * y[34];
+        out[22] = phi_q[84] * y[15] + phi_q[91] * y[16] + phi_q[97] * y[17]
+            + phi_q[102] * y[18] + phi_q[108] * y[19] + phi_q[160] * y[30]
+            + phi_q[168] * y[31] + phi_q[176] * y[32] + phi_q[181] * y[33]
+            + phi_q[187] * y[34];
+        out[23] = phi_q[85] * y[15] + phi_q[92] * y[16] + phi_q[103] * y[18]
+            + phi_q[109] * y[19] + phi_q[161] * y[30] + phi_q[169] * y[31]
+            + phi_q[182] * y[33] + phi_q[188] * y[34];
+        out[24] = phi_q[162] * y[30] + phi_q[192] * y[35];
+        out[25] = phi_q[170] * y[31] + phi_q[196] * y[36];
+        out[26] = phi_q[177] * y[32] + phi_q[200] * y[37];
+        out[27] = phi_q[163] * y[30] + phi_q[171] * y[31] + phi_q[178] * y[32]
+            + phi_q[183] * y[33] + phi_q[189] * y[34] + phi_q[193] * y[35]
+            + phi_q[197] * y[36] + phi_q[201] * y[37] + phi_q[203] * y[38]
+            + phi_q[206] * y[39];
+        out[28] = phi_q[164] * y[30] + phi_q[172] * y[31] + phi_q[179] * y[32]
+            + phi_q[184] * y[33] + phi_q[190] * y[34] + phi_q[194] * y[35]
+            + phi_q[198] * y[36] + phi_q[202] * y[37] + phi_q[204] * y[38]
+            + phi_q[207] * y[39];
+        out[29] = phi_q[165] * y[30] + phi_q[173] * y[31] + phi_q[185] * y[33]
+            + phi_q[191] * y[34] + phi_q[195] * y[35] + phi_q[199] * y[36]
+            + phi_q[205] * y[38] + phi_q[208] * y[39];
+        out[30] = phi_q[113] * y[20] + phi_q[226] * y[45];
+        out[31] = phi_q[120] * y[21] + phi_q[234] * y[46];
+        out[32] = phi_q[126] * y[22] + phi_q[242] * y[47];
+        out[33] = phi_q[114] * y[20] + phi_q[121] * y[21] + phi_q[127] * y[22]
+            + phi_q[132] * y[23] + phi_q[138] * y[24] + phi_q[227] * y[45]
+            + phi_q[235] * y[46] + phi_q[243] * y[47] + phi_q[248] * y[48]
+            + phi_q[254] * y[49];
+        out[34] = phi_q[115] * y[20] + phi_q[122] * y[21] + phi_q[128] * y[22]
+            + phi_q[133] * y[23] + phi_q[139] * y[24] + phi_q[228] * y[45]
+            + phi_q[236] * y[46] + phi_q[244] * y[47] + phi_q[249] * y[48]
+            + phi_q[255] * y[49];
+        out[35] = phi_q[116] * y[20] + phi_q[123] * y[21] + phi_q[134] * y[23]
+            + phi_q[140] * y[24] + phi_q[229] * y[45] + phi_q[237] * y[46]
+            + phi_q[250] * y[48] + phi_q[256] * y[49];
+        out[36] = phi_q[209] * y[40] + phi_q[230] * y[45];
+        out[37] = phi_q[213] * y[41] + phi_q[238] * y[46];
+        out[38] = phi_q[217] * y[42] + phi_q[245] * y[47];
+        out[39] = phi_q[210] * y[40] + phi_q[214] * y[41] + phi_q[218] * y[42]
+            + phi_q[220] * y[43] + phi_q[223] * y[44] + phi_q[231] * y[45]
+            + phi_q[239] * y[46] + phi_q[246] * y[47] + phi_q[251] * y[48]
+            + phi_q[257] * y[49];
+        out[40] = phi_q[211] * y[40] + phi_q[215] * y[41] + phi_q[219] * y[42]
+            + phi_q[221] * y[43] + phi_q[224] * y[44] + phi_q[232] * y[45]
+            + phi_q[240] * y[46] + phi_q[247] * y[47] + phi_q[252] * y[48]
+            + phi_q[258] * y[49];
+        out[41] = phi_q[212] * y[40] + phi_q[216] * y[41] + phi_q[222] * y[43]
+            + phi_q[225] * y[44] + phi_q[233] * y[45] + phi_q[241] * y[46]
+            + phi_q[253] * y[48] + phi_q[259] * y[49];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -40262,6 +40381,9 @@ pub mod reduced {
             storage: 163,
             factor: kkt_factor,
             solve: kkt_solve,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
         };
         #[allow(
             unused_variables,
@@ -41904,6 +42026,52 @@ pub mod reduced {
                 x[19] = v239;
                 x[20] = v238;
             }
+            Ok(())
+        }
+        fn kkt_transpose_times(
+            phi_q: &[f64],
+            y: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 64] = phi_q
+                .try_into()
+                .map_err(|_| length_error(64, phi_q.len()))?;
+            let y: &[f64; 20] = y.try_into().map_err(|_| length_error(20, y.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 21] = out
+                .try_into()
+                .map_err(|_| length_error(21, out_len))?;
+            out[0] = phi_q[0] * y[0] + phi_q[4] * y[2];
+            out[1] = phi_q[2] * y[1] + phi_q[8] * y[3];
+            out[2] = phi_q[1] * y[0] + phi_q[3] * y[1] + phi_q[5] * y[2]
+                + phi_q[9] * y[3];
+            out[3] = phi_q[6] * y[2] + phi_q[12] * y[4] + phi_q[20] * y[6]
+                + phi_q[28] * y[8];
+            out[4] = phi_q[10] * y[3] + phi_q[16] * y[5] + phi_q[24] * y[7]
+                + phi_q[32] * y[9];
+            out[5] = phi_q[7] * y[2] + phi_q[11] * y[3] + phi_q[13] * y[4]
+                + phi_q[17] * y[5] + phi_q[21] * y[6] + phi_q[25] * y[7]
+                + phi_q[29] * y[8] + phi_q[33] * y[9];
+            out[6] = phi_q[14] * y[4] + phi_q[36] * y[10];
+            out[7] = phi_q[18] * y[5] + phi_q[38] * y[11];
+            out[8] = phi_q[15] * y[4] + phi_q[19] * y[5] + phi_q[37] * y[10]
+                + phi_q[39] * y[11];
+            out[9] = phi_q[22] * y[6] + phi_q[40] * y[12];
+            out[10] = phi_q[26] * y[7] + phi_q[44] * y[13];
+            out[11] = phi_q[23] * y[6] + phi_q[27] * y[7] + phi_q[41] * y[12]
+                + phi_q[45] * y[13];
+            out[12] = phi_q[42] * y[12] + phi_q[48] * y[14];
+            out[13] = phi_q[46] * y[13] + phi_q[50] * y[15];
+            out[14] = phi_q[43] * y[12] + phi_q[47] * y[13] + phi_q[49] * y[14]
+                + phi_q[51] * y[15];
+            out[15] = phi_q[30] * y[8] + phi_q[56] * y[18];
+            out[16] = phi_q[34] * y[9] + phi_q[60] * y[19];
+            out[17] = phi_q[31] * y[8] + phi_q[35] * y[9] + phi_q[57] * y[18]
+                + phi_q[61] * y[19];
+            out[18] = phi_q[52] * y[16] + phi_q[58] * y[18];
+            out[19] = phi_q[54] * y[17] + phi_q[62] * y[19];
+            out[20] = phi_q[53] * y[16] + phi_q[55] * y[17] + phi_q[59] * y[18]
+                + phi_q[63] * y[19];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

@@ -8529,6 +8529,9 @@ pub mod exact {
         storage: 238,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -11413,6 +11416,56 @@ pub mod exact {
             x[16] = v354;
             x[17] = v352;
         }
+        Ok(())
+    }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 96] = phi_q
+            .try_into()
+            .map_err(|_| length_error(96, phi_q.len()))?;
+        let y: &[f64; 21] = y.try_into().map_err(|_| length_error(21, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 18] = out.try_into().map_err(|_| length_error(18, out_len))?;
+        out[0] = phi_q[0] * y[0] + phi_q[14] * y[5];
+        out[1] = phi_q[3] * y[1] + phi_q[20] * y[6];
+        out[2] = phi_q[6] * y[2] + phi_q[26] * y[7];
+        out[3] = phi_q[8] * y[3] + phi_q[11] * y[4] + phi_q[30] * y[8] + phi_q[36] * y[9]
+            + phi_q[93] * y[20];
+        out[4] = phi_q[1] * y[0] + phi_q[4] * y[1] + phi_q[7] * y[2] + phi_q[9] * y[3]
+            + phi_q[12] * y[4] + phi_q[15] * y[5] + phi_q[21] * y[6] + phi_q[27] * y[7]
+            + phi_q[31] * y[8] + phi_q[37] * y[9] + phi_q[94] * y[20];
+        out[5] = phi_q[2] * y[0] + phi_q[5] * y[1] + phi_q[10] * y[3] + phi_q[13] * y[4]
+            + phi_q[16] * y[5] + phi_q[22] * y[6] + phi_q[32] * y[8] + phi_q[38] * y[9]
+            + phi_q[95] * y[20];
+        out[6] = phi_q[17] * y[5] + phi_q[42] * y[10];
+        out[7] = phi_q[23] * y[6] + phi_q[50] * y[11];
+        out[8] = phi_q[28] * y[7] + phi_q[58] * y[12];
+        out[9] = phi_q[33] * y[8] + phi_q[39] * y[9] + phi_q[43] * y[10]
+            + phi_q[51] * y[11] + phi_q[59] * y[12] + phi_q[64] * y[13]
+            + phi_q[70] * y[14];
+        out[10] = phi_q[18] * y[5] + phi_q[24] * y[6] + phi_q[29] * y[7]
+            + phi_q[34] * y[8] + phi_q[40] * y[9] + phi_q[44] * y[10] + phi_q[52] * y[11]
+            + phi_q[60] * y[12] + phi_q[65] * y[13] + phi_q[71] * y[14];
+        out[11] = phi_q[19] * y[5] + phi_q[25] * y[6] + phi_q[35] * y[8]
+            + phi_q[41] * y[9] + phi_q[45] * y[10] + phi_q[53] * y[11]
+            + phi_q[66] * y[13] + phi_q[72] * y[14];
+        out[12] = phi_q[46] * y[10] + phi_q[76] * y[15];
+        out[13] = phi_q[54] * y[11] + phi_q[80] * y[16];
+        out[14] = phi_q[61] * y[12] + phi_q[84] * y[17];
+        out[15] = phi_q[47] * y[10] + phi_q[55] * y[11] + phi_q[62] * y[12]
+            + phi_q[67] * y[13] + phi_q[73] * y[14] + phi_q[77] * y[15]
+            + phi_q[81] * y[16] + phi_q[85] * y[17] + phi_q[87] * y[18]
+            + phi_q[90] * y[19];
+        out[16] = phi_q[48] * y[10] + phi_q[56] * y[11] + phi_q[63] * y[12]
+            + phi_q[68] * y[13] + phi_q[74] * y[14] + phi_q[78] * y[15]
+            + phi_q[82] * y[16] + phi_q[86] * y[17] + phi_q[88] * y[18]
+            + phi_q[91] * y[19];
+        out[17] = phi_q[49] * y[10] + phi_q[57] * y[11] + phi_q[69] * y[13]
+            + phi_q[75] * y[14] + phi_q[79] * y[15] + phi_q[83] * y[16]
+            + phi_q[89] * y[18] + phi_q[92] * y[19];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -15034,6 +15087,9 @@ pub mod reduced {
             storage: 63,
             factor: kkt_factor,
             solve: kkt_solve,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
         };
         #[allow(
             unused_variables,
@@ -15680,6 +15736,33 @@ pub mod reduced {
                 x[7] = v90;
                 x[8] = v89;
             }
+            Ok(())
+        }
+        fn kkt_transpose_times(
+            phi_q: &[f64],
+            y: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 25] = phi_q
+                .try_into()
+                .map_err(|_| length_error(25, phi_q.len()))?;
+            let y: &[f64; 9] = y.try_into().map_err(|_| length_error(9, y.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 9] = out
+                .try_into()
+                .map_err(|_| length_error(9, out_len))?;
+            out[0] = phi_q[0] * y[0] + phi_q[4] * y[2];
+            out[1] = phi_q[2] * y[1] + phi_q[8] * y[3];
+            out[2] = phi_q[1] * y[0] + phi_q[3] * y[1] + phi_q[5] * y[2]
+                + phi_q[9] * y[3] + phi_q[24] * y[8];
+            out[3] = phi_q[6] * y[2] + phi_q[12] * y[4];
+            out[4] = phi_q[10] * y[3] + phi_q[16] * y[5];
+            out[5] = phi_q[7] * y[2] + phi_q[11] * y[3] + phi_q[13] * y[4]
+                + phi_q[17] * y[5];
+            out[6] = phi_q[14] * y[4] + phi_q[20] * y[6];
+            out[7] = phi_q[18] * y[5] + phi_q[22] * y[7];
+            out[8] = phi_q[15] * y[4] + phi_q[19] * y[5] + phi_q[21] * y[6]
+                + phi_q[23] * y[7];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

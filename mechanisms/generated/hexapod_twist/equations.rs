@@ -7332,6 +7332,9 @@ pub mod exact {
         storage: 87,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -8444,6 +8447,33 @@ pub mod exact {
             x[5] = v104;
             x[6] = v102;
         }
+        Ok(())
+    }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 46] = phi_q
+            .try_into()
+            .map_err(|_| length_error(46, phi_q.len()))?;
+        let y: &[f64; 7] = y.try_into().map_err(|_| length_error(7, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 7] = out.try_into().map_err(|_| length_error(7, out_len))?;
+        out[0] = phi_q[0] * y[0] + phi_q[7] * y[1] + phi_q[14] * y[2] + phi_q[21] * y[3]
+            + phi_q[28] * y[4] + phi_q[35] * y[5];
+        out[1] = phi_q[1] * y[0] + phi_q[8] * y[1] + phi_q[15] * y[2] + phi_q[22] * y[3]
+            + phi_q[29] * y[4] + phi_q[36] * y[5];
+        out[2] = phi_q[2] * y[0] + phi_q[9] * y[1] + phi_q[16] * y[2] + phi_q[23] * y[3]
+            + phi_q[30] * y[4] + phi_q[37] * y[5];
+        out[3] = phi_q[3] * y[0] + phi_q[10] * y[1] + phi_q[17] * y[2] + phi_q[24] * y[3]
+            + phi_q[31] * y[4] + phi_q[38] * y[5] + phi_q[42] * y[6];
+        out[4] = phi_q[4] * y[0] + phi_q[11] * y[1] + phi_q[18] * y[2] + phi_q[25] * y[3]
+            + phi_q[32] * y[4] + phi_q[39] * y[5] + phi_q[43] * y[6];
+        out[5] = phi_q[5] * y[0] + phi_q[12] * y[1] + phi_q[19] * y[2] + phi_q[26] * y[3]
+            + phi_q[33] * y[4] + phi_q[40] * y[5] + phi_q[44] * y[6];
+        out[6] = phi_q[6] * y[0] + phi_q[13] * y[1] + phi_q[20] * y[2] + phi_q[27] * y[3]
+            + phi_q[34] * y[4] + phi_q[41] * y[5] + phi_q[45] * y[6];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

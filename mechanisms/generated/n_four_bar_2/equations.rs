@@ -12803,6 +12803,9 @@ pub mod exact {
         storage: 375,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -17405,6 +17408,86 @@ pub mod exact {
             x[28] = v556;
             x[29] = v554;
         }
+        Ok(())
+    }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 175] = phi_q
+            .try_into()
+            .map_err(|_| length_error(175, phi_q.len()))?;
+        let y: &[f64; 35] = y.try_into().map_err(|_| length_error(35, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 30] = out.try_into().map_err(|_| length_error(30, out_len))?;
+        out[0] = phi_q[0] * y[0] + phi_q[51] * y[15];
+        out[1] = phi_q[4] * y[1] + phi_q[58] * y[16];
+        out[2] = phi_q[8] * y[2] + phi_q[65] * y[17];
+        out[3] = phi_q[1] * y[0] + phi_q[5] * y[1] + phi_q[9] * y[2] + phi_q[11] * y[3]
+            + phi_q[14] * y[4] + phi_q[52] * y[15] + phi_q[59] * y[16]
+            + phi_q[66] * y[17] + phi_q[70] * y[18] + phi_q[76] * y[19];
+        out[4] = phi_q[2] * y[0] + phi_q[6] * y[1] + phi_q[10] * y[2] + phi_q[12] * y[3]
+            + phi_q[15] * y[4] + phi_q[53] * y[15] + phi_q[60] * y[16]
+            + phi_q[67] * y[17] + phi_q[71] * y[18] + phi_q[77] * y[19];
+        out[5] = phi_q[3] * y[0] + phi_q[7] * y[1] + phi_q[13] * y[3] + phi_q[16] * y[4]
+            + phi_q[54] * y[15] + phi_q[61] * y[16] + phi_q[72] * y[18]
+            + phi_q[78] * y[19];
+        out[6] = phi_q[17] * y[5] + phi_q[82] * y[20] + phi_q[113] * y[25];
+        out[7] = phi_q[21] * y[6] + phi_q[89] * y[21] + phi_q[120] * y[26];
+        out[8] = phi_q[25] * y[7] + phi_q[96] * y[22] + phi_q[127] * y[27];
+        out[9] = phi_q[18] * y[5] + phi_q[22] * y[6] + phi_q[26] * y[7]
+            + phi_q[28] * y[8] + phi_q[31] * y[9] + phi_q[83] * y[20] + phi_q[90] * y[21]
+            + phi_q[97] * y[22] + phi_q[101] * y[23] + phi_q[107] * y[24]
+            + phi_q[114] * y[25] + phi_q[121] * y[26] + phi_q[128] * y[27]
+            + phi_q[132] * y[28] + phi_q[138] * y[29];
+        out[10] = phi_q[19] * y[5] + phi_q[23] * y[6] + phi_q[27] * y[7]
+            + phi_q[29] * y[8] + phi_q[32] * y[9] + phi_q[84] * y[20] + phi_q[91] * y[21]
+            + phi_q[98] * y[22] + phi_q[102] * y[23] + phi_q[108] * y[24]
+            + phi_q[115] * y[25] + phi_q[122] * y[26] + phi_q[129] * y[27]
+            + phi_q[133] * y[28] + phi_q[139] * y[29];
+        out[11] = phi_q[20] * y[5] + phi_q[24] * y[6] + phi_q[30] * y[8]
+            + phi_q[33] * y[9] + phi_q[85] * y[20] + phi_q[92] * y[21]
+            + phi_q[103] * y[23] + phi_q[109] * y[24] + phi_q[116] * y[25]
+            + phi_q[123] * y[26] + phi_q[134] * y[28] + phi_q[140] * y[29];
+        out[12] = phi_q[34] * y[10] + phi_q[144] * y[30];
+        out[13] = phi_q[38] * y[11] + phi_q[151] * y[31];
+        out[14] = phi_q[42] * y[12] + phi_q[158] * y[32];
+        out[15] = phi_q[35] * y[10] + phi_q[39] * y[11] + phi_q[43] * y[12]
+            + phi_q[45] * y[13] + phi_q[48] * y[14] + phi_q[145] * y[30]
+            + phi_q[152] * y[31] + phi_q[159] * y[32] + phi_q[163] * y[33]
+            + phi_q[169] * y[34];
+        out[16] = phi_q[36] * y[10] + phi_q[40] * y[11] + phi_q[44] * y[12]
+            + phi_q[46] * y[13] + phi_q[49] * y[14] + phi_q[146] * y[30]
+            + phi_q[153] * y[31] + phi_q[160] * y[32] + phi_q[164] * y[33]
+            + phi_q[170] * y[34];
+        out[17] = phi_q[37] * y[10] + phi_q[41] * y[11] + phi_q[47] * y[13]
+            + phi_q[50] * y[14] + phi_q[147] * y[30] + phi_q[154] * y[31]
+            + phi_q[165] * y[33] + phi_q[171] * y[34];
+        out[18] = phi_q[55] * y[15] + phi_q[86] * y[20];
+        out[19] = phi_q[62] * y[16] + phi_q[93] * y[21];
+        out[20] = phi_q[68] * y[17] + phi_q[99] * y[22];
+        out[21] = phi_q[73] * y[18] + phi_q[79] * y[19] + phi_q[104] * y[23]
+            + phi_q[110] * y[24];
+        out[22] = phi_q[56] * y[15] + phi_q[63] * y[16] + phi_q[69] * y[17]
+            + phi_q[74] * y[18] + phi_q[80] * y[19] + phi_q[87] * y[20]
+            + phi_q[94] * y[21] + phi_q[100] * y[22] + phi_q[105] * y[23]
+            + phi_q[111] * y[24];
+        out[23] = phi_q[57] * y[15] + phi_q[64] * y[16] + phi_q[75] * y[18]
+            + phi_q[81] * y[19] + phi_q[88] * y[20] + phi_q[95] * y[21]
+            + phi_q[106] * y[23] + phi_q[112] * y[24];
+        out[24] = phi_q[117] * y[25] + phi_q[148] * y[30];
+        out[25] = phi_q[124] * y[26] + phi_q[155] * y[31];
+        out[26] = phi_q[130] * y[27] + phi_q[161] * y[32];
+        out[27] = phi_q[135] * y[28] + phi_q[141] * y[29] + phi_q[166] * y[33]
+            + phi_q[172] * y[34];
+        out[28] = phi_q[118] * y[25] + phi_q[125] * y[26] + phi_q[131] * y[27]
+            + phi_q[136] * y[28] + phi_q[142] * y[29] + phi_q[149] * y[30]
+            + phi_q[156] * y[31] + phi_q[162] * y[32] + phi_q[167] * y[33]
+            + phi_q[173] * y[34];
+        out[29] = phi_q[119] * y[25] + phi_q[126] * y[26] + phi_q[137] * y[28]
+            + phi_q[143] * y[29] + phi_q[150] * y[30] + phi_q[157] * y[31]
+            + phi_q[168] * y[33] + phi_q[174] * y[34];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -23268,6 +23351,9 @@ pub mod reduced {
             storage: 108,
             factor: kkt_factor,
             solve: kkt_solve,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
         };
         #[allow(
             unused_variables,
@@ -24358,6 +24444,41 @@ pub mod reduced {
                 x[13] = v155;
                 x[14] = v154;
             }
+            Ok(())
+        }
+        fn kkt_transpose_times(
+            phi_q: &[f64],
+            y: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 44] = phi_q
+                .try_into()
+                .map_err(|_| length_error(44, phi_q.len()))?;
+            let y: &[f64; 14] = y.try_into().map_err(|_| length_error(14, y.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 15] = out
+                .try_into()
+                .map_err(|_| length_error(15, out_len))?;
+            out[0] = phi_q[0] * y[0] + phi_q[12] * y[6];
+            out[1] = phi_q[2] * y[1] + phi_q[16] * y[7];
+            out[2] = phi_q[1] * y[0] + phi_q[3] * y[1] + phi_q[13] * y[6]
+                + phi_q[17] * y[7];
+            out[3] = phi_q[4] * y[2] + phi_q[20] * y[8] + phi_q[28] * y[10];
+            out[4] = phi_q[6] * y[3] + phi_q[24] * y[9] + phi_q[32] * y[11];
+            out[5] = phi_q[5] * y[2] + phi_q[7] * y[3] + phi_q[21] * y[8]
+                + phi_q[25] * y[9] + phi_q[29] * y[10] + phi_q[33] * y[11];
+            out[6] = phi_q[8] * y[4] + phi_q[36] * y[12];
+            out[7] = phi_q[10] * y[5] + phi_q[40] * y[13];
+            out[8] = phi_q[9] * y[4] + phi_q[11] * y[5] + phi_q[37] * y[12]
+                + phi_q[41] * y[13];
+            out[9] = phi_q[14] * y[6] + phi_q[22] * y[8];
+            out[10] = phi_q[18] * y[7] + phi_q[26] * y[9];
+            out[11] = phi_q[15] * y[6] + phi_q[19] * y[7] + phi_q[23] * y[8]
+                + phi_q[27] * y[9];
+            out[12] = phi_q[30] * y[10] + phi_q[38] * y[12];
+            out[13] = phi_q[34] * y[11] + phi_q[42] * y[13];
+            out[14] = phi_q[31] * y[10] + phi_q[35] * y[11] + phi_q[39] * y[12]
+                + phi_q[43] * y[13];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

@@ -1412,6 +1412,9 @@ pub mod exact {
         storage: 80,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -2296,6 +2299,37 @@ pub mod exact {
             x[12] = v92;
             x[13] = v90;
         }
+        Ok(())
+    }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 33] = phi_q
+            .try_into()
+            .map_err(|_| length_error(33, phi_q.len()))?;
+        let y: &[f64; 12] = y.try_into().map_err(|_| length_error(12, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 14] = out.try_into().map_err(|_| length_error(14, out_len))?;
+        out[0] = 0.0;
+        out[1] = phi_q[8] * y[2];
+        out[2] = phi_q[9] * y[3];
+        out[3] = phi_q[0] * y[0] + phi_q[4] * y[1] + phi_q[10] * y[4]
+            + phi_q[25] * y[10];
+        out[4] = phi_q[1] * y[0] + phi_q[5] * y[1] + phi_q[11] * y[4]
+            + phi_q[26] * y[10];
+        out[5] = phi_q[2] * y[0] + phi_q[6] * y[1] + phi_q[12] * y[4]
+            + phi_q[27] * y[10];
+        out[6] = phi_q[3] * y[0] + phi_q[7] * y[1] + phi_q[13] * y[4]
+            + phi_q[28] * y[10];
+        out[7] = phi_q[14] * y[5];
+        out[8] = phi_q[15] * y[6];
+        out[9] = phi_q[16] * y[7];
+        out[10] = phi_q[17] * y[8] + phi_q[21] * y[9] + phi_q[29] * y[11];
+        out[11] = phi_q[18] * y[8] + phi_q[22] * y[9] + phi_q[30] * y[11];
+        out[12] = phi_q[19] * y[8] + phi_q[23] * y[9] + phi_q[31] * y[11];
+        out[13] = phi_q[20] * y[8] + phi_q[24] * y[9] + phi_q[32] * y[11];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -6921,6 +6955,9 @@ pub mod reduced {
             storage: 65,
             factor: kkt_factor,
             solve: kkt_solve,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
         };
         #[allow(
             unused_variables,
@@ -7662,6 +7699,34 @@ pub mod reduced {
                 x[7] = v72;
                 x[8] = v70;
             }
+            Ok(())
+        }
+        fn kkt_transpose_times(
+            phi_q: &[f64],
+            y: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 28] = phi_q
+                .try_into()
+                .map_err(|_| length_error(28, phi_q.len()))?;
+            let y: &[f64; 7] = y.try_into().map_err(|_| length_error(7, y.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 9] = out
+                .try_into()
+                .map_err(|_| length_error(9, out_len))?;
+            out[0] = 0.0;
+            out[1] = phi_q[0] * y[0] + phi_q[4] * y[1] + phi_q[8] * y[2]
+                + phi_q[20] * y[5];
+            out[2] = phi_q[1] * y[0] + phi_q[5] * y[1] + phi_q[9] * y[2]
+                + phi_q[21] * y[5];
+            out[3] = phi_q[2] * y[0] + phi_q[6] * y[1] + phi_q[10] * y[2]
+                + phi_q[22] * y[5];
+            out[4] = phi_q[3] * y[0] + phi_q[7] * y[1] + phi_q[11] * y[2]
+                + phi_q[23] * y[5];
+            out[5] = phi_q[12] * y[3] + phi_q[16] * y[4] + phi_q[24] * y[6];
+            out[6] = phi_q[13] * y[3] + phi_q[17] * y[4] + phi_q[25] * y[6];
+            out[7] = phi_q[14] * y[3] + phi_q[18] * y[4] + phi_q[26] * y[6];
+            out[8] = phi_q[15] * y[3] + phi_q[19] * y[4] + phi_q[27] * y[6];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

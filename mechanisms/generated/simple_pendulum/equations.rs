@@ -665,6 +665,9 @@ pub mod exact {
         storage: 12,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -833,6 +836,25 @@ pub mod exact {
             x[4] = 0.0;
             x[5] = 0.0;
         }
+        Ok(())
+    }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 3] = phi_q
+            .try_into()
+            .map_err(|_| length_error(3, phi_q.len()))?;
+        let y: &[f64; 1] = y.try_into().map_err(|_| length_error(1, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 6] = out.try_into().map_err(|_| length_error(6, out_len))?;
+        out[0] = phi_q[0] * y[0];
+        out[1] = phi_q[1] * y[0];
+        out[2] = phi_q[2] * y[0];
+        out[3] = 0.0;
+        out[4] = 0.0;
+        out[5] = 0.0;
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -1977,6 +1999,9 @@ pub mod reduced {
             storage: 6,
             factor: kkt_factor,
             solve: kkt_solve,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
         };
         #[allow(
             unused_variables,
@@ -2085,6 +2110,24 @@ pub mod reduced {
                 x[1] = v4;
                 x[2] = 0.0;
             }
+            Ok(())
+        }
+        fn kkt_transpose_times(
+            phi_q: &[f64],
+            y: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 2] = phi_q
+                .try_into()
+                .map_err(|_| length_error(2, phi_q.len()))?;
+            let y: &[f64; 1] = y.try_into().map_err(|_| length_error(1, y.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 3] = out
+                .try_into()
+                .map_err(|_| length_error(3, out_len))?;
+            out[0] = phi_q[0] * y[0];
+            out[1] = phi_q[1] * y[0];
+            out[2] = 0.0;
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

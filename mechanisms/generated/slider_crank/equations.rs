@@ -5367,6 +5367,9 @@ pub mod exact {
         storage: 251,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -8464,6 +8467,60 @@ pub mod exact {
             x[19] = v346;
             x[20] = v344;
         }
+        Ok(())
+    }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 109] = phi_q
+            .try_into()
+            .map_err(|_| length_error(109, phi_q.len()))?;
+        let y: &[f64; 21] = y.try_into().map_err(|_| length_error(21, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 21] = out.try_into().map_err(|_| length_error(21, out_len))?;
+        out[0] = phi_q[0] * y[0] + phi_q[23] * y[5];
+        out[1] = phi_q[5] * y[1] + phi_q[33] * y[6];
+        out[2] = phi_q[10] * y[2] + phi_q[43] * y[7];
+        out[3] = phi_q[1] * y[0] + phi_q[6] * y[1] + phi_q[11] * y[2] + phi_q[15] * y[3]
+            + phi_q[19] * y[4] + phi_q[24] * y[5] + phi_q[34] * y[6] + phi_q[44] * y[7]
+            + phi_q[93] * y[17] + phi_q[97] * y[18];
+        out[4] = phi_q[2] * y[0] + phi_q[7] * y[1] + phi_q[12] * y[2] + phi_q[16] * y[3]
+            + phi_q[20] * y[4] + phi_q[25] * y[5] + phi_q[35] * y[6] + phi_q[45] * y[7]
+            + phi_q[94] * y[17] + phi_q[98] * y[18];
+        out[5] = phi_q[3] * y[0] + phi_q[8] * y[1] + phi_q[13] * y[2] + phi_q[17] * y[3]
+            + phi_q[21] * y[4] + phi_q[26] * y[5] + phi_q[36] * y[6] + phi_q[46] * y[7]
+            + phi_q[95] * y[17] + phi_q[99] * y[18];
+        out[6] = phi_q[4] * y[0] + phi_q[9] * y[1] + phi_q[14] * y[2] + phi_q[18] * y[3]
+            + phi_q[22] * y[4] + phi_q[27] * y[5] + phi_q[37] * y[6] + phi_q[47] * y[7]
+            + phi_q[96] * y[17] + phi_q[100] * y[18];
+        out[7] = phi_q[28] * y[5] + phi_q[53] * y[8];
+        out[8] = phi_q[38] * y[6] + phi_q[59] * y[9];
+        out[9] = phi_q[48] * y[7] + phi_q[65] * y[10];
+        out[10] = phi_q[29] * y[5] + phi_q[39] * y[6] + phi_q[49] * y[7]
+            + phi_q[54] * y[8] + phi_q[60] * y[9] + phi_q[66] * y[10] + phi_q[71] * y[11]
+            + phi_q[101] * y[19];
+        out[11] = phi_q[30] * y[5] + phi_q[40] * y[6] + phi_q[50] * y[7]
+            + phi_q[55] * y[8] + phi_q[61] * y[9] + phi_q[67] * y[10] + phi_q[72] * y[11]
+            + phi_q[102] * y[19];
+        out[12] = phi_q[31] * y[5] + phi_q[41] * y[6] + phi_q[51] * y[7]
+            + phi_q[56] * y[8] + phi_q[62] * y[9] + phi_q[68] * y[10] + phi_q[73] * y[11]
+            + phi_q[103] * y[19];
+        out[13] = phi_q[32] * y[5] + phi_q[42] * y[6] + phi_q[52] * y[7]
+            + phi_q[57] * y[8] + phi_q[63] * y[9] + phi_q[69] * y[10] + phi_q[74] * y[11]
+            + phi_q[104] * y[19];
+        out[14] = phi_q[58] * y[8];
+        out[15] = phi_q[64] * y[9] + phi_q[87] * y[14];
+        out[16] = phi_q[70] * y[10] + phi_q[88] * y[15];
+        out[17] = phi_q[75] * y[11] + phi_q[79] * y[12] + phi_q[83] * y[13]
+            + phi_q[89] * y[16] + phi_q[105] * y[20];
+        out[18] = phi_q[76] * y[11] + phi_q[80] * y[12] + phi_q[84] * y[13]
+            + phi_q[90] * y[16] + phi_q[106] * y[20];
+        out[19] = phi_q[77] * y[11] + phi_q[81] * y[12] + phi_q[85] * y[13]
+            + phi_q[91] * y[16] + phi_q[107] * y[20];
+        out[20] = phi_q[78] * y[11] + phi_q[82] * y[12] + phi_q[86] * y[13]
+            + phi_q[92] * y[16] + phi_q[108] * y[20];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -15901,6 +15958,9 @@ pub mod reduced {
             storage: 241,
             factor: kkt_factor,
             solve: kkt_solve,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
         };
         #[allow(
             unused_variables,
@@ -18910,6 +18970,64 @@ pub mod reduced {
                 x[17] = v332;
                 x[18] = v330;
             }
+            Ok(())
+        }
+        fn kkt_transpose_times(
+            phi_q: &[f64],
+            y: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 105] = phi_q
+                .try_into()
+                .map_err(|_| length_error(105, phi_q.len()))?;
+            let y: &[f64; 19] = y.try_into().map_err(|_| length_error(19, y.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 19] = out
+                .try_into()
+                .map_err(|_| length_error(19, out_len))?;
+            out[0] = phi_q[0] * y[0] + phi_q[23] * y[5];
+            out[1] = phi_q[5] * y[1] + phi_q[33] * y[6];
+            out[2] = phi_q[10] * y[2] + phi_q[43] * y[7];
+            out[3] = phi_q[1] * y[0] + phi_q[6] * y[1] + phi_q[11] * y[2]
+                + phi_q[15] * y[3] + phi_q[19] * y[4] + phi_q[24] * y[5]
+                + phi_q[34] * y[6] + phi_q[44] * y[7] + phi_q[89] * y[15]
+                + phi_q[93] * y[16];
+            out[4] = phi_q[2] * y[0] + phi_q[7] * y[1] + phi_q[12] * y[2]
+                + phi_q[16] * y[3] + phi_q[20] * y[4] + phi_q[25] * y[5]
+                + phi_q[35] * y[6] + phi_q[45] * y[7] + phi_q[90] * y[15]
+                + phi_q[94] * y[16];
+            out[5] = phi_q[3] * y[0] + phi_q[8] * y[1] + phi_q[13] * y[2]
+                + phi_q[17] * y[3] + phi_q[21] * y[4] + phi_q[26] * y[5]
+                + phi_q[36] * y[6] + phi_q[46] * y[7] + phi_q[91] * y[15]
+                + phi_q[95] * y[16];
+            out[6] = phi_q[4] * y[0] + phi_q[9] * y[1] + phi_q[14] * y[2]
+                + phi_q[18] * y[3] + phi_q[22] * y[4] + phi_q[27] * y[5]
+                + phi_q[37] * y[6] + phi_q[47] * y[7] + phi_q[92] * y[15]
+                + phi_q[96] * y[16];
+            out[7] = phi_q[28] * y[5] + phi_q[53] * y[8];
+            out[8] = phi_q[38] * y[6] + phi_q[59] * y[9];
+            out[9] = phi_q[48] * y[7] + phi_q[64] * y[10];
+            out[10] = phi_q[29] * y[5] + phi_q[39] * y[6] + phi_q[49] * y[7]
+                + phi_q[54] * y[8] + phi_q[60] * y[9] + phi_q[65] * y[10]
+                + phi_q[69] * y[11] + phi_q[97] * y[17];
+            out[11] = phi_q[30] * y[5] + phi_q[40] * y[6] + phi_q[50] * y[7]
+                + phi_q[55] * y[8] + phi_q[61] * y[9] + phi_q[66] * y[10]
+                + phi_q[70] * y[11] + phi_q[98] * y[17];
+            out[12] = phi_q[31] * y[5] + phi_q[41] * y[6] + phi_q[51] * y[7]
+                + phi_q[56] * y[8] + phi_q[62] * y[9] + phi_q[67] * y[10]
+                + phi_q[71] * y[11] + phi_q[99] * y[17];
+            out[13] = phi_q[32] * y[5] + phi_q[42] * y[6] + phi_q[52] * y[7]
+                + phi_q[57] * y[8] + phi_q[63] * y[9] + phi_q[68] * y[10]
+                + phi_q[72] * y[11] + phi_q[100] * y[17];
+            out[14] = phi_q[58] * y[8];
+            out[15] = phi_q[73] * y[11] + phi_q[77] * y[12] + phi_q[81] * y[13]
+                + phi_q[85] * y[14] + phi_q[101] * y[18];
+            out[16] = phi_q[74] * y[11] + phi_q[78] * y[12] + phi_q[82] * y[13]
+                + phi_q[86] * y[14] + phi_q[102] * y[18];
+            out[17] = phi_q[75] * y[11] + phi_q[79] * y[12] + phi_q[83] * y[13]
+                + phi_q[87] * y[14] + phi_q[103] * y[18];
+            out[18] = phi_q[76] * y[11] + phi_q[80] * y[12] + phi_q[84] * y[13]
+                + phi_q[88] * y[14] + phi_q[104] * y[18];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

@@ -1117,6 +1117,9 @@ pub mod exact {
         storage: 42,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -1616,6 +1619,26 @@ pub mod exact {
             x[5] = v41;
             x[6] = v39;
         }
+        Ok(())
+    }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 19] = phi_q
+            .try_into()
+            .map_err(|_| length_error(19, phi_q.len()))?;
+        let y: &[f64; 4] = y.try_into().map_err(|_| length_error(4, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 7] = out.try_into().map_err(|_| length_error(7, out_len))?;
+        out[0] = phi_q[0] * y[0];
+        out[1] = phi_q[5] * y[1];
+        out[2] = phi_q[10] * y[2];
+        out[3] = phi_q[1] * y[0] + phi_q[6] * y[1] + phi_q[11] * y[2] + phi_q[15] * y[3];
+        out[4] = phi_q[2] * y[0] + phi_q[7] * y[1] + phi_q[12] * y[2] + phi_q[16] * y[3];
+        out[5] = phi_q[3] * y[0] + phi_q[8] * y[1] + phi_q[13] * y[2] + phi_q[17] * y[3];
+        out[6] = phi_q[4] * y[0] + phi_q[9] * y[1] + phi_q[14] * y[2] + phi_q[18] * y[3];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

@@ -21995,6 +21995,9 @@ pub mod exact {
         storage: 1085,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -34966,6 +34969,183 @@ pub mod exact {
         }
         Ok(())
     }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 390] = phi_q
+            .try_into()
+            .map_err(|_| length_error(390, phi_q.len()))?;
+        let y: &[f64; 72] = y.try_into().map_err(|_| length_error(72, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 78] = out.try_into().map_err(|_| length_error(78, out_len))?;
+        out[0] = phi_q[0] * y[0] + phi_q[22] * y[3] + phi_q[44] * y[6] + phi_q[66] * y[9]
+            + phi_q[88] * y[12] + phi_q[110] * y[15];
+        out[1] = phi_q[8] * y[1] + phi_q[30] * y[4] + phi_q[52] * y[7]
+            + phi_q[74] * y[10] + phi_q[96] * y[13] + phi_q[118] * y[16];
+        out[2] = phi_q[16] * y[2] + phi_q[38] * y[5] + phi_q[60] * y[8]
+            + phi_q[82] * y[11] + phi_q[104] * y[14] + phi_q[126] * y[17];
+        out[3] = phi_q[1] * y[0] + phi_q[9] * y[1] + phi_q[17] * y[2] + phi_q[23] * y[3]
+            + phi_q[31] * y[4] + phi_q[39] * y[5] + phi_q[45] * y[6] + phi_q[53] * y[7]
+            + phi_q[61] * y[8] + phi_q[67] * y[9] + phi_q[75] * y[10] + phi_q[83] * y[11]
+            + phi_q[89] * y[12] + phi_q[97] * y[13] + phi_q[105] * y[14]
+            + phi_q[111] * y[15] + phi_q[119] * y[16] + phi_q[127] * y[17];
+        out[4] = phi_q[2] * y[0] + phi_q[10] * y[1] + phi_q[18] * y[2] + phi_q[24] * y[3]
+            + phi_q[32] * y[4] + phi_q[40] * y[5] + phi_q[46] * y[6] + phi_q[54] * y[7]
+            + phi_q[62] * y[8] + phi_q[68] * y[9] + phi_q[76] * y[10] + phi_q[84] * y[11]
+            + phi_q[90] * y[12] + phi_q[98] * y[13] + phi_q[106] * y[14]
+            + phi_q[112] * y[15] + phi_q[120] * y[16] + phi_q[128] * y[17];
+        out[5] = phi_q[3] * y[0] + phi_q[11] * y[1] + phi_q[25] * y[3] + phi_q[33] * y[4]
+            + phi_q[47] * y[6] + phi_q[55] * y[7] + phi_q[69] * y[9] + phi_q[77] * y[10]
+            + phi_q[91] * y[12] + phi_q[99] * y[13] + phi_q[113] * y[15]
+            + phi_q[121] * y[16];
+        out[6] = phi_q[4] * y[0] + phi_q[138] * y[21] + phi_q[146] * y[22]
+            + phi_q[336] * y[66];
+        out[7] = phi_q[12] * y[1] + phi_q[139] * y[21] + phi_q[147] * y[22]
+            + phi_q[337] * y[66];
+        out[8] = phi_q[19] * y[2] + phi_q[140] * y[21] + phi_q[148] * y[22]
+            + phi_q[338] * y[66];
+        out[9] = phi_q[5] * y[0] + phi_q[13] * y[1] + phi_q[20] * y[2]
+            + phi_q[132] * y[18];
+        out[10] = phi_q[6] * y[0] + phi_q[14] * y[1] + phi_q[21] * y[2]
+            + phi_q[134] * y[19];
+        out[11] = phi_q[7] * y[0] + phi_q[15] * y[1] + phi_q[136] * y[20];
+        out[12] = phi_q[26] * y[3] + phi_q[161] * y[26] + phi_q[169] * y[27]
+            + phi_q[345] * y[67];
+        out[13] = phi_q[34] * y[4] + phi_q[162] * y[26] + phi_q[170] * y[27]
+            + phi_q[346] * y[67];
+        out[14] = phi_q[41] * y[5] + phi_q[163] * y[26] + phi_q[171] * y[27]
+            + phi_q[347] * y[67];
+        out[15] = phi_q[27] * y[3] + phi_q[35] * y[4] + phi_q[42] * y[5]
+            + phi_q[155] * y[23];
+        out[16] = phi_q[28] * y[3] + phi_q[36] * y[4] + phi_q[43] * y[5]
+            + phi_q[157] * y[24];
+        out[17] = phi_q[29] * y[3] + phi_q[37] * y[4] + phi_q[159] * y[25];
+        out[18] = phi_q[48] * y[6] + phi_q[184] * y[31] + phi_q[192] * y[32]
+            + phi_q[354] * y[68];
+        out[19] = phi_q[56] * y[7] + phi_q[185] * y[31] + phi_q[193] * y[32]
+            + phi_q[355] * y[68];
+        out[20] = phi_q[63] * y[8] + phi_q[186] * y[31] + phi_q[194] * y[32]
+            + phi_q[356] * y[68];
+        out[21] = phi_q[49] * y[6] + phi_q[57] * y[7] + phi_q[64] * y[8]
+            + phi_q[178] * y[28];
+        out[22] = phi_q[50] * y[6] + phi_q[58] * y[7] + phi_q[65] * y[8]
+            + phi_q[180] * y[29];
+        out[23] = phi_q[51] * y[6] + phi_q[59] * y[7] + phi_q[182] * y[30];
+        out[24] = phi_q[70] * y[9] + phi_q[207] * y[36] + phi_q[215] * y[37]
+            + phi_q[363] * y[69];
+        out[25] = phi_q[78] * y[10] + phi_q[208] * y[36] + phi_q[216] * y[37]
+            + phi_q[364] * y[69];
+        out[26] = phi_q[85] * y[11] + phi_q[209] * y[36] + phi_q[217] * y[37]
+            + phi_q[365] * y[69];
+        out[27] = phi_q[71] * y[9] + phi_q[79] * y[10] + phi_q[86] * y[11]
+            + phi_q[201] * y[33];
+        out[28] = phi_q[72] * y[9] + phi_q[80] * y[10] + phi_q[87] * y[11]
+            + phi_q[203] * y[34];
+        out[29] = phi_q[73] * y[9] + phi_q[81] * y[10] + phi_q[205] * y[35];
+        out[30] = phi_q[92] * y[12] + phi_q[230] * y[41] + phi_q[238] * y[42]
+            + phi_q[372] * y[70];
+        out[31] = phi_q[100] * y[13] + phi_q[231] * y[41] + phi_q[239] * y[42]
+            + phi_q[373] * y[70];
+        out[32] = phi_q[107] * y[14] + phi_q[232] * y[41] + phi_q[240] * y[42]
+            + phi_q[374] * y[70];
+        out[33] = phi_q[93] * y[12] + phi_q[101] * y[13] + phi_q[108] * y[14]
+            + phi_q[224] * y[38];
+        out[34] = phi_q[94] * y[12] + phi_q[102] * y[13] + phi_q[109] * y[14]
+            + phi_q[226] * y[39];
+        out[35] = phi_q[95] * y[12] + phi_q[103] * y[13] + phi_q[228] * y[40];
+        out[36] = phi_q[114] * y[15] + phi_q[253] * y[46] + phi_q[261] * y[47]
+            + phi_q[381] * y[71];
+        out[37] = phi_q[122] * y[16] + phi_q[254] * y[46] + phi_q[262] * y[47]
+            + phi_q[382] * y[71];
+        out[38] = phi_q[129] * y[17] + phi_q[255] * y[46] + phi_q[263] * y[47]
+            + phi_q[383] * y[71];
+        out[39] = phi_q[115] * y[15] + phi_q[123] * y[16] + phi_q[130] * y[17]
+            + phi_q[247] * y[43];
+        out[40] = phi_q[116] * y[15] + phi_q[124] * y[16] + phi_q[131] * y[17]
+            + phi_q[249] * y[44];
+        out[41] = phi_q[117] * y[15] + phi_q[125] * y[16] + phi_q[251] * y[45];
+        out[42] = phi_q[141] * y[21] + phi_q[149] * y[22] + phi_q[270] * y[48]
+            + phi_q[339] * y[66];
+        out[43] = phi_q[142] * y[21] + phi_q[150] * y[22] + phi_q[274] * y[49]
+            + phi_q[340] * y[66];
+        out[44] = phi_q[143] * y[21] + phi_q[151] * y[22] + phi_q[278] * y[50]
+            + phi_q[341] * y[66];
+        out[45] = phi_q[133] * y[18] + phi_q[152] * y[22] + phi_q[271] * y[48]
+            + phi_q[275] * y[49] + phi_q[279] * y[50] + phi_q[342] * y[66];
+        out[46] = phi_q[135] * y[19] + phi_q[144] * y[21] + phi_q[153] * y[22]
+            + phi_q[272] * y[48] + phi_q[276] * y[49] + phi_q[280] * y[50]
+            + phi_q[343] * y[66];
+        out[47] = phi_q[137] * y[20] + phi_q[145] * y[21] + phi_q[154] * y[22]
+            + phi_q[273] * y[48] + phi_q[277] * y[49] + phi_q[344] * y[66];
+        out[48] = phi_q[164] * y[26] + phi_q[172] * y[27] + phi_q[281] * y[51]
+            + phi_q[348] * y[67];
+        out[49] = phi_q[165] * y[26] + phi_q[173] * y[27] + phi_q[285] * y[52]
+            + phi_q[349] * y[67];
+        out[50] = phi_q[166] * y[26] + phi_q[174] * y[27] + phi_q[289] * y[53]
+            + phi_q[350] * y[67];
+        out[51] = phi_q[156] * y[23] + phi_q[175] * y[27] + phi_q[282] * y[51]
+            + phi_q[286] * y[52] + phi_q[290] * y[53] + phi_q[351] * y[67];
+        out[52] = phi_q[158] * y[24] + phi_q[167] * y[26] + phi_q[176] * y[27]
+            + phi_q[283] * y[51] + phi_q[287] * y[52] + phi_q[291] * y[53]
+            + phi_q[352] * y[67];
+        out[53] = phi_q[160] * y[25] + phi_q[168] * y[26] + phi_q[177] * y[27]
+            + phi_q[284] * y[51] + phi_q[288] * y[52] + phi_q[353] * y[67];
+        out[54] = phi_q[187] * y[31] + phi_q[195] * y[32] + phi_q[292] * y[54]
+            + phi_q[357] * y[68];
+        out[55] = phi_q[188] * y[31] + phi_q[196] * y[32] + phi_q[296] * y[55]
+            + phi_q[358] * y[68];
+        out[56] = phi_q[189] * y[31] + phi_q[197] * y[32] + phi_q[300] * y[56]
+            + phi_q[359] * y[68];
+        out[57] = phi_q[179] * y[28] + phi_q[198] * y[32] + phi_q[293] * y[54]
+            + phi_q[297] * y[55] + phi_q[301] * y[56] + phi_q[360] * y[68];
+        out[58] = phi_q[181] * y[29] + phi_q[190] * y[31] + phi_q[199] * y[32]
+            + phi_q[294] * y[54] + phi_q[298] * y[55] + phi_q[302] * y[56]
+            + phi_q[361] * y[68];
+        out[59] = phi_q[183] * y[30] + phi_q[191] * y[31] + phi_q[200] * y[32]
+            + phi_q[295] * y[54] + phi_q[299] * y[55] + phi_q[362] * y[68];
+        out[60] = phi_q[210] * y[36] + phi_q[218] * y[37] + phi_q[303] * y[57]
+            + phi_q[366] * y[69];
+        out[61] = phi_q[211] * y[36] + phi_q[219] * y[37] + phi_q[307] * y[58]
+            + phi_q[367] * y[69];
+        out[62] = phi_q[212] * y[36] + phi_q[220] * y[37] + phi_q[311] * y[59]
+            + phi_q[368] * y[69];
+        out[63] = phi_q[202] * y[33] + phi_q[221] * y[37] + phi_q[304] * y[57]
+            + phi_q[308] * y[58] + phi_q[312] * y[59] + phi_q[369] * y[69];
+        out[64] = phi_q[204] * y[34] + phi_q[213] * y[36] + phi_q[222] * y[37]
+            + phi_q[305] * y[57] + phi_q[309] * y[58] + phi_q[313] * y[59]
+            + phi_q[370] * y[69];
+        out[65] = phi_q[206] * y[35] + phi_q[214] * y[36] + phi_q[223] * y[37]
+            + phi_q[306] * y[57] + phi_q[310] * y[58] + phi_q[371] * y[69];
+        out[66] = phi_q[233] * y[41] + phi_q[241] * y[42] + phi_q[314] * y[60]
+            + phi_q[375] * y[70];
+        out[67] = phi_q[234] * y[41] + phi_q[242] * y[42] + phi_q[318] * y[61]
+            + phi_q[376] * y[70];
+        out[68] = phi_q[235] * y[41] + phi_q[243] * y[42] + phi_q[322] * y[62]
+            + phi_q[377] * y[70];
+        out[69] = phi_q[225] * y[38] + phi_q[244] * y[42] + phi_q[315] * y[60]
+            + phi_q[319] * y[61] + phi_q[323] * y[62] + phi_q[378] * y[70];
+        out[70] = phi_q[227] * y[39] + phi_q[236] * y[41] + phi_q[245] * y[42]
+            + phi_q[316] * y[60] + phi_q[320] * y[61] + phi_q[324] * y[62]
+            + phi_q[379] * y[70];
+        out[71] = phi_q[229] * y[40] + phi_q[237] * y[41] + phi_q[246] * y[42]
+            + phi_q[317] * y[60] + phi_q[321] * y[61] + phi_q[380] * y[70];
+        out[72] = phi_q[256] * y[46] + phi_q[264] * y[47] + phi_q[325] * y[63]
+            + phi_q[384] * y[71];
+        out[73] = phi_q[257] * y[46] + phi_q[265] * y[47] + phi_q[329] * y[64]
+            + phi_q[385] * y[71];
+        out[74] = phi_q[258] * y[46] + phi_q[266] * y[47] + phi_q[333] * y[65]
+            + phi_q[386] * y[71];
+        out[75] = phi_q[248] * y[43] + phi_q[267] * y[47] + phi_q[326] * y[63]
+            + phi_q[330] * y[64] + phi_q[334] * y[65] + phi_q[387] * y[71];
+        out[76] = phi_q[250] * y[44] + phi_q[259] * y[46] + phi_q[268] * y[47]
+            + phi_q[327] * y[63] + phi_q[331] * y[64] + phi_q[335] * y[65]
+            + phi_q[388] * y[71];
+        out[77] = phi_q[252] * y[45] + phi_q[260] * y[46] + phi_q[269] * y[47]
+            + phi_q[328] * y[63] + phi_q[332] * y[64] + phi_q[389] * y[71];
+        Ok(())
+    }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
         k: &[f64],
@@ -45952,6 +46132,9 @@ pub mod paper {
         storage: 1017,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -57677,6 +57860,183 @@ pub mod paper {
         }
         Ok(())
     }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 390] = phi_q
+            .try_into()
+            .map_err(|_| length_error(390, phi_q.len()))?;
+        let y: &[f64; 72] = y.try_into().map_err(|_| length_error(72, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 78] = out.try_into().map_err(|_| length_error(78, out_len))?;
+        out[0] = phi_q[0] * y[0] + phi_q[22] * y[3] + phi_q[44] * y[6] + phi_q[66] * y[9]
+            + phi_q[88] * y[12] + phi_q[110] * y[15];
+        out[1] = phi_q[8] * y[1] + phi_q[30] * y[4] + phi_q[52] * y[7]
+            + phi_q[74] * y[10] + phi_q[96] * y[13] + phi_q[118] * y[16];
+        out[2] = phi_q[16] * y[2] + phi_q[38] * y[5] + phi_q[60] * y[8]
+            + phi_q[82] * y[11] + phi_q[104] * y[14] + phi_q[126] * y[17];
+        out[3] = phi_q[1] * y[0] + phi_q[9] * y[1] + phi_q[17] * y[2] + phi_q[23] * y[3]
+            + phi_q[31] * y[4] + phi_q[39] * y[5] + phi_q[45] * y[6] + phi_q[53] * y[7]
+            + phi_q[61] * y[8] + phi_q[67] * y[9] + phi_q[75] * y[10] + phi_q[83] * y[11]
+            + phi_q[89] * y[12] + phi_q[97] * y[13] + phi_q[105] * y[14]
+            + phi_q[111] * y[15] + phi_q[119] * y[16] + phi_q[127] * y[17];
+        out[4] = phi_q[2] * y[0] + phi_q[10] * y[1] + phi_q[18] * y[2] + phi_q[24] * y[3]
+            + phi_q[32] * y[4] + phi_q[40] * y[5] + phi_q[46] * y[6] + phi_q[54] * y[7]
+            + phi_q[62] * y[8] + phi_q[68] * y[9] + phi_q[76] * y[10] + phi_q[84] * y[11]
+            + phi_q[90] * y[12] + phi_q[98] * y[13] + phi_q[106] * y[14]
+            + phi_q[112] * y[15] + phi_q[120] * y[16] + phi_q[128] * y[17];
+        out[5] = phi_q[3] * y[0] + phi_q[11] * y[1] + phi_q[25] * y[3] + phi_q[33] * y[4]
+            + phi_q[47] * y[6] + phi_q[55] * y[7] + phi_q[69] * y[9] + phi_q[77] * y[10]
+            + phi_q[91] * y[12] + phi_q[99] * y[13] + phi_q[113] * y[15]
+            + phi_q[121] * y[16];
+        out[6] = phi_q[4] * y[0] + phi_q[138] * y[21] + phi_q[146] * y[22]
+            + phi_q[336] * y[66];
+        out[7] = phi_q[12] * y[1] + phi_q[139] * y[21] + phi_q[147] * y[22]
+            + phi_q[337] * y[66];
+        out[8] = phi_q[19] * y[2] + phi_q[140] * y[21] + phi_q[148] * y[22]
+            + phi_q[338] * y[66];
+        out[9] = phi_q[5] * y[0] + phi_q[13] * y[1] + phi_q[20] * y[2]
+            + phi_q[132] * y[18];
+        out[10] = phi_q[6] * y[0] + phi_q[14] * y[1] + phi_q[21] * y[2]
+            + phi_q[134] * y[19];
+        out[11] = phi_q[7] * y[0] + phi_q[15] * y[1] + phi_q[136] * y[20];
+        out[12] = phi_q[26] * y[3] + phi_q[161] * y[26] + phi_q[169] * y[27]
+            + phi_q[345] * y[67];
+        out[13] = phi_q[34] * y[4] + phi_q[162] * y[26] + phi_q[170] * y[27]
+            + phi_q[346] * y[67];
+        out[14] = phi_q[41] * y[5] + phi_q[163] * y[26] + phi_q[171] * y[27]
+            + phi_q[347] * y[67];
+        out[15] = phi_q[27] * y[3] + phi_q[35] * y[4] + phi_q[42] * y[5]
+            + phi_q[155] * y[23];
+        out[16] = phi_q[28] * y[3] + phi_q[36] * y[4] + phi_q[43] * y[5]
+            + phi_q[157] * y[24];
+        out[17] = phi_q[29] * y[3] + phi_q[37] * y[4] + phi_q[159] * y[25];
+        out[18] = phi_q[48] * y[6] + phi_q[184] * y[31] + phi_q[192] * y[32]
+            + phi_q[354] * y[68];
+        out[19] = phi_q[56] * y[7] + phi_q[185] * y[31] + phi_q[193] * y[32]
+            + phi_q[355] * y[68];
+        out[20] = phi_q[63] * y[8] + phi_q[186] * y[31] + phi_q[194] * y[32]
+            + phi_q[356] * y[68];
+        out[21] = phi_q[49] * y[6] + phi_q[57] * y[7] + phi_q[64] * y[8]
+            + phi_q[178] * y[28];
+        out[22] = phi_q[50] * y[6] + phi_q[58] * y[7] + phi_q[65] * y[8]
+            + phi_q[180] * y[29];
+        out[23] = phi_q[51] * y[6] + phi_q[59] * y[7] + phi_q[182] * y[30];
+        out[24] = phi_q[70] * y[9] + phi_q[207] * y[36] + phi_q[215] * y[37]
+            + phi_q[363] * y[69];
+        out[25] = phi_q[78] * y[10] + phi_q[208] * y[36] + phi_q[216] * y[37]
+            + phi_q[364] * y[69];
+        out[26] = phi_q[85] * y[11] + phi_q[209] * y[36] + phi_q[217] * y[37]
+            + phi_q[365] * y[69];
+        out[27] = phi_q[71] * y[9] + phi_q[79] * y[10] + phi_q[86] * y[11]
+            + phi_q[201] * y[33];
+        out[28] = phi_q[72] * y[9] + phi_q[80] * y[10] + phi_q[87] * y[11]
+            + phi_q[203] * y[34];
+        out[29] = phi_q[73] * y[9] + phi_q[81] * y[10] + phi_q[205] * y[35];
+        out[30] = phi_q[92] * y[12] + phi_q[230] * y[41] + phi_q[238] * y[42]
+            + phi_q[372] * y[70];
+        out[31] = phi_q[100] * y[13] + phi_q[231] * y[41] + phi_q[239] * y[42]
+            + phi_q[373] * y[70];
+        out[32] = phi_q[107] * y[14] + phi_q[232] * y[41] + phi_q[240] * y[42]
+            + phi_q[374] * y[70];
+        out[33] = phi_q[93] * y[12] + phi_q[101] * y[13] + phi_q[108] * y[14]
+            + phi_q[224] * y[38];
+        out[34] = phi_q[94] * y[12] + phi_q[102] * y[13] + phi_q[109] * y[14]
+            + phi_q[226] * y[39];
+        out[35] = phi_q[95] * y[12] + phi_q[103] * y[13] + phi_q[228] * y[40];
+        out[36] = phi_q[114] * y[15] + phi_q[253] * y[46] + phi_q[261] * y[47]
+            + phi_q[381] * y[71];
+        out[37] = phi_q[122] * y[16] + phi_q[254] * y[46] + phi_q[262] * y[47]
+            + phi_q[382] * y[71];
+        out[38] = phi_q[129] * y[17] + phi_q[255] * y[46] + phi_q[263] * y[47]
+            + phi_q[383] * y[71];
+        out[39] = phi_q[115] * y[15] + phi_q[123] * y[16] + phi_q[130] * y[17]
+            + phi_q[247] * y[43];
+        out[40] = phi_q[116] * y[15] + phi_q[124] * y[16] + phi_q[131] * y[17]
+            + phi_q[249] * y[44];
+        out[41] = phi_q[117] * y[15] + phi_q[125] * y[16] + phi_q[251] * y[45];
+        out[42] = phi_q[141] * y[21] + phi_q[149] * y[22] + phi_q[270] * y[48]
+            + phi_q[339] * y[66];
+        out[43] = phi_q[142] * y[21] + phi_q[150] * y[22] + phi_q[274] * y[49]
+            + phi_q[340] * y[66];
+        out[44] = phi_q[143] * y[21] + phi_q[151] * y[22] + phi_q[278] * y[50]
+            + phi_q[341] * y[66];
+        out[45] = phi_q[133] * y[18] + phi_q[152] * y[22] + phi_q[271] * y[48]
+            + phi_q[275] * y[49] + phi_q[279] * y[50] + phi_q[342] * y[66];
+        out[46] = phi_q[135] * y[19] + phi_q[144] * y[21] + phi_q[153] * y[22]
+            + phi_q[272] * y[48] + phi_q[276] * y[49] + phi_q[280] * y[50]
+            + phi_q[343] * y[66];
+        out[47] = phi_q[137] * y[20] + phi_q[145] * y[21] + phi_q[154] * y[22]
+            + phi_q[273] * y[48] + phi_q[277] * y[49] + phi_q[344] * y[66];
+        out[48] = phi_q[164] * y[26] + phi_q[172] * y[27] + phi_q[281] * y[51]
+            + phi_q[348] * y[67];
+        out[49] = phi_q[165] * y[26] + phi_q[173] * y[27] + phi_q[285] * y[52]
+            + phi_q[349] * y[67];
+        out[50] = phi_q[166] * y[26] + phi_q[174] * y[27] + phi_q[289] * y[53]
+            + phi_q[350] * y[67];
+        out[51] = phi_q[156] * y[23] + phi_q[175] * y[27] + phi_q[282] * y[51]
+            + phi_q[286] * y[52] + phi_q[290] * y[53] + phi_q[351] * y[67];
+        out[52] = phi_q[158] * y[24] + phi_q[167] * y[26] + phi_q[176] * y[27]
+            + phi_q[283] * y[51] + phi_q[287] * y[52] + phi_q[291] * y[53]
+            + phi_q[352] * y[67];
+        out[53] = phi_q[160] * y[25] + phi_q[168] * y[26] + phi_q[177] * y[27]
+            + phi_q[284] * y[51] + phi_q[288] * y[52] + phi_q[353] * y[67];
+        out[54] = phi_q[187] * y[31] + phi_q[195] * y[32] + phi_q[292] * y[54]
+            + phi_q[357] * y[68];
+        out[55] = phi_q[188] * y[31] + phi_q[196] * y[32] + phi_q[296] * y[55]
+            + phi_q[358] * y[68];
+        out[56] = phi_q[189] * y[31] + phi_q[197] * y[32] + phi_q[300] * y[56]
+            + phi_q[359] * y[68];
+        out[57] = phi_q[179] * y[28] + phi_q[198] * y[32] + phi_q[293] * y[54]
+            + phi_q[297] * y[55] + phi_q[301] * y[56] + phi_q[360] * y[68];
+        out[58] = phi_q[181] * y[29] + phi_q[190] * y[31] + phi_q[199] * y[32]
+            + phi_q[294] * y[54] + phi_q[298] * y[55] + phi_q[302] * y[56]
+            + phi_q[361] * y[68];
+        out[59] = phi_q[183] * y[30] + phi_q[191] * y[31] + phi_q[200] * y[32]
+            + phi_q[295] * y[54] + phi_q[299] * y[55] + phi_q[362] * y[68];
+        out[60] = phi_q[210] * y[36] + phi_q[218] * y[37] + phi_q[303] * y[57]
+            + phi_q[366] * y[69];
+        out[61] = phi_q[211] * y[36] + phi_q[219] * y[37] + phi_q[307] * y[58]
+            + phi_q[367] * y[69];
+        out[62] = phi_q[212] * y[36] + phi_q[220] * y[37] + phi_q[311] * y[59]
+            + phi_q[368] * y[69];
+        out[63] = phi_q[202] * y[33] + phi_q[221] * y[37] + phi_q[304] * y[57]
+            + phi_q[308] * y[58] + phi_q[312] * y[59] + phi_q[369] * y[69];
+        out[64] = phi_q[204] * y[34] + phi_q[213] * y[36] + phi_q[222] * y[37]
+            + phi_q[305] * y[57] + phi_q[309] * y[58] + phi_q[313] * y[59]
+            + phi_q[370] * y[69];
+        out[65] = phi_q[206] * y[35] + phi_q[214] * y[36] + phi_q[223] * y[37]
+            + phi_q[306] * y[57] + phi_q[310] * y[58] + phi_q[371] * y[69];
+        out[66] = phi_q[233] * y[41] + phi_q[241] * y[42] + phi_q[314] * y[60]
+            + phi_q[375] * y[70];
+        out[67] = phi_q[234] * y[41] + phi_q[242] * y[42] + phi_q[318] * y[61]
+            + phi_q[376] * y[70];
+        out[68] = phi_q[235] * y[41] + phi_q[243] * y[42] + phi_q[322] * y[62]
+            + phi_q[377] * y[70];
+        out[69] = phi_q[225] * y[38] + phi_q[244] * y[42] + phi_q[315] * y[60]
+            + phi_q[319] * y[61] + phi_q[323] * y[62] + phi_q[378] * y[70];
+        out[70] = phi_q[227] * y[39] + phi_q[236] * y[41] + phi_q[245] * y[42]
+            + phi_q[316] * y[60] + phi_q[320] * y[61] + phi_q[324] * y[62]
+            + phi_q[379] * y[70];
+        out[71] = phi_q[229] * y[40] + phi_q[237] * y[41] + phi_q[246] * y[42]
+            + phi_q[317] * y[60] + phi_q[321] * y[61] + phi_q[380] * y[70];
+        out[72] = phi_q[256] * y[46] + phi_q[264] * y[47] + phi_q[325] * y[63]
+            + phi_q[384] * y[71];
+        out[73] = phi_q[257] * y[46] + phi_q[265] * y[47] + phi_q[329] * y[64]
+            + phi_q[385] * y[71];
+        out[74] = phi_q[258] * y[46] + phi_q[266] * y[47] + phi_q[333] * y[65]
+            + phi_q[386] * y[71];
+        out[75] = phi_q[248] * y[43] + phi_q[267] * y[47] + phi_q[326] * y[63]
+            + phi_q[330] * y[64] + phi_q[334] * y[65] + phi_q[387] * y[71];
+        out[76] = phi_q[250] * y[44] + phi_q[259] * y[46] + phi_q[268] * y[47]
+            + phi_q[327] * y[63] + phi_q[331] * y[64] + phi_q[335] * y[65]
+            + phi_q[388] * y[71];
+        out[77] = phi_q[252] * y[45] + phi_q[260] * y[46] + phi_q[269] * y[47]
+            + phi_q[328] * y[63] + phi_q[332] * y[64] + phi_q[389] * y[71];
+        Ok(())
+    }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
         k: &[f64],
@@ -68620,6 +68980,9 @@ pub mod reduced {
             storage: 851,
             factor: kkt_factor,
             solve: kkt_solve,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
         };
         #[allow(
             unused_variables,
@@ -79469,6 +79832,169 @@ pub mod reduced {
             }
             Ok(())
         }
+        fn kkt_transpose_times(
+            phi_q: &[f64],
+            y: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 354] = phi_q
+                .try_into()
+                .map_err(|_| length_error(354, phi_q.len()))?;
+            let y: &[f64; 54] = y.try_into().map_err(|_| length_error(54, y.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 60] = out
+                .try_into()
+                .map_err(|_| length_error(60, out_len))?;
+            out[0] = phi_q[0] * y[0] + phi_q[22] * y[3] + phi_q[44] * y[6]
+                + phi_q[66] * y[9] + phi_q[88] * y[12] + phi_q[110] * y[15];
+            out[1] = phi_q[8] * y[1] + phi_q[30] * y[4] + phi_q[52] * y[7]
+                + phi_q[74] * y[10] + phi_q[96] * y[13] + phi_q[118] * y[16];
+            out[2] = phi_q[16] * y[2] + phi_q[38] * y[5] + phi_q[60] * y[8]
+                + phi_q[82] * y[11] + phi_q[104] * y[14] + phi_q[126] * y[17];
+            out[3] = phi_q[1] * y[0] + phi_q[9] * y[1] + phi_q[17] * y[2]
+                + phi_q[23] * y[3] + phi_q[31] * y[4] + phi_q[39] * y[5]
+                + phi_q[45] * y[6] + phi_q[53] * y[7] + phi_q[61] * y[8]
+                + phi_q[67] * y[9] + phi_q[75] * y[10] + phi_q[83] * y[11]
+                + phi_q[89] * y[12] + phi_q[97] * y[13] + phi_q[105] * y[14]
+                + phi_q[111] * y[15] + phi_q[119] * y[16] + phi_q[127] * y[17];
+            out[4] = phi_q[2] * y[0] + phi_q[10] * y[1] + phi_q[18] * y[2]
+                + phi_q[24] * y[3] + phi_q[32] * y[4] + phi_q[40] * y[5]
+                + phi_q[46] * y[6] + phi_q[54] * y[7] + phi_q[62] * y[8]
+                + phi_q[68] * y[9] + phi_q[76] * y[10] + phi_q[84] * y[11]
+                + phi_q[90] * y[12] + phi_q[98] * y[13] + phi_q[106] * y[14]
+                + phi_q[112] * y[15] + phi_q[120] * y[16] + phi_q[128] * y[17];
+            out[5] = phi_q[3] * y[0] + phi_q[11] * y[1] + phi_q[25] * y[3]
+                + phi_q[33] * y[4] + phi_q[47] * y[6] + phi_q[55] * y[7]
+                + phi_q[69] * y[9] + phi_q[77] * y[10] + phi_q[91] * y[12]
+                + phi_q[99] * y[13] + phi_q[113] * y[15] + phi_q[121] * y[16];
+            out[6] = phi_q[4] * y[0] + phi_q[132] * y[18] + phi_q[140] * y[19]
+                + phi_q[300] * y[48];
+            out[7] = phi_q[12] * y[1] + phi_q[133] * y[18] + phi_q[141] * y[19]
+                + phi_q[301] * y[48];
+            out[8] = phi_q[19] * y[2] + phi_q[134] * y[18] + phi_q[142] * y[19]
+                + phi_q[302] * y[48];
+            out[9] = phi_q[5] * y[0] + phi_q[13] * y[1] + phi_q[20] * y[2]
+                + phi_q[143] * y[19] + phi_q[234] * y[30] + phi_q[238] * y[31]
+                + phi_q[242] * y[32] + phi_q[303] * y[48];
+            out[10] = phi_q[6] * y[0] + phi_q[14] * y[1] + phi_q[21] * y[2]
+                + phi_q[135] * y[18] + phi_q[144] * y[19] + phi_q[235] * y[30]
+                + phi_q[239] * y[31] + phi_q[243] * y[32] + phi_q[304] * y[48];
+            out[11] = phi_q[7] * y[0] + phi_q[15] * y[1] + phi_q[136] * y[18]
+                + phi_q[145] * y[19] + phi_q[236] * y[30] + phi_q[240] * y[31]
+                + phi_q[305] * y[48];
+            out[12] = phi_q[26] * y[3] + phi_q[149] * y[20] + phi_q[157] * y[21]
+                + phi_q[309] * y[49];
+            out[13] = phi_q[34] * y[4] + phi_q[150] * y[20] + phi_q[158] * y[21]
+                + phi_q[310] * y[49];
+            out[14] = phi_q[41] * y[5] + phi_q[151] * y[20] + phi_q[159] * y[21]
+                + phi_q[311] * y[49];
+            out[15] = phi_q[27] * y[3] + phi_q[35] * y[4] + phi_q[42] * y[5]
+                + phi_q[160] * y[21] + phi_q[245] * y[33] + phi_q[249] * y[34]
+                + phi_q[253] * y[35] + phi_q[312] * y[49];
+            out[16] = phi_q[28] * y[3] + phi_q[36] * y[4] + phi_q[43] * y[5]
+                + phi_q[152] * y[20] + phi_q[161] * y[21] + phi_q[246] * y[33]
+                + phi_q[250] * y[34] + phi_q[254] * y[35] + phi_q[313] * y[49];
+            out[17] = phi_q[29] * y[3] + phi_q[37] * y[4] + phi_q[153] * y[20]
+                + phi_q[162] * y[21] + phi_q[247] * y[33] + phi_q[251] * y[34]
+                + phi_q[314] * y[49];
+            out[18] = phi_q[48] * y[6] + phi_q[166] * y[22] + phi_q[174] * y[23]
+                + phi_q[318] * y[50];
+            out[19] = phi_q[56] * y[7] + phi_q[167] * y[22] + phi_q[175] * y[23]
+                + phi_q[319] * y[50];
+            out[20] = phi_q[63] * y[8] + phi_q[168] * y[22] + phi_q[176] * y[23]
+                + phi_q[320] * y[50];
+            out[21] = phi_q[49] * y[6] + phi_q[57] * y[7] + phi_q[64] * y[8]
+                + phi_q[177] * y[23] + phi_q[256] * y[36] + phi_q[260] * y[37]
+                + phi_q[264] * y[38] + phi_q[321] * y[50];
+            out[22] = phi_q[50] * y[6] + phi_q[58] * y[7] + phi_q[65] * y[8]
+                + phi_q[169] * y[22] + phi_q[178] * y[23] + phi_q[257] * y[36]
+                + phi_q[261] * y[37] + phi_q[265] * y[38] + phi_q[322] * y[50];
+            out[23] = phi_q[51] * y[6] + phi_q[59] * y[7] + phi_q[170] * y[22]
+                + phi_q[179] * y[23] + phi_q[258] * y[36] + phi_q[262] * y[37]
+                + phi_q[323] * y[50];
+            out[24] = phi_q[70] * y[9] + phi_q[183] * y[24] + phi_q[191] * y[25]
+                + phi_q[327] * y[51];
+            out[25] = phi_q[78] * y[10] + phi_q[184] * y[24] + phi_q[192] * y[25]
+                + phi_q[328] * y[51];
+            out[26] = phi_q[85] * y[11] + phi_q[185] * y[24] + phi_q[193] * y[25]
+                + phi_q[329] * y[51];
+            out[27] = phi_q[71] * y[9] + phi_q[79] * y[10] + phi_q[86] * y[11]
+                + phi_q[194] * y[25] + phi_q[267] * y[39] + phi_q[271] * y[40]
+                + phi_q[275] * y[41] + phi_q[330] * y[51];
+            out[28] = phi_q[72] * y[9] + phi_q[80] * y[10] + phi_q[87] * y[11]
+                + phi_q[186] * y[24] + phi_q[195] * y[25] + phi_q[268] * y[39]
+                + phi_q[272] * y[40] + phi_q[276] * y[41] + phi_q[331] * y[51];
+            out[29] = phi_q[73] * y[9] + phi_q[81] * y[10] + phi_q[187] * y[24]
+                + phi_q[196] * y[25] + phi_q[269] * y[39] + phi_q[273] * y[40]
+                + phi_q[332] * y[51];
+            out[30] = phi_q[92] * y[12] + phi_q[200] * y[26] + phi_q[208] * y[27]
+                + phi_q[336] * y[52];
+            out[31] = phi_q[100] * y[13] + phi_q[201] * y[26] + phi_q[209] * y[27]
+                + phi_q[337] * y[52];
+            out[32] = phi_q[107] * y[14] + phi_q[202] * y[26] + phi_q[210] * y[27]
+                + phi_q[338] * y[52];
+            out[33] = phi_q[93] * y[12] + phi_q[101] * y[13] + phi_q[108] * y[14]
+                + phi_q[211] * y[27] + phi_q[278] * y[42] + phi_q[282] * y[43]
+                + phi_q[286] * y[44] + phi_q[339] * y[52];
+            out[34] = phi_q[94] * y[12] + phi_q[102] * y[13] + phi_q[109] * y[14]
+                + phi_q[203] * y[26] + phi_q[212] * y[27] + phi_q[279] * y[42]
+                + phi_q[283] * y[43] + phi_q[287] * y[44] + phi_q[340] * y[52];
+            out[35] = phi_q[95] * y[12] + phi_q[103] * y[13] + phi_q[204] * y[26]
+                + phi_q[213] * y[27] + phi_q[280] * y[42] + phi_q[284] * y[43]
+                + phi_q[341] * y[52];
+            out[36] = phi_q[114] * y[15] + phi_q[217] * y[28] + phi_q[225] * y[29]
+                + phi_q[345] * y[53];
+            out[37] = phi_q[122] * y[16] + phi_q[218] * y[28] + phi_q[226] * y[29]
+                + phi_q[346] * y[53];
+            out[38] = phi_q[129] * y[17] + phi_q[219] * y[28] + phi_q[227] * y[29]
+                + phi_q[347] * y[53];
+            out[39] = phi_q[115] * y[15] + phi_q[123] * y[16] + phi_q[130] * y[17]
+                + phi_q[228] * y[29] + phi_q[289] * y[45] + phi_q[293] * y[46]
+                + phi_q[297] * y[47] + phi_q[348] * y[53];
+            out[40] = phi_q[116] * y[15] + phi_q[124] * y[16] + phi_q[131] * y[17]
+                + phi_q[220] * y[28] + phi_q[229] * y[29] + phi_q[290] * y[45]
+                + phi_q[294] * y[46] + phi_q[298] * y[47] + phi_q[349] * y[53];
+            out[41] = phi_q[117] * y[15] + phi_q[125] * y[16] + phi_q[221] * y[28]
+                + phi_q[230] * y[29] + phi_q[291] * y[45] + phi_q[295] * y[46]
+                + phi_q[350] * y[53];
+            out[42] = phi_q[137] * y[18] + phi_q[146] * y[19] + phi_q[237] * y[30]
+                + phi_q[306] * y[48];
+            out[43] = phi_q[138] * y[18] + phi_q[147] * y[19] + phi_q[241] * y[31]
+                + phi_q[307] * y[48];
+            out[44] = phi_q[139] * y[18] + phi_q[148] * y[19] + phi_q[244] * y[32]
+                + phi_q[308] * y[48];
+            out[45] = phi_q[154] * y[20] + phi_q[163] * y[21] + phi_q[248] * y[33]
+                + phi_q[315] * y[49];
+            out[46] = phi_q[155] * y[20] + phi_q[164] * y[21] + phi_q[252] * y[34]
+                + phi_q[316] * y[49];
+            out[47] = phi_q[156] * y[20] + phi_q[165] * y[21] + phi_q[255] * y[35]
+                + phi_q[317] * y[49];
+            out[48] = phi_q[171] * y[22] + phi_q[180] * y[23] + phi_q[259] * y[36]
+                + phi_q[324] * y[50];
+            out[49] = phi_q[172] * y[22] + phi_q[181] * y[23] + phi_q[263] * y[37]
+                + phi_q[325] * y[50];
+            out[50] = phi_q[173] * y[22] + phi_q[182] * y[23] + phi_q[266] * y[38]
+                + phi_q[326] * y[50];
+            out[51] = phi_q[188] * y[24] + phi_q[197] * y[25] + phi_q[270] * y[39]
+                + phi_q[333] * y[51];
+            out[52] = phi_q[189] * y[24] + phi_q[198] * y[25] + phi_q[274] * y[40]
+                + phi_q[334] * y[51];
+            out[53] = phi_q[190] * y[24] + phi_q[199] * y[25] + phi_q[277] * y[41]
+                + phi_q[335] * y[51];
+            out[54] = phi_q[205] * y[26] + phi_q[214] * y[27] + phi_q[281] * y[42]
+                + phi_q[342] * y[52];
+            out[55] = phi_q[206] * y[26] + phi_q[215] * y[27] + phi_q[285] * y[43]
+                + phi_q[343] * y[52];
+            out[56] = phi_q[207] * y[26] + phi_q[216] * y[27] + phi_q[288] * y[44]
+                + phi_q[344] * y[52];
+            out[57] = phi_q[222] * y[28] + phi_q[231] * y[29] + phi_q[292] * y[45]
+                + phi_q[351] * y[53];
+            out[58] = phi_q[223] * y[28] + phi_q[232] * y[29] + phi_q[296] * y[46]
+                + phi_q[352] * y[53];
+            out[59] = phi_q[224] * y[28] + phi_q[233] * y[29] + phi_q[299] * y[47]
+                + phi_q[353] * y[53];
+            Ok(())
+        }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(
             k: &[f64],
@@ -84155,6 +84681,9 @@ pub mod reduced {
             storage: 819,
             factor: kkt_factor,
             solve: kkt_solve,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
         };
         #[allow(
             unused_variables,
@@ -94254,6 +94783,169 @@ pub mod reduced {
                 let v1223 = v1222 * st[59];
                 x[59] = v1223;
             }
+            Ok(())
+        }
+        fn kkt_transpose_times(
+            phi_q: &[f64],
+            y: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 354] = phi_q
+                .try_into()
+                .map_err(|_| length_error(354, phi_q.len()))?;
+            let y: &[f64; 54] = y.try_into().map_err(|_| length_error(54, y.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 60] = out
+                .try_into()
+                .map_err(|_| length_error(60, out_len))?;
+            out[0] = phi_q[0] * y[0] + phi_q[22] * y[3] + phi_q[44] * y[6]
+                + phi_q[66] * y[9] + phi_q[88] * y[12] + phi_q[110] * y[15];
+            out[1] = phi_q[8] * y[1] + phi_q[30] * y[4] + phi_q[52] * y[7]
+                + phi_q[74] * y[10] + phi_q[96] * y[13] + phi_q[118] * y[16];
+            out[2] = phi_q[16] * y[2] + phi_q[38] * y[5] + phi_q[60] * y[8]
+                + phi_q[82] * y[11] + phi_q[104] * y[14] + phi_q[126] * y[17];
+            out[3] = phi_q[1] * y[0] + phi_q[9] * y[1] + phi_q[17] * y[2]
+                + phi_q[23] * y[3] + phi_q[31] * y[4] + phi_q[39] * y[5]
+                + phi_q[45] * y[6] + phi_q[53] * y[7] + phi_q[61] * y[8]
+                + phi_q[67] * y[9] + phi_q[75] * y[10] + phi_q[83] * y[11]
+                + phi_q[89] * y[12] + phi_q[97] * y[13] + phi_q[105] * y[14]
+                + phi_q[111] * y[15] + phi_q[119] * y[16] + phi_q[127] * y[17];
+            out[4] = phi_q[2] * y[0] + phi_q[10] * y[1] + phi_q[18] * y[2]
+                + phi_q[24] * y[3] + phi_q[32] * y[4] + phi_q[40] * y[5]
+                + phi_q[46] * y[6] + phi_q[54] * y[7] + phi_q[62] * y[8]
+                + phi_q[68] * y[9] + phi_q[76] * y[10] + phi_q[84] * y[11]
+                + phi_q[90] * y[12] + phi_q[98] * y[13] + phi_q[106] * y[14]
+                + phi_q[112] * y[15] + phi_q[120] * y[16] + phi_q[128] * y[17];
+            out[5] = phi_q[3] * y[0] + phi_q[11] * y[1] + phi_q[25] * y[3]
+                + phi_q[33] * y[4] + phi_q[47] * y[6] + phi_q[55] * y[7]
+                + phi_q[69] * y[9] + phi_q[77] * y[10] + phi_q[91] * y[12]
+                + phi_q[99] * y[13] + phi_q[113] * y[15] + phi_q[121] * y[16];
+            out[6] = phi_q[4] * y[0] + phi_q[132] * y[18] + phi_q[140] * y[19]
+                + phi_q[300] * y[48];
+            out[7] = phi_q[12] * y[1] + phi_q[133] * y[18] + phi_q[141] * y[19]
+                + phi_q[301] * y[48];
+            out[8] = phi_q[19] * y[2] + phi_q[134] * y[18] + phi_q[142] * y[19]
+                + phi_q[302] * y[48];
+            out[9] = phi_q[5] * y[0] + phi_q[13] * y[1] + phi_q[20] * y[2]
+                + phi_q[143] * y[19] + phi_q[234] * y[30] + phi_q[238] * y[31]
+                + phi_q[242] * y[32] + phi_q[303] * y[48];
+            out[10] = phi_q[6] * y[0] + phi_q[14] * y[1] + phi_q[21] * y[2]
+                + phi_q[135] * y[18] + phi_q[144] * y[19] + phi_q[235] * y[30]
+                + phi_q[239] * y[31] + phi_q[243] * y[32] + phi_q[304] * y[48];
+            out[11] = phi_q[7] * y[0] + phi_q[15] * y[1] + phi_q[136] * y[18]
+                + phi_q[145] * y[19] + phi_q[236] * y[30] + phi_q[240] * y[31]
+                + phi_q[305] * y[48];
+            out[12] = phi_q[26] * y[3] + phi_q[149] * y[20] + phi_q[157] * y[21]
+                + phi_q[309] * y[49];
+            out[13] = phi_q[34] * y[4] + phi_q[150] * y[20] + phi_q[158] * y[21]
+                + phi_q[310] * y[49];
+            out[14] = phi_q[41] * y[5] + phi_q[151] * y[20] + phi_q[159] * y[21]
+                + phi_q[311] * y[49];
+            out[15] = phi_q[27] * y[3] + phi_q[35] * y[4] + phi_q[42] * y[5]
+                + phi_q[160] * y[21] + phi_q[245] * y[33] + phi_q[249] * y[34]
+                + phi_q[253] * y[35] + phi_q[312] * y[49];
+            out[16] = phi_q[28] * y[3] + phi_q[36] * y[4] + phi_q[43] * y[5]
+                + phi_q[152] * y[20] + phi_q[161] * y[21] + phi_q[246] * y[33]
+                + phi_q[250] * y[34] + phi_q[254] * y[35] + phi_q[313] * y[49];
+            out[17] = phi_q[29] * y[3] + phi_q[37] * y[4] + phi_q[153] * y[20]
+                + phi_q[162] * y[21] + phi_q[247] * y[33] + phi_q[251] * y[34]
+                + phi_q[314] * y[49];
+            out[18] = phi_q[48] * y[6] + phi_q[166] * y[22] + phi_q[174] * y[23]
+                + phi_q[318] * y[50];
+            out[19] = phi_q[56] * y[7] + phi_q[167] * y[22] + phi_q[175] * y[23]
+                + phi_q[319] * y[50];
+            out[20] = phi_q[63] * y[8] + phi_q[168] * y[22] + phi_q[176] * y[23]
+                + phi_q[320] * y[50];
+            out[21] = phi_q[49] * y[6] + phi_q[57] * y[7] + phi_q[64] * y[8]
+                + phi_q[177] * y[23] + phi_q[256] * y[36] + phi_q[260] * y[37]
+                + phi_q[264] * y[38] + phi_q[321] * y[50];
+            out[22] = phi_q[50] * y[6] + phi_q[58] * y[7] + phi_q[65] * y[8]
+                + phi_q[169] * y[22] + phi_q[178] * y[23] + phi_q[257] * y[36]
+                + phi_q[261] * y[37] + phi_q[265] * y[38] + phi_q[322] * y[50];
+            out[23] = phi_q[51] * y[6] + phi_q[59] * y[7] + phi_q[170] * y[22]
+                + phi_q[179] * y[23] + phi_q[258] * y[36] + phi_q[262] * y[37]
+                + phi_q[323] * y[50];
+            out[24] = phi_q[70] * y[9] + phi_q[183] * y[24] + phi_q[191] * y[25]
+                + phi_q[327] * y[51];
+            out[25] = phi_q[78] * y[10] + phi_q[184] * y[24] + phi_q[192] * y[25]
+                + phi_q[328] * y[51];
+            out[26] = phi_q[85] * y[11] + phi_q[185] * y[24] + phi_q[193] * y[25]
+                + phi_q[329] * y[51];
+            out[27] = phi_q[71] * y[9] + phi_q[79] * y[10] + phi_q[86] * y[11]
+                + phi_q[194] * y[25] + phi_q[267] * y[39] + phi_q[271] * y[40]
+                + phi_q[275] * y[41] + phi_q[330] * y[51];
+            out[28] = phi_q[72] * y[9] + phi_q[80] * y[10] + phi_q[87] * y[11]
+                + phi_q[186] * y[24] + phi_q[195] * y[25] + phi_q[268] * y[39]
+                + phi_q[272] * y[40] + phi_q[276] * y[41] + phi_q[331] * y[51];
+            out[29] = phi_q[73] * y[9] + phi_q[81] * y[10] + phi_q[187] * y[24]
+                + phi_q[196] * y[25] + phi_q[269] * y[39] + phi_q[273] * y[40]
+                + phi_q[332] * y[51];
+            out[30] = phi_q[92] * y[12] + phi_q[200] * y[26] + phi_q[208] * y[27]
+                + phi_q[336] * y[52];
+            out[31] = phi_q[100] * y[13] + phi_q[201] * y[26] + phi_q[209] * y[27]
+                + phi_q[337] * y[52];
+            out[32] = phi_q[107] * y[14] + phi_q[202] * y[26] + phi_q[210] * y[27]
+                + phi_q[338] * y[52];
+            out[33] = phi_q[93] * y[12] + phi_q[101] * y[13] + phi_q[108] * y[14]
+                + phi_q[211] * y[27] + phi_q[278] * y[42] + phi_q[282] * y[43]
+                + phi_q[286] * y[44] + phi_q[339] * y[52];
+            out[34] = phi_q[94] * y[12] + phi_q[102] * y[13] + phi_q[109] * y[14]
+                + phi_q[203] * y[26] + phi_q[212] * y[27] + phi_q[279] * y[42]
+                + phi_q[283] * y[43] + phi_q[287] * y[44] + phi_q[340] * y[52];
+            out[35] = phi_q[95] * y[12] + phi_q[103] * y[13] + phi_q[204] * y[26]
+                + phi_q[213] * y[27] + phi_q[280] * y[42] + phi_q[284] * y[43]
+                + phi_q[341] * y[52];
+            out[36] = phi_q[114] * y[15] + phi_q[217] * y[28] + phi_q[225] * y[29]
+                + phi_q[345] * y[53];
+            out[37] = phi_q[122] * y[16] + phi_q[218] * y[28] + phi_q[226] * y[29]
+                + phi_q[346] * y[53];
+            out[38] = phi_q[129] * y[17] + phi_q[219] * y[28] + phi_q[227] * y[29]
+                + phi_q[347] * y[53];
+            out[39] = phi_q[115] * y[15] + phi_q[123] * y[16] + phi_q[130] * y[17]
+                + phi_q[228] * y[29] + phi_q[289] * y[45] + phi_q[293] * y[46]
+                + phi_q[297] * y[47] + phi_q[348] * y[53];
+            out[40] = phi_q[116] * y[15] + phi_q[124] * y[16] + phi_q[131] * y[17]
+                + phi_q[220] * y[28] + phi_q[229] * y[29] + phi_q[290] * y[45]
+                + phi_q[294] * y[46] + phi_q[298] * y[47] + phi_q[349] * y[53];
+            out[41] = phi_q[117] * y[15] + phi_q[125] * y[16] + phi_q[221] * y[28]
+                + phi_q[230] * y[29] + phi_q[291] * y[45] + phi_q[295] * y[46]
+                + phi_q[350] * y[53];
+            out[42] = phi_q[137] * y[18] + phi_q[146] * y[19] + phi_q[237] * y[30]
+                + phi_q[306] * y[48];
+            out[43] = phi_q[138] * y[18] + phi_q[147] * y[19] + phi_q[241] * y[31]
+                + phi_q[307] * y[48];
+            out[44] = phi_q[139] * y[18] + phi_q[148] * y[19] + phi_q[244] * y[32]
+                + phi_q[308] * y[48];
+            out[45] = phi_q[154] * y[20] + phi_q[163] * y[21] + phi_q[248] * y[33]
+                + phi_q[315] * y[49];
+            out[46] = phi_q[155] * y[20] + phi_q[164] * y[21] + phi_q[252] * y[34]
+                + phi_q[316] * y[49];
+            out[47] = phi_q[156] * y[20] + phi_q[165] * y[21] + phi_q[255] * y[35]
+                + phi_q[317] * y[49];
+            out[48] = phi_q[171] * y[22] + phi_q[180] * y[23] + phi_q[259] * y[36]
+                + phi_q[324] * y[50];
+            out[49] = phi_q[172] * y[22] + phi_q[181] * y[23] + phi_q[263] * y[37]
+                + phi_q[325] * y[50];
+            out[50] = phi_q[173] * y[22] + phi_q[182] * y[23] + phi_q[266] * y[38]
+                + phi_q[326] * y[50];
+            out[51] = phi_q[188] * y[24] + phi_q[197] * y[25] + phi_q[270] * y[39]
+                + phi_q[333] * y[51];
+            out[52] = phi_q[189] * y[24] + phi_q[198] * y[25] + phi_q[274] * y[40]
+                + phi_q[334] * y[51];
+            out[53] = phi_q[190] * y[24] + phi_q[199] * y[25] + phi_q[277] * y[41]
+                + phi_q[335] * y[51];
+            out[54] = phi_q[205] * y[26] + phi_q[214] * y[27] + phi_q[281] * y[42]
+                + phi_q[342] * y[52];
+            out[55] = phi_q[206] * y[26] + phi_q[215] * y[27] + phi_q[285] * y[43]
+                + phi_q[343] * y[52];
+            out[56] = phi_q[207] * y[26] + phi_q[216] * y[27] + phi_q[288] * y[44]
+                + phi_q[344] * y[52];
+            out[57] = phi_q[222] * y[28] + phi_q[231] * y[29] + phi_q[292] * y[45]
+                + phi_q[351] * y[53];
+            out[58] = phi_q[223] * y[28] + phi_q[232] * y[29] + phi_q[296] * y[46]
+                + phi_q[352] * y[53];
+            out[59] = phi_q[224] * y[28] + phi_q[233] * y[29] + phi_q[299] * y[47]
+                + phi_q[353] * y[53];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

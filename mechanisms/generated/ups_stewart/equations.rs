@@ -54650,6 +54650,9 @@ pub mod exact {
         storage: 1575,
         factor: kkt_factor,
         solve: kkt_solve,
+        phi_q_rows: &PHI_Q_ROWS,
+        phi_q_cols: &PHI_Q_COLS,
+        transpose_times: kkt_transpose_times,
     };
     #[allow(
         unused_variables,
@@ -75808,6 +75811,277 @@ pub mod exact {
             x[89] = v2300;
             x[90] = v2298;
         }
+        Ok(())
+    }
+    fn kkt_transpose_times(
+        phi_q: &[f64],
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let phi_q: &[f64; 658] = phi_q
+            .try_into()
+            .map_err(|_| length_error(658, phi_q.len()))?;
+        let y: &[f64; 91] = y.try_into().map_err(|_| length_error(91, y.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 91] = out.try_into().map_err(|_| length_error(91, out_len))?;
+        out[0] = phi_q[0] * y[0] + phi_q[28] * y[3] + phi_q[56] * y[6] + phi_q[84] * y[9]
+            + phi_q[112] * y[12] + phi_q[140] * y[15];
+        out[1] = phi_q[10] * y[1] + phi_q[38] * y[4] + phi_q[66] * y[7]
+            + phi_q[94] * y[10] + phi_q[122] * y[13] + phi_q[150] * y[16];
+        out[2] = phi_q[18] * y[2] + phi_q[46] * y[5] + phi_q[74] * y[8]
+            + phi_q[102] * y[11] + phi_q[130] * y[14] + phi_q[158] * y[17];
+        out[3] = phi_q[1] * y[0] + phi_q[11] * y[1] + phi_q[19] * y[2] + phi_q[29] * y[3]
+            + phi_q[39] * y[4] + phi_q[47] * y[5] + phi_q[57] * y[6] + phi_q[67] * y[7]
+            + phi_q[75] * y[8] + phi_q[85] * y[9] + phi_q[95] * y[10]
+            + phi_q[103] * y[11] + phi_q[113] * y[12] + phi_q[123] * y[13]
+            + phi_q[131] * y[14] + phi_q[141] * y[15] + phi_q[151] * y[16]
+            + phi_q[159] * y[17] + phi_q[606] * y[78];
+        out[4] = phi_q[2] * y[0] + phi_q[12] * y[1] + phi_q[20] * y[2] + phi_q[30] * y[3]
+            + phi_q[40] * y[4] + phi_q[48] * y[5] + phi_q[58] * y[6] + phi_q[68] * y[7]
+            + phi_q[76] * y[8] + phi_q[86] * y[9] + phi_q[96] * y[10]
+            + phi_q[104] * y[11] + phi_q[114] * y[12] + phi_q[124] * y[13]
+            + phi_q[132] * y[14] + phi_q[142] * y[15] + phi_q[152] * y[16]
+            + phi_q[160] * y[17] + phi_q[607] * y[78];
+        out[5] = phi_q[3] * y[0] + phi_q[13] * y[1] + phi_q[21] * y[2] + phi_q[31] * y[3]
+            + phi_q[41] * y[4] + phi_q[49] * y[5] + phi_q[59] * y[6] + phi_q[69] * y[7]
+            + phi_q[77] * y[8] + phi_q[87] * y[9] + phi_q[97] * y[10]
+            + phi_q[105] * y[11] + phi_q[115] * y[12] + phi_q[125] * y[13]
+            + phi_q[133] * y[14] + phi_q[143] * y[15] + phi_q[153] * y[16]
+            + phi_q[161] * y[17] + phi_q[608] * y[78];
+        out[6] = phi_q[4] * y[0] + phi_q[14] * y[1] + phi_q[22] * y[2] + phi_q[32] * y[3]
+            + phi_q[42] * y[4] + phi_q[50] * y[5] + phi_q[60] * y[6] + phi_q[70] * y[7]
+            + phi_q[78] * y[8] + phi_q[88] * y[9] + phi_q[98] * y[10]
+            + phi_q[106] * y[11] + phi_q[116] * y[12] + phi_q[126] * y[13]
+            + phi_q[134] * y[14] + phi_q[144] * y[15] + phi_q[154] * y[16]
+            + phi_q[162] * y[17] + phi_q[609] * y[78];
+        out[7] = phi_q[5] * y[0] + phi_q[184] * y[20] + phi_q[194] * y[21]
+            + phi_q[546] * y[72];
+        out[8] = phi_q[15] * y[1] + phi_q[185] * y[20] + phi_q[195] * y[21]
+            + phi_q[547] * y[72];
+        out[9] = phi_q[23] * y[2] + phi_q[186] * y[20] + phi_q[196] * y[21]
+            + phi_q[548] * y[72];
+        out[10] = phi_q[6] * y[0] + phi_q[16] * y[1] + phi_q[24] * y[2]
+            + phi_q[168] * y[18] + phi_q[176] * y[19] + phi_q[204] * y[22]
+            + phi_q[610] * y[79];
+        out[11] = phi_q[7] * y[0] + phi_q[25] * y[2] + phi_q[169] * y[18]
+            + phi_q[177] * y[19] + phi_q[205] * y[22] + phi_q[611] * y[79];
+        out[12] = phi_q[8] * y[0] + phi_q[17] * y[1] + phi_q[26] * y[2]
+            + phi_q[170] * y[18] + phi_q[178] * y[19] + phi_q[206] * y[22]
+            + phi_q[612] * y[79];
+        out[13] = phi_q[9] * y[0] + phi_q[27] * y[2] + phi_q[171] * y[18]
+            + phi_q[179] * y[19] + phi_q[207] * y[22] + phi_q[613] * y[79];
+        out[14] = phi_q[33] * y[3] + phi_q[228] * y[25] + phi_q[238] * y[26]
+            + phi_q[556] * y[73];
+        out[15] = phi_q[43] * y[4] + phi_q[229] * y[25] + phi_q[239] * y[26]
+            + phi_q[557] * y[73];
+        out[16] = phi_q[51] * y[5] + phi_q[230] * y[25] + phi_q[240] * y[26]
+            + phi_q[558] * y[73];
+        out[17] = phi_q[34] * y[3] + phi_q[44] * y[4] + phi_q[52] * y[5]
+            + phi_q[212] * y[23] + phi_q[220] * y[24] + phi_q[248] * y[27]
+            + phi_q[614] * y[80];
+        out[18] = phi_q[35] * y[3] + phi_q[53] * y[5] + phi_q[213] * y[23]
+            + phi_q[221] * y[24] + phi_q[249] * y[27] + phi_q[615] * y[80];
+        out[19] = phi_q[36] * y[3] + phi_q[45] * y[4] + phi_q[54] * y[5]
+            + phi_q[214] * y[23] + phi_q[222] * y[24] + phi_q[250] * y[27]
+            + phi_q[616] * y[80];
+        out[20] = phi_q[37] * y[3] + phi_q[55] * y[5] + phi_q[215] * y[23]
+            + phi_q[223] * y[24] + phi_q[251] * y[27] + phi_q[617] * y[80];
+        out[21] = phi_q[61] * y[6] + phi_q[272] * y[30] + phi_q[282] * y[31]
+            + phi_q[566] * y[74];
+        out[22] = phi_q[71] * y[7] + phi_q[273] * y[30] + phi_q[283] * y[31]
+            + phi_q[567] * y[74];
+        out[23] = phi_q[79] * y[8] + phi_q[274] * y[30] + phi_q[284] * y[31]
+            + phi_q[568] * y[74];
+        out[24] = phi_q[62] * y[6] + phi_q[72] * y[7] + phi_q[80] * y[8]
+            + phi_q[256] * y[28] + phi_q[264] * y[29] + phi_q[292] * y[32]
+            + phi_q[618] * y[81];
+        out[25] = phi_q[63] * y[6] + phi_q[81] * y[8] + phi_q[257] * y[28]
+            + phi_q[265] * y[29] + phi_q[293] * y[32] + phi_q[619] * y[81];
+        out[26] = phi_q[64] * y[6] + phi_q[73] * y[7] + phi_q[82] * y[8]
+            + phi_q[258] * y[28] + phi_q[266] * y[29] + phi_q[294] * y[32]
+            + phi_q[620] * y[81];
+        out[27] = phi_q[65] * y[6] + phi_q[83] * y[8] + phi_q[259] * y[28]
+            + phi_q[267] * y[29] + phi_q[295] * y[32] + phi_q[621] * y[81];
+        out[28] = phi_q[89] * y[9] + phi_q[316] * y[35] + phi_q[326] * y[36]
+            + phi_q[576] * y[75];
+        out[29] = phi_q[99] * y[10] + phi_q[317] * y[35] + phi_q[327] * y[36]
+            + phi_q[577] * y[75];
+        out[30] = phi_q[107] * y[11] + phi_q[318] * y[35] + phi_q[328] * y[36]
+            + phi_q[578] * y[75];
+        out[31] = phi_q[90] * y[9] + phi_q[100] * y[10] + phi_q[108] * y[11]
+            + phi_q[300] * y[33] + phi_q[308] * y[34] + phi_q[336] * y[37]
+            + phi_q[622] * y[82];
+        out[32] = phi_q[91] * y[9] + phi_q[109] * y[11] + phi_q[301] * y[33]
+            + phi_q[309] * y[34] + phi_q[337] * y[37] + phi_q[623] * y[82];
+        out[33] = phi_q[92] * y[9] + phi_q[101] * y[10] + phi_q[110] * y[11]
+            + phi_q[302] * y[33] + phi_q[310] * y[34] + phi_q[338] * y[37]
+            + phi_q[624] * y[82];
+        out[34] = phi_q[93] * y[9] + phi_q[111] * y[11] + phi_q[303] * y[33]
+            + phi_q[311] * y[34] + phi_q[339] * y[37] + phi_q[625] * y[82];
+        out[35] = phi_q[117] * y[12] + phi_q[360] * y[40] + phi_q[370] * y[41]
+            + phi_q[586] * y[76];
+        out[36] = phi_q[127] * y[13] + phi_q[361] * y[40] + phi_q[371] * y[41]
+            + phi_q[587] * y[76];
+        out[37] = phi_q[135] * y[14] + phi_q[362] * y[40] + phi_q[372] * y[41]
+            + phi_q[588] * y[76];
+        out[38] = phi_q[118] * y[12] + phi_q[128] * y[13] + phi_q[136] * y[14]
+            + phi_q[344] * y[38] + phi_q[352] * y[39] + phi_q[380] * y[42]
+            + phi_q[626] * y[83];
+        out[39] = phi_q[119] * y[12] + phi_q[137] * y[14] + phi_q[345] * y[38]
+            + phi_q[353] * y[39] + phi_q[381] * y[42] + phi_q[627] * y[83];
+        out[40] = phi_q[120] * y[12] + phi_q[129] * y[13] + phi_q[138] * y[14]
+            + phi_q[346] * y[38] + phi_q[354] * y[39] + phi_q[382] * y[42]
+            + phi_q[628] * y[83];
+        out[41] = phi_q[121] * y[12] + phi_q[139] * y[14] + phi_q[347] * y[38]
+            + phi_q[355] * y[39] + phi_q[383] * y[42] + phi_q[629] * y[83];
+        out[42] = phi_q[145] * y[15] + phi_q[404] * y[45] + phi_q[414] * y[46]
+            + phi_q[596] * y[77];
+        out[43] = phi_q[155] * y[16] + phi_q[405] * y[45] + phi_q[415] * y[46]
+            + phi_q[597] * y[77];
+        out[44] = phi_q[163] * y[17] + phi_q[406] * y[45] + phi_q[416] * y[46]
+            + phi_q[598] * y[77];
+        out[45] = phi_q[146] * y[15] + phi_q[156] * y[16] + phi_q[164] * y[17]
+            + phi_q[388] * y[43] + phi_q[396] * y[44] + phi_q[424] * y[47]
+            + phi_q[630] * y[84];
+        out[46] = phi_q[147] * y[15] + phi_q[165] * y[17] + phi_q[389] * y[43]
+            + phi_q[397] * y[44] + phi_q[425] * y[47] + phi_q[631] * y[84];
+        out[47] = phi_q[148] * y[15] + phi_q[157] * y[16] + phi_q[166] * y[17]
+            + phi_q[390] * y[43] + phi_q[398] * y[44] + phi_q[426] * y[47]
+            + phi_q[632] * y[84];
+        out[48] = phi_q[149] * y[15] + phi_q[167] * y[17] + phi_q[391] * y[43]
+            + phi_q[399] * y[44] + phi_q[427] * y[47] + phi_q[633] * y[84];
+        out[49] = phi_q[187] * y[20] + phi_q[197] * y[21] + phi_q[432] * y[48]
+            + phi_q[549] * y[72];
+        out[50] = phi_q[188] * y[20] + phi_q[198] * y[21] + phi_q[437] * y[49]
+            + phi_q[550] * y[72];
+        out[51] = phi_q[189] * y[20] + phi_q[199] * y[21] + phi_q[442] * y[50]
+            + phi_q[551] * y[72];
+        out[52] = phi_q[172] * y[18] + phi_q[180] * y[19] + phi_q[190] * y[20]
+            + phi_q[200] * y[21] + phi_q[208] * y[22] + phi_q[433] * y[48]
+            + phi_q[438] * y[49] + phi_q[443] * y[50] + phi_q[447] * y[51]
+            + phi_q[552] * y[72] + phi_q[634] * y[85];
+        out[53] = phi_q[173] * y[18] + phi_q[181] * y[19] + phi_q[191] * y[20]
+            + phi_q[201] * y[21] + phi_q[209] * y[22] + phi_q[434] * y[48]
+            + phi_q[439] * y[49] + phi_q[444] * y[50] + phi_q[448] * y[51]
+            + phi_q[553] * y[72] + phi_q[635] * y[85];
+        out[54] = phi_q[174] * y[18] + phi_q[182] * y[19] + phi_q[192] * y[20]
+            + phi_q[202] * y[21] + phi_q[210] * y[22] + phi_q[435] * y[48]
+            + phi_q[440] * y[49] + phi_q[445] * y[50] + phi_q[449] * y[51]
+            + phi_q[554] * y[72] + phi_q[636] * y[85];
+        out[55] = phi_q[175] * y[18] + phi_q[183] * y[19] + phi_q[193] * y[20]
+            + phi_q[203] * y[21] + phi_q[211] * y[22] + phi_q[436] * y[48]
+            + phi_q[441] * y[49] + phi_q[446] * y[50] + phi_q[450] * y[51]
+            + phi_q[555] * y[72] + phi_q[637] * y[85];
+        out[56] = phi_q[231] * y[25] + phi_q[241] * y[26] + phi_q[451] * y[52]
+            + phi_q[559] * y[73];
+        out[57] = phi_q[232] * y[25] + phi_q[242] * y[26] + phi_q[456] * y[53]
+            + phi_q[560] * y[73];
+        out[58] = phi_q[233] * y[25] + phi_q[243] * y[26] + phi_q[461] * y[54]
+            + phi_q[561] * y[73];
+        out[59] = phi_q[216] * y[23] + phi_q[224] * y[24] + phi_q[234] * y[25]
+            + phi_q[244] * y[26] + phi_q[252] * y[27] + phi_q[452] * y[52]
+            + phi_q[457] * y[53] + phi_q[462] * y[54] + phi_q[466] * y[55]
+            + phi_q[562] * y[73] + phi_q[638] * y[86];
+        out[60] = phi_q[217] * y[23] + phi_q[225] * y[24] + phi_q[235] * y[25]
+            + phi_q[245] * y[26] + phi_q[253] * y[27] + phi_q[453] * y[52]
+            + phi_q[458] * y[53] + phi_q[463] * y[54] + phi_q[467] * y[55]
+            + phi_q[563] * y[73] + phi_q[639] * y[86];
+        out[61] = phi_q[218] * y[23] + phi_q[226] * y[24] + phi_q[236] * y[25]
+            + phi_q[246] * y[26] + phi_q[254] * y[27] + phi_q[454] * y[52]
+            + phi_q[459] * y[53] + phi_q[464] * y[54] + phi_q[468] * y[55]
+            + phi_q[564] * y[73] + phi_q[640] * y[86];
+        out[62] = phi_q[219] * y[23] + phi_q[227] * y[24] + phi_q[237] * y[25]
+            + phi_q[247] * y[26] + phi_q[255] * y[27] + phi_q[455] * y[52]
+            + phi_q[460] * y[53] + phi_q[465] * y[54] + phi_q[469] * y[55]
+            + phi_q[565] * y[73] + phi_q[641] * y[86];
+        out[63] = phi_q[275] * y[30] + phi_q[285] * y[31] + phi_q[470] * y[56]
+            + phi_q[569] * y[74];
+        out[64] = phi_q[276] * y[30] + phi_q[286] * y[31] + phi_q[475] * y[57]
+            + phi_q[570] * y[74];
+        out[65] = phi_q[277] * y[30] + phi_q[287] * y[31] + phi_q[480] * y[58]
+            + phi_q[571] * y[74];
+        out[66] = phi_q[260] * y[28] + phi_q[268] * y[29] + phi_q[278] * y[30]
+            + phi_q[288] * y[31] + phi_q[296] * y[32] + phi_q[471] * y[56]
+            + phi_q[476] * y[57] + phi_q[481] * y[58] + phi_q[485] * y[59]
+            + phi_q[572] * y[74] + phi_q[642] * y[87];
+        out[67] = phi_q[261] * y[28] + phi_q[269] * y[29] + phi_q[279] * y[30]
+            + phi_q[289] * y[31] + phi_q[297] * y[32] + phi_q[472] * y[56]
+            + phi_q[477] * y[57] + phi_q[482] * y[58] + phi_q[486] * y[59]
+            + phi_q[573] * y[74] + phi_q[643] * y[87];
+        out[68] = phi_q[262] * y[28] + phi_q[270] * y[29] + phi_q[280] * y[30]
+            + phi_q[290] * y[31] + phi_q[298] * y[32] + phi_q[473] * y[56]
+            + phi_q[478] * y[57] + phi_q[483] * y[58] + phi_q[487] * y[59]
+            + phi_q[574] * y[74] + phi_q[644] * y[87];
+        out[69] = phi_q[263] * y[28] + phi_q[271] * y[29] + phi_q[281] * y[30]
+            + phi_q[291] * y[31] + phi_q[299] * y[32] + phi_q[474] * y[56]
+            + phi_q[479] * y[57] + phi_q[484] * y[58] + phi_q[488] * y[59]
+            + phi_q[575] * y[74] + phi_q[645] * y[87];
+        out[70] = phi_q[319] * y[35] + phi_q[329] * y[36] + phi_q[489] * y[60]
+            + phi_q[579] * y[75];
+        out[71] = phi_q[320] * y[35] + phi_q[330] * y[36] + phi_q[494] * y[61]
+            + phi_q[580] * y[75];
+        out[72] = phi_q[321] * y[35] + phi_q[331] * y[36] + phi_q[499] * y[62]
+            + phi_q[581] * y[75];
+        out[73] = phi_q[304] * y[33] + phi_q[312] * y[34] + phi_q[322] * y[35]
+            + phi_q[332] * y[36] + phi_q[340] * y[37] + phi_q[490] * y[60]
+            + phi_q[495] * y[61] + phi_q[500] * y[62] + phi_q[504] * y[63]
+            + phi_q[582] * y[75] + phi_q[646] * y[88];
+        out[74] = phi_q[305] * y[33] + phi_q[313] * y[34] + phi_q[323] * y[35]
+            + phi_q[333] * y[36] + phi_q[341] * y[37] + phi_q[491] * y[60]
+            + phi_q[496] * y[61] + phi_q[501] * y[62] + phi_q[505] * y[63]
+            + phi_q[583] * y[75] + phi_q[647] * y[88];
+        out[75] = phi_q[306] * y[33] + phi_q[314] * y[34] + phi_q[324] * y[35]
+            + phi_q[334] * y[36] + phi_q[342] * y[37] + phi_q[492] * y[60]
+            + phi_q[497] * y[61] + phi_q[502] * y[62] + phi_q[506] * y[63]
+            + phi_q[584] * y[75] + phi_q[648] * y[88];
+        out[76] = phi_q[307] * y[33] + phi_q[315] * y[34] + phi_q[325] * y[35]
+            + phi_q[335] * y[36] + phi_q[343] * y[37] + phi_q[493] * y[60]
+            + phi_q[498] * y[61] + phi_q[503] * y[62] + phi_q[507] * y[63]
+            + phi_q[585] * y[75] + phi_q[649] * y[88];
+        out[77] = phi_q[363] * y[40] + phi_q[373] * y[41] + phi_q[508] * y[64]
+            + phi_q[589] * y[76];
+        out[78] = phi_q[364] * y[40] + phi_q[374] * y[41] + phi_q[513] * y[65]
+            + phi_q[590] * y[76];
+        out[79] = phi_q[365] * y[40] + phi_q[375] * y[41] + phi_q[518] * y[66]
+            + phi_q[591] * y[76];
+        out[80] = phi_q[348] * y[38] + phi_q[356] * y[39] + phi_q[366] * y[40]
+            + phi_q[376] * y[41] + phi_q[384] * y[42] + phi_q[509] * y[64]
+            + phi_q[514] * y[65] + phi_q[519] * y[66] + phi_q[523] * y[67]
+            + phi_q[592] * y[76] + phi_q[650] * y[89];
+        out[81] = phi_q[349] * y[38] + phi_q[357] * y[39] + phi_q[367] * y[40]
+            + phi_q[377] * y[41] + phi_q[385] * y[42] + phi_q[510] * y[64]
+            + phi_q[515] * y[65] + phi_q[520] * y[66] + phi_q[524] * y[67]
+            + phi_q[593] * y[76] + phi_q[651] * y[89];
+        out[82] = phi_q[350] * y[38] + phi_q[358] * y[39] + phi_q[368] * y[40]
+            + phi_q[378] * y[41] + phi_q[386] * y[42] + phi_q[511] * y[64]
+            + phi_q[516] * y[65] + phi_q[521] * y[66] + phi_q[525] * y[67]
+            + phi_q[594] * y[76] + phi_q[652] * y[89];
+        out[83] = phi_q[351] * y[38] + phi_q[359] * y[39] + phi_q[369] * y[40]
+            + phi_q[379] * y[41] + phi_q[387] * y[42] + phi_q[512] * y[64]
+            + phi_q[517] * y[65] + phi_q[522] * y[66] + phi_q[526] * y[67]
+            + phi_q[595] * y[76] + phi_q[653] * y[89];
+        out[84] = phi_q[407] * y[45] + phi_q[417] * y[46] + phi_q[527] * y[68]
+            + phi_q[599] * y[77];
+        out[85] = phi_q[408] * y[45] + phi_q[418] * y[46] + phi_q[532] * y[69]
+            + phi_q[600] * y[77];
+        out[86] = phi_q[409] * y[45] + phi_q[419] * y[46] + phi_q[537] * y[70]
+            + phi_q[601] * y[77];
+        out[87] = phi_q[392] * y[43] + phi_q[400] * y[44] + phi_q[410] * y[45]
+            + phi_q[420] * y[46] + phi_q[428] * y[47] + phi_q[528] * y[68]
+            + phi_q[533] * y[69] + phi_q[538] * y[70] + phi_q[542] * y[71]
+            + phi_q[602] * y[77] + phi_q[654] * y[90];
+        out[88] = phi_q[393] * y[43] + phi_q[401] * y[44] + phi_q[411] * y[45]
+            + phi_q[421] * y[46] + phi_q[429] * y[47] + phi_q[529] * y[68]
+            + phi_q[534] * y[69] + phi_q[539] * y[70] + phi_q[543] * y[71]
+            + phi_q[603] * y[77] + phi_q[655] * y[90];
+        out[89] = phi_q[394] * y[43] + phi_q[402] * y[44] + phi_q[412] * y[45]
+            + phi_q[422] * y[46] + phi_q[430] * y[47] + phi_q[530] * y[68]
+            + phi_q[535] * y[69] + phi_q[540] * y[70] + phi_q[544] * y[71]
+            + phi_q[604] * y[77] + phi_q[656] * y[90];
+        out[90] = phi_q[395] * y[43] + phi_q[403] * y[44] + phi_q[413] * y[45]
+            + phi_q[423] * y[46] + phi_q[431] * y[47] + phi_q[531] * y[68]
+            + phi_q[536] * y[69] + phi_q[541] * y[70] + phi_q[545] * y[71]
+            + phi_q[605] * y[77] + phi_q[657] * y[90];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

@@ -20,6 +20,9 @@ pub type FactorKernel = fn(&[f64], f64, &[f64], &mut [f64], &mut Pivoting) -> Re
 /// A generated solve: `(f, g, x, y, state)`, as [`KktSolver::solve`](super::KktSolver::solve).
 pub type SolveKernel = fn(&[f64], &[f64], &mut [f64], &mut [f64], &[f64]) -> Result<(), KktError>;
 
+/// A generated `out = Φqᵀ y` from Φq's nonzeros: `(phi_q, y, out)`.
+pub type TransposeKernel = fn(&[f64], &[f64], &mut [f64]) -> Result<(), KktError>;
+
 /// Factor and solve for one pattern, as the generator emits them. Not built by hand: the
 /// generated module of a mechanism fills [`MechanismInfo::kkt`](crate::MechanismInfo::kkt).
 #[derive(Clone, Copy)]
@@ -30,6 +33,22 @@ pub struct KktKernels {
     pub storage: usize,
     pub factor: FactorKernel,
     pub solve: SolveKernel,
+    /// The Φq pattern `transpose_times` was emitted for: the model's own statics, so that
+    /// a caller can tell by address that an info's pattern is theirs.
+    pub phi_q_rows: &'static [u32],
+    pub phi_q_cols: &'static [u32],
+    /// `Φqᵀ y`, summed column by column in the order of the nonzeros (as
+    /// `phi_q_transpose_times`'s loop does).
+    pub transpose_times: TransposeKernel,
+}
+
+impl KktKernels {
+    /// The generated `Φqᵀ y` when `rows` and `cols` are the pattern it was emitted for
+    /// (the same statics, compared by address: no scan).
+    pub fn transpose_for(&self, rows: &[u32], cols: &[u32]) -> Option<TransposeKernel> {
+        (std::ptr::eq(self.phi_q_rows, rows) && std::ptr::eq(self.phi_q_cols, cols))
+            .then_some(self.transpose_times)
+    }
 }
 
 impl std::fmt::Debug for KktKernels {

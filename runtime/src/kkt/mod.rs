@@ -23,7 +23,10 @@ mod ordering;
 mod schur;
 
 pub use dense::DenseKkt;
-pub use kernels::{length_error, mass_pivot_error, KktKernels, Pivoting};
+pub use kernels::{
+    length_error, mass_pivot_error, FactorKernel, KktKernels, Pivoting, SolveKernel,
+    TransposeKernel,
+};
 pub use schur::{SchurKkt, SchurPlan};
 
 use std::fmt;
