@@ -27,6 +27,8 @@ enum V {
     Zero,
     Var(u32),
     Slot(u32),
+    /// An entry of the solve's `x` or `y`, which hold `u` and `r` in between.
+    In(&'static str, u32),
 }
 
 impl std::fmt::Display for V {
@@ -35,6 +37,7 @@ impl std::fmt::Display for V {
             V::Zero => write!(f, "0.0"),
             V::Var(i) => write!(f, "v{i}"),
             V::Slot(i) => write!(f, "st[{i}]"),
+            V::In(a, i) => write!(f, "{a}[{i}]"),
         }
     }
 }
@@ -57,7 +60,7 @@ impl Code {
         let id = self.next;
         self.next += 1;
         self.ops += 1;
-        let _ = writeln!(self.text, "let v{id} = {expr};");
+        let _ = writeln!(self.text, "let v{id}: f64 = {expr};");
         V::Var(id)
     }
 
@@ -116,11 +119,9 @@ pub fn kernels(pattern: &KktPattern) -> Option<TokenStream> {
     let plan = solver.plan()?;
     let mut factor = Code::default();
     let stored = replay_factor(&plan, &pattern, &mut factor);
-    let mut solve_f = Code::default();
-    let mut solve_0 = Code::default();
-    replay_solve(&plan, &pattern, &stored, true, &mut solve_f);
-    replay_solve(&plan, &pattern, &stored, false, &mut solve_0);
-    if factor.ops + solve_f.ops + solve_0.ops > MAX_OPS {
+    let mut solve = Code::default();
+    replay_solve(&plan, &pattern, &stored, &mut solve);
+    if factor.ops + solve.ops > MAX_OPS {
         return None;
     }
     let (n, m) = (pattern.n, pattern.m);
@@ -149,12 +150,7 @@ let x: &mut [f64; {n}] = x.try_into().map_err(|_| length_error({n}, x_len))?;
 let y_len = y.len();
 let y: &mut [f64; {m}] = y.try_into().map_err(|_| length_error({m}, y_len))?;
 let st: &[f64; {ns}] = st.try_into().map_err(|_| length_error({ns}, st.len()))?;
-// f = 0 (a position correction, the least-energy velocity) skips M⁻¹ f.
-if f.iter().any(|&v| v != 0.0) {{
 {}
-}} else {{
-{}
-}}
 Ok(())
 }}
 fn kkt_transpose_times(phi_q: &[f64], y: &[f64], out: &mut [f64]) -> Result<(), KktError> {{
@@ -166,7 +162,7 @@ let out: &mut [f64; {n}] = out.try_into().map_err(|_| length_error({n}, out_len)
 Ok(())
 }}
 ",
-        factor.text, solve_f.text, solve_0.text, transpose(&pattern)
+        factor.text, solve.text, transpose(&pattern)
     );
     Some(text.parse().expect("emitted kernels are Rust tokens"))
 }
@@ -363,18 +359,20 @@ fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) ->
     }
 }
 
-fn replay_solve(
-    plan: &SchurPlan<'_>,
-    pattern: &KktPattern,
-    st: &Stored,
-    f_nonzero: bool,
-    code: &mut Code,
-) {
+/// The solve. Its first part, `r = Φq M⁻¹ f − g` with `u = L⁻¹ f` per group, runs only for
+/// `f ≠ 0` (the loop skips it for position corrections) and leaves `r` in `y` and `u` in `x`
+/// (by coordinate, so that each group's `x` overwrites only its own `u`), so that the rest is
+/// emitted once for both cases. (Local arrays instead took LLVM minutes on the 40-bar chain.)
+fn replay_solve(plan: &SchurPlan<'_>, pattern: &KktPattern, st: &Stored, code: &mut Code) {
     let (n, m) = (pattern.n, pattern.m);
     let nb = plan.chol_off.len();
-    let mut rvec: Vec<V> = (0..m).map(|r| code.bind(format_args!("-g[{r}]"))).collect();
+    code.line("x.fill(0.0);");
+    for r in 0..m {
+        code.line(&format!("y[{r}] = -g[{r}];"));
+    }
+    code.line("if f.iter().any(|&v| v != 0.0) {");
     let mut ustore = vec![V::Zero; n];
-    for b in (0..nb).filter(|_| f_nonzero) {
+    for b in 0..nb {
         let (c0, c1) = (plan.block_ptr[b], plan.block_ptr[b + 1]);
         let s = c1 - c0;
         let off = plan.chol_off[b];
@@ -391,9 +389,23 @@ fn replay_solve(
         let w0 = plan.p_off[b];
         for (k, &r) in rows.iter().enumerate() {
             let p = code.dot(&st.wmat[w0 + k * s..w0 + k * s + s], &ustore[c0..c1]);
-            rvec[r] = code.add(rvec[r], p);
+            if p != V::Zero {
+                code.line(&format!("y[{r}] += {p};"));
+            }
+        }
+        for (l, &v) in ustore[c0..c1].iter().enumerate() {
+            if v != V::Zero {
+                code.line(&format!("x[{}] = {v};", plan.block_coords[c0 + l]));
+            }
         }
     }
+    code.line("}");
+    let rvec: Vec<V> = (0..m).map(|r| V::In("y", r as u32)).collect();
+    let mut ustore: Vec<V> = plan
+        .block_coords
+        .iter()
+        .map(|&c| V::In("x", c as u32))
+        .collect();
     let mut z: Vec<V> = plan.perm.iter().map(|&r| rvec[r]).collect();
     for j in 0..m {
         let zj = z[j];

@@ -689,61 +689,61 @@ pub mod exact {
             .map_err(|_| length_error(3, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 12] = st.try_into().map_err(|_| length_error(12, st_len))?;
-        let v0 = c * mass[0];
-        let v1 = c * mass[1];
-        let v2 = c * mass[2];
-        let v3 = c * mass[3];
-        let v4 = c * mass[4];
-        let v5 = c * mass[5];
-        let v6 = c * mass[6];
-        let v7 = c * mass[7];
-        let v8 = c * mass[8];
-        let v9 = c * mass[9];
-        let v10 = phi_q[0];
-        let v11 = phi_q[1];
-        let v12 = phi_q[2];
+        let v0: f64 = c * mass[0];
+        let v1: f64 = c * mass[1];
+        let v2: f64 = c * mass[2];
+        let v3: f64 = c * mass[3];
+        let v4: f64 = c * mass[4];
+        let v5: f64 = c * mass[5];
+        let v6: f64 = c * mass[6];
+        let v7: f64 = c * mass[7];
+        let v8: f64 = c * mass[8];
+        let v9: f64 = c * mass[9];
+        let v10: f64 = phi_q[0];
+        let v11: f64 = phi_q[1];
+        let v12: f64 = phi_q[2];
         if !(v0 > 0.0) || !v0.is_finite() {
             return Err(mass_pivot_error(v0, 0));
         }
-        let v13 = v0.sqrt();
-        let v14 = 1.0 / v13;
+        let v13: f64 = v0.sqrt();
+        let v14: f64 = 1.0 / v13;
         if !(v1 > 0.0) || !v1.is_finite() {
             return Err(mass_pivot_error(v1, 1));
         }
-        let v15 = v1.sqrt();
-        let v16 = 1.0 / v15;
+        let v15: f64 = v1.sqrt();
+        let v16: f64 = 1.0 / v15;
         if !(v2 > 0.0) || !v2.is_finite() {
             return Err(mass_pivot_error(v2, 2));
         }
-        let v17 = v2.sqrt();
-        let v18 = 1.0 / v17;
+        let v17: f64 = v2.sqrt();
+        let v18: f64 = 1.0 / v17;
         if !(v3 > 0.0) || !v3.is_finite() {
             return Err(mass_pivot_error(v3, 3));
         }
-        let v19 = v3.sqrt();
-        let v20 = 1.0 / v19;
-        let v21 = v7 * v20;
+        let v19: f64 = v3.sqrt();
+        let v20: f64 = 1.0 / v19;
+        let v21: f64 = v7 * v20;
         if !(v5 > 0.0) || !v5.is_finite() {
             return Err(mass_pivot_error(v5, 4));
         }
-        let v22 = v5.sqrt();
-        let v23 = 1.0 / v22;
-        let v24 = v8 * v23;
-        let v25 = v9 - v21 * v21;
-        let v26 = v25 - v24 * v24;
+        let v22: f64 = v5.sqrt();
+        let v23: f64 = 1.0 / v22;
+        let v24: f64 = v8 * v23;
+        let v25: f64 = v9 - v21 * v21;
+        let v26: f64 = v25 - v24 * v24;
         if !(v26 > 0.0) || !v26.is_finite() {
             return Err(mass_pivot_error(v26, 5));
         }
-        let v27 = v26.sqrt();
-        let v28 = 1.0 / v27;
-        let v29 = v10 * v14;
-        let v30 = v11 * v16;
-        let v31 = v12 * v18;
-        let v32 = v29 * v29;
-        let v33 = v30 * v30;
-        let v34 = v32 + v33;
-        let v35 = v31 * v31;
-        let v36 = v34 + v35;
+        let v27: f64 = v26.sqrt();
+        let v28: f64 = 1.0 / v27;
+        let v29: f64 = v10 * v14;
+        let v30: f64 = v11 * v16;
+        let v31: f64 = v12 * v18;
+        let v32: f64 = v29 * v29;
+        let v33: f64 = v30 * v30;
+        let v34: f64 = v32 + v33;
+        let v35: f64 = v31 * v31;
+        let v36: f64 = v34 + v35;
         let (v37, v38) = piv.pivot(v36, v36, 0, false)?;
         st[0] = v21;
         st[1] = v24;
@@ -778,64 +778,55 @@ pub mod exact {
         let y_len = y.len();
         let y: &mut [f64; 1] = y.try_into().map_err(|_| length_error(1, y_len))?;
         let st: &[f64; 12] = st.try_into().map_err(|_| length_error(12, st.len()))?;
+        x.fill(0.0);
+        y[0] = -g[0];
         if f.iter().any(|&v| v != 0.0) {
-            let v0 = -g[0];
-            let v1 = f[0];
-            let v2 = f[1];
-            let v3 = f[2];
-            let v4 = f[3];
-            let v5 = f[4];
-            let v6 = f[5];
-            let v7 = v1 * st[2];
-            let v8 = v2 * st[3];
-            let v9 = v3 * st[4];
-            let v10 = v4 * st[5];
-            let v11 = v5 * st[6];
-            let v12 = v6 - st[0] * v10;
-            let v13 = v12 - st[1] * v11;
-            let v14 = v13 * st[7];
-            let v15 = st[8] * v7;
-            let v16 = st[9] * v8;
-            let v17 = v15 + v16;
-            let v18 = st[10] * v9;
-            let v19 = v17 + v18;
-            let v20 = v0 + v19;
-            let v21 = v20 * st[11];
-            y[0] = v21;
-            let v22 = v7 - st[8] * v21;
-            let v23 = v8 - st[9] * v21;
-            let v24 = v9 - st[10] * v21;
-            let v25 = v14 * st[7];
-            let v26 = v11 - st[1] * v25;
-            let v27 = v26 * st[6];
-            let v28 = v10 - st[0] * v25;
-            let v29 = v28 * st[5];
-            let v30 = v24 * st[4];
-            let v31 = v23 * st[3];
-            let v32 = v22 * st[2];
-            x[0] = v32;
-            x[1] = v31;
-            x[2] = v30;
-            x[3] = v29;
-            x[4] = v27;
-            x[5] = v25;
-        } else {
-            let v0 = -g[0];
-            let v1 = v0 * st[11];
-            y[0] = v1;
-            let v2 = -(st[8] * v1);
-            let v3 = -(st[9] * v1);
-            let v4 = -(st[10] * v1);
-            let v5 = v4 * st[4];
-            let v6 = v3 * st[3];
-            let v7 = v2 * st[2];
-            x[0] = v7;
-            x[1] = v6;
-            x[2] = v5;
-            x[3] = 0.0;
-            x[4] = 0.0;
-            x[5] = 0.0;
+            let v0: f64 = f[0];
+            let v1: f64 = f[1];
+            let v2: f64 = f[2];
+            let v3: f64 = f[3];
+            let v4: f64 = f[4];
+            let v5: f64 = f[5];
+            let v6: f64 = v0 * st[2];
+            let v7: f64 = v1 * st[3];
+            let v8: f64 = v2 * st[4];
+            let v9: f64 = v3 * st[5];
+            let v10: f64 = v4 * st[6];
+            let v11: f64 = v5 - st[0] * v9;
+            let v12: f64 = v11 - st[1] * v10;
+            let v13: f64 = v12 * st[7];
+            let v14: f64 = st[8] * v6;
+            let v15: f64 = st[9] * v7;
+            let v16: f64 = v14 + v15;
+            let v17: f64 = st[10] * v8;
+            let v18: f64 = v16 + v17;
+            y[0] += v18;
+            x[0] = v6;
+            x[1] = v7;
+            x[2] = v8;
+            x[3] = v9;
+            x[4] = v10;
+            x[5] = v13;
         }
+        let v19: f64 = y[0] * st[11];
+        y[0] = v19;
+        let v20: f64 = x[0] - st[8] * v19;
+        let v21: f64 = x[1] - st[9] * v19;
+        let v22: f64 = x[2] - st[10] * v19;
+        let v23: f64 = x[5] * st[7];
+        let v24: f64 = x[4] - st[1] * v23;
+        let v25: f64 = v24 * st[6];
+        let v26: f64 = x[3] - st[0] * v23;
+        let v27: f64 = v26 * st[5];
+        let v28: f64 = v22 * st[4];
+        let v29: f64 = v21 * st[3];
+        let v30: f64 = v20 * st[2];
+        x[0] = v30;
+        x[1] = v29;
+        x[2] = v28;
+        x[3] = v27;
+        x[4] = v25;
+        x[5] = v23;
         Ok(())
     }
     fn kkt_transpose_times(
@@ -2023,31 +2014,31 @@ pub mod reduced {
                 .map_err(|_| length_error(2, phi_q.len()))?;
             let st_len = st.len();
             let st: &mut [f64; 6] = st.try_into().map_err(|_| length_error(6, st_len))?;
-            let v0 = c * mass[0];
-            let v1 = c * mass[1];
-            let v2 = c * mass[2];
-            let v3 = phi_q[0];
-            let v4 = phi_q[1];
+            let v0: f64 = c * mass[0];
+            let v1: f64 = c * mass[1];
+            let v2: f64 = c * mass[2];
+            let v3: f64 = phi_q[0];
+            let v4: f64 = phi_q[1];
             if !(v0 > 0.0) || !v0.is_finite() {
                 return Err(mass_pivot_error(v0, 0));
             }
-            let v5 = v0.sqrt();
-            let v6 = 1.0 / v5;
+            let v5: f64 = v0.sqrt();
+            let v6: f64 = 1.0 / v5;
             if !(v1 > 0.0) || !v1.is_finite() {
                 return Err(mass_pivot_error(v1, 1));
             }
-            let v7 = v1.sqrt();
-            let v8 = 1.0 / v7;
+            let v7: f64 = v1.sqrt();
+            let v8: f64 = 1.0 / v7;
             if !(v2 > 0.0) || !v2.is_finite() {
                 return Err(mass_pivot_error(v2, 2));
             }
-            let v9 = v2.sqrt();
-            let v10 = 1.0 / v9;
-            let v11 = v3 * v6;
-            let v12 = v4 * v8;
-            let v13 = v11 * v11;
-            let v14 = v12 * v12;
-            let v15 = v13 + v14;
+            let v9: f64 = v2.sqrt();
+            let v10: f64 = 1.0 / v9;
+            let v11: f64 = v3 * v6;
+            let v12: f64 = v4 * v8;
+            let v13: f64 = v11 * v11;
+            let v14: f64 = v12 * v12;
+            let v15: f64 = v13 + v14;
             let (v16, v17) = piv.pivot(v15, v15, 0, false)?;
             st[0] = v6;
             st[1] = v8;
@@ -2076,40 +2067,33 @@ pub mod reduced {
             let y_len = y.len();
             let y: &mut [f64; 1] = y.try_into().map_err(|_| length_error(1, y_len))?;
             let st: &[f64; 6] = st.try_into().map_err(|_| length_error(6, st.len()))?;
+            x.fill(0.0);
+            y[0] = -g[0];
             if f.iter().any(|&v| v != 0.0) {
-                let v0 = -g[0];
-                let v1 = f[0];
-                let v2 = f[1];
-                let v3 = f[2];
-                let v4 = v1 * st[0];
-                let v5 = v2 * st[1];
-                let v6 = v3 * st[2];
-                let v7 = st[3] * v4;
-                let v8 = st[4] * v5;
-                let v9 = v7 + v8;
-                let v10 = v0 + v9;
-                let v11 = v10 * st[5];
-                y[0] = v11;
-                let v12 = v4 - st[3] * v11;
-                let v13 = v5 - st[4] * v11;
-                let v14 = v6 * st[2];
-                let v15 = v13 * st[1];
-                let v16 = v12 * st[0];
-                x[0] = v16;
-                x[1] = v15;
-                x[2] = v14;
-            } else {
-                let v0 = -g[0];
-                let v1 = v0 * st[5];
-                y[0] = v1;
-                let v2 = -(st[3] * v1);
-                let v3 = -(st[4] * v1);
-                let v4 = v3 * st[1];
-                let v5 = v2 * st[0];
-                x[0] = v5;
+                let v0: f64 = f[0];
+                let v1: f64 = f[1];
+                let v2: f64 = f[2];
+                let v3: f64 = v0 * st[0];
+                let v4: f64 = v1 * st[1];
+                let v5: f64 = v2 * st[2];
+                let v6: f64 = st[3] * v3;
+                let v7: f64 = st[4] * v4;
+                let v8: f64 = v6 + v7;
+                y[0] += v8;
+                x[0] = v3;
                 x[1] = v4;
-                x[2] = 0.0;
+                x[2] = v5;
             }
+            let v9: f64 = y[0] * st[5];
+            y[0] = v9;
+            let v10: f64 = x[0] - st[3] * v9;
+            let v11: f64 = x[1] - st[4] * v9;
+            let v12: f64 = x[2] * st[2];
+            let v13: f64 = v11 * st[1];
+            let v14: f64 = v10 * st[0];
+            x[0] = v14;
+            x[1] = v13;
+            x[2] = v12;
             Ok(())
         }
         fn kkt_transpose_times(
