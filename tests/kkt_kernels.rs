@@ -31,7 +31,7 @@ fn models() -> Vec<(String, &'static (dyn Mechanism + Sync))> {
 
 fn without_kernels(p: &KktPattern) -> KktPattern {
     KktPattern {
-        kernels: None,
+        kernels: &[],
         ..p.clone()
     }
 }
@@ -60,7 +60,7 @@ fn assert_same(what: &str, a: &Solved, b: &Solved) {
 /// The generated `Φqᵀ y` against the dense `Φq` transposed (nalgebra), and offered only for
 /// the model's own pattern statics.
 fn transpose_matches_dense(name: &str, info: &MechanismInfo, phi_q: &[f64], rng: &mut Rng) {
-    let kernels = info.kkt.unwrap();
+    let kernels = &info.kkt[0];
     let t = kernels
         .transpose_for(info.phi_q_rows, info.phi_q_cols)
         .unwrap_or_else(|| panic!("{name}: no Φqᵀ y for its own pattern"));
@@ -82,27 +82,86 @@ fn transpose_matches_dense(name: &str, info: &MechanismInfo, phi_q: &[f64], rng:
     assert!(t(&phi_q[1..], &y, &mut out).is_err());
 }
 
+/// Factor with the kernels, the loops and the dense LU at `mass` (in `pattern`'s mass
+/// order), `phi_q`; solve for random `f, g` and for `f = 0`; compare.
+fn compare(what: &str, pattern: &KktPattern, mass: &[f64], phi_q: &[f64], rng: &mut Rng) {
+    let mut kern = SchurKkt::new(pattern).unwrap();
+    assert!(kern.runs_kernels(), "{what}");
+    let mut loops = SchurKkt::new(&without_kernels(pattern)).unwrap();
+    assert!(!loops.runs_kernels());
+    let mut dense = DenseKkt::new(pattern).unwrap();
+    let c = rng.uniform(0.5, 2.0);
+    let a = kern.factor(mass, c, phi_q);
+    assert_eq!(a, loops.factor(mass, c, phi_q), "{what}");
+    if a.is_err() {
+        return;
+    }
+    assert_eq!(kern.pivots(), loops.pivots(), "{what}");
+    dense.factor(mass, c, phi_q).unwrap();
+    let (n, m) = (pattern.n, pattern.m);
+    let f: Vec<f64> = (0..n).map(|_| rng.uniform(-1.0, 1.0)).collect();
+    let g: Vec<f64> = (0..m).map(|_| rng.uniform(-1.0, 1.0)).collect();
+    for f in [f, vec![0.0; n]] {
+        let what = format!("{what} |f| {}", f[0].abs());
+        let ours = solve(&mut kern, &f, &g);
+        assert_same(&what, &ours, &solve(&mut loops, &f, &g));
+        let (x, y) = ours.unwrap();
+        let (xd, yd) = solve(&mut dense, &f, &g).unwrap();
+        let scale = xd.iter().chain(&yd).fold(1e-300f64, |a, b| a.max(b.abs()));
+        for (u, v) in x.iter().zip(&xd).chain(y.iter().zip(&yd)) {
+            assert!(
+                (u - v).abs() <= 1e-8 * scale,
+                "{what}: {u:e} vs dense {v:e}"
+            );
+        }
+    }
+}
+
+/// `mass` spread onto the pattern with the loads' stiffness: the mass entries where they
+/// are, and a small symmetric value (a stiffness of 1e-3 of the largest mass entry, of
+/// either sign) at each entry only the loads add.
+fn with_loads(info: &MechanismInfo, loads: &KktPattern, mass: &[f64]) -> Vec<f64> {
+    let big = mass.iter().fold(0.0f64, |a, b| a.max(b.abs()));
+    loads
+        .mass_rows
+        .iter()
+        .zip(&loads.mass_cols)
+        .map(|(&r, &c)| {
+            let at = (0..mass.len()).find(|&k| info.mass_rows[k] == r && info.mass_cols[k] == c);
+            at.map_or_else(
+                || 1e-3 * big * (f64::from(r.min(c) * 7 + r.max(c) * 3) * 0.37).sin(),
+                |k| mass[k],
+            )
+        })
+        .collect()
+}
+
 #[test]
 fn every_model_small_enough_runs_its_kernels_and_they_equal_the_loops_and_the_dense_lu() {
     let mut rng = Rng(0x5eed_c0de);
-    let mut with = Vec::new();
+    let (mut with, mut with_loads_kernels) = (Vec::new(), Vec::new());
     for (name, m) in models() {
         let info = m.info();
         let pattern = KktPattern::from_info(info);
-        let mut kern = SchurKkt::new(&pattern).unwrap();
         // The kernels are emitted for the pattern the runtime builds from the model's INFO,
         // for every model but the spatial 40-bar chain (too long for straight-line code:
         // 605 rows; its planar model has them).
-        assert_eq!(kern.runs_kernels(), info.kkt.is_some(), "{name}");
-        assert_eq!(kern.runs_kernels(), name != "n_four_bar_40 exact", "{name}");
-        if !kern.runs_kernels() {
+        let runs = SchurKkt::new(&pattern).unwrap().runs_kernels();
+        assert_eq!(runs, !info.kkt.is_empty(), "{name}");
+        assert_eq!(runs, name != "n_four_bar_40 exact", "{name}");
+        if !runs {
             continue;
         }
         with.push(name.clone());
-        let mut loops = SchurKkt::new(&without_kernels(&pattern)).unwrap();
-        assert!(!loops.runs_kernels());
-        let mut dense = DenseKkt::new(&pattern).unwrap();
-        let (n, m_rows) = (info.n_coords, info.n_constraints);
+        // And for the pattern HHT factors with the loads' stiffness, where there are loads.
+        let loads = pattern.with_loads(
+            (info.force_q_rows, info.force_q_cols),
+            (info.force_qd_rows, info.force_qd_cols),
+        );
+        let loads = loads.filter(|p| SchurKkt::new(p).unwrap().runs_kernels());
+        if loads.is_some() {
+            with_loads_kernels.push(name.clone());
+        }
         let (mut mass, mut phi_q) = (vec![0.0; info.mass_nnz()], vec![0.0; info.phi_q_nnz()]);
         for trial in 0..3 {
             let (q, t) = match trial {
@@ -115,35 +174,34 @@ fn every_model_small_enough_runs_its_kernels_and_they_equal_the_loops_and_the_de
             m.mass(&q, &mut mass);
             m.phi_q(&q, t, &mut phi_q);
             transpose_matches_dense(&name, info, &phi_q, &mut rng);
-            let c = rng.uniform(0.5, 2.0);
-            let a = kern.factor(&mass, c, &phi_q);
-            assert_eq!(a, loops.factor(&mass, c, &phi_q), "{name} trial {trial}");
-            if a.is_err() {
-                continue;
-            }
-            assert_eq!(kern.pivots(), loops.pivots(), "{name} trial {trial}");
-            dense.factor(&mass, c, &phi_q).unwrap();
-            let f: Vec<f64> = (0..n).map(|_| rng.uniform(-1.0, 1.0)).collect();
-            let g: Vec<f64> = (0..m_rows).map(|_| rng.uniform(-1.0, 1.0)).collect();
-            for f in [f, vec![0.0; n]] {
-                let what = format!("{name} trial {trial} |f| {}", f[0].abs());
-                let ours = solve(&mut kern, &f, &g);
-                assert_same(&what, &ours, &solve(&mut loops, &f, &g));
-                let (x, y) = ours.unwrap();
-                let (xd, yd) = solve(&mut dense, &f, &g).unwrap();
-                let scale = xd.iter().chain(&yd).fold(1e-300f64, |a, b| a.max(b.abs()));
-                for (u, v) in x.iter().zip(&xd).chain(y.iter().zip(&yd)) {
-                    assert!(
-                        (u - v).abs() <= 1e-8 * scale,
-                        "{what}: {u:e} vs dense {v:e}"
-                    );
-                }
+            let what = format!("{name} trial {trial}");
+            compare(&what, &pattern, &mass, &phi_q, &mut rng);
+            if let Some(loads) = &loads {
+                let spread = with_loads(info, loads, &mass);
+                compare(
+                    &format!("{what} with loads"),
+                    loads,
+                    &spread,
+                    &phi_q,
+                    &mut rng,
+                );
             }
         }
     }
     with.sort();
     with.dedup();
     assert_eq!(with.len(), 23, "models with kernels: {with:?}");
+    with_loads_kernels.sort();
+    with_loads_kernels.dedup();
+    assert_eq!(
+        with_loads_kernels,
+        [
+            "andrews_squeezer exact",
+            "flyball_governor exact",
+            "oscillators exact"
+        ],
+        "models with kernels for their loads' stiffness"
+    );
 }
 
 #[test]

@@ -419,7 +419,7 @@ impl Shared {
             qd0: self.qd0,
             redundant_rows: self.redundant_rows,
             platform: self.platform,
-            kkt: None,
+            kkt: &[],
         }))
     }
 }

@@ -108,11 +108,49 @@ impl Code {
     }
 }
 
-/// The emitted kernels: items for the model's module (`KKT`, `kkt_factor`, `kkt_solve`), or
-/// `None` when the pattern's `M` is solved densely or the code would be too long.
-pub fn kernels(pattern: &KktPattern) -> Option<TokenStream> {
+/// The emitted kernels: items for the model's module (`KKT`, one `KktKernels` per pattern
+/// in `patterns` that is not solved densely and not too long, with `kkt_factor_{i}`,
+/// `kkt_solve_{i}` and one `kkt_transpose_times`), or `None` when there is none. The
+/// patterns share `Φq` (the model's and the one with its loads' stiffness).
+pub fn kernels(patterns: &[KktPattern]) -> Option<TokenStream> {
+    let mut items = String::new();
+    let mut entries = Vec::new();
+    for (i, pattern) in patterns.iter().enumerate() {
+        if let Some((text, entry)) = one(pattern, i) {
+            items.push_str(&text);
+            entries.push(entry);
+        }
+    }
+    let pattern = patterns.first()?;
+    if entries.is_empty() {
+        return None;
+    }
+    let (n, m, np) = (pattern.n, pattern.m, pattern.phi_q_rows.len());
+    let k = entries.len();
+    let text = format!(
+        "use symbody_runtime::kkt::{{length_error, mass_pivot_error, KktError, KktKernels, Pivoting}};
+/// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+pub static KKT: [KktKernels; {k}] = [{}];
+{items}
+fn kkt_transpose_times(phi_q: &[f64], y: &[f64], out: &mut [f64]) -> Result<(), KktError> {{
+let phi_q: &[f64; {np}] = phi_q.try_into().map_err(|_| length_error({np}, phi_q.len()))?;
+let y: &[f64; {m}] = y.try_into().map_err(|_| length_error({m}, y.len()))?;
+let out_len = out.len();
+let out: &mut [f64; {n}] = out.try_into().map_err(|_| length_error({n}, out_len))?;
+{}
+Ok(())
+}}
+",
+        entries.join(", "),
+        transpose(pattern)
+    );
+    Some(text.parse().expect("emitted kernels are Rust tokens"))
+}
+
+/// Factor and solve for one pattern, named with suffix `i`, and its `KktKernels` value.
+fn one(pattern: &KktPattern, i: usize) -> Option<(String, String)> {
     let pattern = KktPattern {
-        kernels: None,
+        kernels: &[],
         ..pattern.clone()
     };
     let solver = SchurKkt::new(&pattern).ok()?;
@@ -128,12 +166,12 @@ pub fn kernels(pattern: &KktPattern) -> Option<TokenStream> {
     let (nm, np) = (pattern.mass_rows.len(), pattern.phi_q_rows.len());
     let ns = stored.slots;
     let fingerprint = pattern.fingerprint();
+    let entry = format!(
+        "KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor_{i}, solve: kkt_solve_{i}, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times }}"
+    );
     let text = format!(
-        "use symbody_runtime::kkt::{{length_error, mass_pivot_error, KktError, KktKernels, Pivoting}};
-/// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-pub static KKT: KktKernels = KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor, solve: kkt_solve, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times }};
-#[allow(unused_variables, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
-fn kkt_factor(mass: &[f64], c: f64, phi_q: &[f64], st: &mut [f64], piv: &mut Pivoting) -> Result<(), KktError> {{
+        "#[allow(unused_variables, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
+fn kkt_factor_{i}(mass: &[f64], c: f64, phi_q: &[f64], st: &mut [f64], piv: &mut Pivoting) -> Result<(), KktError> {{
 let mass: &[f64; {nm}] = mass.try_into().map_err(|_| length_error({nm}, mass.len()))?;
 let phi_q: &[f64; {np}] = phi_q.try_into().map_err(|_| length_error({np}, phi_q.len()))?;
 let st_len = st.len();
@@ -142,7 +180,7 @@ let st: &mut [f64; {ns}] = st.try_into().map_err(|_| length_error({ns}, st_len))
 Ok(())
 }}
 #[allow(unused_variables, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
-fn kkt_solve(f: &[f64], g: &[f64], x: &mut [f64], y: &mut [f64], st: &[f64]) -> Result<(), KktError> {{
+fn kkt_solve_{i}(f: &[f64], g: &[f64], x: &mut [f64], y: &mut [f64], st: &[f64]) -> Result<(), KktError> {{
 let f: &[f64; {n}] = f.try_into().map_err(|_| length_error({n}, f.len()))?;
 let g: &[f64; {m}] = g.try_into().map_err(|_| length_error({m}, g.len()))?;
 let x_len = x.len();
@@ -153,18 +191,10 @@ let st: &[f64; {ns}] = st.try_into().map_err(|_| length_error({ns}, st.len()))?;
 {}
 Ok(())
 }}
-fn kkt_transpose_times(phi_q: &[f64], y: &[f64], out: &mut [f64]) -> Result<(), KktError> {{
-let phi_q: &[f64; {np}] = phi_q.try_into().map_err(|_| length_error({np}, phi_q.len()))?;
-let y: &[f64; {m}] = y.try_into().map_err(|_| length_error({m}, y.len()))?;
-let out_len = out.len();
-let out: &mut [f64; {n}] = out.try_into().map_err(|_| length_error({n}, out_len))?;
-{}
-Ok(())
-}}
 ",
-        factor.text, solve.text, transpose(&pattern)
+        factor.text, solve.text
     );
-    Some(text.parse().expect("emitted kernels are Rust tokens"))
+    Some((text, entry))
 }
 
 /// `out[c] = Σ phi_q[k]·y[row k]` over column `c`'s nonzeros in their order, as

@@ -755,8 +755,13 @@ fn formulation_module(
     let (modname, _, form) = formulation_names(dynamics.formulation);
     let (m_rows, m_cols) = pattern(&dynamics.mass);
     let (pq_rows, pq_cols) = pattern(&sys.phi_q);
-    // The pattern `KktPattern::from_info` builds from this module's `INFO`.
-    let kkt = crate::kkt::kernels(&KktPattern {
+    let mnnz = m_rows.len();
+    let (fq_rows, fq_cols) = pattern(&dynamics.force_q);
+    let (fqd_rows, fqd_cols) = pattern(&dynamics.force_qd);
+    let (fq_nnz, fqd_nnz) = (fq_rows.len(), fqd_rows.len());
+    // The pattern `KktPattern::from_info` builds from this module's `INFO`, and the one HHT
+    // factors with the loads' stiffness.
+    let pattern = KktPattern {
         n: sys.n_coords,
         m: sys.n_constraints,
         mass_rows: m_rows.clone(),
@@ -766,16 +771,15 @@ fn formulation_module(
         redundant_rows: rows.redundant.clone(),
         normalization_rows: rows.normalization.clone(),
         mass_semidefinite: rows.semidefinite,
-        kernels: None,
-    });
-    let kkt_field = match kkt {
-        Some(_) => quote!(Some(&KKT)),
-        None => quote!(None),
+        kernels: &[],
     };
-    let mnnz = m_rows.len();
-    let (fq_rows, fq_cols) = pattern(&dynamics.force_q);
-    let (fqd_rows, fqd_cols) = pattern(&dynamics.force_qd);
-    let (fq_nnz, fqd_nnz) = (fq_rows.len(), fqd_rows.len());
+    let mut patterns = vec![pattern.clone()];
+    patterns.extend(pattern.with_loads((&fq_rows, &fq_cols), (&fqd_rows, &fqd_cols)));
+    let kkt = crate::kkt::kernels(&patterns);
+    let kkt_field = match kkt {
+        Some(_) => quote!(&KKT),
+        None => quote!(&[]),
+    };
     let constant = dynamics.mass_is_constant;
     let fns = dynamics_functions(sys, dynamics);
     quote! {

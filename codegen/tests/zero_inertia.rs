@@ -126,7 +126,7 @@ impl Interpreted {
             qd0: leak(model.qd0()),
             redundant_rows: leak(asm.redundant_rows.clone()),
             platform: None,
-            kkt: None,
+            kkt: &[],
         }));
         Interpreted { sys, info }
     }

@@ -132,6 +132,7 @@ pub(crate) fn phi_q_transpose_times(
 ) {
     let generated = info
         .kkt
+        .first()
         .and_then(|k| k.transpose_for(info.phi_q_rows, info.phi_q_cols));
     if let Some(Ok(())) = generated.map(|t| t(phi_q, y, out)) {
         return;

@@ -26,6 +26,18 @@ pub(crate) struct LoadStiffness {
     values: Vec<f64>,
 }
 
+/// The union of the mass pattern and the symmetrized load Jacobians' patterns, sorted.
+pub(crate) fn union(mass: &[(u32, u32)], dq: &[(u32, u32)], dqd: &[(u32, u32)]) -> Vec<(u32, u32)> {
+    let mut union: Vec<(u32, u32)> = mass.to_vec();
+    for &(r, c) in dq.iter().chain(dqd) {
+        union.push((r, c));
+        union.push((c, r));
+    }
+    union.sort_unstable();
+    union.dedup();
+    union
+}
+
 impl LoadStiffness {
     /// `None` when the mechanism has no load Jacobian (nothing to add).
     pub(crate) fn new(info: &MechanismInfo) -> Option<Self> {
@@ -38,13 +50,7 @@ impl LoadStiffness {
         let mass = pairs(info.mass_rows, info.mass_cols);
         let dq = pairs(info.force_q_rows, info.force_q_cols);
         let dqd = pairs(info.force_qd_rows, info.force_qd_cols);
-        let mut union: Vec<(u32, u32)> = mass.clone();
-        for &(r, c) in dq.iter().chain(&dqd) {
-            union.push((r, c));
-            union.push((c, r));
-        }
-        union.sort_unstable();
-        union.dedup();
+        let union = union(&mass, &dq, &dqd);
         let slot = |p: (u32, u32)| union.binary_search(&p).expect("in the union");
         let both = |&(r, c): &(u32, u32)| (slot((r, c)), slot((c, r)));
         Some(LoadStiffness {
@@ -121,7 +127,7 @@ mod tests {
             qd0: &[0.0; 2],
             redundant_rows: &[],
             platform: None,
-            kkt: None,
+            kkt: &[],
         };
         let mut s = LoadStiffness::new(&INFO).unwrap();
         assert_eq!(s.rows, [0, 0, 1, 1]);

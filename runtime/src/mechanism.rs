@@ -178,10 +178,12 @@ pub struct MechanismInfo {
     /// Detected by the generator: the body held to the ground by six legs of driven length,
     /// for forward kinematics. `None` when the mechanism is not such a platform.
     pub platform: Option<PlatformInfo>,
-    /// The KKT factor and solve the generator emitted for this model's pattern (`None`:
-    /// none were, e.g. an interpreted model or one too large for straight-line code); see
+    /// The KKT factor and solve the generator emitted for this model's patterns: the mass
+    /// matrix's, then (with loads that have Jacobians) the one with the loads' stiffness
+    /// ([`KktPattern::with_loads`](crate::kkt::KktPattern::with_loads)). Empty when none
+    /// were, e.g. an interpreted model or one too large for straight-line code; see
     /// [`KktKernels`](crate::kkt::KktKernels).
-    pub kkt: Option<&'static crate::kkt::KktKernels>,
+    pub kkt: &'static [crate::kkt::KktKernels],
 }
 
 /// One leg of a platform held to the ground by legs of driven length (forward kinematics).

@@ -481,7 +481,7 @@ mod tests {
                 qd0: &[],
                 redundant_rows: &[],
                 platform: None,
-                kkt: None,
+                kkt: &[],
             };
         };
     }

@@ -285,7 +285,7 @@ mod tests {
         force_q_cols: &[],
         force_qd_rows: &[],
         force_qd_cols: &[],
-        kkt: None,
+        kkt: &[],
     };
 
     #[test]

@@ -160,7 +160,7 @@ static PENDULUM_PAPER: MechanismInfo = MechanismInfo {
     qd0: &[0.0; 6],
     redundant_rows: &[],
     platform: None,
-    kkt: None,
+    kkt: &[],
 };
 
 static PENDULUM_EXACT: MechanismInfo = MechanismInfo {
@@ -400,7 +400,7 @@ static CIRCLE: MechanismInfo = MechanismInfo {
     qd0: &[0.0; 6],
     redundant_rows: &[],
     platform: None,
-    kkt: None,
+    kkt: &[],
 };
 
 /// Rows: `X − d`, `Z`, `θ`, `β`, `γ` (the guide), then `√(X² + Y²) − c(t)` (the driver),
@@ -719,7 +719,7 @@ static QUAT_PENDULUM: MechanismInfo = MechanismInfo {
     qd0: &[0.0; 7],
     redundant_rows: &[],
     platform: None,
-    kkt: None,
+    kkt: &[],
 };
 
 /// The exact pendulum with Euler parameters: body point `(0, L, 0)` held at the origin,

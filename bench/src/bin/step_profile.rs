@@ -87,7 +87,7 @@ fn main() {
     let (xs, ys) = (x.clone(), y.clone());
     // The same solver without the generated kernels: its own loops over index lists.
     let mut loops = SchurKkt::new(&KktPattern {
-        kernels: None,
+        kernels: &[],
         ..pattern.clone()
     })
     .unwrap_or_else(|e| fail(&e.to_string()));

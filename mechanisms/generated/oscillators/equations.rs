@@ -1401,27 +1401,38 @@ pub mod exact {
         qd0: &QD0,
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
-        kkt: Some(&KKT),
+        kkt: &KKT,
     };
     use symbody_runtime::kkt::{
         length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
-    /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-    pub static KKT: KktKernels = KktKernels {
-        pattern: 0xf12494a443116ee4,
-        storage: 80,
-        factor: kkt_factor,
-        solve: kkt_solve,
-        phi_q_rows: &PHI_Q_ROWS,
-        phi_q_cols: &PHI_Q_COLS,
-        transpose_times: kkt_transpose_times,
-    };
+    /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+    pub static KKT: [KktKernels; 2] = [
+        KktKernels {
+            pattern: 0xf12494a443116ee4,
+            storage: 80,
+            factor: kkt_factor_0,
+            solve: kkt_solve_0,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
+        },
+        KktKernels {
+            pattern: 0xc64715c39133be24,
+            storage: 85,
+            factor: kkt_factor_1,
+            solve: kkt_solve_1,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
+        },
+    ];
     #[allow(
         unused_variables,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_factor(
+    fn kkt_factor_0(
         mass: &[f64],
         c: f64,
         phi_q: &[f64],
@@ -1923,7 +1934,7 @@ pub mod exact {
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_solve(
+    fn kkt_solve_0(
         f: &[f64],
         g: &[f64],
         x: &mut [f64],
@@ -2187,6 +2198,815 @@ pub mod exact {
         x[11] = v178;
         x[12] = v175;
         x[13] = v173;
+        Ok(())
+    }
+    #[allow(
+        unused_variables,
+        clippy::neg_cmp_op_on_partial_ord,
+        clippy::nonminimal_bool
+    )]
+    fn kkt_factor_1(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        let mass: &[f64; 44] = mass
+            .try_into()
+            .map_err(|_| length_error(44, mass.len()))?;
+        let phi_q: &[f64; 33] = phi_q
+            .try_into()
+            .map_err(|_| length_error(33, phi_q.len()))?;
+        let st_len = st.len();
+        let st: &mut [f64; 85] = st.try_into().map_err(|_| length_error(85, st_len))?;
+        let v0: f64 = c * mass[0];
+        let v1: f64 = c * mass[1];
+        let v2: f64 = c * mass[2];
+        let v3: f64 = c * mass[3];
+        let v4: f64 = c * mass[4];
+        let v5: f64 = c * mass[5];
+        let v6: f64 = c * mass[6];
+        let v7: f64 = c * mass[7];
+        let v8: f64 = c * mass[8];
+        let v9: f64 = c * mass[9];
+        let v10: f64 = c * mass[10];
+        let v11: f64 = c * mass[11];
+        let v12: f64 = c * mass[12];
+        let v13: f64 = c * mass[13];
+        let v14: f64 = c * mass[14];
+        let v15: f64 = c * mass[15];
+        let v16: f64 = c * mass[16];
+        let v17: f64 = c * mass[17];
+        let v18: f64 = c * mass[18];
+        let v19: f64 = c * mass[19];
+        let v20: f64 = c * mass[20];
+        let v21: f64 = c * mass[21];
+        let v22: f64 = c * mass[22];
+        let v23: f64 = c * mass[23];
+        let v24: f64 = c * mass[24];
+        let v25: f64 = c * mass[25];
+        let v26: f64 = c * mass[26];
+        let v27: f64 = c * mass[27];
+        let v28: f64 = c * mass[28];
+        let v29: f64 = c * mass[29];
+        let v30: f64 = c * mass[30];
+        let v31: f64 = c * mass[31];
+        let v32: f64 = c * mass[32];
+        let v33: f64 = c * mass[33];
+        let v34: f64 = c * mass[34];
+        let v35: f64 = c * mass[35];
+        let v36: f64 = c * mass[36];
+        let v37: f64 = c * mass[37];
+        let v38: f64 = c * mass[38];
+        let v39: f64 = c * mass[39];
+        let v40: f64 = c * mass[40];
+        let v41: f64 = c * mass[41];
+        let v42: f64 = c * mass[42];
+        let v43: f64 = c * mass[43];
+        let v44: f64 = phi_q[0];
+        let v45: f64 = phi_q[1];
+        let v46: f64 = phi_q[2];
+        let v47: f64 = phi_q[3];
+        let v48: f64 = phi_q[4];
+        let v49: f64 = phi_q[5];
+        let v50: f64 = phi_q[6];
+        let v51: f64 = phi_q[7];
+        let v52: f64 = phi_q[8];
+        let v53: f64 = phi_q[9];
+        let v54: f64 = phi_q[10];
+        let v55: f64 = phi_q[11];
+        let v56: f64 = phi_q[12];
+        let v57: f64 = phi_q[13];
+        let v58: f64 = phi_q[14];
+        let v59: f64 = phi_q[15];
+        let v60: f64 = phi_q[16];
+        let v61: f64 = phi_q[17];
+        let v62: f64 = phi_q[18];
+        let v63: f64 = phi_q[19];
+        let v64: f64 = phi_q[20];
+        let v65: f64 = phi_q[21];
+        let v66: f64 = phi_q[22];
+        let v67: f64 = phi_q[23];
+        let v68: f64 = phi_q[24];
+        let v69: f64 = phi_q[25];
+        let v70: f64 = phi_q[26];
+        let v71: f64 = phi_q[27];
+        let v72: f64 = phi_q[28];
+        let v73: f64 = phi_q[29];
+        let v74: f64 = phi_q[30];
+        let v75: f64 = phi_q[31];
+        let v76: f64 = phi_q[32];
+        if !(v0 > 0.0) || !v0.is_finite() {
+            return Err(mass_pivot_error(v0, 0));
+        }
+        let v77: f64 = v0.sqrt();
+        let v78: f64 = 1.0 / v77;
+        let v79: f64 = v3 * v78;
+        let v80: f64 = v6 * v78;
+        let v81: f64 = v4 - v79 * v79;
+        if !(v81 > 0.0) || !v81.is_finite() {
+            return Err(mass_pivot_error(v81, 1));
+        }
+        let v82: f64 = v81.sqrt();
+        let v83: f64 = 1.0 / v82;
+        let v84: f64 = v7 - v80 * v79;
+        let v85: f64 = v84 * v83;
+        let v86: f64 = v8 - v80 * v80;
+        let v87: f64 = v86 - v85 * v85;
+        if !(v87 > 0.0) || !v87.is_finite() {
+            return Err(mass_pivot_error(v87, 2));
+        }
+        let v88: f64 = v87.sqrt();
+        let v89: f64 = 1.0 / v88;
+        let v90: f64 = v52 * v83;
+        let v91: f64 = -(v85 * v90);
+        let v92: f64 = v91 * v89;
+        let v93: f64 = v53 * v89;
+        let v94: f64 = v90 * v90;
+        let v95: f64 = v92 * v92;
+        let v96: f64 = v94 + v95;
+        let v97: f64 = v93 * v92;
+        let v98: f64 = v93 * v93;
+        if !(v9 > 0.0) || !v9.is_finite() {
+            return Err(mass_pivot_error(v9, 3));
+        }
+        let v99: f64 = v9.sqrt();
+        let v100: f64 = 1.0 / v99;
+        let v101: f64 = v13 * v100;
+        let v102: f64 = v17 * v100;
+        let v103: f64 = v21 * v100;
+        let v104: f64 = v14 - v101 * v101;
+        if !(v104 > 0.0) || !v104.is_finite() {
+            return Err(mass_pivot_error(v104, 4));
+        }
+        let v105: f64 = v104.sqrt();
+        let v106: f64 = 1.0 / v105;
+        let v107: f64 = v18 - v102 * v101;
+        let v108: f64 = v107 * v106;
+        let v109: f64 = v22 - v103 * v101;
+        let v110: f64 = v109 * v106;
+        let v111: f64 = v19 - v102 * v102;
+        let v112: f64 = v111 - v108 * v108;
+        if !(v112 > 0.0) || !v112.is_finite() {
+            return Err(mass_pivot_error(v112, 5));
+        }
+        let v113: f64 = v112.sqrt();
+        let v114: f64 = 1.0 / v113;
+        let v115: f64 = v23 - v103 * v102;
+        let v116: f64 = v115 - v110 * v108;
+        let v117: f64 = v116 * v114;
+        let v118: f64 = v24 - v103 * v103;
+        let v119: f64 = v118 - v110 * v110;
+        let v120: f64 = v119 - v117 * v117;
+        if !(v120 > 0.0) || !v120.is_finite() {
+            return Err(mass_pivot_error(v120, 6));
+        }
+        let v121: f64 = v120.sqrt();
+        let v122: f64 = 1.0 / v121;
+        let v123: f64 = v44 * v100;
+        let v124: f64 = v45 - v101 * v123;
+        let v125: f64 = v124 * v106;
+        let v126: f64 = v46 - v102 * v123;
+        let v127: f64 = v126 - v108 * v125;
+        let v128: f64 = v127 * v114;
+        let v129: f64 = v47 - v103 * v123;
+        let v130: f64 = v129 - v110 * v125;
+        let v131: f64 = v130 - v117 * v128;
+        let v132: f64 = v131 * v122;
+        let v133: f64 = v48 * v100;
+        let v134: f64 = v49 - v101 * v133;
+        let v135: f64 = v134 * v106;
+        let v136: f64 = v50 - v102 * v133;
+        let v137: f64 = v136 - v108 * v135;
+        let v138: f64 = v137 * v114;
+        let v139: f64 = v51 - v103 * v133;
+        let v140: f64 = v139 - v110 * v135;
+        let v141: f64 = v140 - v117 * v138;
+        let v142: f64 = v141 * v122;
+        let v143: f64 = v54 * v100;
+        let v144: f64 = v55 - v101 * v143;
+        let v145: f64 = v144 * v106;
+        let v146: f64 = v56 - v102 * v143;
+        let v147: f64 = v146 - v108 * v145;
+        let v148: f64 = v147 * v114;
+        let v149: f64 = v57 - v103 * v143;
+        let v150: f64 = v149 - v110 * v145;
+        let v151: f64 = v150 - v117 * v148;
+        let v152: f64 = v151 * v122;
+        let v153: f64 = v69 * v100;
+        let v154: f64 = v70 - v101 * v153;
+        let v155: f64 = v154 * v106;
+        let v156: f64 = v71 - v102 * v153;
+        let v157: f64 = v156 - v108 * v155;
+        let v158: f64 = v157 * v114;
+        let v159: f64 = v72 - v103 * v153;
+        let v160: f64 = v159 - v110 * v155;
+        let v161: f64 = v160 - v117 * v158;
+        let v162: f64 = v161 * v122;
+        let v163: f64 = v123 * v123;
+        let v164: f64 = v125 * v125;
+        let v165: f64 = v163 + v164;
+        let v166: f64 = v128 * v128;
+        let v167: f64 = v165 + v166;
+        let v168: f64 = v132 * v132;
+        let v169: f64 = v167 + v168;
+        let v170: f64 = v133 * v123;
+        let v171: f64 = v135 * v125;
+        let v172: f64 = v170 + v171;
+        let v173: f64 = v138 * v128;
+        let v174: f64 = v172 + v173;
+        let v175: f64 = v142 * v132;
+        let v176: f64 = v174 + v175;
+        let v177: f64 = v133 * v133;
+        let v178: f64 = v135 * v135;
+        let v179: f64 = v177 + v178;
+        let v180: f64 = v138 * v138;
+        let v181: f64 = v179 + v180;
+        let v182: f64 = v142 * v142;
+        let v183: f64 = v181 + v182;
+        let v184: f64 = v143 * v123;
+        let v185: f64 = v145 * v125;
+        let v186: f64 = v184 + v185;
+        let v187: f64 = v148 * v128;
+        let v188: f64 = v186 + v187;
+        let v189: f64 = v152 * v132;
+        let v190: f64 = v188 + v189;
+        let v191: f64 = v143 * v133;
+        let v192: f64 = v145 * v135;
+        let v193: f64 = v191 + v192;
+        let v194: f64 = v148 * v138;
+        let v195: f64 = v193 + v194;
+        let v196: f64 = v152 * v142;
+        let v197: f64 = v195 + v196;
+        let v198: f64 = v143 * v143;
+        let v199: f64 = v145 * v145;
+        let v200: f64 = v198 + v199;
+        let v201: f64 = v148 * v148;
+        let v202: f64 = v200 + v201;
+        let v203: f64 = v152 * v152;
+        let v204: f64 = v202 + v203;
+        let v205: f64 = v153 * v123;
+        let v206: f64 = v155 * v125;
+        let v207: f64 = v205 + v206;
+        let v208: f64 = v158 * v128;
+        let v209: f64 = v207 + v208;
+        let v210: f64 = v162 * v132;
+        let v211: f64 = v209 + v210;
+        let v212: f64 = v153 * v133;
+        let v213: f64 = v155 * v135;
+        let v214: f64 = v212 + v213;
+        let v215: f64 = v158 * v138;
+        let v216: f64 = v214 + v215;
+        let v217: f64 = v162 * v142;
+        let v218: f64 = v216 + v217;
+        let v219: f64 = v153 * v143;
+        let v220: f64 = v155 * v145;
+        let v221: f64 = v219 + v220;
+        let v222: f64 = v158 * v148;
+        let v223: f64 = v221 + v222;
+        let v224: f64 = v162 * v152;
+        let v225: f64 = v223 + v224;
+        let v226: f64 = v153 * v153;
+        let v227: f64 = v155 * v155;
+        let v228: f64 = v226 + v227;
+        let v229: f64 = v158 * v158;
+        let v230: f64 = v228 + v229;
+        let v231: f64 = v162 * v162;
+        let v232: f64 = v230 + v231;
+        if !(v25 > 0.0) || !v25.is_finite() {
+            return Err(mass_pivot_error(v25, 7));
+        }
+        let v233: f64 = v25.sqrt();
+        let v234: f64 = 1.0 / v233;
+        let v235: f64 = v58 * v234;
+        let v236: f64 = v235 * v235;
+        if !(v26 > 0.0) || !v26.is_finite() {
+            return Err(mass_pivot_error(v26, 8));
+        }
+        let v237: f64 = v26.sqrt();
+        let v238: f64 = 1.0 / v237;
+        let v239: f64 = v59 * v238;
+        let v240: f64 = v239 * v239;
+        if !(v27 > 0.0) || !v27.is_finite() {
+            return Err(mass_pivot_error(v27, 9));
+        }
+        let v241: f64 = v27.sqrt();
+        let v242: f64 = 1.0 / v241;
+        let v243: f64 = v60 * v242;
+        let v244: f64 = v243 * v243;
+        if !(v28 > 0.0) || !v28.is_finite() {
+            return Err(mass_pivot_error(v28, 10));
+        }
+        let v245: f64 = v28.sqrt();
+        let v246: f64 = 1.0 / v245;
+        let v247: f64 = v32 * v246;
+        let v248: f64 = v36 * v246;
+        let v249: f64 = v40 * v246;
+        let v250: f64 = v33 - v247 * v247;
+        if !(v250 > 0.0) || !v250.is_finite() {
+            return Err(mass_pivot_error(v250, 11));
+        }
+        let v251: f64 = v250.sqrt();
+        let v252: f64 = 1.0 / v251;
+        let v253: f64 = v37 - v248 * v247;
+        let v254: f64 = v253 * v252;
+        let v255: f64 = v41 - v249 * v247;
+        let v256: f64 = v255 * v252;
+        let v257: f64 = v38 - v248 * v248;
+        let v258: f64 = v257 - v254 * v254;
+        if !(v258 > 0.0) || !v258.is_finite() {
+            return Err(mass_pivot_error(v258, 12));
+        }
+        let v259: f64 = v258.sqrt();
+        let v260: f64 = 1.0 / v259;
+        let v261: f64 = v42 - v249 * v248;
+        let v262: f64 = v261 - v256 * v254;
+        let v263: f64 = v262 * v260;
+        let v264: f64 = v43 - v249 * v249;
+        let v265: f64 = v264 - v256 * v256;
+        let v266: f64 = v265 - v263 * v263;
+        if !(v266 > 0.0) || !v266.is_finite() {
+            return Err(mass_pivot_error(v266, 13));
+        }
+        let v267: f64 = v266.sqrt();
+        let v268: f64 = 1.0 / v267;
+        let v269: f64 = v61 * v246;
+        let v270: f64 = v62 - v247 * v269;
+        let v271: f64 = v270 * v252;
+        let v272: f64 = v63 - v248 * v269;
+        let v273: f64 = v272 - v254 * v271;
+        let v274: f64 = v273 * v260;
+        let v275: f64 = v64 - v249 * v269;
+        let v276: f64 = v275 - v256 * v271;
+        let v277: f64 = v276 - v263 * v274;
+        let v278: f64 = v277 * v268;
+        let v279: f64 = v65 * v246;
+        let v280: f64 = v66 - v247 * v279;
+        let v281: f64 = v280 * v252;
+        let v282: f64 = v67 - v248 * v279;
+        let v283: f64 = v282 - v254 * v281;
+        let v284: f64 = v283 * v260;
+        let v285: f64 = v68 - v249 * v279;
+        let v286: f64 = v285 - v256 * v281;
+        let v287: f64 = v286 - v263 * v284;
+        let v288: f64 = v287 * v268;
+        let v289: f64 = v73 * v246;
+        let v290: f64 = v74 - v247 * v289;
+        let v291: f64 = v290 * v252;
+        let v292: f64 = v75 - v248 * v289;
+        let v293: f64 = v292 - v254 * v291;
+        let v294: f64 = v293 * v260;
+        let v295: f64 = v76 - v249 * v289;
+        let v296: f64 = v295 - v256 * v291;
+        let v297: f64 = v296 - v263 * v294;
+        let v298: f64 = v297 * v268;
+        let v299: f64 = v269 * v269;
+        let v300: f64 = v271 * v271;
+        let v301: f64 = v299 + v300;
+        let v302: f64 = v274 * v274;
+        let v303: f64 = v301 + v302;
+        let v304: f64 = v278 * v278;
+        let v305: f64 = v303 + v304;
+        let v306: f64 = v279 * v269;
+        let v307: f64 = v281 * v271;
+        let v308: f64 = v306 + v307;
+        let v309: f64 = v284 * v274;
+        let v310: f64 = v308 + v309;
+        let v311: f64 = v288 * v278;
+        let v312: f64 = v310 + v311;
+        let v313: f64 = v279 * v279;
+        let v314: f64 = v281 * v281;
+        let v315: f64 = v313 + v314;
+        let v316: f64 = v284 * v284;
+        let v317: f64 = v315 + v316;
+        let v318: f64 = v288 * v288;
+        let v319: f64 = v317 + v318;
+        let v320: f64 = v289 * v269;
+        let v321: f64 = v291 * v271;
+        let v322: f64 = v320 + v321;
+        let v323: f64 = v294 * v274;
+        let v324: f64 = v322 + v323;
+        let v325: f64 = v298 * v278;
+        let v326: f64 = v324 + v325;
+        let v327: f64 = v289 * v279;
+        let v328: f64 = v291 * v281;
+        let v329: f64 = v327 + v328;
+        let v330: f64 = v294 * v284;
+        let v331: f64 = v329 + v330;
+        let v332: f64 = v298 * v288;
+        let v333: f64 = v331 + v332;
+        let v334: f64 = v289 * v289;
+        let v335: f64 = v291 * v291;
+        let v336: f64 = v334 + v335;
+        let v337: f64 = v294 * v294;
+        let v338: f64 = v336 + v337;
+        let v339: f64 = v298 * v298;
+        let v340: f64 = v338 + v339;
+        let (v341, v342) = piv.pivot(v232, v232, 10, false)?;
+        let v343: f64 = v211 * v341;
+        let v344: f64 = v169 - v343 * v342 * v343;
+        let v345: f64 = v218 * v341;
+        let v346: f64 = v183 - v345 * v342 * v345;
+        let v347: f64 = v225 * v341;
+        let v348: f64 = v204 - v347 * v342 * v347;
+        let v349: f64 = v176 - v345 * v342 * v343;
+        let v350: f64 = v190 - v347 * v342 * v343;
+        let v351: f64 = v197 - v347 * v342 * v345;
+        let (v352, v353) = piv.pivot(v340, v340, 11, false)?;
+        let v354: f64 = v326 * v352;
+        let v355: f64 = v305 - v354 * v353 * v354;
+        let v356: f64 = v333 * v352;
+        let v357: f64 = v319 - v356 * v353 * v356;
+        let v358: f64 = v312 - v356 * v353 * v354;
+        let (v359, v360) = piv.pivot(v236, v236, 5, false)?;
+        let (v361, v362) = piv.pivot(v240, v240, 6, false)?;
+        let (v363, v364) = piv.pivot(v244, v244, 7, false)?;
+        let (v365, v366) = piv.pivot(v96, v96, 2, false)?;
+        let v367: f64 = v97 * v365;
+        let v368: f64 = v98 - v367 * v366 * v367;
+        let (v369, v370) = piv.pivot(v368, v98, 3, false)?;
+        let (v371, v372) = piv.pivot(v355, v355, 8, false)?;
+        let v373: f64 = v358 * v371;
+        let v374: f64 = v357 - v373 * v372 * v373;
+        let (v375, v376) = piv.pivot(v374, v357, 9, false)?;
+        let (v377, v378) = piv.pivot(v344, v344, 0, false)?;
+        let v379: f64 = v349 * v377;
+        let v380: f64 = v346 - v379 * v378 * v379;
+        let v381: f64 = v350 * v377;
+        let v382: f64 = v348 - v381 * v378 * v381;
+        let v383: f64 = v351 - v381 * v378 * v379;
+        let (v384, v385) = piv.pivot(v380, v346, 1, false)?;
+        let v386: f64 = v383 * v384;
+        let v387: f64 = v382 - v386 * v385 * v386;
+        let (v388, v389) = piv.pivot(v387, v348, 4, false)?;
+        st[0] = v79;
+        st[1] = v80;
+        st[2] = v85;
+        st[3] = v101;
+        st[4] = v102;
+        st[5] = v108;
+        st[6] = v103;
+        st[7] = v110;
+        st[8] = v117;
+        st[9] = v247;
+        st[10] = v248;
+        st[11] = v254;
+        st[12] = v249;
+        st[13] = v256;
+        st[14] = v263;
+        st[15] = v78;
+        st[16] = v83;
+        st[17] = v89;
+        st[18] = v100;
+        st[19] = v106;
+        st[20] = v114;
+        st[21] = v122;
+        st[22] = v234;
+        st[23] = v238;
+        st[24] = v242;
+        st[25] = v246;
+        st[26] = v252;
+        st[27] = v260;
+        st[28] = v268;
+        st[29] = v90;
+        st[30] = v92;
+        st[31] = v93;
+        st[32] = v123;
+        st[33] = v125;
+        st[34] = v128;
+        st[35] = v132;
+        st[36] = v133;
+        st[37] = v135;
+        st[38] = v138;
+        st[39] = v142;
+        st[40] = v143;
+        st[41] = v145;
+        st[42] = v148;
+        st[43] = v152;
+        st[44] = v153;
+        st[45] = v155;
+        st[46] = v158;
+        st[47] = v162;
+        st[48] = v235;
+        st[49] = v239;
+        st[50] = v243;
+        st[51] = v269;
+        st[52] = v271;
+        st[53] = v274;
+        st[54] = v278;
+        st[55] = v279;
+        st[56] = v281;
+        st[57] = v284;
+        st[58] = v288;
+        st[59] = v289;
+        st[60] = v291;
+        st[61] = v294;
+        st[62] = v298;
+        st[63] = v343;
+        st[64] = v345;
+        st[65] = v347;
+        st[66] = v354;
+        st[67] = v356;
+        st[68] = v367;
+        st[69] = v373;
+        st[70] = v379;
+        st[71] = v381;
+        st[72] = v386;
+        st[73] = v341;
+        st[74] = v352;
+        st[75] = v359;
+        st[76] = v361;
+        st[77] = v363;
+        st[78] = v365;
+        st[79] = v369;
+        st[80] = v371;
+        st[81] = v375;
+        st[82] = v377;
+        st[83] = v384;
+        st[84] = v388;
+        Ok(())
+    }
+    #[allow(
+        unused_variables,
+        clippy::neg_cmp_op_on_partial_ord,
+        clippy::nonminimal_bool
+    )]
+    fn kkt_solve_1(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        let f: &[f64; 14] = f.try_into().map_err(|_| length_error(14, f.len()))?;
+        let g: &[f64; 12] = g.try_into().map_err(|_| length_error(12, g.len()))?;
+        let x_len = x.len();
+        let x: &mut [f64; 14] = x.try_into().map_err(|_| length_error(14, x_len))?;
+        let y_len = y.len();
+        let y: &mut [f64; 12] = y.try_into().map_err(|_| length_error(12, y_len))?;
+        let st: &[f64; 85] = st.try_into().map_err(|_| length_error(85, st.len()))?;
+        x.fill(0.0);
+        y[0] = -g[0];
+        y[1] = -g[1];
+        y[2] = -g[2];
+        y[3] = -g[3];
+        y[4] = -g[4];
+        y[5] = -g[5];
+        y[6] = -g[6];
+        y[7] = -g[7];
+        y[8] = -g[8];
+        y[9] = -g[9];
+        y[10] = -g[10];
+        y[11] = -g[11];
+        if f.iter().any(|&v| v != 0.0) {
+            let v0: f64 = f[0];
+            let v1: f64 = f[1];
+            let v2: f64 = f[2];
+            let v3: f64 = v0 * st[15];
+            let v4: f64 = v1 - st[0] * v3;
+            let v5: f64 = v4 * st[16];
+            let v6: f64 = v2 - st[1] * v3;
+            let v7: f64 = v6 - st[2] * v5;
+            let v8: f64 = v7 * st[17];
+            let v9: f64 = st[29] * v5;
+            let v10: f64 = st[30] * v8;
+            let v11: f64 = v9 + v10;
+            y[2] += v11;
+            let v12: f64 = st[31] * v8;
+            y[3] += v12;
+            x[0] = v3;
+            x[1] = v5;
+            x[2] = v8;
+            let v13: f64 = f[3];
+            let v14: f64 = f[4];
+            let v15: f64 = f[5];
+            let v16: f64 = f[6];
+            let v17: f64 = v13 * st[18];
+            let v18: f64 = v14 - st[3] * v17;
+            let v19: f64 = v18 * st[19];
+            let v20: f64 = v15 - st[4] * v17;
+            let v21: f64 = v20 - st[5] * v19;
+            let v22: f64 = v21 * st[20];
+            let v23: f64 = v16 - st[6] * v17;
+            let v24: f64 = v23 - st[7] * v19;
+            let v25: f64 = v24 - st[8] * v22;
+            let v26: f64 = v25 * st[21];
+            let v27: f64 = st[32] * v17;
+            let v28: f64 = st[33] * v19;
+            let v29: f64 = v27 + v28;
+            let v30: f64 = st[34] * v22;
+            let v31: f64 = v29 + v30;
+            let v32: f64 = st[35] * v26;
+            let v33: f64 = v31 + v32;
+            y[0] += v33;
+            let v34: f64 = st[36] * v17;
+            let v35: f64 = st[37] * v19;
+            let v36: f64 = v34 + v35;
+            let v37: f64 = st[38] * v22;
+            let v38: f64 = v36 + v37;
+            let v39: f64 = st[39] * v26;
+            let v40: f64 = v38 + v39;
+            y[1] += v40;
+            let v41: f64 = st[40] * v17;
+            let v42: f64 = st[41] * v19;
+            let v43: f64 = v41 + v42;
+            let v44: f64 = st[42] * v22;
+            let v45: f64 = v43 + v44;
+            let v46: f64 = st[43] * v26;
+            let v47: f64 = v45 + v46;
+            y[4] += v47;
+            let v48: f64 = st[44] * v17;
+            let v49: f64 = st[45] * v19;
+            let v50: f64 = v48 + v49;
+            let v51: f64 = st[46] * v22;
+            let v52: f64 = v50 + v51;
+            let v53: f64 = st[47] * v26;
+            let v54: f64 = v52 + v53;
+            y[10] += v54;
+            x[3] = v17;
+            x[4] = v19;
+            x[5] = v22;
+            x[6] = v26;
+            let v55: f64 = f[7];
+            let v56: f64 = v55 * st[22];
+            let v57: f64 = st[48] * v56;
+            y[5] += v57;
+            x[7] = v56;
+            let v58: f64 = f[8];
+            let v59: f64 = v58 * st[23];
+            let v60: f64 = st[49] * v59;
+            y[6] += v60;
+            x[8] = v59;
+            let v61: f64 = f[9];
+            let v62: f64 = v61 * st[24];
+            let v63: f64 = st[50] * v62;
+            y[7] += v63;
+            x[9] = v62;
+            let v64: f64 = f[10];
+            let v65: f64 = f[11];
+            let v66: f64 = f[12];
+            let v67: f64 = f[13];
+            let v68: f64 = v64 * st[25];
+            let v69: f64 = v65 - st[9] * v68;
+            let v70: f64 = v69 * st[26];
+            let v71: f64 = v66 - st[10] * v68;
+            let v72: f64 = v71 - st[11] * v70;
+            let v73: f64 = v72 * st[27];
+            let v74: f64 = v67 - st[12] * v68;
+            let v75: f64 = v74 - st[13] * v70;
+            let v76: f64 = v75 - st[14] * v73;
+            let v77: f64 = v76 * st[28];
+            let v78: f64 = st[51] * v68;
+            let v79: f64 = st[52] * v70;
+            let v80: f64 = v78 + v79;
+            let v81: f64 = st[53] * v73;
+            let v82: f64 = v80 + v81;
+            let v83: f64 = st[54] * v77;
+            let v84: f64 = v82 + v83;
+            y[8] += v84;
+            let v85: f64 = st[55] * v68;
+            let v86: f64 = st[56] * v70;
+            let v87: f64 = v85 + v86;
+            let v88: f64 = st[57] * v73;
+            let v89: f64 = v87 + v88;
+            let v90: f64 = st[58] * v77;
+            let v91: f64 = v89 + v90;
+            y[9] += v91;
+            let v92: f64 = st[59] * v68;
+            let v93: f64 = st[60] * v70;
+            let v94: f64 = v92 + v93;
+            let v95: f64 = st[61] * v73;
+            let v96: f64 = v94 + v95;
+            let v97: f64 = st[62] * v77;
+            let v98: f64 = v96 + v97;
+            y[11] += v98;
+            x[10] = v68;
+            x[11] = v70;
+            x[12] = v73;
+            x[13] = v77;
+        }
+        let v99: f64 = y[0] - st[63] * y[10];
+        let v100: f64 = y[1] - st[64] * y[10];
+        let v101: f64 = y[4] - st[65] * y[10];
+        let v102: f64 = y[8] - st[66] * y[11];
+        let v103: f64 = y[9] - st[67] * y[11];
+        let v104: f64 = y[3] - st[68] * y[2];
+        let v105: f64 = v103 - st[69] * v102;
+        let v106: f64 = v100 - st[70] * v99;
+        let v107: f64 = v101 - st[71] * v99;
+        let v108: f64 = v107 - st[72] * v106;
+        let v109: f64 = y[10] * st[73];
+        let v110: f64 = y[11] * st[74];
+        let v111: f64 = y[5] * st[75];
+        let v112: f64 = y[6] * st[76];
+        let v113: f64 = y[7] * st[77];
+        let v114: f64 = y[2] * st[78];
+        let v115: f64 = v104 * st[79];
+        let v116: f64 = v102 * st[80];
+        let v117: f64 = v105 * st[81];
+        let v118: f64 = v99 * st[82];
+        let v119: f64 = v106 * st[83];
+        let v120: f64 = v108 * st[84];
+        let v121: f64 = v119 - st[72] * v120;
+        let v122: f64 = v118 - st[70] * v121;
+        let v123: f64 = v122 - st[71] * v120;
+        let v124: f64 = v116 - st[69] * v117;
+        let v125: f64 = v114 - st[68] * v115;
+        let v126: f64 = v110 - st[66] * v124;
+        let v127: f64 = v126 - st[67] * v117;
+        let v128: f64 = v109 - st[63] * v123;
+        let v129: f64 = v128 - st[64] * v121;
+        let v130: f64 = v129 - st[65] * v120;
+        y[10] = v130;
+        y[11] = v127;
+        y[5] = v111;
+        y[6] = v112;
+        y[7] = v113;
+        y[2] = v125;
+        y[3] = v115;
+        y[8] = v124;
+        y[9] = v117;
+        y[0] = v123;
+        y[1] = v121;
+        y[4] = v120;
+        let v131: f64 = x[1] - st[29] * v125;
+        let v132: f64 = x[2] - st[30] * v125;
+        let v133: f64 = v132 - st[31] * v115;
+        let v134: f64 = v133 * st[17];
+        let v135: f64 = v131 - st[2] * v134;
+        let v136: f64 = v135 * st[16];
+        let v137: f64 = x[0] - st[0] * v136;
+        let v138: f64 = v137 - st[1] * v134;
+        let v139: f64 = v138 * st[15];
+        x[0] = v139;
+        x[1] = v136;
+        x[2] = v134;
+        let v140: f64 = x[3] - st[32] * v123;
+        let v141: f64 = x[4] - st[33] * v123;
+        let v142: f64 = x[5] - st[34] * v123;
+        let v143: f64 = x[6] - st[35] * v123;
+        let v144: f64 = v140 - st[36] * v121;
+        let v145: f64 = v141 - st[37] * v121;
+        let v146: f64 = v142 - st[38] * v121;
+        let v147: f64 = v143 - st[39] * v121;
+        let v148: f64 = v144 - st[40] * v120;
+        let v149: f64 = v145 - st[41] * v120;
+        let v150: f64 = v146 - st[42] * v120;
+        let v151: f64 = v147 - st[43] * v120;
+        let v152: f64 = v148 - st[44] * v130;
+        let v153: f64 = v149 - st[45] * v130;
+        let v154: f64 = v150 - st[46] * v130;
+        let v155: f64 = v151 - st[47] * v130;
+        let v156: f64 = v155 * st[21];
+        let v157: f64 = v154 - st[8] * v156;
+        let v158: f64 = v157 * st[20];
+        let v159: f64 = v153 - st[5] * v158;
+        let v160: f64 = v159 - st[7] * v156;
+        let v161: f64 = v160 * st[19];
+        let v162: f64 = v152 - st[3] * v161;
+        let v163: f64 = v162 - st[4] * v158;
+        let v164: f64 = v163 - st[6] * v156;
+        let v165: f64 = v164 * st[18];
+        x[3] = v165;
+        x[4] = v161;
+        x[5] = v158;
+        x[6] = v156;
+        let v166: f64 = x[7] - st[48] * v111;
+        let v167: f64 = v166 * st[22];
+        x[7] = v167;
+        let v168: f64 = x[8] - st[49] * v112;
+        let v169: f64 = v168 * st[23];
+        x[8] = v169;
+        let v170: f64 = x[9] - st[50] * v113;
+        let v171: f64 = v170 * st[24];
+        x[9] = v171;
+        let v172: f64 = x[10] - st[51] * v124;
+        let v173: f64 = x[11] - st[52] * v124;
+        let v174: f64 = x[12] - st[53] * v124;
+        let v175: f64 = x[13] - st[54] * v124;
+        let v176: f64 = v172 - st[55] * v117;
+        let v177: f64 = v173 - st[56] * v117;
+        let v178: f64 = v174 - st[57] * v117;
+        let v179: f64 = v175 - st[58] * v117;
+        let v180: f64 = v176 - st[59] * v127;
+        let v181: f64 = v177 - st[60] * v127;
+        let v182: f64 = v178 - st[61] * v127;
+        let v183: f64 = v179 - st[62] * v127;
+        let v184: f64 = v183 * st[28];
+        let v185: f64 = v182 - st[14] * v184;
+        let v186: f64 = v185 * st[27];
+        let v187: f64 = v181 - st[11] * v186;
+        let v188: f64 = v187 - st[13] * v184;
+        let v189: f64 = v188 * st[26];
+        let v190: f64 = v180 - st[9] * v189;
+        let v191: f64 = v190 - st[10] * v186;
+        let v192: f64 = v191 - st[12] * v184;
+        let v193: f64 = v192 * st[25];
+        x[10] = v193;
+        x[11] = v189;
+        x[12] = v186;
+        x[13] = v184;
         Ok(())
     }
     fn kkt_transpose_times(
@@ -6832,27 +7652,29 @@ pub mod reduced {
             qd0: &QD0,
             redundant_rows: &REDUNDANT_ROWS,
             platform: None,
-            kkt: Some(&KKT),
+            kkt: &KKT,
         };
         use symbody_runtime::kkt::{
             length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
-        /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-        pub static KKT: KktKernels = KktKernels {
-            pattern: 0x431b064dad0c7067,
-            storage: 65,
-            factor: kkt_factor,
-            solve: kkt_solve,
-            phi_q_rows: &PHI_Q_ROWS,
-            phi_q_cols: &PHI_Q_COLS,
-            transpose_times: kkt_transpose_times,
-        };
+        /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+        pub static KKT: [KktKernels; 1] = [
+            KktKernels {
+                pattern: 0x431b064dad0c7067,
+                storage: 65,
+                factor: kkt_factor_0,
+                solve: kkt_solve_0,
+                phi_q_rows: &PHI_Q_ROWS,
+                phi_q_cols: &PHI_Q_COLS,
+                transpose_times: kkt_transpose_times,
+            },
+        ];
         #[allow(
             unused_variables,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_factor(
+        fn kkt_factor_0(
             mass: &[f64],
             c: f64,
             phi_q: &[f64],
@@ -7291,7 +8113,7 @@ pub mod reduced {
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_solve(
+        fn kkt_solve_0(
             f: &[f64],
             g: &[f64],
             x: &mut [f64],

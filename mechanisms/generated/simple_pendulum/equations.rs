@@ -654,27 +654,29 @@ pub mod exact {
         qd0: &QD0,
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
-        kkt: Some(&KKT),
+        kkt: &KKT,
     };
     use symbody_runtime::kkt::{
         length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
-    /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-    pub static KKT: KktKernels = KktKernels {
-        pattern: 0x2c95ee8bb8a17801,
-        storage: 12,
-        factor: kkt_factor,
-        solve: kkt_solve,
-        phi_q_rows: &PHI_Q_ROWS,
-        phi_q_cols: &PHI_Q_COLS,
-        transpose_times: kkt_transpose_times,
-    };
+    /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+    pub static KKT: [KktKernels; 1] = [
+        KktKernels {
+            pattern: 0x2c95ee8bb8a17801,
+            storage: 12,
+            factor: kkt_factor_0,
+            solve: kkt_solve_0,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
+        },
+    ];
     #[allow(
         unused_variables,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_factor(
+    fn kkt_factor_0(
         mass: &[f64],
         c: f64,
         phi_q: &[f64],
@@ -764,7 +766,7 @@ pub mod exact {
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_solve(
+    fn kkt_solve_0(
         f: &[f64],
         g: &[f64],
         x: &mut [f64],
@@ -1979,27 +1981,29 @@ pub mod reduced {
             qd0: &QD0,
             redundant_rows: &REDUNDANT_ROWS,
             platform: None,
-            kkt: Some(&KKT),
+            kkt: &KKT,
         };
         use symbody_runtime::kkt::{
             length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
-        /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-        pub static KKT: KktKernels = KktKernels {
-            pattern: 0x9d1f4754d61f1286,
-            storage: 6,
-            factor: kkt_factor,
-            solve: kkt_solve,
-            phi_q_rows: &PHI_Q_ROWS,
-            phi_q_cols: &PHI_Q_COLS,
-            transpose_times: kkt_transpose_times,
-        };
+        /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+        pub static KKT: [KktKernels; 1] = [
+            KktKernels {
+                pattern: 0x9d1f4754d61f1286,
+                storage: 6,
+                factor: kkt_factor_0,
+                solve: kkt_solve_0,
+                phi_q_rows: &PHI_Q_ROWS,
+                phi_q_cols: &PHI_Q_COLS,
+                transpose_times: kkt_transpose_times,
+            },
+        ];
         #[allow(
             unused_variables,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_factor(
+        fn kkt_factor_0(
             mass: &[f64],
             c: f64,
             phi_q: &[f64],
@@ -2053,7 +2057,7 @@ pub mod reduced {
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_solve(
+        fn kkt_solve_0(
             f: &[f64],
             g: &[f64],
             x: &mut [f64],

@@ -21984,27 +21984,29 @@ pub mod exact {
         qd0: &QD0,
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
-        kkt: Some(&KKT),
+        kkt: &KKT,
     };
     use symbody_runtime::kkt::{
         length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
-    /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-    pub static KKT: KktKernels = KktKernels {
-        pattern: 0x2f4ebcd539913e50,
-        storage: 1085,
-        factor: kkt_factor,
-        solve: kkt_solve,
-        phi_q_rows: &PHI_Q_ROWS,
-        phi_q_cols: &PHI_Q_COLS,
-        transpose_times: kkt_transpose_times,
-    };
+    /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+    pub static KKT: [KktKernels; 1] = [
+        KktKernels {
+            pattern: 0x2f4ebcd539913e50,
+            storage: 1085,
+            factor: kkt_factor_0,
+            solve: kkt_solve_0,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
+        },
+    ];
     #[allow(
         unused_variables,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_factor(
+    fn kkt_factor_0(
         mass: &[f64],
         c: f64,
         phi_q: &[f64],
@@ -30336,7 +30338,7 @@ pub mod exact {
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_solve(
+    fn kkt_solve_0(
         f: &[f64],
         g: &[f64],
         x: &mut [f64],
@@ -44415,27 +44417,29 @@ pub mod paper {
         qd0: &QD0,
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
-        kkt: Some(&KKT),
+        kkt: &KKT,
     };
     use symbody_runtime::kkt::{
         length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
-    /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-    pub static KKT: KktKernels = KktKernels {
-        pattern: 0x8e26466d66acc8b0,
-        storage: 1017,
-        factor: kkt_factor,
-        solve: kkt_solve,
-        phi_q_rows: &PHI_Q_ROWS,
-        phi_q_cols: &PHI_Q_COLS,
-        transpose_times: kkt_transpose_times,
-    };
+    /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+    pub static KKT: [KktKernels; 1] = [
+        KktKernels {
+            pattern: 0x8e26466d66acc8b0,
+            storage: 1017,
+            factor: kkt_factor_0,
+            solve: kkt_solve_0,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
+        },
+    ];
     #[allow(
         unused_variables,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_factor(
+    fn kkt_factor_0(
         mass: &[f64],
         c: f64,
         phi_q: &[f64],
@@ -51767,7 +51771,7 @@ pub mod paper {
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_solve(
+    fn kkt_solve_0(
         f: &[f64],
         g: &[f64],
         x: &mut [f64],
@@ -65625,27 +65629,29 @@ pub mod reduced {
             qd0: &QD0,
             redundant_rows: &REDUNDANT_ROWS,
             platform: None,
-            kkt: Some(&KKT),
+            kkt: &KKT,
         };
         use symbody_runtime::kkt::{
             length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
-        /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-        pub static KKT: KktKernels = KktKernels {
-            pattern: 0x8dadc4983871f34b,
-            storage: 851,
-            factor: kkt_factor,
-            solve: kkt_solve,
-            phi_q_rows: &PHI_Q_ROWS,
-            phi_q_cols: &PHI_Q_COLS,
-            transpose_times: kkt_transpose_times,
-        };
+        /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+        pub static KKT: [KktKernels; 1] = [
+            KktKernels {
+                pattern: 0x8dadc4983871f34b,
+                storage: 851,
+                factor: kkt_factor_0,
+                solve: kkt_solve_0,
+                phi_q_rows: &PHI_Q_ROWS,
+                phi_q_cols: &PHI_Q_COLS,
+                transpose_times: kkt_transpose_times,
+            },
+        ];
         #[allow(
             unused_variables,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_factor(
+        fn kkt_factor_0(
             mass: &[f64],
             c: f64,
             phi_q: &[f64],
@@ -72849,7 +72855,7 @@ pub mod reduced {
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_solve(
+        fn kkt_solve_0(
             f: &[f64],
             g: &[f64],
             x: &mut [f64],
@@ -80016,27 +80022,29 @@ pub mod reduced {
             qd0: &QD0,
             redundant_rows: &REDUNDANT_ROWS,
             platform: None,
-            kkt: Some(&KKT),
+            kkt: &KKT,
         };
         use symbody_runtime::kkt::{
             length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
-        /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-        pub static KKT: KktKernels = KktKernels {
-            pattern: 0x5e08cbd59e4bbe2b,
-            storage: 819,
-            factor: kkt_factor,
-            solve: kkt_solve,
-            phi_q_rows: &PHI_Q_ROWS,
-            phi_q_cols: &PHI_Q_COLS,
-            transpose_times: kkt_transpose_times,
-        };
+        /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+        pub static KKT: [KktKernels; 1] = [
+            KktKernels {
+                pattern: 0x5e08cbd59e4bbe2b,
+                storage: 819,
+                factor: kkt_factor_0,
+                solve: kkt_solve_0,
+                phi_q_rows: &PHI_Q_ROWS,
+                phi_q_cols: &PHI_Q_COLS,
+                transpose_times: kkt_transpose_times,
+            },
+        ];
         #[allow(
             unused_variables,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_factor(
+        fn kkt_factor_0(
             mass: &[f64],
             c: f64,
             phi_q: &[f64],
@@ -86606,7 +86614,7 @@ pub mod reduced {
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_solve(
+        fn kkt_solve_0(
             f: &[f64],
             g: &[f64],
             x: &mut [f64],

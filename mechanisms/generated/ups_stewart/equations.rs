@@ -54639,27 +54639,29 @@ pub mod exact {
         qd0: &QD0,
         redundant_rows: &REDUNDANT_ROWS,
         platform: PLATFORM,
-        kkt: Some(&KKT),
+        kkt: &KKT,
     };
     use symbody_runtime::kkt::{
         length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
-    /// The KKT factor and solve for this model's pattern, straight-line (`KktKernels`).
-    pub static KKT: KktKernels = KktKernels {
-        pattern: 0x5cf4c8e3f69a3f9a,
-        storage: 1575,
-        factor: kkt_factor,
-        solve: kkt_solve,
-        phi_q_rows: &PHI_Q_ROWS,
-        phi_q_cols: &PHI_Q_COLS,
-        transpose_times: kkt_transpose_times,
-    };
+    /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
+    pub static KKT: [KktKernels; 1] = [
+        KktKernels {
+            pattern: 0x5cf4c8e3f69a3f9a,
+            storage: 1575,
+            factor: kkt_factor_0,
+            solve: kkt_solve_0,
+            phi_q_rows: &PHI_Q_ROWS,
+            phi_q_cols: &PHI_Q_COLS,
+            transpose_times: kkt_transpose_times,
+        },
+    ];
     #[allow(
         unused_variables,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_factor(
+    fn kkt_factor_0(
         mass: &[f64],
         c: f64,
         phi_q: &[f64],
@@ -69208,7 +69210,7 @@ pub mod exact {
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_solve(
+    fn kkt_solve_0(
         f: &[f64],
         g: &[f64],
         x: &mut [f64],

@@ -65,7 +65,7 @@ pub struct KktPattern {
     /// Straight-line factor and solve emitted by the generator for this pattern
     /// ([`MechanismInfo::kkt`]); [`SchurKkt`] runs them when the pattern is still the one
     /// they were emitted for, and its own loops otherwise.
-    pub kernels: Option<&'static KktKernels>,
+    pub kernels: &'static [KktKernels],
 }
 
 impl KktPattern {
@@ -88,6 +88,30 @@ impl KktPattern {
             mass_semidefinite: info.bodies.iter().any(|b| b.inertia.contains(&0.0)),
             kernels: info.kkt,
         }
+    }
+
+    /// The pattern HHT factors when the applied loads' stiffness and damping join `M`
+    /// (`HhtBuilder::load_stiffness`): the top-left block on the union of the mass pattern
+    /// and the symmetrized patterns of `∂Q/∂q` and `∂Q/∂q̇` (rows, columns each); `None`
+    /// when both are empty.
+    pub fn with_loads(
+        &self,
+        force_q: (&[u32], &[u32]),
+        force_qd: (&[u32], &[u32]),
+    ) -> Option<KktPattern> {
+        if force_q.0.is_empty() && force_qd.0.is_empty() {
+            return None;
+        }
+        let pairs = |(rows, cols): (&[u32], &[u32])| -> Vec<(u32, u32)> {
+            rows.iter().copied().zip(cols.iter().copied()).collect()
+        };
+        let mass = pairs((&self.mass_rows, &self.mass_cols));
+        let union = crate::load_stiffness::union(&mass, &pairs(force_q), &pairs(force_qd));
+        Some(KktPattern {
+            mass_rows: union.iter().map(|p| p.0).collect(),
+            mass_cols: union.iter().map(|p| p.1).collect(),
+            ..self.clone()
+        })
     }
 
     /// Checks that every index is in range; solvers call this before trusting the pattern.

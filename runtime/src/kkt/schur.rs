@@ -677,9 +677,8 @@ impl KktSolver for SchurKkt {
             "update slots lie in the factor"
         );
         let redundant = sym.perm.iter().map(|&r| is_redundant[r]).collect();
-        let kernels = pattern
-            .kernels
-            .filter(|k| k.pattern == pattern.fingerprint());
+        let fingerprint = pattern.fingerprint();
+        let kernels = pattern.kernels.iter().find(|k| k.pattern == fingerprint);
         Ok(SchurKkt {
             n,
             m,

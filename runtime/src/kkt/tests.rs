@@ -90,7 +90,7 @@ fn random_problem(rng: &mut Rng, n_blocks: usize, m: Option<usize>) -> Problem {
             redundant_rows: Vec::new(),
             normalization_rows: Vec::new(),
             mass_semidefinite: false,
-            kernels: None,
+            kernels: &[],
         },
         mass,
         phi_q,
@@ -238,7 +238,7 @@ fn pattern_errors_are_reported() {
         redundant_rows: Vec::new(),
         normalization_rows: Vec::new(),
         mass_semidefinite: false,
-        kernels: None,
+        kernels: &[],
     };
     assert!(matches!(
         SchurKkt::new(&pat),
@@ -442,7 +442,7 @@ fn a_semidefinite_mass_is_solved_when_the_constraints_fix_its_null_direction() {
         redundant_rows: Vec::new(),
         normalization_rows: Vec::new(),
         mass_semidefinite: true,
-        kernels: None,
+        kernels: &[],
     };
     let (mass, c, phi_q) = ([2.0, 0.0], 0.5, [1.0]);
     let (f, g) = ([3.0, -4.0], [0.25]);
