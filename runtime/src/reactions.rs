@@ -201,10 +201,15 @@ pub fn joint_force(
 /// The nonzeros of Φq that may lie in `rows`: in a row-major pattern (as `MechanismInfo`
 /// documents, and every generated one is) one run, found by bisection, so a reaction's sums
 /// cost its own entries; all of them otherwise. Checking the order is one pass of integer
-/// comparisons, kept so that a hand-written pattern out of order is summed right, not fast.
+/// comparisons, kept so that a hand-written pattern out of order is summed right, not fast;
+/// the generator's own pattern (known by its KKT kernels' statics) skips it.
 fn rows_nonzeros(info: &MechanismInfo, rows: &std::ops::Range<usize>) -> std::ops::Range<usize> {
     let all = info.phi_q_rows;
-    match all.is_sorted() {
+    let generated = info
+        .kkt
+        .first()
+        .is_some_and(|k| k.emitted_for(all, info.phi_q_cols));
+    match generated || all.is_sorted() {
         true => {
             let at = |row: usize| all.partition_point(|&r| (r as usize) < row);
             at(rows.start)..at(rows.end)

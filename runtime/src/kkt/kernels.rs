@@ -46,8 +46,13 @@ impl KktKernels {
     /// The generated `Φqᵀ y` when `rows` and `cols` are the pattern it was emitted for
     /// (the same statics, compared by address: no scan).
     pub fn transpose_for(&self, rows: &[u32], cols: &[u32]) -> Option<TransposeKernel> {
-        (std::ptr::eq(self.phi_q_rows, rows) && std::ptr::eq(self.phi_q_cols, cols))
-            .then_some(self.transpose_times)
+        self.emitted_for(rows, cols).then_some(self.transpose_times)
+    }
+
+    /// Whether `rows` and `cols` are the Φq pattern statics the kernels were emitted with
+    /// (by address): then the pattern is the generator's, row-major as it always emits it.
+    pub fn emitted_for(&self, rows: &[u32], cols: &[u32]) -> bool {
+        std::ptr::eq(self.phi_q_rows, rows) && std::ptr::eq(self.phi_q_cols, cols)
     }
 }
 
