@@ -65,7 +65,10 @@ fn transpose_matches_dense(name: &str, info: &MechanismInfo, phi_q: &[f64], rng:
         .transpose_for(info.phi_q_rows, info.phi_q_cols)
         .unwrap_or_else(|| panic!("{name}: no Φqᵀ y for its own pattern"));
     // The generator's pattern is row-major (reactions rely on it without checking).
-    assert!(info.phi_q_rows.is_sorted(), "{name}: Φq pattern not row-major");
+    assert!(
+        info.phi_q_rows.is_sorted(),
+        "{name}: Φq pattern not row-major"
+    );
     let copy = info.phi_q_rows.to_vec();
     assert!(kernels.transpose_for(&copy, info.phi_q_cols).is_none());
     let y: Vec<f64> = (0..info.n_constraints)
