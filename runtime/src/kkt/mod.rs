@@ -13,7 +13,8 @@
 //!
 //! Two implementations: [`DenseKkt`] (LU with partial pivoting on the full matrix; the
 //! reference) and [`SchurKkt`] (block Cholesky of `M`, sparse LDLᵀ of the Schur complement
-//! `Φq M⁻¹ Φqᵀ` under a minimum-degree ordering; the fast one). A mass matrix that is only
+//! `Φq M⁻¹ Φqᵀ` under a minimum-degree ordering; the fast one, which runs the generator's
+//! straight-line [`KktKernels`] for a model's own pattern). A mass matrix that is only
 //! semi-definite ([`KktPattern::mass_semidefinite`]) has no `M⁻¹`: `SchurKkt` then runs the
 //! dense LU.
 

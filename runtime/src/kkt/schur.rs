@@ -11,6 +11,10 @@
 //! A mass matrix that is only semi-definite ([`KktPattern::mass_semidefinite`]: a zero
 //! principal inertia) has no block inverses; the saddle point is still regular, and is then
 //! solved by a [`DenseKkt`] inside, so callers keep one solver type.
+//!
+//! The generator replays this factorization and solve as straight-line code for each model's
+//! fixed pattern ([`KktKernels`], decision 41); `SchurKkt` runs them in place of its loops
+//! when the pattern carries kernels emitted for it, with the same pivot test ([`Pivoting`]).
 
 use super::ordering::{minimum_degree, Symbolic};
 use super::{
