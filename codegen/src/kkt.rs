@@ -9,7 +9,6 @@
 //! zero. What the factorization leaves for the solves (the block factors, `W`, `L`, `1/D`)
 //! is stored once, in a state array whose slots the solve reads.
 
-use std::collections::HashMap;
 use std::fmt::Write;
 
 use proc_macro2::TokenStream;
@@ -288,15 +287,8 @@ fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) ->
         // W = L⁻¹ Φq_bᵀ, row by row.
         let rows = plan.brow_ptr[b + 1] - plan.brow_ptr[b];
         let w0 = plan.p_off[b];
-        for row in 0..rows {
-            let v = w0 + row * s;
-            for i in 0..s {
-                let mut t = wmat[v + i];
-                for j in 0..i {
-                    t = code.sub_mul(t, chol[off + i * s + j], wmat[v + j]);
-                }
-                wmat[v + i] = code.mul(t, inv_diag[c0 + i]);
-            }
+        for row in wmat[w0..w0 + rows * s].chunks_exact_mut(s) {
+            forward(code, &chol[off..off + s * s], &inv_diag[c0..c1], row);
         }
         // S += WᵀW through the pair destinations: row i's products with the rows before
         // it go to L, its square to D.
@@ -317,13 +309,6 @@ fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) ->
     // LDLᵀ of S, right-looking, with the pivot test of the loops.
     let mut scale = diag.clone();
     let mut dinv = vec![V::Zero; n_rows];
-    // (a, b, dest) updates of column k, as SchurKkt lists them: every pair of entries.
-    let mut position: HashMap<(usize, usize), usize> = HashMap::new();
-    for k in 0..n_rows {
-        for a in plan.col_ptr[k]..plan.col_ptr[k + 1] {
-            position.insert((plan.row_idx[a], k), a);
-        }
-    }
     for k in 0..n_rows {
         if k == plan.n_first {
             scale[k..].copy_from_slice(&diag[k..]);
@@ -339,17 +324,14 @@ fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) ->
         let (inv, dk) = (V::Var(inv), V::Var(dk));
         dinv[k] = inv;
         let col = plan.col_ptr[k]..plan.col_ptr[k + 1];
-        for a in col.clone() {
+        for a in col {
             lval[a] = code.mul(lval[a], inv);
             let r = plan.row_idx[a];
             diag[r] = code.sub_mul3(diag[r], lval[a], dk, lval[a]);
         }
-        for a in col.clone() {
-            for b in col.start..a {
-                let (ra, rb) = (plan.row_idx[a], plan.row_idx[b]);
-                let dest = position[&(ra, rb)];
-                lval[dest] = code.sub_mul3(lval[dest], lval[a], dk, lval[b]);
-            }
+        for &[a, b, dest] in &plan.updates[plan.update_ptr[k]..plan.update_ptr[k + 1]] {
+            let (a, b, dest) = (a as usize, b as usize, dest as usize);
+            lval[dest] = code.sub_mul3(lval[dest], lval[a], dk, lval[b]);
         }
     }
 
@@ -430,13 +412,12 @@ fn replay_solve(plan: &SchurPlan<'_>, pattern: &KktPattern, st: &Stored, code: &
         }
     }
     code.line("}");
-    let rvec: Vec<V> = (0..m).map(|r| V::In("y", r as u32)).collect();
     let mut ustore: Vec<V> = plan
         .block_coords
         .iter()
         .map(|&c| V::In("x", c as u32))
         .collect();
-    let mut z: Vec<V> = plan.perm.iter().map(|&r| rvec[r]).collect();
+    let mut z: Vec<V> = plan.perm.iter().map(|&r| V::In("y", r as u32)).collect();
     for j in 0..m {
         let zj = z[j];
         for a in plan.col_ptr[j]..plan.col_ptr[j + 1] {

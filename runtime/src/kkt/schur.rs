@@ -128,6 +128,10 @@ pub struct SchurPlan<'a> {
     /// Strictly-lower pattern of L, column by column, in pivot positions.
     pub col_ptr: &'a [usize],
     pub row_idx: &'a [usize],
+    /// Column `k`'s updates `updates[update_ptr[k]..update_ptr[k + 1]]`: `(a, b, dest)`,
+    /// `L[dest] −= L[a]·D[k]·L[b]` (slots of `row_idx`).
+    pub update_ptr: &'a [usize],
+    pub updates: &'a [[u32; 3]],
     /// By pivot position: a declared redundant row.
     pub redundant: &'a [bool],
     /// Number of normalization rows, eliminated first.
@@ -175,6 +179,8 @@ impl SchurKkt {
             perm: &self.sym.perm,
             col_ptr: &self.sym.col_ptr,
             row_idx: &self.sym.row_idx,
+            update_ptr: &self.update_ptr,
+            updates: &self.updates,
             redundant: &self.redundant,
             n_first: self.n_first,
         })
