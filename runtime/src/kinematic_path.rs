@@ -12,9 +12,10 @@
 use nalgebra::DMatrix;
 
 use crate::error::{check_len, Error};
-use crate::kinematics::{kinetic_energy, mass_times, KinematicSettings, Kinematics};
+use crate::kinematics::{inf_norm, kinetic_energy, mass_times, KinematicSettings, Kinematics};
 use crate::kkt::{KktSolver, SchurKkt};
 use crate::mechanism::{Mechanism, MechanismInfo};
+use crate::watch::Residuals;
 
 /// Counters of a kinematic path.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -45,6 +46,10 @@ pub struct KinematicPath<M: Mechanism, K: KktSolver = SchurKkt> {
     previous_qdd: [Vec<f64>; 2],
     /// The last good position while a new one is sought.
     saved: Vec<f64>,
+    /// |Φ|∞ (redundant rows included) at `q`, from the position solve's last evaluation.
+    position_residual: f64,
+    /// Φq q̇ + Φt, for [`Self::residuals`].
+    work: Vec<f64>,
     stats: PathStats,
 }
 
@@ -73,6 +78,13 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
         q: &[f64],
         settings: KinematicSettings,
     ) -> Result<Self, Error> {
+        let kin = Kinematics::with_settings(mech.info(), settings)?;
+        Self::with_kinematics(mech, t0, q, kin)
+    }
+
+    /// [`Self::from_position`] with the solver's work memory given: one symbolic analysis
+    /// serves several paths of a mechanism (a clone of `kin` each).
+    fn with_kinematics(mech: M, t0: f64, q: &[f64], kin: Kinematics<K>) -> Result<Self, Error> {
         if !t0.is_finite() {
             return Err(Error::InvalidSetting {
                 name: "start time",
@@ -84,7 +96,7 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
         let (n, m) = (info.n_coords, info.n_constraints);
         check_len("q", n, q.len())?;
         let mut path = KinematicPath {
-            kin: Kinematics::with_settings(info, settings)?,
+            kin,
             mech,
             t: t0,
             q: q.to_vec(),
@@ -94,6 +106,8 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
             previous_step: [0.0; 2],
             previous_qdd: [vec![0.0; n], vec![0.0; n]],
             saved: vec![0.0; n],
+            position_residual: f64::NAN,
+            work: vec![0.0; m],
             stats: PathStats::default(),
         };
         path.solve_at(t0)?;
@@ -114,6 +128,7 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
         }
         let h = t - self.t;
         self.saved.copy_from_slice(&self.q);
+        let saved_residual = self.position_residual;
         self.predict(h);
         // The last factorization is at a state one output earlier: close enough for a few
         // simplified-Newton corrections, which cost a residual and a solve each instead of a
@@ -122,8 +137,9 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
             .kin
             .position_chord(&self.mech, t, &mut self.q, CHORD_ITERATIONS);
         let result = match chord {
-            Ok(Some(iterations)) => {
-                self.stats.chord_iterations += iterations;
+            Ok(Some(report)) => {
+                self.stats.chord_iterations += report.iterations;
+                self.position_residual = report.residual;
                 self.analyse(t)
             }
             Ok(None) | Err(_) => {
@@ -134,6 +150,7 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
         };
         if result.is_err() {
             self.q.copy_from_slice(&self.saved);
+            self.position_residual = saved_residual;
         }
         result
     }
@@ -162,6 +179,7 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
 
     fn solve_at(&mut self, t: f64) -> Result<(), Error> {
         let report = self.kin.position(&self.mech, t, &mut self.q)?;
+        self.position_residual = report.residual;
         self.stats.newton_iterations += report.iterations;
         self.stats.factorizations += report.iterations;
         self.analyse(t)
@@ -229,8 +247,33 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
     pub fn phi_q(&self) -> &[f64] {
         self.kin.phi_q()
     }
+    /// Φt at the current state.
+    pub fn phi_t(&self) -> &[f64] {
+        self.kin.phi_t()
+    }
     pub fn stats(&self) -> PathStats {
         self.stats
+    }
+    /// Constraint drift at the current state, from the evaluations the path made there: |Φ|∞
+    /// of the position solve's last iterate (which is `q`), and |Φq q̇ + Φt|∞ with the Φq and
+    /// Φt the velocity was solved with. What a [`ResidualWatch`](crate::ResidualWatch) would
+    /// find at this state, without evaluating the equations again.
+    pub fn residuals(&mut self) -> Residuals {
+        let info = self.mech.info();
+        let v = &mut self.work;
+        v.copy_from_slice(self.kin.phi_t());
+        for ((&r, &c), &j) in info
+            .phi_q_rows
+            .iter()
+            .zip(info.phi_q_cols)
+            .zip(self.kin.phi_q())
+        {
+            v[r as usize] += j * self.qd[c as usize];
+        }
+        Residuals {
+            position: self.position_residual,
+            velocity: inf_norm(v),
+        }
     }
     /// Kinetic plus potential energy at the current state (J).
     pub fn energy(&self) -> f64 {
@@ -314,7 +357,8 @@ pub fn free_motion<M: Mechanism>(
         position_tolerance: 1e-13,
         ..KinematicSettings::default()
     };
-    let free = null_space(mech, t, q);
+    let mut kin = Kinematics::<SchurKkt>::with_settings(info, tight)?;
+    let free = null_space(mech, t, q, &mut kin)?;
     let dof = free.ncols();
     let moved_bodies = moved_by(info, &free);
     let mut result = FreeMotion {
@@ -329,7 +373,7 @@ pub fn free_motion<M: Mechanism>(
     }
 
     // Least-energy velocities at t, t + h, …, t + 4h along one kinematic path.
-    let mut path = KinematicPath::<&M>::from_position(mech, t, q, tight)?;
+    let mut path = KinematicPath::<&M>::with_kinematics(mech, t, q, kin.clone())?;
     let mut v = Vec::with_capacity(5);
     let mut mid = (Vec::new(), Vec::new());
     for k in 0..5 {
@@ -362,7 +406,7 @@ pub fn free_motion<M: Mechanism>(
     result.acceleration_mismatch = m_norm(&diff) / m_norm(&a).max(f64::MIN_POSITIVE);
 
     // The caller's outputs at q, and after moving along each free direction.
-    let base = KinematicPath::<&M>::from_position(mech, t, q, tight)?;
+    let base = KinematicPath::<&M>::with_kinematics(mech, t, q, kin.clone())?;
     let reference = outputs(base.q(), base.qd(), base.lambda(), base.phi_q())?;
     let scale = reference.iter().fold(0.0f64, |s, x| s.max(x.abs()));
     let mut change = 0.0f64;
@@ -370,7 +414,7 @@ pub fn free_motion<M: Mechanism>(
         let moved: Vec<f64> = (0..n)
             .map(|i| base.q()[i] + FREE_DISPLACEMENT * free[(i, k)])
             .collect();
-        let p = KinematicPath::<&M>::from_position(mech, t, &moved, tight)?;
+        let p = KinematicPath::<&M>::with_kinematics(mech, t, &moved, kin.clone())?;
         let out = outputs(p.q(), p.qd(), p.lambda(), p.phi_q())?;
         for (x, y) in out.iter().zip(&reference) {
             change = change.max((x - y).abs());
@@ -383,8 +427,9 @@ pub fn free_motion<M: Mechanism>(
 /// The bodies (indices into `info.bodies`) that some direction Φq(q, t) leaves free moves:
 /// a kinematic path's velocity along such a direction is the least-energy one, so where those
 /// bodies are is decided by the path taken, not by the drivers at `t`.
-pub fn free_bodies<M: Mechanism>(mech: &M, t: f64, q: &[f64]) -> Vec<usize> {
-    moved_by(mech.info(), &null_space(mech, t, q))
+pub fn free_bodies<M: Mechanism>(mech: &M, t: f64, q: &[f64]) -> Result<Vec<usize>, Error> {
+    let mut kin = Kinematics::new(mech.info())?;
+    Ok(moved_by(mech.info(), &null_space(mech, t, q, &mut kin)?))
 }
 
 /// The bodies whose coordinates some column of `free` moves.
@@ -397,27 +442,69 @@ fn moved_by(info: &MechanismInfo, free: &DMatrix<f64>) -> Vec<usize> {
         .collect()
 }
 
-/// Orthonormal basis of the null space of Φq(q, t), one direction per column: the right
-/// singular vectors of Φq (padded to square with zero rows) whose singular values are at
-/// roundoff relative to the largest.
-fn null_space<M: Mechanism>(mech: &M, t: f64, q: &[f64]) -> DMatrix<f64> {
+/// Orthonormal basis of the null space of Φq(q, t), one direction per column. The saddle-point
+/// solve `[M Φqᵀ; Φq 0][y; μ] = [M eᵢ; 0]` projects each coordinate direction eᵢ onto the null
+/// space (along M⁻¹Φqᵀ), so the projections span it; a pivoted Gram–Schmidt picks an
+/// orthonormal basis among them and stops where what is left is roundoff. One sparse
+/// factorization and `n` solves: a dense SVD of Φq costs more than the whole kinematic run.
+fn null_space<M: Mechanism>(
+    mech: &M,
+    t: f64,
+    q: &[f64],
+    kin: &mut Kinematics<SchurKkt>,
+) -> Result<DMatrix<f64>, Error> {
     let info = mech.info();
     let (n, m) = (info.n_coords, info.n_constraints);
-    let mut values = vec![0.0; info.phi_q_nnz()];
-    mech.phi_q(q, t, &mut values);
-    let rows = m.max(n);
-    let mut a = DMatrix::<f64>::zeros(rows, n);
-    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(&values) {
-        a[(r as usize, c as usize)] = v;
+    kin.factor_at(mech, q, t)?;
+    let (g, mut mu) = (vec![0.0; m], vec![0.0; m]);
+    let (mut e, mut f) = (vec![0.0; n], vec![0.0; n]);
+    let mut left: Vec<Vec<f64>> = Vec::with_capacity(n);
+    for i in 0..n {
+        e.fill(0.0);
+        e[i] = 1.0;
+        mass_times(info, kin.mass(), &e, &mut f);
+        let mut y = vec![0.0; n];
+        kin.solve(&f, &g, &mut y, &mut mu, t)?;
+        left.push(y);
     }
-    let svd = a.svd(false, true);
-    let Some(v_t) = svd.v_t else {
-        return DMatrix::zeros(n, 0);
-    };
-    let largest = svd.singular_values.max();
-    let tol = largest * 1e-10;
-    let free: Vec<usize> = (0..svd.singular_values.len())
-        .filter(|&i| !(svd.singular_values[i] > tol))
-        .collect();
-    DMatrix::from_fn(n, free.len(), |i, k| v_t[(free[k], i)])
+    let norm = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let scale = left.iter().map(|y| norm(y)).fold(0.0, f64::max);
+    if !scale.is_finite() {
+        return Err(Error::NotFinite {
+            time: t,
+            what: "null space of the constraint Jacobian",
+        });
+    }
+    let mut basis: Vec<Vec<f64>> = Vec::new();
+    while let Some((j, size)) = left
+        .iter()
+        .map(|y| norm(y))
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+    {
+        if !(size > NULL_SPACE_TOLERANCE * scale) {
+            break;
+        }
+        let mut b = left.swap_remove(j);
+        // Classical Gram–Schmidt loses orthogonality to cancellation; a second pass
+        // against the basis restores it.
+        for u in &basis {
+            let d = dot(u, &b);
+            b.iter_mut().zip(u).for_each(|(x, y)| *x -= d * y);
+        }
+        let size = norm(&b);
+        b.iter_mut().for_each(|x| *x /= size);
+        for y in left.iter_mut() {
+            let d = dot(&b, y);
+            y.iter_mut().zip(&b).for_each(|(x, u)| *x -= d * u);
+        }
+        basis.push(b);
+    }
+    Ok(DMatrix::from_fn(n, basis.len(), |i, k| basis[k][i]))
 }
+
+/// Below this fraction of the largest projected coordinate direction, what is left after
+/// removing the basis found so far is roundoff of the projection (≈ 1e-15 times the
+/// saddle-point matrix's condition), not a free direction.
+const NULL_SPACE_TOLERANCE: f64 = 1e-8;

@@ -220,6 +220,11 @@ impl<K: KktSolver> Kinematics<K> {
         &self.mass
     }
 
+    /// Φt of the last velocity analysis, at its state.
+    pub fn phi_t(&self) -> &[f64] {
+        &self.phi_t
+    }
+
     fn check_mech<M: Mechanism>(&self, mech: &M) -> Result<(), Error> {
         let info = mech.info();
         check_len("mechanism coordinates", self.info.n_coords, info.n_coords)?;
@@ -343,15 +348,18 @@ impl<K: KktSolver> Kinematics<K> {
         t: f64,
         q: &mut [f64],
         max_iterations: usize,
-    ) -> Result<Option<usize>, Error> {
+    ) -> Result<Option<PositionReport>, Error> {
         let info = self.info;
         let tol = self.settings.position_tolerance;
         self.f.fill(0.0);
         for it in 0..=max_iterations {
             mech.phi(q, t, &mut self.phi);
-            let mut converged = true;
+            // A NaN redundant row must stop convergence (`max` would drop it).
+            let (mut redundant, mut converged) = (0.0f64, true);
             for &r in info.redundant_rows {
-                converged &= self.phi[r as usize].abs() <= tol;
+                let v = self.phi[r as usize].abs();
+                converged &= v <= tol;
+                redundant = redundant.max(v);
                 self.phi[r as usize] = 0.0;
             }
             let residual = inf_norm(&self.phi);
@@ -362,7 +370,10 @@ impl<K: KktSolver> Kinematics<K> {
                 });
             }
             if residual <= tol && converged {
-                return Ok(Some(it));
+                return Ok(Some(PositionReport {
+                    iterations: it,
+                    residual: residual.max(redundant),
+                }));
             }
             if it == max_iterations {
                 break;

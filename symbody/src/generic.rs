@@ -12,7 +12,8 @@ use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, Entry, EulerWarning,
     Formulation, HhtBuilder, Integrator, JointKind, KinematicPath, KinematicSettings, Mechanism,
-    MechanismInfo, PathStats, Pivots, Reduction, Registry, ResidualWatch, Rotation, Stats, Wrench,
+    MechanismInfo, PathStats, Pivots, Reduction, Registry, ResidualWatch, Residuals, Rotation,
+    Stats, Wrench,
 };
 
 /// Why a run could not be made: an option out of range or not available for the mechanism
@@ -467,7 +468,8 @@ fn integrate(
                 return Err(ScenarioError::Interrupted { time: it.t() });
             }
         }
-        record(rec, &meter, &mut watch, mech, (it.t(), &q, &qd), sample)?;
+        let residuals = watch.check(&mech, it.t(), &q, &qd)?;
+        record(rec, &meter, residuals, (it.t(), &q, &qd), sample)?;
         obs.output(rec)?;
     }
     Ok(())
@@ -548,7 +550,6 @@ fn follow_path(
     let info = mech.info();
     let mut path = KinematicPath::<_>::new(mech, 0.0)?;
     let mut meter: EnergyMeter = EnergyMeter::new(info)?;
-    let mut watch = ResidualWatch::new(info);
     let modes = mode_watch(mech, path.q())?;
     let mut phi_t = vec![0.0; info.n_constraints];
     let (mut work, mut power_before, mut t_before) = (0.0, 0.0, 0.0);
@@ -581,11 +582,11 @@ fn follow_path(
         }
         (power_before, t_before) = (sample.power, path.t());
         sample.work = work;
+        let residuals = path.residuals();
         record(
             rec,
             &meter,
-            &mut watch,
-            mech,
+            residuals,
             (path.t(), path.q(), path.qd()),
             sample,
         )?;
@@ -712,18 +713,16 @@ pub(crate) fn solve_settings(cross_singular: bool) -> KinematicSettings {
 }
 
 /// Appends the output `(t, q, q̇)`; the meter has just recorded this state.
-fn record<M: Mechanism>(
+fn record(
     rec: &mut Recording,
     meter: &EnergyMeter,
-    watch: &mut ResidualWatch,
-    mech: M,
+    r: Residuals,
     (t, q, qd): (f64, &[f64], &[f64]),
     sample: EnergySample,
 ) -> Result<(), Error> {
     let info = rec.info;
     let (lambda, phi_q) = (meter.lambda(), meter.phi_q());
     rec.pivots.push(meter.pivots().unwrap_or_default());
-    let r = watch.check(&mech, t, q, qd)?;
     rec.max_phi = rec.max_phi.max(r.position);
     rec.max_velocity_residual = rec.max_velocity_residual.max(r.velocity);
     for b in info

@@ -5,7 +5,7 @@ use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
     actuator_force, joint_force, Entry, Error, Formulation, HhtBuilder, KinematicPath, Kinematics,
-    Mechanism, MechanismInfo, PathStats, Registry, ResidualWatch, Stats,
+    Mechanism, MechanismInfo, PathStats, Registry, ResidualWatch, Residuals, Stats,
 };
 
 /// Options of one simulation; `Default` is the paper's scenario over one period.
@@ -232,6 +232,7 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
             q: it.q(),
             qd: it.qd(),
             lambda,
+            analysed: None,
             energy: it.energy(),
         };
         recorder.record(it.mechanism(), state, &mut run)?;
@@ -271,11 +272,17 @@ pub fn kinematic_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run,
             path.advance_to(t_out)?;
         }
         modes.check(path.q(), path.t())?;
+        let residuals = path.residuals();
         let state = State {
             t: path.t(),
             q: path.q(),
             qd: path.qd(),
             lambda: Some(path.lambda()),
+            analysed: Some(Analysed {
+                residuals,
+                phi_q: path.phi_q(),
+                phi_t: path.phi_t(),
+            }),
             energy: path.energy(),
         };
         recorder.record(path.mechanism(), state, &mut run)?;
@@ -316,6 +323,7 @@ pub fn simulate_reduced(registry: &Registry, opts: &Options) -> Result<Run, Scen
             q: &q,
             qd: &qd,
             lambda: None,
+            analysed: None,
             energy: it.energy(),
         };
         recorder.record(&full, state, &mut run)?;
@@ -332,8 +340,18 @@ struct State<'a> {
     qd: &'a [f64],
     /// `None`: recover them from the saddle-point system at (q, q̇, t).
     lambda: Option<&'a [f64]>,
+    /// `None`: evaluate the residuals and Jacobians at the state.
+    analysed: Option<Analysed<'a>>,
     /// Kinetic plus potential energy (J).
     energy: f64,
+}
+
+/// What a kinematic path already evaluated at its output state.
+struct Analysed<'a> {
+    residuals: Residuals,
+    /// Φq's nonzeros and Φt at the state.
+    phi_q: &'a [f64],
+    phi_t: &'a [f64],
 }
 
 /// Number of output intervals of `t_end` at `output_step` (outputs at 0, Δ, …, t_end),
@@ -362,7 +380,8 @@ pub fn output_count(t_end: f64, output_step: f64) -> Result<usize, ScenarioError
 /// Work memory for recording outputs, allocated once per run.
 struct Recorder {
     layout: Layout,
-    kinematics: Kinematics,
+    /// For multipliers recovered at the state; made on first use.
+    kinematics: Option<Kinematics>,
     watch: ResidualWatch,
     qdd: Vec<f64>,
     lambda: Vec<f64>,
@@ -372,7 +391,7 @@ impl Recorder {
     fn new(info: &'static MechanismInfo, layout: Layout) -> Result<Self, Error> {
         Ok(Recorder {
             layout,
-            kinematics: Kinematics::new(info)?,
+            kinematics: None,
             watch: ResidualWatch::new(info),
             qdd: vec![0.0; info.n_coords],
             lambda: vec![0.0; info.n_constraints],
@@ -383,19 +402,27 @@ impl Recorder {
         let info = mech.info();
         let layout = self.layout;
         let (t, q, qd) = (s.t, s.q.to_vec(), s.qd.to_vec());
-        let residuals = self.watch.check(mech, t, &q, &qd)?;
+        let (residuals, jac, phi_t) = match s.analysed {
+            Some(a) => (a.residuals, a.phi_q, a.phi_t),
+            None => (
+                self.watch.check(mech, t, &q, &qd)?,
+                self.watch.phi_q(),
+                self.watch.phi_t(),
+            ),
+        };
         run.max_phi = run.max_phi.max(residuals.position);
         run.max_velocity_residual = run.max_velocity_residual.max(residuals.velocity);
-        // Φ_D = d(q) − c(t), so each driver's ċ = −Φt on its row; Φq and Φt are the watch's,
-        // evaluated at this state.
-        let (jac, phi_t) = (self.watch.phi_q(), self.watch.phi_t());
+        // Φ_D = d(q) − c(t), so each driver's ċ = −Φt on its row; Φq and Φt at this state.
         let c_dot: [f64; LEGS] =
             std::array::from_fn(|i| -phi_t[info.joints[layout.drivers[i]].row_start]);
         match s.lambda {
             Some(l) => self.lambda.copy_from_slice(l),
             None => {
-                self.kinematics
-                    .acceleration(mech, t, &q, &qd, &mut self.qdd, &mut self.lambda)?
+                let kinematics = match &mut self.kinematics {
+                    Some(k) => k,
+                    empty => empty.insert(Kinematics::new(info)?),
+                };
+                kinematics.acceleration(mech, t, &q, &qd, &mut self.qdd, &mut self.lambda)?
             }
         }
         let o = info.bodies[layout.platform].coord_offset;

@@ -383,7 +383,7 @@ pub fn kinematic(
     let all = all_neighbours(entry, span.formulation, base, parameters)?;
     let n_out = output_count(span.t_end, span.output_step)?;
     let mut path = KinematicPath::<_>::new(mech, 0.0)?;
-    let outputs = Outputs::new(mech, &free_bodies(&mech, 0.0, path.q()));
+    let outputs = Outputs::new(mech, &free_bodies(&mech, 0.0, path.q())?);
     let names = outputs.names(mech);
     let mut result = Sensitivities {
         parameters: parameters.to_vec(),
