@@ -385,11 +385,22 @@ fn every_angle_has_one_sine_and_one_cosine_per_evaluation() {
                 .unwrap();
             function = format!("{module}::{base}");
         }
-        for f in ["sin", "cos"] {
-            for (i, _) in line.match_indices(&format!("].{f}()")) {
-                let open = line[..i].rfind("q[").expect("trigonometry of a coordinate");
-                let call = format!("{}.{f}", &line[open..=i]);
-                *counts.entry((function.clone(), call)).or_default() += 1;
+        // `trig::sin_cos(q[i])` computes both.
+        for (call, computes) in [
+            ("trig::sin(", &["sin"][..]),
+            ("trig::cos(", &["cos"]),
+            ("trig::sin_cos(", &["sin", "cos"]),
+        ] {
+            for (i, _) in line.match_indices(call) {
+                let argument = &line[i + call.len()..];
+                if !argument.starts_with("q[") {
+                    continue;
+                }
+                let argument = &argument[..=argument.find(']').expect("an index")];
+                for f in computes {
+                    let call = format!("{argument}.{f}");
+                    *counts.entry((function.clone(), call)).or_default() += 1;
+                }
             }
         }
     }

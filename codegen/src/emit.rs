@@ -2,9 +2,10 @@
 //! hundred statements, each an `#[inline(never)]` function (docs/design.md, decision 5); nodes
 //! needed by more than one chunk are computed once into a stack array shared by all chunks.
 
-use crate::expr::{Arena, Id, Node, Var};
+use crate::expr::{Arena, Func, Id, Node, Var};
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
+use std::collections::HashMap;
 
 /// Statements per chunk function: large enough that few values cross chunks through the
 /// shared array, small enough that rustc compiles each function quickly. Measured on the
@@ -325,6 +326,16 @@ fn expression(arena: &Arena, places: &[Place], id: Id) -> TokenStream {
             let (y, x) = (recv(y), r(x));
             quote!(#y.atan2(#x))
         }
+        // One sine and cosine everywhere (the runtime's `trig`): generated code, the
+        // interpreter and constant folding agree to the last bit.
+        Node::Call(Func::Sin, a) => {
+            let a = r(a);
+            quote!(symbody_runtime::trig::sin(#a))
+        }
+        Node::Call(Func::Cos, a) => {
+            let a = r(a);
+            quote!(symbody_runtime::trig::cos(#a))
+        }
         Node::Call(f, a) => {
             let a = recv(a);
             let m = ident(f.name());
@@ -332,6 +343,50 @@ fn expression(arena: &Arena, places: &[Place], id: Id) -> TokenStream {
         }
         Node::Const(_) | Node::Var(_) => unreachable!("leaves are inlined"),
     }
+}
+
+/// The `let` statements computing `nodes` (in order), each passed through `wrap` with the
+/// nodes it defines. A sine and a cosine of the same argument that are both among `nodes`
+/// become one `sin_cos` (one argument reduction) where the first of them stood.
+fn statements(
+    arena: &Arena,
+    places: &[Place],
+    nodes: &[u32],
+    wrap: impl Fn(&[u32], TokenStream) -> TokenStream,
+) -> Vec<TokenStream> {
+    let mut pairs: HashMap<Id, [Option<u32>; 2]> = HashMap::new();
+    for &m in nodes {
+        match arena.node(Id(m)) {
+            Node::Call(Func::Sin, a) => pairs.entry(a).or_default()[0] = Some(m),
+            Node::Call(Func::Cos, a) => pairs.entry(a).or_default()[1] = Some(m),
+            _ => {}
+        }
+    }
+    let mut out = Vec::with_capacity(nodes.len());
+    for &m in nodes {
+        let pair = match arena.node(Id(m)) {
+            Node::Call(Func::Sin | Func::Cos, a) => match pairs[&a] {
+                [Some(sin), Some(cos)] => Some((a, sin, cos)),
+                _ => None,
+            },
+            _ => None,
+        };
+        match pair {
+            Some((a, sin, cos)) if m == sin.min(cos) => {
+                let (xs, xc) = (node_ident(Id(sin)), node_ident(Id(cos)));
+                let a = reference(arena, places, a, false);
+                let stmt = quote!(let (#xs, #xc) = symbody_runtime::trig::sin_cos(#a););
+                out.push(wrap(&[sin, cos], stmt));
+            }
+            Some(_) => {}
+            None => {
+                let x = node_ident(Id(m));
+                let e = expression(arena, places, Id(m));
+                out.push(wrap(&[m], quote!(let #x = #e;)));
+            }
+        }
+    }
+    out
 }
 
 fn uses_input(arena: &Arena, nodes: &[u32], direct: &[Id], input: Input) -> bool {
@@ -419,16 +474,17 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
         for &m in group {
             local_places[m as usize] = Place::Local;
         }
-        let stmts = group.iter().map(|&m| {
-            let x = node_ident(Id(m));
-            let e = expression(arena, &local_places, Id(m));
+        let store = |m: u32| {
             let Place::Shared(k) = places[m as usize] else {
                 unreachable!()
             };
-            let k = int(k);
-            quote!(let #x = #e; s[#k] = #x;)
+            let (x, k) = (node_ident(Id(m)), int(k));
+            quote!(s[#k] = #x;)
+        };
+        let stmts = statements(arena, &local_places, group, |m, stmt| {
+            let stores = m.iter().map(|&m| store(m));
+            quote!(#stmt #(#stores)*)
         });
-        let stmts: Vec<TokenStream> = stmts.collect();
         let used: Vec<bool> = Input::ALL
             .iter()
             .map(|&inp| uses_input(arena, group, &[], inp))
@@ -472,14 +528,7 @@ pub fn function(arena: &Arena, f: &Function<'_>) -> TokenStream {
         for &m in &locals {
             local_places[m as usize] = Place::Local;
         }
-        let stmts: Vec<TokenStream> = locals
-            .iter()
-            .map(|&m| {
-                let x = node_ident(Id(m));
-                let e = expression(arena, &local_places, Id(m));
-                quote!(let #x = #e;)
-            })
-            .collect();
+        let stmts = statements(arena, &local_places, &locals, |_, stmt| stmt);
         let writes: Vec<TokenStream> = members
             .iter()
             .map(|&i| {

@@ -90,8 +90,8 @@ impl Func {
 
     pub fn apply(self, x: f64) -> f64 {
         match self {
-            Func::Sin => x.sin(),
-            Func::Cos => x.cos(),
+            Func::Sin => symbody_runtime::trig::sin(x),
+            Func::Cos => symbody_runtime::trig::cos(x),
             Func::Tan => x.tan(),
             Func::Exp => x.exp(),
             Func::Ln => x.ln(),

@@ -19,6 +19,7 @@
 //! - [`energy`]: kinetic and potential energy and the work of drivers and non-conservative
 //!   forces ([`EnergyMeter`]), for energy-balance checks.
 //! - [`watch`]: constraint-drift and Euler-singularity watchdogs.
+//! - [`trig`]: the sine and cosine of generated code and of the interpreter.
 //! - [`error`]: the one [`Error`] type.
 //!
 //! All solvers allocate their work memory when built; stepping and solving allocate nothing.
@@ -44,6 +45,7 @@ pub mod reduction;
 pub mod registry;
 pub mod sensitivity;
 pub mod tape;
+pub mod trig;
 // Hand-written fixtures for this crate's unit tests; other crates reach them through the
 // dev-only `symbody-testkit`, where the file lives.
 #[cfg(test)]
@@ -71,4 +73,4 @@ pub use pose::{
 pub use reactions::{actuator_force, driver_effort, joint_force, joint_wrench, Wrench};
 pub use reduction::{Reduction, Substitution};
 pub use registry::{source_hash, Entry, Origin, Registry};
-pub use watch::{EulerLimits, EulerWarning, ResidualWatch, Residuals};
+pub use watch::{velocity_residual, EulerLimits, EulerWarning, ResidualWatch, Residuals};

@@ -1,11 +1,13 @@
 //! The paper's scenario on the generated Stewart platform: consistent start, HHT-α over the
 //! requested span, and the time series the paper plots (pose, joint reactions, actuators).
 
+use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
-    actuator_force, joint_force, Entry, Error, Formulation, HhtBuilder, KinematicPath, Kinematics,
-    Mechanism, MechanismInfo, PathStats, Registry, ResidualWatch, Residuals, Stats,
+    actuator_force, joint_force, velocity_residual, Entry, Error, Formulation, HhtBuilder,
+    KinematicPath, Kinematics, Mechanism, MechanismInfo, PathStats, Registry, ResidualWatch,
+    Residuals, Stats,
 };
 
 /// Options of one simulation; `Default` is the paper's scenario over one period.
@@ -211,7 +213,7 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
     let start = Instant::now();
     let mut it = hht(opts).build(mech)?;
     let mut run = Run::default();
-    let mut recorder = Recorder::new(info, layout)?;
+    let mut recorder = Recorder::new(info, layout);
     // The platform's determinant sign is watched at the outputs: a pose that crossed a
     // parallel singularity between two outputs is on another assembly mode at the next.
     let modes = ModeWatch::new(
@@ -227,15 +229,8 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
             Reactions::Integrator => Some(it.lambda()),
             Reactions::Recovered => None,
         };
-        let state = State {
-            t: it.t(),
-            q: it.q(),
-            qd: it.qd(),
-            lambda,
-            analysed: None,
-            energy: it.energy(),
-        };
-        recorder.record(it.mechanism(), state, &mut run)?;
+        let state = (it.t(), it.q(), it.qd());
+        recorder.record_state(it.mechanism(), state, lambda, it.energy(), &mut run)?;
     }
     run.stats = it.stats();
     run.wall = start.elapsed();
@@ -252,44 +247,138 @@ pub fn kinematic(registry: &Registry, opts: &Options) -> Result<Run, ScenarioErr
     kinematic_mechanism(platform(registry, opts.formulation)?, opts)
 }
 
-/// [`kinematic`] for any mechanism with the Stewart platform's names.
+/// [`kinematic`] for any mechanism with the Stewart platform's names. The path's solves run
+/// on this thread; the outputs' reactions, residuals and assembly-mode watch on a second one,
+/// a batch of outputs behind, so on two cores the recording takes no wall time. Errors come
+/// in time order: a recorded output's before a later solve's.
 pub fn kinematic_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
     let info = mech.info();
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
     let mut path = KinematicPath::<M>::new(mech, 0.0)?;
-    let mut run = Run::default();
-    let mut recorder = Recorder::new(info, layout)?;
     let modes = ModeWatch::new(
         &Platform::new(path.mechanism())?,
         path.q(),
         SIMULATION_MAX_CONDITION,
     )?;
-    for k in 0..=n_out {
-        let t_out = (k as f64 * opts.output_step).min(opts.t_end);
-        if k > 0 {
-            path.advance_to(t_out)?;
+    let (to_recorder, solved) = mpsc::sync_channel::<Batch>(4);
+    let (to_path, emptied) = mpsc::channel::<Batch>();
+    let mut run = std::thread::scope(|scope| {
+        let recording = scope.spawn(move || -> Result<Run, ScenarioError> {
+            let mut run = Run::default();
+            let mut recorder = Recorder::new(info, layout);
+            for mut batch in solved {
+                for k in 0..batch.t.len() {
+                    let out = batch.output(info, k, &mut recorder.velocity);
+                    modes.check(out.q, out.t)?;
+                    recorder.record(info, out, &mut run)?;
+                }
+                batch.clear();
+                // The path may have finished: then the batch is not needed.
+                let _ = to_path.send(batch);
+            }
+            Ok(run)
+        });
+        let mut batch = Batch::default();
+        let followed = (|| -> Result<(), Error> {
+            for k in 0..=n_out {
+                if k > 0 {
+                    path.advance_to((k as f64 * opts.output_step).min(opts.t_end))?;
+                }
+                batch.push(&path);
+                if batch.t.len() == BATCH {
+                    let next = emptied.try_recv().unwrap_or_default();
+                    // A closed channel: the recorder stopped, with the run's error.
+                    if to_recorder
+                        .send(std::mem::replace(&mut batch, next))
+                        .is_err()
+                    {
+                        break;
+                    }
+                }
+            }
+            Ok(())
+        })();
+        // The outputs solved before a failure are recorded (and checked) first.
+        if !batch.t.is_empty() {
+            let _ = to_recorder.send(batch);
         }
-        modes.check(path.q(), path.t())?;
-        let residuals = path.residuals();
-        let state = State {
-            t: path.t(),
-            q: path.q(),
-            qd: path.qd(),
-            lambda: Some(path.lambda()),
-            analysed: Some(Analysed {
-                residuals,
-                phi_q: path.phi_q(),
-                phi_t: path.phi_t(),
-            }),
-            energy: path.energy(),
-        };
-        recorder.record(path.mechanism(), state, &mut run)?;
-    }
+        drop(to_recorder);
+        let run = recording
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic))?;
+        followed?;
+        Ok::<_, ScenarioError>(run)
+    })?;
     run.kinematic = Some(path.stats());
     run.wall = start.elapsed();
     Ok(run)
+}
+
+/// Outputs the kinematic path hands to the recording thread at a time: each hand-over costs
+/// a wake-up, which 16 outputs' solves hide.
+const BATCH: usize = 16;
+
+/// Solved outputs of a kinematic path, one after another in each field.
+#[derive(Default)]
+struct Batch {
+    t: Vec<f64>,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    lambda: Vec<f64>,
+    phi_q: Vec<f64>,
+    phi_t: Vec<f64>,
+    position_residual: Vec<f64>,
+    energy: Vec<f64>,
+}
+
+impl Batch {
+    fn push<M: Mechanism>(&mut self, path: &KinematicPath<M>) {
+        self.t.push(path.t());
+        self.q.extend_from_slice(path.q());
+        self.qd.extend_from_slice(path.qd());
+        self.lambda.extend_from_slice(path.lambda());
+        self.phi_q.extend_from_slice(path.phi_q());
+        self.phi_t.extend_from_slice(path.phi_t());
+        self.position_residual.push(path.position_residual());
+        self.energy.push(path.energy());
+    }
+
+    /// Output `k`, with its velocity residual (computed into `work`).
+    fn output<'a>(&'a self, info: &MechanismInfo, k: usize, work: &mut [f64]) -> Output<'a> {
+        let (n, m, nnz) = (info.n_coords, info.n_constraints, info.phi_q_nnz());
+        let (q, qd) = (&self.q[k * n..][..n], &self.qd[k * n..][..n]);
+        let (phi_q, phi_t) = (&self.phi_q[k * nnz..][..nnz], &self.phi_t[k * m..][..m]);
+        Output {
+            t: self.t[k],
+            q,
+            qd,
+            lambda: &self.lambda[k * m..][..m],
+            phi_q,
+            phi_t,
+            residuals: Residuals {
+                position: self.position_residual[k],
+                velocity: velocity_residual(info, phi_q, phi_t, qd, work),
+            },
+            energy: self.energy[k],
+        }
+    }
+
+    fn clear(&mut self) {
+        for v in [
+            &mut self.t,
+            &mut self.q,
+            &mut self.qd,
+            &mut self.lambda,
+            &mut self.phi_q,
+            &mut self.phi_t,
+            &mut self.position_residual,
+            &mut self.energy,
+        ] {
+            v.clear();
+        }
+    }
 }
 
 /// The paper's scenario integrated on the reduced model (`stewart_6_6::reduced`: the 18
@@ -311,47 +400,33 @@ pub fn simulate_reduced(registry: &Registry, opts: &Options) -> Result<Run, Scen
     let start = Instant::now();
     let mut it = hht(opts).build(red)?;
     let mut run = Run::default();
-    let mut recorder = Recorder::new(info, layout)?;
+    let mut recorder = Recorder::new(info, layout);
     let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(opts.t_end);
         it.advance_to(t_out)?;
         reduction.expand(it.q(), it.t(), 0, &mut q)?;
         reduction.expand(it.qd(), it.t(), 1, &mut qd)?;
-        let state = State {
-            t: it.t(),
-            q: &q,
-            qd: &qd,
-            lambda: None,
-            analysed: None,
-            energy: it.energy(),
-        };
-        recorder.record(&full, state, &mut run)?;
+        let state = (it.t(), &q[..], &qd[..]);
+        recorder.record_state(&full, state, None, it.energy(), &mut run)?;
     }
     run.stats = it.stats();
     run.wall = start.elapsed();
     Ok(run)
 }
 
-/// One output state, with its multipliers when they are already known.
-struct State<'a> {
+/// One output as recorded: the state, its multipliers, Φq's nonzeros and Φt there, the
+/// constraint drift and the energy.
+struct Output<'a> {
     t: f64,
     q: &'a [f64],
     qd: &'a [f64],
-    /// `None`: recover them from the saddle-point system at (q, q̇, t).
-    lambda: Option<&'a [f64]>,
-    /// `None`: evaluate the residuals and Jacobians at the state.
-    analysed: Option<Analysed<'a>>,
-    /// Kinetic plus potential energy (J).
-    energy: f64,
-}
-
-/// What a kinematic path already evaluated at its output state.
-struct Analysed<'a> {
-    residuals: Residuals,
-    /// Φq's nonzeros and Φt at the state.
+    lambda: &'a [f64],
     phi_q: &'a [f64],
     phi_t: &'a [f64],
+    residuals: Residuals,
+    /// Kinetic plus potential energy (J).
+    energy: f64,
 }
 
 /// Number of output intervals of `t_end` at `output_step` (outputs at 0, Δ, …, t_end),
@@ -380,86 +455,120 @@ pub fn output_count(t_end: f64, output_step: f64) -> Result<usize, ScenarioError
 /// Work memory for recording outputs, allocated once per run.
 struct Recorder {
     layout: Layout,
-    /// For multipliers recovered at the state; made on first use.
-    kinematics: Option<Kinematics>,
+    /// For states integrated: residuals and Jacobians, and multipliers recovered at the
+    /// state (made on first use).
     watch: ResidualWatch,
+    kinematics: Option<Kinematics>,
     qdd: Vec<f64>,
     lambda: Vec<f64>,
+    /// Φq q̇ + Φt.
+    velocity: Vec<f64>,
 }
 
 impl Recorder {
-    fn new(info: &'static MechanismInfo, layout: Layout) -> Result<Self, Error> {
-        Ok(Recorder {
+    fn new(info: &'static MechanismInfo, layout: Layout) -> Self {
+        Recorder {
             layout,
-            kinematics: None,
             watch: ResidualWatch::new(info),
+            kinematics: None,
             qdd: vec![0.0; info.n_coords],
             lambda: vec![0.0; info.n_constraints],
-        })
+            velocity: vec![0.0; info.n_constraints],
+        }
     }
 
-    fn record<M: Mechanism>(&mut self, mech: &M, s: State<'_>, run: &mut Run) -> Result<(), Error> {
+    /// Records an integrated state `(t, q, q̇)`: residuals and Jacobians evaluated there, the
+    /// integrator's multipliers `lambda` or (`None`) those of the saddle-point system at
+    /// the state.
+    fn record_state<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        (t, q, qd): (f64, &[f64], &[f64]),
+        lambda: Option<&[f64]>,
+        energy: f64,
+        run: &mut Run,
+    ) -> Result<(), Error> {
         let info = mech.info();
-        let layout = self.layout;
-        let (t, q, qd) = (s.t, s.q.to_vec(), s.qd.to_vec());
-        let (residuals, jac, phi_t) = match s.analysed {
-            Some(a) => (a.residuals, a.phi_q, a.phi_t),
-            None => (
-                self.watch.check(mech, t, &q, &qd)?,
-                self.watch.phi_q(),
-                self.watch.phi_t(),
-            ),
-        };
-        run.max_phi = run.max_phi.max(residuals.position);
-        run.max_velocity_residual = run.max_velocity_residual.max(residuals.velocity);
-        // Φ_D = d(q) − c(t), so each driver's ċ = −Φt on its row; Φq and Φt at this state.
-        let c_dot: [f64; LEGS] =
-            std::array::from_fn(|i| -phi_t[info.joints[layout.drivers[i]].row_start]);
-        match s.lambda {
-            Some(l) => self.lambda.copy_from_slice(l),
+        let residuals = self.watch.check(mech, t, q, qd)?;
+        let lambda = match lambda {
+            Some(l) => l,
             None => {
                 let kinematics = match &mut self.kinematics {
                     Some(k) => k,
                     empty => empty.insert(Kinematics::new(info)?),
                 };
-                kinematics.acceleration(mech, t, &q, &qd, &mut self.qdd, &mut self.lambda)?
+                kinematics.acceleration(mech, t, q, qd, &mut self.qdd, &mut self.lambda)?;
+                &self.lambda
             }
-        }
-        let o = info.bodies[layout.platform].coord_offset;
-        run.platform
-            .push([q[o], q[o + 1], q[o + 2], q[o + 3], q[o + 4], q[o + 5]]);
-        let mut upper = [[0.0; 3]; LEGS];
-        let mut lower = [[0.0; 3]; LEGS];
-        let mut act = [0.0; LEGS];
-        let mut power = 0.0;
-        for i in 0..LEGS {
-            upper[i] = joint_force(
-                info,
-                jac,
-                &self.lambda,
-                layout.upper_joints[i],
-                layout.platform,
-            )?;
-            lower[i] = joint_force(
-                info,
-                jac,
-                &self.lambda,
-                layout.lower_joints[i],
-                layout.lower_bodies[i],
-            )?;
-            act[i] = actuator_force(info, &self.lambda, layout.drivers[i])?;
-            power += act[i] * c_dot[i];
-        }
-        run.upper.push(upper);
-        run.lower.push(lower);
-        run.actuators.push(act);
-        run.actuator_power.push(power);
-        run.energy.push(s.energy);
-        run.t.push(t);
-        run.q.push(q);
-        run.qd.push(qd);
-        Ok(())
+        };
+        let out = Output {
+            t,
+            q,
+            qd,
+            lambda,
+            phi_q: self.watch.phi_q(),
+            phi_t: self.watch.phi_t(),
+            residuals,
+            energy,
+        };
+        record(self.layout, info, out, run)
     }
+
+    fn record(&self, info: &MechanismInfo, out: Output<'_>, run: &mut Run) -> Result<(), Error> {
+        record(self.layout, info, out, run)
+    }
+}
+
+/// Appends one output's pose, joint forces, actuator forces and power, energy and drift.
+fn record(
+    layout: Layout,
+    info: &MechanismInfo,
+    out: Output<'_>,
+    run: &mut Run,
+) -> Result<(), Error> {
+    let Output {
+        t,
+        q,
+        qd,
+        lambda,
+        phi_q,
+        phi_t,
+        residuals,
+        energy,
+    } = out;
+    run.max_phi = run.max_phi.max(residuals.position);
+    run.max_velocity_residual = run.max_velocity_residual.max(residuals.velocity);
+    // Φ_D = d(q) − c(t), so each driver's ċ = −Φt on its row.
+    let c_dot: [f64; LEGS] =
+        std::array::from_fn(|i| -phi_t[info.joints[layout.drivers[i]].row_start]);
+    let o = info.bodies[layout.platform].coord_offset;
+    run.platform
+        .push([q[o], q[o + 1], q[o + 2], q[o + 3], q[o + 4], q[o + 5]]);
+    let mut upper = [[0.0; 3]; LEGS];
+    let mut lower = [[0.0; 3]; LEGS];
+    let mut act = [0.0; LEGS];
+    let mut power = 0.0;
+    for i in 0..LEGS {
+        upper[i] = joint_force(info, phi_q, lambda, layout.upper_joints[i], layout.platform)?;
+        lower[i] = joint_force(
+            info,
+            phi_q,
+            lambda,
+            layout.lower_joints[i],
+            layout.lower_bodies[i],
+        )?;
+        act[i] = actuator_force(info, lambda, layout.drivers[i])?;
+        power += act[i] * c_dot[i];
+    }
+    run.upper.push(upper);
+    run.lower.push(lower);
+    run.actuators.push(act);
+    run.actuator_power.push(power);
+    run.energy.push(energy);
+    run.t.push(t);
+    run.q.push(q.to_vec());
+    run.qd.push(qd.to_vec());
+    Ok(())
 }
 
 impl Run {

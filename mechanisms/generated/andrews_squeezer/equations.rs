@@ -51,12 +51,9 @@ pub fn phi(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
 }
 #[inline(never)]
 fn phi_part_0(k: &[f64; 82], q: &[f64; 42], out: &mut [f64; 50]) {
-    let x9 = q[3].sin();
-    let x10 = q[3].cos();
-    let x11 = q[4].sin();
-    let x12 = q[4].cos();
-    let x13 = q[5].sin();
-    let x14 = q[5].cos();
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
     let x15 = x12 * x14;
     let x16 = x12 * x13;
     let x17 = x11 * x14;
@@ -74,12 +71,9 @@ fn phi_part_0(k: &[f64; 82], q: &[f64; 42], out: &mut [f64; 50]) {
     let x31 = x23 + x24;
     let x32 = x25 + x26;
     let x34 = x27 - x28;
-    let x42 = q[9].sin();
-    let x43 = q[9].cos();
-    let x44 = q[10].sin();
-    let x45 = q[10].cos();
-    let x46 = q[11].sin();
-    let x47 = q[11].cos();
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[9]);
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
     let x48 = x45 * x47;
     let x49 = x45 * x46;
     let x50 = x44 * x47;
@@ -98,12 +92,9 @@ fn phi_part_0(k: &[f64; 82], q: &[f64; 42], out: &mut [f64; 50]) {
     let x64 = x56 + x57;
     let x65 = x58 + x59;
     let x67 = x60 - x61;
-    let x75 = q[15].sin();
-    let x76 = q[15].cos();
-    let x77 = q[16].sin();
-    let x78 = q[16].cos();
-    let x79 = q[17].sin();
-    let x80 = q[17].cos();
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
     let x81 = x78 * x80;
     let x82 = x78 * x79;
     let x83 = x77 * x80;
@@ -122,12 +113,9 @@ fn phi_part_0(k: &[f64; 82], q: &[f64; 42], out: &mut [f64; 50]) {
     let x97 = x89 + x90;
     let x98 = x91 + x92;
     let x100 = x93 - x94;
-    let x108 = q[21].sin();
-    let x109 = q[21].cos();
-    let x110 = q[22].sin();
-    let x111 = q[22].cos();
-    let x112 = q[23].sin();
-    let x113 = q[23].cos();
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[21]);
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[22]);
+    let (x112, x113) = symbody_runtime::trig::sin_cos(q[23]);
     let x114 = x111 * x113;
     let x115 = x111 * x112;
     let x116 = x110 * x113;
@@ -146,12 +134,9 @@ fn phi_part_0(k: &[f64; 82], q: &[f64; 42], out: &mut [f64; 50]) {
     let x130 = x122 + x123;
     let x131 = x124 + x125;
     let x133 = x126 - x127;
-    let x141 = q[27].sin();
-    let x142 = q[27].cos();
-    let x143 = q[28].sin();
-    let x144 = q[28].cos();
-    let x145 = q[29].sin();
-    let x146 = q[29].cos();
+    let (x141, x142) = symbody_runtime::trig::sin_cos(q[27]);
+    let (x143, x144) = symbody_runtime::trig::sin_cos(q[28]);
+    let (x145, x146) = symbody_runtime::trig::sin_cos(q[29]);
     let x147 = x144 * x146;
     let x148 = x144 * x145;
     let x149 = x143 * x146;
@@ -169,12 +154,9 @@ fn phi_part_0(k: &[f64; 82], q: &[f64; 42], out: &mut [f64; 50]) {
     let x163 = x155 + x156;
     let x164 = x157 + x158;
     let x166 = x159 - x160;
-    let x174 = q[33].sin();
-    let x175 = q[33].cos();
-    let x176 = q[34].sin();
-    let x177 = q[34].cos();
-    let x178 = q[35].sin();
-    let x179 = q[35].cos();
+    let (x174, x175) = symbody_runtime::trig::sin_cos(q[33]);
+    let (x176, x177) = symbody_runtime::trig::sin_cos(q[34]);
+    let (x178, x179) = symbody_runtime::trig::sin_cos(q[35]);
     let x180 = x177 * x179;
     let x181 = x177 * x178;
     let x182 = x176 * x179;
@@ -193,12 +175,9 @@ fn phi_part_0(k: &[f64; 82], q: &[f64; 42], out: &mut [f64; 50]) {
     let x196 = x188 + x189;
     let x197 = x190 + x191;
     let x199 = x192 - x193;
-    let x207 = q[39].sin();
-    let x208 = q[39].cos();
-    let x209 = q[40].sin();
-    let x210 = q[40].cos();
-    let x211 = q[41].sin();
-    let x212 = q[41].cos();
+    let (x207, x208) = symbody_runtime::trig::sin_cos(q[39]);
+    let (x209, x210) = symbody_runtime::trig::sin_cos(q[40]);
+    let (x211, x212) = symbody_runtime::trig::sin_cos(q[41]);
     let x213 = x210 * x212;
     let x214 = x210 * x211;
     let x215 = x209 * x212;
@@ -647,17 +626,14 @@ pub fn phi_q(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
 }
 #[inline(never)]
 fn phi_q_shared_0(k: &[f64; 82], q: &[f64; 42], _t: f64, s: &mut [f64; 146]) {
-    let x42 = q[9].sin();
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[9]);
     s[0] = x42;
-    let x43 = q[9].cos();
     s[1] = x43;
-    let x44 = q[10].sin();
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[10]);
     s[2] = x44;
-    let x45 = q[10].cos();
     s[3] = x45;
-    let x46 = q[11].sin();
+    let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
     s[4] = x46;
-    let x47 = q[11].cos();
     s[5] = x47;
     let x48 = x45 * x47;
     s[6] = x48;
@@ -695,17 +671,14 @@ fn phi_q_shared_0(k: &[f64; 82], q: &[f64; 42], _t: f64, s: &mut [f64; 146]) {
     s[22] = x65;
     let x67 = x60 - x61;
     s[23] = x67;
-    let x75 = q[15].sin();
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
     s[24] = x75;
-    let x76 = q[15].cos();
     s[25] = x76;
-    let x77 = q[16].sin();
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
     s[26] = x77;
-    let x78 = q[16].cos();
     s[27] = x78;
-    let x79 = q[17].sin();
+    let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
     s[28] = x79;
-    let x80 = q[17].cos();
     s[29] = x80;
     let x81 = x78 * x80;
     s[30] = x81;
@@ -741,17 +714,14 @@ fn phi_q_shared_0(k: &[f64; 82], q: &[f64; 42], _t: f64, s: &mut [f64; 146]) {
     s[45] = x98;
     let x100 = x93 - x94;
     s[46] = x100;
-    let x108 = q[21].sin();
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[21]);
     s[47] = x108;
-    let x109 = q[21].cos();
     s[48] = x109;
-    let x110 = q[22].sin();
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[22]);
     s[49] = x110;
-    let x111 = q[22].cos();
     s[50] = x111;
-    let x112 = q[23].sin();
+    let (x112, x113) = symbody_runtime::trig::sin_cos(q[23]);
     s[51] = x112;
-    let x113 = q[23].cos();
     s[52] = x113;
     let x114 = x111 * x113;
     s[53] = x114;
@@ -789,17 +759,14 @@ fn phi_q_shared_0(k: &[f64; 82], q: &[f64; 42], _t: f64, s: &mut [f64; 146]) {
     s[69] = x131;
     let x133 = x126 - x127;
     s[70] = x133;
-    let x174 = q[33].sin();
+    let (x174, x175) = symbody_runtime::trig::sin_cos(q[33]);
     s[71] = x174;
-    let x175 = q[33].cos();
     s[72] = x175;
-    let x176 = q[34].sin();
+    let (x176, x177) = symbody_runtime::trig::sin_cos(q[34]);
     s[73] = x176;
-    let x177 = q[34].cos();
     s[74] = x177;
-    let x178 = q[35].sin();
+    let (x178, x179) = symbody_runtime::trig::sin_cos(q[35]);
     s[75] = x178;
-    let x179 = q[35].cos();
     s[76] = x179;
     let x180 = x177 * x179;
     s[77] = x180;
@@ -835,17 +802,14 @@ fn phi_q_shared_0(k: &[f64; 82], q: &[f64; 42], _t: f64, s: &mut [f64; 146]) {
     s[92] = x197;
     let x199 = x192 - x193;
     s[93] = x199;
-    let x207 = q[39].sin();
+    let (x207, x208) = symbody_runtime::trig::sin_cos(q[39]);
     s[94] = x207;
-    let x208 = q[39].cos();
     s[95] = x208;
-    let x209 = q[40].sin();
+    let (x209, x210) = symbody_runtime::trig::sin_cos(q[40]);
     s[96] = x209;
-    let x210 = q[40].cos();
     s[97] = x210;
-    let x211 = q[41].sin();
+    let (x211, x212) = symbody_runtime::trig::sin_cos(q[41]);
     s[98] = x211;
-    let x212 = q[41].cos();
     s[99] = x212;
     let x213 = x210 * x212;
     s[100] = x213;
@@ -942,12 +906,9 @@ fn phi_q_shared_0(k: &[f64; 82], q: &[f64; 42], _t: f64, s: &mut [f64; 146]) {
 }
 #[inline(never)]
 fn phi_q_part_0(k: &[f64; 82], q: &[f64; 42], s: &[f64; 146], out: &mut [f64; 260]) {
-    let x9 = q[3].sin();
-    let x10 = q[3].cos();
-    let x11 = q[4].sin();
-    let x12 = q[4].cos();
-    let x13 = q[5].sin();
-    let x14 = q[5].cos();
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
     let x15 = x12 * x14;
     let x16 = x12 * x13;
     let x17 = x11 * x14;
@@ -1553,12 +1514,9 @@ fn phi_q_part_0(k: &[f64; 82], q: &[f64; 42], s: &[f64; 146], out: &mut [f64; 26
 }
 #[inline(never)]
 fn phi_q_part_1(k: &[f64; 82], q: &[f64; 42], s: &[f64; 146], out: &mut [f64; 260]) {
-    let x141 = q[27].sin();
-    let x142 = q[27].cos();
-    let x143 = q[28].sin();
-    let x144 = q[28].cos();
-    let x145 = q[29].sin();
-    let x146 = q[29].cos();
+    let (x141, x142) = symbody_runtime::trig::sin_cos(q[27]);
+    let (x143, x144) = symbody_runtime::trig::sin_cos(q[28]);
+    let (x145, x146) = symbody_runtime::trig::sin_cos(q[29]);
     let x147 = x144 * x146;
     let x148 = x144 * x145;
     let x149 = x143 * x146;
@@ -2248,17 +2206,14 @@ fn gamma_shared_0(
     _t: f64,
     s: &mut [f64; 627],
 ) {
-    let x42 = q[9].sin();
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[9]);
     s[0] = x42;
-    let x43 = q[9].cos();
     s[1] = x43;
-    let x44 = q[10].sin();
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[10]);
     s[2] = x44;
-    let x45 = q[10].cos();
     s[3] = x45;
-    let x46 = q[11].sin();
+    let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
     s[4] = x46;
-    let x47 = q[11].cos();
     s[5] = x47;
     let x48 = x45 * x47;
     s[6] = x48;
@@ -2282,33 +2237,27 @@ fn gamma_shared_0(
     s[15] = x63;
     let x65 = x58 + x59;
     s[16] = x65;
-    let x75 = q[15].sin();
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
     s[17] = x75;
-    let x76 = q[15].cos();
     s[18] = x76;
-    let x77 = q[16].sin();
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
     s[19] = x77;
-    let x78 = q[16].cos();
     s[20] = x78;
-    let x79 = q[17].sin();
+    let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
     s[21] = x79;
-    let x80 = q[17].cos();
     s[22] = x80;
     let x83 = x77 * x80;
     s[23] = x83;
     let x84 = x77 * x79;
     s[24] = x84;
-    let x108 = q[21].sin();
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[21]);
     s[25] = x108;
-    let x109 = q[21].cos();
     s[26] = x109;
-    let x110 = q[22].sin();
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[22]);
     s[27] = x110;
-    let x111 = q[22].cos();
     s[28] = x111;
-    let x112 = q[23].sin();
+    let (x112, x113) = symbody_runtime::trig::sin_cos(q[23]);
     s[29] = x112;
-    let x113 = q[23].cos();
     s[30] = x113;
     let x116 = x110 * x113;
     s[31] = x116;
@@ -2328,31 +2277,25 @@ fn gamma_shared_0(
     s[38] = x130;
     let x133 = x126 - x127;
     s[39] = x133;
-    let x141 = q[27].sin();
+    let (x141, x142) = symbody_runtime::trig::sin_cos(q[27]);
     s[40] = x141;
-    let x142 = q[27].cos();
     s[41] = x142;
-    let x143 = q[28].sin();
+    let (x143, x144) = symbody_runtime::trig::sin_cos(q[28]);
     s[42] = x143;
-    let x144 = q[28].cos();
     s[43] = x144;
-    let x145 = q[29].sin();
+    let (x145, x146) = symbody_runtime::trig::sin_cos(q[29]);
     s[44] = x145;
-    let x146 = q[29].cos();
     s[45] = x146;
     let x149 = x143 * x146;
     s[46] = x149;
-    let x174 = q[33].sin();
+    let (x174, x175) = symbody_runtime::trig::sin_cos(q[33]);
     s[47] = x174;
-    let x175 = q[33].cos();
     s[48] = x175;
-    let x176 = q[34].sin();
+    let (x176, x177) = symbody_runtime::trig::sin_cos(q[34]);
     s[49] = x176;
-    let x177 = q[34].cos();
     s[50] = x177;
-    let x178 = q[35].sin();
+    let (x178, x179) = symbody_runtime::trig::sin_cos(q[35]);
     s[51] = x178;
-    let x179 = q[35].cos();
     s[52] = x179;
     let x182 = x176 * x179;
     s[53] = x182;
@@ -2372,17 +2315,14 @@ fn gamma_shared_0(
     s[60] = x196;
     let x199 = x192 - x193;
     s[61] = x199;
-    let x207 = q[39].sin();
+    let (x207, x208) = symbody_runtime::trig::sin_cos(q[39]);
     s[62] = x207;
-    let x208 = q[39].cos();
     s[63] = x208;
-    let x209 = q[40].sin();
+    let (x209, x210) = symbody_runtime::trig::sin_cos(q[40]);
     s[64] = x209;
-    let x210 = q[40].cos();
     s[65] = x210;
-    let x211 = q[41].sin();
+    let (x211, x212) = symbody_runtime::trig::sin_cos(q[41]);
     s[66] = x211;
-    let x212 = q[41].cos();
     s[67] = x212;
     let x215 = x209 * x212;
     s[68] = x215;
@@ -3520,12 +3460,9 @@ fn gamma_part_0(
     s: &[f64; 627],
     out: &mut [f64; 50],
 ) {
-    let x9 = q[3].sin();
-    let x10 = q[3].cos();
-    let x11 = q[4].sin();
-    let x12 = q[4].cos();
-    let x13 = q[5].sin();
-    let x14 = q[5].cos();
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
     let x15 = x12 * x14;
     let x16 = x12 * x13;
     let x17 = x11 * x14;
@@ -4732,17 +4669,14 @@ fn eval_kinematics_shared_0(
     _t: f64,
     s: &mut [f64; 822],
 ) {
-    let x42 = q[9].sin();
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[9]);
     s[0] = x42;
-    let x43 = q[9].cos();
     s[1] = x43;
-    let x44 = q[10].sin();
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[10]);
     s[2] = x44;
-    let x45 = q[10].cos();
     s[3] = x45;
-    let x46 = q[11].sin();
+    let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
     s[4] = x46;
-    let x47 = q[11].cos();
     s[5] = x47;
     let x48 = x45 * x47;
     s[6] = x48;
@@ -4780,17 +4714,14 @@ fn eval_kinematics_shared_0(
     s[22] = x65;
     let x67 = x60 - x61;
     s[23] = x67;
-    let x75 = q[15].sin();
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
     s[24] = x75;
-    let x76 = q[15].cos();
     s[25] = x76;
-    let x77 = q[16].sin();
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
     s[26] = x77;
-    let x78 = q[16].cos();
     s[27] = x78;
-    let x79 = q[17].sin();
+    let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
     s[28] = x79;
-    let x80 = q[17].cos();
     s[29] = x80;
     let x81 = x78 * x80;
     s[30] = x81;
@@ -4828,17 +4759,14 @@ fn eval_kinematics_shared_0(
     s[46] = x98;
     let x100 = x93 - x94;
     s[47] = x100;
-    let x108 = q[21].sin();
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[21]);
     s[48] = x108;
-    let x109 = q[21].cos();
     s[49] = x109;
-    let x110 = q[22].sin();
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[22]);
     s[50] = x110;
-    let x111 = q[22].cos();
     s[51] = x111;
-    let x112 = q[23].sin();
+    let (x112, x113) = symbody_runtime::trig::sin_cos(q[23]);
     s[52] = x112;
-    let x113 = q[23].cos();
     s[53] = x113;
     let x114 = x111 * x113;
     s[54] = x114;
@@ -4876,17 +4804,14 @@ fn eval_kinematics_shared_0(
     s[70] = x131;
     let x133 = x126 - x127;
     s[71] = x133;
-    let x141 = q[27].sin();
+    let (x141, x142) = symbody_runtime::trig::sin_cos(q[27]);
     s[72] = x141;
-    let x142 = q[27].cos();
     s[73] = x142;
-    let x143 = q[28].sin();
+    let (x143, x144) = symbody_runtime::trig::sin_cos(q[28]);
     s[74] = x143;
-    let x144 = q[28].cos();
     s[75] = x144;
-    let x145 = q[29].sin();
+    let (x145, x146) = symbody_runtime::trig::sin_cos(q[29]);
     s[76] = x145;
-    let x146 = q[29].cos();
     s[77] = x146;
     let x147 = x144 * x146;
     s[78] = x147;
@@ -4924,17 +4849,14 @@ fn eval_kinematics_shared_0(
     s[94] = x164;
     let x166 = x159 - x160;
     s[95] = x166;
-    let x174 = q[33].sin();
+    let (x174, x175) = symbody_runtime::trig::sin_cos(q[33]);
     s[96] = x174;
-    let x175 = q[33].cos();
     s[97] = x175;
-    let x176 = q[34].sin();
+    let (x176, x177) = symbody_runtime::trig::sin_cos(q[34]);
     s[98] = x176;
-    let x177 = q[34].cos();
     s[99] = x177;
-    let x178 = q[35].sin();
+    let (x178, x179) = symbody_runtime::trig::sin_cos(q[35]);
     s[100] = x178;
-    let x179 = q[35].cos();
     s[101] = x179;
     let x180 = x177 * x179;
     s[102] = x180;
@@ -4972,17 +4894,14 @@ fn eval_kinematics_shared_0(
     s[118] = x197;
     let x199 = x192 - x193;
     s[119] = x199;
-    let x207 = q[39].sin();
+    let (x207, x208) = symbody_runtime::trig::sin_cos(q[39]);
     s[120] = x207;
-    let x208 = q[39].cos();
     s[121] = x208;
-    let x209 = q[40].sin();
+    let (x209, x210) = symbody_runtime::trig::sin_cos(q[40]);
     s[122] = x209;
-    let x210 = q[40].cos();
     s[123] = x210;
-    let x211 = q[41].sin();
+    let (x211, x212) = symbody_runtime::trig::sin_cos(q[41]);
     s[124] = x211;
-    let x212 = q[41].cos();
     s[125] = x212;
     let x213 = x210 * x212;
     s[126] = x213;
@@ -6397,12 +6316,9 @@ fn eval_kinematics_part_0(
     phi_t: &mut [f64; 50],
     gamma: &mut [f64; 50],
 ) {
-    let x9 = q[3].sin();
-    let x10 = q[3].cos();
-    let x11 = q[4].sin();
-    let x12 = q[4].cos();
-    let x13 = q[5].sin();
-    let x14 = q[5].cos();
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
     let x15 = x12 * x14;
     let x16 = x12 * x13;
     let x17 = x11 * x14;
@@ -8847,12 +8763,9 @@ pub fn potential_into(k: &[f64], q: &[f64], out: &mut [f64]) {
 }
 #[inline(never)]
 fn potential_into_part_0(k: &[f64; 82], q: &[f64; 42], out: &mut [f64; 1]) {
-    let x75 = q[15].sin();
-    let x76 = q[15].cos();
-    let x77 = q[16].sin();
-    let x78 = q[16].cos();
-    let x79 = q[17].sin();
-    let x80 = q[17].cos();
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
     let x81 = x78 * x80;
     let x82 = x78 * x79;
     let x83 = x77 * x80;
@@ -8905,7 +8818,7 @@ fn power_nc_into_part_0(
     qd: &[f64; 42],
     out: &mut [f64; 1],
 ) {
-    let x11 = q[4].sin();
+    let x11 = symbody_runtime::trig::sin(q[4]);
     let x4937 = x11 * qd[3];
     let x4939 = qd[5] - x4937;
     let x18149 = x4939 * k[0];
@@ -8991,17 +8904,14 @@ fn kinematic_tangents_shared_0(
     _dp: &[f64; 165],
     s: &mut [f64; 3635],
 ) {
-    let x9 = q[3].sin();
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[3]);
     s[0] = x9;
-    let x10 = q[3].cos();
     s[1] = x10;
-    let x11 = q[4].sin();
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[4]);
     s[2] = x11;
-    let x12 = q[4].cos();
     s[3] = x12;
-    let x13 = q[5].sin();
+    let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
     s[4] = x13;
-    let x14 = q[5].cos();
     s[5] = x14;
     let x15 = x12 * x14;
     s[6] = x15;
@@ -9039,17 +8949,14 @@ fn kinematic_tangents_shared_0(
     s[22] = x32;
     let x34 = x27 - x28;
     s[23] = x34;
-    let x42 = q[9].sin();
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[9]);
     s[24] = x42;
-    let x43 = q[9].cos();
     s[25] = x43;
-    let x44 = q[10].sin();
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[10]);
     s[26] = x44;
-    let x45 = q[10].cos();
     s[27] = x45;
-    let x46 = q[11].sin();
+    let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
     s[28] = x46;
-    let x47 = q[11].cos();
     s[29] = x47;
     let x48 = x45 * x47;
     s[30] = x48;
@@ -9087,17 +8994,14 @@ fn kinematic_tangents_shared_0(
     s[46] = x65;
     let x67 = x60 - x61;
     s[47] = x67;
-    let x75 = q[15].sin();
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
     s[48] = x75;
-    let x76 = q[15].cos();
     s[49] = x76;
-    let x77 = q[16].sin();
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
     s[50] = x77;
-    let x78 = q[16].cos();
     s[51] = x78;
-    let x79 = q[17].sin();
+    let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
     s[52] = x79;
-    let x80 = q[17].cos();
     s[53] = x80;
     let x81 = x78 * x80;
     s[54] = x81;
@@ -9135,17 +9039,14 @@ fn kinematic_tangents_shared_0(
     s[70] = x98;
     let x100 = x93 - x94;
     s[71] = x100;
-    let x108 = q[21].sin();
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[21]);
     s[72] = x108;
-    let x109 = q[21].cos();
     s[73] = x109;
-    let x110 = q[22].sin();
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[22]);
     s[74] = x110;
-    let x111 = q[22].cos();
     s[75] = x111;
-    let x112 = q[23].sin();
+    let (x112, x113) = symbody_runtime::trig::sin_cos(q[23]);
     s[76] = x112;
-    let x113 = q[23].cos();
     s[77] = x113;
     let x114 = x111 * x113;
     s[78] = x114;
@@ -9183,17 +9084,14 @@ fn kinematic_tangents_shared_0(
     s[94] = x131;
     let x133 = x126 - x127;
     s[95] = x133;
-    let x141 = q[27].sin();
+    let (x141, x142) = symbody_runtime::trig::sin_cos(q[27]);
     s[96] = x141;
-    let x142 = q[27].cos();
     s[97] = x142;
-    let x143 = q[28].sin();
+    let (x143, x144) = symbody_runtime::trig::sin_cos(q[28]);
     s[98] = x143;
-    let x144 = q[28].cos();
     s[99] = x144;
-    let x145 = q[29].sin();
+    let (x145, x146) = symbody_runtime::trig::sin_cos(q[29]);
     s[100] = x145;
-    let x146 = q[29].cos();
     s[101] = x146;
     let x147 = x144 * x146;
     s[102] = x147;
@@ -9231,17 +9129,14 @@ fn kinematic_tangents_shared_0(
     s[118] = x164;
     let x166 = x159 - x160;
     s[119] = x166;
-    let x174 = q[33].sin();
+    let (x174, x175) = symbody_runtime::trig::sin_cos(q[33]);
     s[120] = x174;
-    let x175 = q[33].cos();
     s[121] = x175;
-    let x176 = q[34].sin();
+    let (x176, x177) = symbody_runtime::trig::sin_cos(q[34]);
     s[122] = x176;
-    let x177 = q[34].cos();
     s[123] = x177;
-    let x178 = q[35].sin();
+    let (x178, x179) = symbody_runtime::trig::sin_cos(q[35]);
     s[124] = x178;
-    let x179 = q[35].cos();
     s[125] = x179;
     let x180 = x177 * x179;
     s[126] = x180;
@@ -9279,17 +9174,14 @@ fn kinematic_tangents_shared_0(
     s[142] = x197;
     let x199 = x192 - x193;
     s[143] = x199;
-    let x207 = q[39].sin();
+    let (x207, x208) = symbody_runtime::trig::sin_cos(q[39]);
     s[144] = x207;
-    let x208 = q[39].cos();
     s[145] = x208;
-    let x209 = q[40].sin();
+    let (x209, x210) = symbody_runtime::trig::sin_cos(q[40]);
     s[146] = x209;
-    let x210 = q[40].cos();
     s[147] = x210;
-    let x211 = q[41].sin();
+    let (x211, x212) = symbody_runtime::trig::sin_cos(q[41]);
     s[148] = x211;
-    let x212 = q[41].cos();
     s[149] = x212;
     let x213 = x210 * x212;
     s[150] = x213;
@@ -37636,13 +37528,10 @@ pub mod exact {
     }
     #[inline(never)]
     fn force_jacobian_part_0(k: &[f64; 82], q: &[f64; 42], dq: &mut [f64; 37]) {
-        let x12 = q[4].cos();
-        let x75 = q[15].sin();
-        let x76 = q[15].cos();
-        let x77 = q[16].sin();
-        let x78 = q[16].cos();
-        let x79 = q[17].sin();
-        let x80 = q[17].cos();
+        let x12 = symbody_runtime::trig::cos(q[4]);
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
+        let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
+        let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
         let x81 = x78 * x80;
         let x82 = x78 * x79;
         let x83 = x77 * x80;
@@ -38113,46 +38002,32 @@ pub mod exact {
     }
     #[inline(never)]
     fn mass_part_0(k: &[f64; 82], q: &[f64; 42], out: &mut [f64; 70]) {
-        let x9 = q[3].sin();
-        let x10 = q[3].cos();
-        let x11 = q[4].sin();
-        let x12 = q[4].cos();
+        let (x9, x10) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x11, x12) = symbody_runtime::trig::sin_cos(q[4]);
         let x19 = x9 * x12;
         let x20 = x10 * x12;
-        let x42 = q[9].sin();
-        let x43 = q[9].cos();
-        let x44 = q[10].sin();
-        let x45 = q[10].cos();
+        let (x42, x43) = symbody_runtime::trig::sin_cos(q[9]);
+        let (x44, x45) = symbody_runtime::trig::sin_cos(q[10]);
         let x52 = x42 * x45;
         let x53 = x43 * x45;
-        let x75 = q[15].sin();
-        let x76 = q[15].cos();
-        let x77 = q[16].sin();
-        let x78 = q[16].cos();
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
+        let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
         let x85 = x75 * x78;
         let x86 = x76 * x78;
-        let x108 = q[21].sin();
-        let x109 = q[21].cos();
-        let x110 = q[22].sin();
-        let x111 = q[22].cos();
+        let (x108, x109) = symbody_runtime::trig::sin_cos(q[21]);
+        let (x110, x111) = symbody_runtime::trig::sin_cos(q[22]);
         let x118 = x108 * x111;
         let x119 = x109 * x111;
-        let x141 = q[27].sin();
-        let x142 = q[27].cos();
-        let x143 = q[28].sin();
-        let x144 = q[28].cos();
+        let (x141, x142) = symbody_runtime::trig::sin_cos(q[27]);
+        let (x143, x144) = symbody_runtime::trig::sin_cos(q[28]);
         let x151 = x141 * x144;
         let x152 = x142 * x144;
-        let x174 = q[33].sin();
-        let x175 = q[33].cos();
-        let x176 = q[34].sin();
-        let x177 = q[34].cos();
+        let (x174, x175) = symbody_runtime::trig::sin_cos(q[33]);
+        let (x176, x177) = symbody_runtime::trig::sin_cos(q[34]);
         let x184 = x174 * x177;
         let x185 = x175 * x177;
-        let x207 = q[39].sin();
-        let x208 = q[39].cos();
-        let x209 = q[40].sin();
-        let x210 = q[40].cos();
+        let (x207, x208) = symbody_runtime::trig::sin_cos(q[39]);
+        let (x209, x210) = symbody_runtime::trig::sin_cos(q[40]);
         let x217 = x207 * x210;
         let x218 = x208 * x210;
         let x5009 = x11 * 2.0;
@@ -38491,11 +38366,10 @@ pub mod exact {
         _t: f64,
         s: &mut [f64; 15],
     ) {
-        let x174 = q[33].sin();
+        let (x174, x175) = symbody_runtime::trig::sin_cos(q[33]);
         s[0] = x174;
-        let x175 = q[33].cos();
         s[1] = x175;
-        let x177 = q[34].cos();
+        let x177 = symbody_runtime::trig::cos(q[34]);
         s[2] = x177;
         let x2394 = x177 * qd[34];
         s[3] = x2394;
@@ -38530,24 +38404,17 @@ pub mod exact {
         s: &[f64; 15],
         out: &mut [f64; 42],
     ) {
-        let x9 = q[3].sin();
-        let x10 = q[3].cos();
-        let x11 = q[4].sin();
-        let x12 = q[4].cos();
+        let (x9, x10) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x11, x12) = symbody_runtime::trig::sin_cos(q[4]);
         let x19 = x9 * x12;
         let x20 = x10 * x12;
-        let x42 = q[9].sin();
-        let x43 = q[9].cos();
-        let x44 = q[10].sin();
-        let x45 = q[10].cos();
+        let (x42, x43) = symbody_runtime::trig::sin_cos(q[9]);
+        let (x44, x45) = symbody_runtime::trig::sin_cos(q[10]);
         let x52 = x42 * x45;
         let x53 = x43 * x45;
-        let x75 = q[15].sin();
-        let x76 = q[15].cos();
-        let x77 = q[16].sin();
-        let x78 = q[16].cos();
-        let x79 = q[17].sin();
-        let x80 = q[17].cos();
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
+        let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
+        let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
         let x81 = x78 * x80;
         let x82 = x78 * x79;
         let x83 = x77 * x80;
@@ -38566,16 +38433,12 @@ pub mod exact {
         let x97 = x89 + x90;
         let x98 = x91 + x92;
         let x100 = x93 - x94;
-        let x108 = q[21].sin();
-        let x109 = q[21].cos();
-        let x110 = q[22].sin();
-        let x111 = q[22].cos();
+        let (x108, x109) = symbody_runtime::trig::sin_cos(q[21]);
+        let (x110, x111) = symbody_runtime::trig::sin_cos(q[22]);
         let x118 = x108 * x111;
         let x119 = x109 * x111;
-        let x141 = q[27].sin();
-        let x142 = q[27].cos();
-        let x143 = q[28].sin();
-        let x144 = q[28].cos();
+        let (x141, x142) = symbody_runtime::trig::sin_cos(q[27]);
+        let (x143, x144) = symbody_runtime::trig::sin_cos(q[28]);
         let x151 = x141 * x144;
         let x152 = x142 * x144;
         let x1395 = x75 * x77;
@@ -39130,13 +38993,11 @@ pub mod exact {
         s: &[f64; 15],
         out: &mut [f64; 42],
     ) {
-        let x176 = q[34].sin();
+        let x176 = symbody_runtime::trig::sin(q[34]);
         let x184 = s[0] * s[2];
         let x185 = s[1] * s[2];
-        let x207 = q[39].sin();
-        let x208 = q[39].cos();
-        let x209 = q[40].sin();
-        let x210 = q[40].cos();
+        let (x207, x208) = symbody_runtime::trig::sin_cos(q[39]);
+        let (x209, x210) = symbody_runtime::trig::sin_cos(q[40]);
         let x217 = x207 * x210;
         let x218 = x208 * x210;
         let x2391 = s[1] * qd[33];
@@ -39336,29 +39197,24 @@ pub mod exact {
         _t: f64,
         s: &mut [f64; 181],
     ) {
-        let x9 = q[3].sin();
+        let (x9, x10) = symbody_runtime::trig::sin_cos(q[3]);
         s[0] = x9;
-        let x10 = q[3].cos();
         s[1] = x10;
-        let x11 = q[4].sin();
+        let (x11, x12) = symbody_runtime::trig::sin_cos(q[4]);
         s[2] = x11;
-        let x12 = q[4].cos();
         s[3] = x12;
         let x19 = x9 * x12;
         s[4] = x19;
         let x20 = x10 * x12;
         s[5] = x20;
-        let x42 = q[9].sin();
+        let (x42, x43) = symbody_runtime::trig::sin_cos(q[9]);
         s[6] = x42;
-        let x43 = q[9].cos();
         s[7] = x43;
-        let x44 = q[10].sin();
+        let (x44, x45) = symbody_runtime::trig::sin_cos(q[10]);
         s[8] = x44;
-        let x45 = q[10].cos();
         s[9] = x45;
-        let x46 = q[11].sin();
+        let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
         s[10] = x46;
-        let x47 = q[11].cos();
         s[11] = x47;
         let x48 = x45 * x47;
         s[12] = x48;
@@ -39396,17 +39252,14 @@ pub mod exact {
         s[28] = x65;
         let x67 = x60 - x61;
         s[29] = x67;
-        let x75 = q[15].sin();
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
         s[30] = x75;
-        let x76 = q[15].cos();
         s[31] = x76;
-        let x77 = q[16].sin();
+        let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
         s[32] = x77;
-        let x78 = q[16].cos();
         s[33] = x78;
-        let x79 = q[17].sin();
+        let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
         s[34] = x79;
-        let x80 = q[17].cos();
         s[35] = x80;
         let x81 = x78 * x80;
         s[36] = x81;
@@ -39444,17 +39297,14 @@ pub mod exact {
         s[52] = x98;
         let x100 = x93 - x94;
         s[53] = x100;
-        let x108 = q[21].sin();
+        let (x108, x109) = symbody_runtime::trig::sin_cos(q[21]);
         s[54] = x108;
-        let x109 = q[21].cos();
         s[55] = x109;
-        let x110 = q[22].sin();
+        let (x110, x111) = symbody_runtime::trig::sin_cos(q[22]);
         s[56] = x110;
-        let x111 = q[22].cos();
         s[57] = x111;
-        let x112 = q[23].sin();
+        let (x112, x113) = symbody_runtime::trig::sin_cos(q[23]);
         s[58] = x112;
-        let x113 = q[23].cos();
         s[59] = x113;
         let x114 = x111 * x113;
         s[60] = x114;
@@ -39492,29 +39342,24 @@ pub mod exact {
         s[76] = x131;
         let x133 = x126 - x127;
         s[77] = x133;
-        let x141 = q[27].sin();
+        let (x141, x142) = symbody_runtime::trig::sin_cos(q[27]);
         s[78] = x141;
-        let x142 = q[27].cos();
         s[79] = x142;
-        let x143 = q[28].sin();
+        let (x143, x144) = symbody_runtime::trig::sin_cos(q[28]);
         s[80] = x143;
-        let x144 = q[28].cos();
         s[81] = x144;
         let x151 = x141 * x144;
         s[82] = x151;
         let x152 = x142 * x144;
         s[83] = x152;
-        let x174 = q[33].sin();
+        let (x174, x175) = symbody_runtime::trig::sin_cos(q[33]);
         s[84] = x174;
-        let x175 = q[33].cos();
         s[85] = x175;
-        let x176 = q[34].sin();
+        let (x176, x177) = symbody_runtime::trig::sin_cos(q[34]);
         s[86] = x176;
-        let x177 = q[34].cos();
         s[87] = x177;
-        let x178 = q[35].sin();
+        let (x178, x179) = symbody_runtime::trig::sin_cos(q[35]);
         s[88] = x178;
-        let x179 = q[35].cos();
         s[89] = x179;
         let x180 = x177 * x179;
         s[90] = x180;
@@ -39552,17 +39397,14 @@ pub mod exact {
         s[106] = x197;
         let x199 = x192 - x193;
         s[107] = x199;
-        let x207 = q[39].sin();
+        let (x207, x208) = symbody_runtime::trig::sin_cos(q[39]);
         s[108] = x207;
-        let x208 = q[39].cos();
         s[109] = x208;
-        let x209 = q[40].sin();
+        let (x209, x210) = symbody_runtime::trig::sin_cos(q[40]);
         s[110] = x209;
-        let x210 = q[40].cos();
         s[111] = x210;
-        let x211 = q[41].sin();
+        let (x211, x212) = symbody_runtime::trig::sin_cos(q[41]);
         s[112] = x211;
-        let x212 = q[41].cos();
         s[113] = x212;
         let x213 = x210 * x212;
         s[114] = x213;
@@ -39707,8 +39549,7 @@ pub mod exact {
         phi: &mut [f64; 50],
         phi_q: &mut [f64; 260],
     ) {
-        let x13 = q[5].sin();
-        let x14 = q[5].cos();
+        let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
         let x15 = s[3] * x14;
         let x16 = s[3] * x13;
         let x17 = s[2] * x14;
@@ -40335,8 +40176,7 @@ pub mod exact {
         phi: &mut [f64; 50],
         phi_q: &mut [f64; 260],
     ) {
-        let x145 = q[29].sin();
-        let x146 = q[29].cos();
+        let (x145, x146) = symbody_runtime::trig::sin_cos(q[29]);
         let x147 = s[81] * x146;
         let x148 = s[81] * x145;
         let x149 = s[80] * x146;
@@ -42218,41 +42058,34 @@ pub mod exact {
         dp: &[f64; 165],
         s: &mut [f64; 391],
     ) {
-        let x9 = q[3].sin();
+        let (x9, x10) = symbody_runtime::trig::sin_cos(q[3]);
         s[0] = x9;
-        let x10 = q[3].cos();
         s[1] = x10;
-        let x11 = q[4].sin();
+        let (x11, x12) = symbody_runtime::trig::sin_cos(q[4]);
         s[2] = x11;
-        let x12 = q[4].cos();
         s[3] = x12;
         let x19 = x9 * x12;
         s[4] = x19;
         let x20 = x10 * x12;
         s[5] = x20;
-        let x42 = q[9].sin();
+        let (x42, x43) = symbody_runtime::trig::sin_cos(q[9]);
         s[6] = x42;
-        let x43 = q[9].cos();
         s[7] = x43;
-        let x44 = q[10].sin();
+        let (x44, x45) = symbody_runtime::trig::sin_cos(q[10]);
         s[8] = x44;
-        let x45 = q[10].cos();
         s[9] = x45;
         let x52 = x42 * x45;
         s[10] = x52;
         let x53 = x43 * x45;
         s[11] = x53;
-        let x75 = q[15].sin();
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[15]);
         s[12] = x75;
-        let x76 = q[15].cos();
         s[13] = x76;
-        let x77 = q[16].sin();
+        let (x77, x78) = symbody_runtime::trig::sin_cos(q[16]);
         s[14] = x77;
-        let x78 = q[16].cos();
         s[15] = x78;
-        let x79 = q[17].sin();
+        let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
         s[16] = x79;
-        let x80 = q[17].cos();
         s[17] = x80;
         let x81 = x78 * x80;
         s[18] = x81;
@@ -42278,49 +42111,41 @@ pub mod exact {
         s[28] = x96;
         let x98 = x91 + x92;
         s[29] = x98;
-        let x108 = q[21].sin();
+        let (x108, x109) = symbody_runtime::trig::sin_cos(q[21]);
         s[30] = x108;
-        let x109 = q[21].cos();
         s[31] = x109;
-        let x110 = q[22].sin();
+        let (x110, x111) = symbody_runtime::trig::sin_cos(q[22]);
         s[32] = x110;
-        let x111 = q[22].cos();
         s[33] = x111;
         let x118 = x108 * x111;
         s[34] = x118;
         let x119 = x109 * x111;
         s[35] = x119;
-        let x141 = q[27].sin();
+        let (x141, x142) = symbody_runtime::trig::sin_cos(q[27]);
         s[36] = x141;
-        let x142 = q[27].cos();
         s[37] = x142;
-        let x143 = q[28].sin();
+        let (x143, x144) = symbody_runtime::trig::sin_cos(q[28]);
         s[38] = x143;
-        let x144 = q[28].cos();
         s[39] = x144;
         let x151 = x141 * x144;
         s[40] = x151;
         let x152 = x142 * x144;
         s[41] = x152;
-        let x174 = q[33].sin();
+        let (x174, x175) = symbody_runtime::trig::sin_cos(q[33]);
         s[42] = x174;
-        let x175 = q[33].cos();
         s[43] = x175;
-        let x176 = q[34].sin();
+        let (x176, x177) = symbody_runtime::trig::sin_cos(q[34]);
         s[44] = x176;
-        let x177 = q[34].cos();
         s[45] = x177;
         let x184 = x174 * x177;
         s[46] = x184;
         let x185 = x175 * x177;
         s[47] = x185;
-        let x207 = q[39].sin();
+        let (x207, x208) = symbody_runtime::trig::sin_cos(q[39]);
         s[48] = x207;
-        let x208 = q[39].cos();
         s[49] = x208;
-        let x209 = q[40].sin();
+        let (x209, x210) = symbody_runtime::trig::sin_cos(q[40]);
         s[50] = x209;
-        let x210 = q[40].cos();
         s[51] = x210;
         let x217 = x207 * x210;
         s[52] = x217;
@@ -46038,20 +45863,13 @@ pub mod reduced {
     }
     #[inline(never)]
     fn phi_part_0(k: &[f64; 56], q: &[f64; 21], out: &mut [f64; 20]) {
-        let x13 = q[5].sin();
-        let x14 = q[5].cos();
-        let x46 = q[11].sin();
-        let x47 = q[11].cos();
-        let x79 = q[17].sin();
-        let x80 = q[17].cos();
-        let x16083 = q[2].sin();
-        let x16084 = q[2].cos();
-        let x16086 = q[8].sin();
-        let x16087 = q[8].cos();
-        let x16089 = q[14].sin();
-        let x16090 = q[14].cos();
-        let x16092 = q[20].sin();
-        let x16093 = q[20].cos();
+        let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
+        let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
+        let (x16083, x16084) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x16086, x16087) = symbody_runtime::trig::sin_cos(q[8]);
+        let (x16089, x16090) = symbody_runtime::trig::sin_cos(q[14]);
+        let (x16092, x16093) = symbody_runtime::trig::sin_cos(q[20]);
         let x16862 = x16084 * k[1];
         let x16863 = x16083 * k[2];
         let x16865 = x16862 - x16863;
@@ -46215,20 +46033,13 @@ pub mod reduced {
     }
     #[inline(never)]
     fn phi_q_part_0(k: &[f64; 56], q: &[f64; 21], out: &mut [f64; 64]) {
-        let x13 = q[5].sin();
-        let x14 = q[5].cos();
-        let x46 = q[11].sin();
-        let x47 = q[11].cos();
-        let x79 = q[17].sin();
-        let x80 = q[17].cos();
-        let x16083 = q[2].sin();
-        let x16084 = q[2].cos();
-        let x16086 = q[8].sin();
-        let x16087 = q[8].cos();
-        let x16089 = q[14].sin();
-        let x16090 = q[14].cos();
-        let x16092 = q[20].sin();
-        let x16093 = q[20].cos();
+        let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
+        let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
+        let (x16083, x16084) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x16086, x16087) = symbody_runtime::trig::sin_cos(q[8]);
+        let (x16089, x16090) = symbody_runtime::trig::sin_cos(q[14]);
+        let (x16092, x16093) = symbody_runtime::trig::sin_cos(q[20]);
         let x16862 = x16084 * k[1];
         let x16863 = x16083 * k[2];
         let x16865 = x16862 - x16863;
@@ -46434,12 +46245,9 @@ pub mod reduced {
     }
     #[inline(never)]
     fn gamma_part_0(k: &[f64; 56], q: &[f64; 21], qd: &[f64; 21], out: &mut [f64; 20]) {
-        let x13 = q[5].sin();
-        let x14 = q[5].cos();
-        let x46 = q[11].sin();
-        let x47 = q[11].cos();
-        let x79 = q[17].sin();
-        let x80 = q[17].cos();
+        let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
+        let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
         let x2044 = x14 * qd[5];
         let x2045 = x13 * qd[5];
         let x2111 = x47 * qd[11];
@@ -46452,14 +46260,10 @@ pub mod reduced {
         let x3196 = qd[11] * x2111;
         let x3334 = qd[17] * x2185;
         let x3336 = qd[17] * x2184;
-        let x16083 = q[2].sin();
-        let x16084 = q[2].cos();
-        let x16086 = q[8].sin();
-        let x16087 = q[8].cos();
-        let x16089 = q[14].sin();
-        let x16090 = q[14].cos();
-        let x16092 = q[20].sin();
-        let x16093 = q[20].cos();
+        let (x16083, x16084) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x16086, x16087) = symbody_runtime::trig::sin_cos(q[8]);
+        let (x16089, x16090) = symbody_runtime::trig::sin_cos(q[14]);
+        let (x16092, x16093) = symbody_runtime::trig::sin_cos(q[20]);
         let x16367 = qd[2] * x16084;
         let x16368 = qd[2] * x16083;
         let x16370 = qd[8] * x16087;
@@ -46646,12 +46450,9 @@ pub mod reduced {
         phi_t: &mut [f64; 20],
         gamma: &mut [f64; 20],
     ) {
-        let x13 = q[5].sin();
-        let x14 = q[5].cos();
-        let x46 = q[11].sin();
-        let x47 = q[11].cos();
-        let x79 = q[17].sin();
-        let x80 = q[17].cos();
+        let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
+        let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
         let x2044 = x14 * qd[5];
         let x2045 = x13 * qd[5];
         let x2111 = x47 * qd[11];
@@ -46664,14 +46465,10 @@ pub mod reduced {
         let x3196 = qd[11] * x2111;
         let x3334 = qd[17] * x2185;
         let x3336 = qd[17] * x2184;
-        let x16083 = q[2].sin();
-        let x16084 = q[2].cos();
-        let x16086 = q[8].sin();
-        let x16087 = q[8].cos();
-        let x16089 = q[14].sin();
-        let x16090 = q[14].cos();
-        let x16092 = q[20].sin();
-        let x16093 = q[20].cos();
+        let (x16083, x16084) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x16086, x16087) = symbody_runtime::trig::sin_cos(q[8]);
+        let (x16089, x16090) = symbody_runtime::trig::sin_cos(q[14]);
+        let (x16092, x16093) = symbody_runtime::trig::sin_cos(q[20]);
         let x16367 = qd[2] * x16084;
         let x16368 = qd[2] * x16083;
         let x16370 = qd[8] * x16087;
@@ -47082,8 +46879,7 @@ pub mod reduced {
     }
     #[inline(never)]
     fn potential_into_part_0(k: &[f64; 56], q: &[f64; 21], out: &mut [f64; 1]) {
-        let x16086 = q[8].sin();
-        let x16087 = q[8].cos();
+        let (x16086, x16087) = symbody_runtime::trig::sin_cos(q[8]);
         let x17176 = x16087 * k[36];
         let x17177 = x16086 * k[37];
         let x17179 = x17176 - x17177;
@@ -48681,8 +48477,7 @@ pub mod reduced {
         }
         #[inline(never)]
         fn force_part_0(k: &[f64; 56], q: &[f64; 21], out: &mut [f64; 21]) {
-            let x16086 = q[8].sin();
-            let x16087 = q[8].cos();
+            let (x16086, x16087) = symbody_runtime::trig::sin_cos(q[8]);
             let x17176 = x16087 * k[36];
             let x17177 = x16086 * k[37];
             let x17179 = x17176 - x17177;
@@ -48774,20 +48569,13 @@ pub mod reduced {
             mass: &mut [f64; 21],
             force: &mut [f64; 21],
         ) {
-            let x13 = q[5].sin();
-            let x14 = q[5].cos();
-            let x46 = q[11].sin();
-            let x47 = q[11].cos();
-            let x79 = q[17].sin();
-            let x80 = q[17].cos();
-            let x16083 = q[2].sin();
-            let x16084 = q[2].cos();
-            let x16086 = q[8].sin();
-            let x16087 = q[8].cos();
-            let x16089 = q[14].sin();
-            let x16090 = q[14].cos();
-            let x16092 = q[20].sin();
-            let x16093 = q[20].cos();
+            let (x13, x14) = symbody_runtime::trig::sin_cos(q[5]);
+            let (x46, x47) = symbody_runtime::trig::sin_cos(q[11]);
+            let (x79, x80) = symbody_runtime::trig::sin_cos(q[17]);
+            let (x16083, x16084) = symbody_runtime::trig::sin_cos(q[2]);
+            let (x16086, x16087) = symbody_runtime::trig::sin_cos(q[8]);
+            let (x16089, x16090) = symbody_runtime::trig::sin_cos(q[14]);
+            let (x16092, x16093) = symbody_runtime::trig::sin_cos(q[20]);
             let x16862 = x16084 * k[1];
             let x16863 = x16083 * k[2];
             let x16865 = x16862 - x16863;

@@ -41,12 +41,9 @@ pub fn phi(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
 }
 #[inline(never)]
 fn phi_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 20]) {
-    let x7 = q[3].sin();
-    let x8 = q[3].cos();
-    let x9 = q[4].sin();
-    let x10 = q[4].cos();
-    let x11 = q[5].sin();
-    let x12 = q[5].cos();
+    let (x7, x8) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[5]);
     let x13 = x10 * x12;
     let x14 = x10 * x11;
     let x15 = x9 * x12;
@@ -65,12 +62,9 @@ fn phi_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 20]) {
     let x29 = x21 + x22;
     let x30 = x23 + x24;
     let x32 = x25 - x26;
-    let x40 = q[9].sin();
-    let x41 = q[9].cos();
-    let x42 = q[10].sin();
-    let x43 = q[10].cos();
-    let x44 = q[11].sin();
-    let x45 = q[11].cos();
+    let (x40, x41) = symbody_runtime::trig::sin_cos(q[9]);
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
     let x46 = x43 * x45;
     let x47 = x43 * x44;
     let x48 = x42 * x45;
@@ -82,12 +76,9 @@ fn phi_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 20]) {
     let x59 = x40 * x45;
     let x62 = x54 + x55;
     let x65 = x58 - x59;
-    let x73 = q[15].sin();
-    let x74 = q[15].cos();
-    let x75 = q[16].sin();
-    let x76 = q[16].cos();
-    let x77 = q[17].sin();
-    let x78 = q[17].cos();
+    let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
     let x79 = x76 * x78;
     let x80 = x76 * x77;
     let x81 = x75 * x78;
@@ -106,12 +97,9 @@ fn phi_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 20]) {
     let x95 = x87 + x88;
     let x96 = x89 + x90;
     let x98 = x91 - x92;
-    let x106 = q[21].sin();
-    let x107 = q[21].cos();
-    let x108 = q[22].sin();
-    let x109 = q[22].cos();
-    let x110 = q[23].sin();
-    let x111 = q[23].cos();
+    let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
     let x112 = x109 * x111;
     let x113 = x109 * x110;
     let x114 = x108 * x111;
@@ -280,12 +268,9 @@ pub fn phi_q(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
 }
 #[inline(never)]
 fn phi_q_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 117]) {
-    let x7 = q[3].sin();
-    let x8 = q[3].cos();
-    let x9 = q[4].sin();
-    let x10 = q[4].cos();
-    let x11 = q[5].sin();
-    let x12 = q[5].cos();
+    let (x7, x8) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[5]);
     let x13 = x10 * x12;
     let x14 = x10 * x11;
     let x15 = x9 * x12;
@@ -305,12 +290,9 @@ fn phi_q_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 117]) {
     let x30 = x23 + x24;
     let x32 = x25 - x26;
     let x33 = -x9;
-    let x40 = q[9].sin();
-    let x41 = q[9].cos();
-    let x42 = q[10].sin();
-    let x43 = q[10].cos();
-    let x44 = q[11].sin();
-    let x45 = q[11].cos();
+    let (x40, x41) = symbody_runtime::trig::sin_cos(q[9]);
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
     let x46 = x43 * x45;
     let x47 = x43 * x44;
     let x48 = x42 * x45;
@@ -328,12 +310,9 @@ fn phi_q_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 117]) {
     let x62 = x54 + x55;
     let x63 = x56 + x57;
     let x65 = x58 - x59;
-    let x73 = q[15].sin();
-    let x74 = q[15].cos();
-    let x75 = q[16].sin();
-    let x76 = q[16].cos();
-    let x77 = q[17].sin();
-    let x78 = q[17].cos();
+    let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
     let x79 = x76 * x78;
     let x80 = x76 * x77;
     let x81 = x75 * x78;
@@ -352,12 +331,9 @@ fn phi_q_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 117]) {
     let x95 = x87 + x88;
     let x96 = x89 + x90;
     let x98 = x91 - x92;
-    let x106 = q[21].sin();
-    let x107 = q[21].cos();
-    let x108 = q[22].sin();
-    let x109 = q[22].cos();
-    let x110 = q[23].sin();
-    let x111 = q[23].cos();
+    let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
     let x112 = x109 * x111;
     let x113 = x109 * x110;
     let x114 = x108 * x111;
@@ -919,17 +895,14 @@ fn gamma_shared_0(
     _t: f64,
     s: &mut [f64; 208],
 ) {
-    let x7 = q[3].sin();
+    let (x7, x8) = symbody_runtime::trig::sin_cos(q[3]);
     s[0] = x7;
-    let x8 = q[3].cos();
     s[1] = x8;
-    let x9 = q[4].sin();
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[4]);
     s[2] = x9;
-    let x10 = q[4].cos();
     s[3] = x10;
-    let x11 = q[5].sin();
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[5]);
     s[4] = x11;
-    let x12 = q[5].cos();
     s[5] = x12;
     let x13 = x10 * x12;
     s[6] = x13;
@@ -953,17 +926,14 @@ fn gamma_shared_0(
     s[15] = x29;
     let x32 = x25 - x26;
     s[16] = x32;
-    let x73 = q[15].sin();
+    let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
     s[17] = x73;
-    let x74 = q[15].cos();
     s[18] = x74;
-    let x75 = q[16].sin();
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
     s[19] = x75;
-    let x76 = q[16].cos();
     s[20] = x76;
-    let x77 = q[17].sin();
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
     s[21] = x77;
-    let x78 = q[17].cos();
     s[22] = x78;
     let x81 = x75 * x78;
     s[23] = x81;
@@ -1351,12 +1321,9 @@ fn gamma_part_0(
     let x24 = s[1] * s[5];
     let x28 = x19 - x20;
     let x30 = x23 + x24;
-    let x40 = q[9].sin();
-    let x41 = q[9].cos();
-    let x42 = q[10].sin();
-    let x43 = q[10].cos();
-    let x44 = q[11].sin();
-    let x45 = q[11].cos();
+    let (x40, x41) = symbody_runtime::trig::sin_cos(q[9]);
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
     let x46 = x43 * x45;
     let x47 = x43 * x44;
     let x48 = x42 * x45;
@@ -1758,12 +1725,9 @@ fn gamma_part_1(
     s: &[f64; 208],
     out: &mut [f64; 20],
 ) {
-    let x106 = q[21].sin();
-    let x107 = q[21].cos();
-    let x108 = q[22].sin();
-    let x109 = q[22].cos();
-    let x110 = q[23].sin();
-    let x111 = q[23].cos();
+    let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
     let x114 = x108 * x111;
     let x115 = x108 * x110;
     let x116 = x106 * x109;
@@ -2021,17 +1985,14 @@ fn eval_kinematics_shared_0(
     _t: f64,
     s: &mut [f64; 207],
 ) {
-    let x7 = q[3].sin();
+    let (x7, x8) = symbody_runtime::trig::sin_cos(q[3]);
     s[0] = x7;
-    let x8 = q[3].cos();
     s[1] = x8;
-    let x9 = q[4].sin();
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[4]);
     s[2] = x9;
-    let x10 = q[4].cos();
     s[3] = x10;
-    let x11 = q[5].sin();
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[5]);
     s[4] = x11;
-    let x12 = q[5].cos();
     s[5] = x12;
     let x13 = x10 * x12;
     s[6] = x13;
@@ -2069,29 +2030,24 @@ fn eval_kinematics_shared_0(
     s[22] = x30;
     let x32 = x25 - x26;
     s[23] = x32;
-    let x42 = q[10].sin();
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
     s[24] = x42;
-    let x43 = q[10].cos();
     s[25] = x43;
-    let x44 = q[11].sin();
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
     s[26] = x44;
-    let x45 = q[11].cos();
     s[27] = x45;
     let x46 = x43 * x45;
     s[28] = x46;
     let x47 = x43 * x44;
     s[29] = x47;
-    let x106 = q[21].sin();
+    let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
     s[30] = x106;
-    let x107 = q[21].cos();
     s[31] = x107;
-    let x108 = q[22].sin();
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
     s[32] = x108;
-    let x109 = q[22].cos();
     s[33] = x109;
-    let x110 = q[23].sin();
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
     s[34] = x110;
-    let x111 = q[23].cos();
     s[35] = x111;
     let x112 = x109 * x111;
     s[36] = x112;
@@ -2448,8 +2404,7 @@ fn eval_kinematics_part_0(
     gamma: &mut [f64; 20],
 ) {
     let x33 = -s[2];
-    let x40 = q[9].sin();
-    let x41 = q[9].cos();
+    let (x40, x41) = symbody_runtime::trig::sin_cos(q[9]);
     let x48 = s[24] * s[27];
     let x49 = s[24] * s[26];
     let x50 = x40 * s[25];
@@ -2924,12 +2879,9 @@ fn eval_kinematics_part_1(
     phi_t: &mut [f64; 20],
     gamma: &mut [f64; 20],
 ) {
-    let x73 = q[15].sin();
-    let x74 = q[15].cos();
-    let x75 = q[16].sin();
-    let x76 = q[16].cos();
-    let x77 = q[17].sin();
-    let x78 = q[17].cos();
+    let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
     let x79 = x76 * x78;
     let x80 = x76 * x77;
     let x81 = x75 * x78;
@@ -3754,18 +3706,13 @@ pub fn potential_into(k: &[f64], q: &[f64], out: &mut [f64]) {
 }
 #[inline(never)]
 fn potential_into_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 1]) {
-    let x42 = q[10].sin();
-    let x43 = q[10].cos();
-    let x44 = q[11].sin();
-    let x45 = q[11].cos();
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
     let x46 = x43 * x45;
     let x47 = x43 * x44;
-    let x73 = q[15].sin();
-    let x74 = q[15].cos();
-    let x75 = q[16].sin();
-    let x76 = q[16].cos();
-    let x77 = q[17].sin();
-    let x78 = q[17].cos();
+    let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
     let x79 = x76 * x78;
     let x80 = x76 * x77;
     let x81 = x75 * x78;
@@ -3777,12 +3724,9 @@ fn potential_into_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 1]) {
     let x92 = x73 * x78;
     let x95 = x87 + x88;
     let x98 = x91 - x92;
-    let x106 = q[21].sin();
-    let x107 = q[21].cos();
-    let x108 = q[22].sin();
-    let x109 = q[22].cos();
-    let x110 = q[23].sin();
-    let x111 = q[23].cos();
+    let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
     let x112 = x109 * x111;
     let x113 = x109 * x110;
     let x114 = x108 * x111;
@@ -3881,18 +3825,13 @@ fn power_nc_into_part_0(
     qd: &[f64; 24],
     out: &mut [f64; 1],
 ) {
-    let x42 = q[10].sin();
-    let x43 = q[10].cos();
-    let x44 = q[11].sin();
-    let x45 = q[11].cos();
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
     let x46 = x43 * x45;
     let x47 = x43 * x44;
-    let x73 = q[15].sin();
-    let x74 = q[15].cos();
-    let x75 = q[16].sin();
-    let x76 = q[16].cos();
-    let x77 = q[17].sin();
-    let x78 = q[17].cos();
+    let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
     let x79 = x76 * x78;
     let x80 = x76 * x77;
     let x81 = x75 * x78;
@@ -3904,12 +3843,9 @@ fn power_nc_into_part_0(
     let x92 = x73 * x78;
     let x95 = x87 + x88;
     let x98 = x91 - x92;
-    let x106 = q[21].sin();
-    let x107 = q[21].cos();
-    let x108 = q[22].sin();
-    let x109 = q[22].cos();
-    let x110 = q[23].sin();
-    let x111 = q[23].cos();
+    let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
     let x112 = x109 * x111;
     let x113 = x109 * x110;
     let x114 = x108 * x111;
@@ -4186,17 +4122,14 @@ fn kinematic_tangents_shared_0(
     _dp: &[f64; 51],
     s: &mut [f64; 1694],
 ) {
-    let x7 = q[3].sin();
+    let (x7, x8) = symbody_runtime::trig::sin_cos(q[3]);
     s[0] = x7;
-    let x8 = q[3].cos();
     s[1] = x8;
-    let x9 = q[4].sin();
+    let (x9, x10) = symbody_runtime::trig::sin_cos(q[4]);
     s[2] = x9;
-    let x10 = q[4].cos();
     s[3] = x10;
-    let x11 = q[5].sin();
+    let (x11, x12) = symbody_runtime::trig::sin_cos(q[5]);
     s[4] = x11;
-    let x12 = q[5].cos();
     s[5] = x12;
     let x13 = x10 * x12;
     s[6] = x13;
@@ -4234,17 +4167,14 @@ fn kinematic_tangents_shared_0(
     s[22] = x30;
     let x32 = x25 - x26;
     s[23] = x32;
-    let x40 = q[9].sin();
+    let (x40, x41) = symbody_runtime::trig::sin_cos(q[9]);
     s[24] = x40;
-    let x41 = q[9].cos();
     s[25] = x41;
-    let x42 = q[10].sin();
+    let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
     s[26] = x42;
-    let x43 = q[10].cos();
     s[27] = x43;
-    let x44 = q[11].sin();
+    let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
     s[28] = x44;
-    let x45 = q[11].cos();
     s[29] = x45;
     let x46 = x43 * x45;
     s[30] = x46;
@@ -4280,17 +4210,14 @@ fn kinematic_tangents_shared_0(
     s[45] = x63;
     let x65 = x58 - x59;
     s[46] = x65;
-    let x73 = q[15].sin();
+    let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
     s[47] = x73;
-    let x74 = q[15].cos();
     s[48] = x74;
-    let x75 = q[16].sin();
+    let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
     s[49] = x75;
-    let x76 = q[16].cos();
     s[50] = x76;
-    let x77 = q[17].sin();
+    let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
     s[51] = x77;
-    let x78 = q[17].cos();
     s[52] = x78;
     let x79 = x76 * x78;
     s[53] = x79;
@@ -4328,17 +4255,14 @@ fn kinematic_tangents_shared_0(
     s[69] = x96;
     let x98 = x91 - x92;
     s[70] = x98;
-    let x106 = q[21].sin();
+    let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
     s[71] = x106;
-    let x107 = q[21].cos();
     s[72] = x107;
-    let x108 = q[22].sin();
+    let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
     s[73] = x108;
-    let x109 = q[22].cos();
     s[74] = x109;
-    let x110 = q[23].sin();
+    let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
     s[75] = x110;
-    let x111 = q[23].cos();
     s[76] = x111;
     let x112 = x109 * x111;
     s[77] = x112;
@@ -24131,13 +24055,11 @@ pub mod exact {
         _t: f64,
         s: &mut [f64; 1098],
     ) {
-        let x42 = q[10].sin();
+        let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
         s[0] = x42;
-        let x43 = q[10].cos();
         s[1] = x43;
-        let x44 = q[11].sin();
+        let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
         s[2] = x44;
-        let x45 = q[11].cos();
         s[3] = x45;
         let x46 = x43 * x45;
         s[4] = x46;
@@ -24147,17 +24069,14 @@ pub mod exact {
         s[6] = x48;
         let x49 = x42 * x44;
         s[7] = x49;
-        let x73 = q[15].sin();
+        let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
         s[8] = x73;
-        let x74 = q[15].cos();
         s[9] = x74;
-        let x75 = q[16].sin();
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
         s[10] = x75;
-        let x76 = q[16].cos();
         s[11] = x76;
-        let x77 = q[17].sin();
+        let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
         s[12] = x77;
-        let x78 = q[17].cos();
         s[13] = x78;
         let x79 = x76 * x78;
         s[14] = x79;
@@ -24193,17 +24112,14 @@ pub mod exact {
         s[29] = x96;
         let x98 = x91 - x92;
         s[30] = x98;
-        let x106 = q[21].sin();
+        let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
         s[31] = x106;
-        let x107 = q[21].cos();
         s[32] = x107;
-        let x108 = q[22].sin();
+        let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
         s[33] = x108;
-        let x109 = q[22].cos();
         s[34] = x109;
-        let x110 = q[23].sin();
+        let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
         s[35] = x110;
-        let x111 = q[23].cos();
         s[36] = x111;
         let x112 = x109 * x111;
         s[37] = x112;
@@ -28123,28 +28039,20 @@ pub mod exact {
     }
     #[inline(never)]
     fn mass_part_0(k: &[f64; 60], q: &[f64; 24], out: &mut [f64; 40]) {
-        let x7 = q[3].sin();
-        let x8 = q[3].cos();
-        let x9 = q[4].sin();
-        let x10 = q[4].cos();
+        let (x7, x8) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x9, x10) = symbody_runtime::trig::sin_cos(q[4]);
         let x17 = x7 * x10;
         let x18 = x8 * x10;
-        let x40 = q[9].sin();
-        let x41 = q[9].cos();
-        let x42 = q[10].sin();
-        let x43 = q[10].cos();
+        let (x40, x41) = symbody_runtime::trig::sin_cos(q[9]);
+        let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
         let x50 = x40 * x43;
         let x51 = x41 * x43;
-        let x73 = q[15].sin();
-        let x74 = q[15].cos();
-        let x75 = q[16].sin();
-        let x76 = q[16].cos();
+        let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
         let x83 = x73 * x76;
         let x84 = x74 * x76;
-        let x106 = q[21].sin();
-        let x107 = q[21].cos();
-        let x108 = q[22].sin();
-        let x109 = q[22].cos();
+        let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
+        let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
         let x116 = x106 * x109;
         let x117 = x107 * x109;
         let x2705 = x9 * 2.0;
@@ -28348,29 +28256,24 @@ pub mod exact {
         _t: f64,
         s: &mut [f64; 280],
     ) {
-        let x42 = q[10].sin();
+        let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
         s[0] = x42;
-        let x43 = q[10].cos();
         s[1] = x43;
-        let x44 = q[11].sin();
+        let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
         s[2] = x44;
-        let x45 = q[11].cos();
         s[3] = x45;
         let x46 = x43 * x45;
         s[4] = x46;
         let x47 = x43 * x44;
         s[5] = x47;
-        let x73 = q[15].sin();
+        let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
         s[6] = x73;
-        let x74 = q[15].cos();
         s[7] = x74;
-        let x75 = q[16].sin();
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
         s[8] = x75;
-        let x76 = q[16].cos();
         s[9] = x76;
-        let x77 = q[17].sin();
+        let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
         s[10] = x77;
-        let x78 = q[17].cos();
         s[11] = x78;
         let x79 = x76 * x78;
         s[12] = x79;
@@ -28396,17 +28299,14 @@ pub mod exact {
         s[22] = x95;
         let x98 = x91 - x92;
         s[23] = x98;
-        let x106 = q[21].sin();
+        let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
         s[24] = x106;
-        let x107 = q[21].cos();
         s[25] = x107;
-        let x108 = q[22].sin();
+        let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
         s[26] = x108;
-        let x109 = q[22].cos();
         s[27] = x109;
-        let x110 = q[23].sin();
+        let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
         s[28] = x110;
-        let x111 = q[23].cos();
         s[29] = x111;
         let x112 = x109 * x111;
         s[30] = x112;
@@ -28917,14 +28817,11 @@ pub mod exact {
         s: &[f64; 280],
         out: &mut [f64; 24],
     ) {
-        let x7 = q[3].sin();
-        let x8 = q[3].cos();
-        let x9 = q[4].sin();
-        let x10 = q[4].cos();
+        let (x7, x8) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x9, x10) = symbody_runtime::trig::sin_cos(q[4]);
         let x17 = x7 * x10;
         let x18 = x8 * x10;
-        let x40 = q[9].sin();
-        let x41 = q[9].cos();
+        let (x40, x41) = symbody_runtime::trig::sin_cos(q[9]);
         let x48 = s[0] * s[3];
         let x49 = s[0] * s[2];
         let x50 = x40 * s[1];
@@ -29436,29 +29333,24 @@ pub mod exact {
         _t: f64,
         s: &mut [f64; 290],
     ) {
-        let x7 = q[3].sin();
+        let (x7, x8) = symbody_runtime::trig::sin_cos(q[3]);
         s[0] = x7;
-        let x8 = q[3].cos();
         s[1] = x8;
-        let x9 = q[4].sin();
+        let (x9, x10) = symbody_runtime::trig::sin_cos(q[4]);
         s[2] = x9;
-        let x10 = q[4].cos();
         s[3] = x10;
         let x17 = x7 * x10;
         s[4] = x17;
         let x18 = x8 * x10;
         s[5] = x18;
-        let x40 = q[9].sin();
+        let (x40, x41) = symbody_runtime::trig::sin_cos(q[9]);
         s[6] = x40;
-        let x41 = q[9].cos();
         s[7] = x41;
-        let x42 = q[10].sin();
+        let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
         s[8] = x42;
-        let x43 = q[10].cos();
         s[9] = x43;
-        let x44 = q[11].sin();
+        let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
         s[10] = x44;
-        let x45 = q[11].cos();
         s[11] = x45;
         let x46 = x43 * x45;
         s[12] = x46;
@@ -29472,17 +29364,14 @@ pub mod exact {
         s[16] = x50;
         let x51 = x41 * x43;
         s[17] = x51;
-        let x73 = q[15].sin();
+        let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
         s[18] = x73;
-        let x74 = q[15].cos();
         s[19] = x74;
-        let x75 = q[16].sin();
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
         s[20] = x75;
-        let x76 = q[16].cos();
         s[21] = x76;
-        let x77 = q[17].sin();
+        let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
         s[22] = x77;
-        let x78 = q[17].cos();
         s[23] = x78;
         let x79 = x76 * x78;
         s[24] = x79;
@@ -29518,17 +29407,14 @@ pub mod exact {
         s[39] = x96;
         let x98 = x91 - x92;
         s[40] = x98;
-        let x106 = q[21].sin();
+        let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
         s[41] = x106;
-        let x107 = q[21].cos();
         s[42] = x107;
-        let x108 = q[22].sin();
+        let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
         s[43] = x108;
-        let x109 = q[22].cos();
         s[44] = x109;
-        let x110 = q[23].sin();
+        let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
         s[45] = x110;
-        let x111 = q[23].cos();
         s[46] = x111;
         let x112 = x109 * x111;
         s[47] = x112;
@@ -30026,8 +29912,7 @@ pub mod exact {
         phi_q: &mut [f64; 117],
         mass: &mut [f64; 40],
     ) {
-        let x11 = q[5].sin();
-        let x12 = q[5].cos();
+        let (x11, x12) = symbody_runtime::trig::sin_cos(q[5]);
         let x13 = s[3] * x12;
         let x14 = s[3] * x11;
         let x15 = s[2] * x12;
@@ -31368,29 +31253,24 @@ pub mod exact {
         dp: &[f64; 51],
         s: &mut [f64; 1179],
     ) {
-        let x7 = q[3].sin();
+        let (x7, x8) = symbody_runtime::trig::sin_cos(q[3]);
         s[0] = x7;
-        let x8 = q[3].cos();
         s[1] = x8;
-        let x9 = q[4].sin();
+        let (x9, x10) = symbody_runtime::trig::sin_cos(q[4]);
         s[2] = x9;
-        let x10 = q[4].cos();
         s[3] = x10;
         let x17 = x7 * x10;
         s[4] = x17;
         let x18 = x8 * x10;
         s[5] = x18;
-        let x40 = q[9].sin();
+        let (x40, x41) = symbody_runtime::trig::sin_cos(q[9]);
         s[6] = x40;
-        let x41 = q[9].cos();
         s[7] = x41;
-        let x42 = q[10].sin();
+        let (x42, x43) = symbody_runtime::trig::sin_cos(q[10]);
         s[8] = x42;
-        let x43 = q[10].cos();
         s[9] = x43;
-        let x44 = q[11].sin();
+        let (x44, x45) = symbody_runtime::trig::sin_cos(q[11]);
         s[10] = x44;
-        let x45 = q[11].cos();
         s[11] = x45;
         let x46 = x43 * x45;
         s[12] = x46;
@@ -31400,17 +31280,14 @@ pub mod exact {
         s[14] = x50;
         let x51 = x41 * x43;
         s[15] = x51;
-        let x73 = q[15].sin();
+        let (x73, x74) = symbody_runtime::trig::sin_cos(q[15]);
         s[16] = x73;
-        let x74 = q[15].cos();
         s[17] = x74;
-        let x75 = q[16].sin();
+        let (x75, x76) = symbody_runtime::trig::sin_cos(q[16]);
         s[18] = x75;
-        let x76 = q[16].cos();
         s[19] = x76;
-        let x77 = q[17].sin();
+        let (x77, x78) = symbody_runtime::trig::sin_cos(q[17]);
         s[20] = x77;
-        let x78 = q[17].cos();
         s[21] = x78;
         let x79 = x76 * x78;
         s[22] = x79;
@@ -31436,17 +31313,14 @@ pub mod exact {
         s[32] = x95;
         let x98 = x91 - x92;
         s[33] = x98;
-        let x106 = q[21].sin();
+        let (x106, x107) = symbody_runtime::trig::sin_cos(q[21]);
         s[34] = x106;
-        let x107 = q[21].cos();
         s[35] = x107;
-        let x108 = q[22].sin();
+        let (x108, x109) = symbody_runtime::trig::sin_cos(q[22]);
         s[36] = x108;
-        let x109 = q[22].cos();
         s[37] = x109;
-        let x110 = q[23].sin();
+        let (x110, x111) = symbody_runtime::trig::sin_cos(q[23]);
         s[38] = x110;
-        let x111 = q[23].cos();
         s[39] = x111;
         let x112 = x109 * x111;
         s[40] = x112;

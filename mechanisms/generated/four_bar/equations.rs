@@ -42,12 +42,9 @@ pub fn phi(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
 #[inline(never)]
 fn phi_part_0(k: &[f64; 23], q: &[f64; 18], t: f64, out: &mut [f64; 21]) {
     let x5 = 6.283185307179586 * t;
-    let x12 = q[3].sin();
-    let x13 = q[3].cos();
-    let x14 = q[4].sin();
-    let x15 = q[4].cos();
-    let x16 = q[5].sin();
-    let x17 = q[5].cos();
+    let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
     let x18 = x15 * x17;
     let x19 = x15 * x16;
     let x20 = x14 * x17;
@@ -65,12 +62,9 @@ fn phi_part_0(k: &[f64; 23], q: &[f64; 18], t: f64, out: &mut [f64; 21]) {
     let x34 = x26 + x27;
     let x35 = x28 + x29;
     let x37 = x30 - x31;
-    let x45 = q[9].sin();
-    let x46 = q[9].cos();
-    let x47 = q[10].sin();
-    let x48 = q[10].cos();
-    let x49 = q[11].sin();
-    let x50 = q[11].cos();
+    let (x45, x46) = symbody_runtime::trig::sin_cos(q[9]);
+    let (x47, x48) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x49, x50) = symbody_runtime::trig::sin_cos(q[11]);
     let x51 = x48 * x50;
     let x52 = x48 * x49;
     let x53 = x47 * x50;
@@ -89,12 +83,9 @@ fn phi_part_0(k: &[f64; 23], q: &[f64; 18], t: f64, out: &mut [f64; 21]) {
     let x67 = x59 + x60;
     let x68 = x61 + x62;
     let x70 = x63 - x64;
-    let x78 = q[15].sin();
-    let x79 = q[15].cos();
-    let x80 = q[16].sin();
-    let x81 = q[16].cos();
-    let x82 = q[17].sin();
-    let x83 = q[17].cos();
+    let (x78, x79) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x80, x81) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x82, x83) = symbody_runtime::trig::sin_cos(q[17]);
     let x84 = x81 * x83;
     let x85 = x81 * x82;
     let x86 = x80 * x83;
@@ -135,8 +126,7 @@ fn phi_part_0(k: &[f64; 23], q: &[f64; 18], t: f64, out: &mut [f64; 21]) {
     let x190 = x56 * x132;
     let x191 = x188 + x189;
     let x192 = x190 + x191;
-    let x331 = x5.sin();
-    let x332 = x5.cos();
+    let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
     let x333 = x118 * x331;
     let x334 = x121 * x332;
     let x336 = x333 - x334;
@@ -266,12 +256,9 @@ pub fn phi_q(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
 #[inline(never)]
 fn phi_q_part_0(k: &[f64; 23], q: &[f64; 18], t: f64, out: &mut [f64; 96]) {
     let x5 = 6.283185307179586 * t;
-    let x12 = q[3].sin();
-    let x13 = q[3].cos();
-    let x14 = q[4].sin();
-    let x15 = q[4].cos();
-    let x16 = q[5].sin();
-    let x17 = q[5].cos();
+    let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
     let x18 = x15 * x17;
     let x19 = x15 * x16;
     let x20 = x14 * x17;
@@ -290,12 +277,9 @@ fn phi_q_part_0(k: &[f64; 23], q: &[f64; 18], t: f64, out: &mut [f64; 96]) {
     let x34 = x26 + x27;
     let x35 = x28 + x29;
     let x37 = x30 - x31;
-    let x45 = q[9].sin();
-    let x46 = q[9].cos();
-    let x47 = q[10].sin();
-    let x48 = q[10].cos();
-    let x49 = q[11].sin();
-    let x50 = q[11].cos();
+    let (x45, x46) = symbody_runtime::trig::sin_cos(q[9]);
+    let (x47, x48) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x49, x50) = symbody_runtime::trig::sin_cos(q[11]);
     let x51 = x48 * x50;
     let x52 = x48 * x49;
     let x53 = x47 * x50;
@@ -314,12 +298,9 @@ fn phi_q_part_0(k: &[f64; 23], q: &[f64; 18], t: f64, out: &mut [f64; 96]) {
     let x67 = x59 + x60;
     let x68 = x61 + x62;
     let x70 = x63 - x64;
-    let x78 = q[15].sin();
-    let x79 = q[15].cos();
-    let x80 = q[16].sin();
-    let x81 = q[16].cos();
-    let x82 = q[17].sin();
-    let x83 = q[17].cos();
+    let (x78, x79) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x80, x81) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x82, x83) = symbody_runtime::trig::sin_cos(q[17]);
     let x84 = x81 * x83;
     let x85 = x81 * x82;
     let x86 = x80 * x83;
@@ -351,8 +332,7 @@ fn phi_q_part_0(k: &[f64; 23], q: &[f64; 18], t: f64, out: &mut [f64; 96]) {
     let x130 = x19 + x129;
     let x131 = x22 * 0.00000000000000006123233995736766;
     let x132 = x131 - x14;
-    let x331 = x5.sin();
-    let x332 = x5.cos();
+    let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
     let x341 = x25 - x24;
     let x345 = x34 * 0.00000000000000006123233995736766;
     let x346 = x37 * 0.00000000000000006123233995736766;
@@ -746,12 +726,9 @@ pub fn phi_t(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
 #[inline(never)]
 fn phi_t_part_0(q: &[f64; 18], t: f64, out: &mut [f64; 21]) {
     let x5 = 6.283185307179586 * t;
-    let x12 = q[3].sin();
-    let x13 = q[3].cos();
-    let x14 = q[4].sin();
-    let x15 = q[4].cos();
-    let x16 = q[5].sin();
-    let x17 = q[5].cos();
+    let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
     let x18 = x15 * x17;
     let x19 = x15 * x16;
     let x20 = x14 * x17;
@@ -766,8 +743,7 @@ fn phi_t_part_0(q: &[f64; 18], t: f64, out: &mut [f64; 21]) {
     let x118 = x116 - x33;
     let x119 = x19 * 0.00000000000000006123233995736766;
     let x121 = x119 - x35;
-    let x331 = x5.sin();
-    let x332 = x5.cos();
+    let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
     let x703 = 6.283185307179586 * x332;
     let x705 = 6.283185307179586 * x331;
     let x707 = x118 * x703;
@@ -814,17 +790,14 @@ fn gamma_shared_0(
     _t: f64,
     s: &mut [f64; 280],
 ) {
-    let x12 = q[3].sin();
+    let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
     s[0] = x12;
-    let x13 = q[3].cos();
     s[1] = x13;
-    let x14 = q[4].sin();
+    let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
     s[2] = x14;
-    let x15 = q[4].cos();
     s[3] = x15;
-    let x16 = q[5].sin();
+    let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
     s[4] = x16;
-    let x17 = q[5].cos();
     s[5] = x17;
     let x18 = x15 * x17;
     s[6] = x18;
@@ -846,33 +819,27 @@ fn gamma_shared_0(
     s[14] = x33;
     let x35 = x28 + x29;
     s[15] = x35;
-    let x45 = q[9].sin();
+    let (x45, x46) = symbody_runtime::trig::sin_cos(q[9]);
     s[16] = x45;
-    let x46 = q[9].cos();
     s[17] = x46;
-    let x47 = q[10].sin();
+    let (x47, x48) = symbody_runtime::trig::sin_cos(q[10]);
     s[18] = x47;
-    let x48 = q[10].cos();
     s[19] = x48;
-    let x49 = q[11].sin();
+    let (x49, x50) = symbody_runtime::trig::sin_cos(q[11]);
     s[20] = x49;
-    let x50 = q[11].cos();
     s[21] = x50;
     let x53 = x47 * x50;
     s[22] = x53;
     let x54 = x47 * x49;
     s[23] = x54;
-    let x78 = q[15].sin();
+    let (x78, x79) = symbody_runtime::trig::sin_cos(q[15]);
     s[24] = x78;
-    let x79 = q[15].cos();
     s[25] = x79;
-    let x80 = q[16].sin();
+    let (x80, x81) = symbody_runtime::trig::sin_cos(q[16]);
     s[26] = x80;
-    let x81 = q[16].cos();
     s[27] = x81;
-    let x82 = q[17].sin();
+    let (x82, x83) = symbody_runtime::trig::sin_cos(q[17]);
     s[28] = x82;
-    let x83 = q[17].cos();
     s[29] = x83;
     let x86 = x80 * x83;
     s[30] = x86;
@@ -1611,8 +1578,7 @@ fn gamma_part_1(k: &[f64; 23], t: f64, s: &[f64; 280], out: &mut [f64; 21]) {
     let x97 = s[24] * s[29];
     let x100 = x92 + x93;
     let x103 = x96 - x97;
-    let x331 = x5.sin();
-    let x332 = x5.cos();
+    let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
     let x703 = 6.283185307179586 * x332;
     let x705 = 6.283185307179586 * x331;
     let x806 = s[21] * s[71];
@@ -1853,17 +1819,14 @@ fn eval_kinematics_shared_0(
 ) {
     let x5 = 6.283185307179586 * t;
     s[0] = x5;
-    let x12 = q[3].sin();
+    let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
     s[1] = x12;
-    let x13 = q[3].cos();
     s[2] = x13;
-    let x14 = q[4].sin();
+    let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
     s[3] = x14;
-    let x15 = q[4].cos();
     s[4] = x15;
-    let x16 = q[5].sin();
+    let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
     s[5] = x16;
-    let x17 = q[5].cos();
     s[6] = x17;
     let x18 = x15 * x17;
     s[7] = x18;
@@ -1897,17 +1860,14 @@ fn eval_kinematics_shared_0(
     s[21] = x35;
     let x37 = x30 - x31;
     s[22] = x37;
-    let x45 = q[9].sin();
+    let (x45, x46) = symbody_runtime::trig::sin_cos(q[9]);
     s[23] = x45;
-    let x46 = q[9].cos();
     s[24] = x46;
-    let x47 = q[10].sin();
+    let (x47, x48) = symbody_runtime::trig::sin_cos(q[10]);
     s[25] = x47;
-    let x48 = q[10].cos();
     s[26] = x48;
-    let x49 = q[11].sin();
+    let (x49, x50) = symbody_runtime::trig::sin_cos(q[11]);
     s[27] = x49;
-    let x50 = q[11].cos();
     s[28] = x50;
     let x51 = x48 * x50;
     s[29] = x51;
@@ -1945,17 +1905,14 @@ fn eval_kinematics_shared_0(
     s[45] = x68;
     let x70 = x63 - x64;
     s[46] = x70;
-    let x78 = q[15].sin();
+    let (x78, x79) = symbody_runtime::trig::sin_cos(q[15]);
     s[47] = x78;
-    let x79 = q[15].cos();
     s[48] = x79;
-    let x80 = q[16].sin();
+    let (x80, x81) = symbody_runtime::trig::sin_cos(q[16]);
     s[49] = x80;
-    let x81 = q[16].cos();
     s[50] = x81;
-    let x82 = q[17].sin();
+    let (x82, x83) = symbody_runtime::trig::sin_cos(q[17]);
     s[51] = x82;
-    let x83 = q[17].cos();
     s[52] = x83;
     let x84 = x81 * x83;
     s[53] = x84;
@@ -1991,9 +1948,8 @@ fn eval_kinematics_shared_0(
     s[68] = x119;
     let x121 = x119 - x35;
     s[69] = x121;
-    let x331 = x5.sin();
+    let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
     s[70] = x331;
-    let x332 = x5.cos();
     s[71] = x332;
     let x372 = x12 * x18;
     s[72] = x372;
@@ -3462,17 +3418,14 @@ fn kinematic_tangents_shared_0(
 ) {
     let x5 = 6.283185307179586 * t;
     s[0] = x5;
-    let x12 = q[3].sin();
+    let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
     s[1] = x12;
-    let x13 = q[3].cos();
     s[2] = x13;
-    let x14 = q[4].sin();
+    let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
     s[3] = x14;
-    let x15 = q[4].cos();
     s[4] = x15;
-    let x16 = q[5].sin();
+    let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
     s[5] = x16;
-    let x17 = q[5].cos();
     s[6] = x17;
     let x18 = x15 * x17;
     s[7] = x18;
@@ -3510,17 +3463,14 @@ fn kinematic_tangents_shared_0(
     s[23] = x35;
     let x37 = x30 - x31;
     s[24] = x37;
-    let x45 = q[9].sin();
+    let (x45, x46) = symbody_runtime::trig::sin_cos(q[9]);
     s[25] = x45;
-    let x46 = q[9].cos();
     s[26] = x46;
-    let x47 = q[10].sin();
+    let (x47, x48) = symbody_runtime::trig::sin_cos(q[10]);
     s[27] = x47;
-    let x48 = q[10].cos();
     s[28] = x48;
-    let x49 = q[11].sin();
+    let (x49, x50) = symbody_runtime::trig::sin_cos(q[11]);
     s[29] = x49;
-    let x50 = q[11].cos();
     s[30] = x50;
     let x51 = x48 * x50;
     s[31] = x51;
@@ -3558,17 +3508,14 @@ fn kinematic_tangents_shared_0(
     s[47] = x68;
     let x70 = x63 - x64;
     s[48] = x70;
-    let x78 = q[15].sin();
+    let (x78, x79) = symbody_runtime::trig::sin_cos(q[15]);
     s[49] = x78;
-    let x79 = q[15].cos();
     s[50] = x79;
-    let x80 = q[16].sin();
+    let (x80, x81) = symbody_runtime::trig::sin_cos(q[16]);
     s[51] = x80;
-    let x81 = q[16].cos();
     s[52] = x81;
-    let x82 = q[17].sin();
+    let (x82, x83) = symbody_runtime::trig::sin_cos(q[17]);
     s[53] = x82;
-    let x83 = q[17].cos();
     s[54] = x83;
     let x84 = x81 * x83;
     s[55] = x84;
@@ -3630,9 +3577,8 @@ fn kinematic_tangents_shared_0(
     s[83] = x131;
     let x132 = x131 - x14;
     s[84] = x132;
-    let x331 = x5.sin();
+    let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
     s[85] = x331;
-    let x332 = x5.cos();
     s[86] = x332;
     let x370 = x12 * x14;
     s[87] = x370;
@@ -11117,22 +11063,16 @@ pub mod exact {
     }
     #[inline(never)]
     fn mass_part_0(k: &[f64; 23], q: &[f64; 18], out: &mut [f64; 30]) {
-        let x12 = q[3].sin();
-        let x13 = q[3].cos();
-        let x14 = q[4].sin();
-        let x15 = q[4].cos();
+        let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
         let x22 = x12 * x15;
         let x23 = x13 * x15;
-        let x45 = q[9].sin();
-        let x46 = q[9].cos();
-        let x47 = q[10].sin();
-        let x48 = q[10].cos();
+        let (x45, x46) = symbody_runtime::trig::sin_cos(q[9]);
+        let (x47, x48) = symbody_runtime::trig::sin_cos(q[10]);
         let x55 = x45 * x48;
         let x56 = x46 * x48;
-        let x78 = q[15].sin();
-        let x79 = q[15].cos();
-        let x80 = q[16].sin();
-        let x81 = q[16].cos();
+        let (x78, x79) = symbody_runtime::trig::sin_cos(q[15]);
+        let (x80, x81) = symbody_runtime::trig::sin_cos(q[16]);
         let x88 = x78 * x81;
         let x89 = x79 * x81;
         let x1892 = 2.0 * x14;
@@ -11282,22 +11222,16 @@ pub mod exact {
     }
     #[inline(never)]
     fn force_part_0(k: &[f64; 23], q: &[f64; 18], qd: &[f64; 18], out: &mut [f64; 18]) {
-        let x12 = q[3].sin();
-        let x13 = q[3].cos();
-        let x14 = q[4].sin();
-        let x15 = q[4].cos();
+        let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
         let x22 = x12 * x15;
         let x23 = x13 * x15;
-        let x45 = q[9].sin();
-        let x46 = q[9].cos();
-        let x47 = q[10].sin();
-        let x48 = q[10].cos();
+        let (x45, x46) = symbody_runtime::trig::sin_cos(q[9]);
+        let (x47, x48) = symbody_runtime::trig::sin_cos(q[10]);
         let x55 = x45 * x48;
         let x56 = x46 * x48;
-        let x78 = q[15].sin();
-        let x79 = q[15].cos();
-        let x80 = q[16].sin();
-        let x81 = q[16].cos();
+        let (x78, x79) = symbody_runtime::trig::sin_cos(q[15]);
+        let (x80, x81) = symbody_runtime::trig::sin_cos(q[16]);
         let x88 = x78 * x81;
         let x89 = x79 * x81;
         let x729 = x13 * qd[3];
@@ -11609,37 +11543,31 @@ pub mod exact {
         _t: f64,
         s: &mut [f64; 30],
     ) {
-        let x12 = q[3].sin();
+        let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
         s[0] = x12;
-        let x13 = q[3].cos();
         s[1] = x13;
-        let x14 = q[4].sin();
+        let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
         s[2] = x14;
-        let x15 = q[4].cos();
         s[3] = x15;
         let x22 = x12 * x15;
         s[4] = x22;
         let x23 = x13 * x15;
         s[5] = x23;
-        let x45 = q[9].sin();
+        let (x45, x46) = symbody_runtime::trig::sin_cos(q[9]);
         s[6] = x45;
-        let x46 = q[9].cos();
         s[7] = x46;
-        let x47 = q[10].sin();
+        let (x47, x48) = symbody_runtime::trig::sin_cos(q[10]);
         s[8] = x47;
-        let x48 = q[10].cos();
         s[9] = x48;
         let x55 = x45 * x48;
         s[10] = x55;
         let x56 = x46 * x48;
         s[11] = x56;
-        let x78 = q[15].sin();
+        let (x78, x79) = symbody_runtime::trig::sin_cos(q[15]);
         s[12] = x78;
-        let x79 = q[15].cos();
         s[13] = x79;
-        let x80 = q[16].sin();
+        let (x80, x81) = symbody_runtime::trig::sin_cos(q[16]);
         s[14] = x80;
-        let x81 = q[16].cos();
         s[15] = x81;
         let x88 = x78 * x81;
         s[16] = x88;
@@ -11682,8 +11610,7 @@ pub mod exact {
         force: &mut [f64; 18],
     ) {
         let x5 = 6.283185307179586 * t;
-        let x16 = q[5].sin();
-        let x17 = q[5].cos();
+        let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
         let x18 = s[3] * x17;
         let x19 = s[3] * x16;
         let x20 = s[2] * x17;
@@ -11700,8 +11627,7 @@ pub mod exact {
         let x34 = x26 + x27;
         let x35 = x28 + x29;
         let x37 = x30 - x31;
-        let x49 = q[11].sin();
-        let x50 = q[11].cos();
+        let (x49, x50) = symbody_runtime::trig::sin_cos(q[11]);
         let x51 = s[9] * x50;
         let x52 = s[9] * x49;
         let x53 = s[8] * x50;
@@ -11718,8 +11644,7 @@ pub mod exact {
         let x67 = x59 + x60;
         let x68 = x61 + x62;
         let x70 = x63 - x64;
-        let x82 = q[17].sin();
-        let x83 = q[17].cos();
+        let (x82, x83) = symbody_runtime::trig::sin_cos(q[17]);
         let x84 = s[15] * x83;
         let x85 = s[15] * x82;
         let x86 = s[14] * x83;
@@ -11759,8 +11684,7 @@ pub mod exact {
         let x190 = s[11] * x132;
         let x191 = x188 + x189;
         let x192 = x190 + x191;
-        let x331 = x5.sin();
-        let x332 = x5.cos();
+        let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
         let x333 = x118 * x331;
         let x334 = x121 * x332;
         let x336 = x333 - x334;
@@ -12662,25 +12586,21 @@ pub mod exact {
         dp: &[f64; 33],
         s: &mut [f64; 42],
     ) {
-        let x45 = q[9].sin();
+        let (x45, x46) = symbody_runtime::trig::sin_cos(q[9]);
         s[0] = x45;
-        let x46 = q[9].cos();
         s[1] = x46;
-        let x47 = q[10].sin();
+        let (x47, x48) = symbody_runtime::trig::sin_cos(q[10]);
         s[2] = x47;
-        let x48 = q[10].cos();
         s[3] = x48;
         let x55 = x45 * x48;
         s[4] = x55;
         let x56 = x46 * x48;
         s[5] = x56;
-        let x78 = q[15].sin();
+        let (x78, x79) = symbody_runtime::trig::sin_cos(q[15]);
         s[6] = x78;
-        let x79 = q[15].cos();
         s[7] = x79;
-        let x80 = q[16].sin();
+        let (x80, x81) = symbody_runtime::trig::sin_cos(q[16]);
         s[8] = x80;
-        let x81 = q[16].cos();
         s[9] = x81;
         let x88 = x78 * x81;
         s[10] = x88;
@@ -12759,10 +12679,8 @@ pub mod exact {
         mass: &mut [f64; 30],
         force: &mut [f64; 18],
     ) {
-        let x12 = q[3].sin();
-        let x13 = q[3].cos();
-        let x14 = q[4].sin();
-        let x15 = q[4].cos();
+        let (x12, x13) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x14, x15) = symbody_runtime::trig::sin_cos(q[4]);
         let x22 = x12 * x15;
         let x23 = x13 * x15;
         let x729 = x13 * qd[3];
@@ -14081,14 +13999,10 @@ pub mod reduced {
     #[inline(never)]
     fn phi_part_0(k: &[f64; 13], q: &[f64; 9], t: f64, out: &mut [f64; 9]) {
         let x5 = 6.283185307179586 * t;
-        let x16 = q[5].sin();
-        let x17 = q[5].cos();
-        let x331 = x5.sin();
-        let x332 = x5.cos();
-        let x5846 = q[2].sin();
-        let x5847 = q[2].cos();
-        let x5849 = q[8].sin();
-        let x5850 = q[8].cos();
+        let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
+        let (x5846, x5847) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x5849, x5850) = symbody_runtime::trig::sin_cos(q[8]);
         let x5856 = 0.00000000000000006123233995736766 * x5847;
         let x5857 = x5846 + x5856;
         let x5858 = 0.00000000000000006123233995736766 * x5846;
@@ -14160,14 +14074,10 @@ pub mod reduced {
     #[inline(never)]
     fn phi_q_part_0(k: &[f64; 13], q: &[f64; 9], t: f64, out: &mut [f64; 25]) {
         let x5 = 6.283185307179586 * t;
-        let x16 = q[5].sin();
-        let x17 = q[5].cos();
-        let x331 = x5.sin();
-        let x332 = x5.cos();
-        let x5846 = q[2].sin();
-        let x5847 = q[2].cos();
-        let x5849 = q[8].sin();
-        let x5850 = q[8].cos();
+        let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
+        let (x5846, x5847) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x5849, x5850) = symbody_runtime::trig::sin_cos(q[8]);
         let x5856 = 0.00000000000000006123233995736766 * x5847;
         let x5857 = x5846 + x5856;
         let x5858 = 0.00000000000000006123233995736766 * x5846;
@@ -14242,12 +14152,10 @@ pub mod reduced {
     #[inline(never)]
     fn phi_t_part_0(q: &[f64; 9], t: f64, out: &mut [f64; 9]) {
         let x5 = 6.283185307179586 * t;
-        let x331 = x5.sin();
-        let x332 = x5.cos();
+        let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
         let x703 = 6.283185307179586 * x332;
         let x705 = 6.283185307179586 * x331;
-        let x5846 = q[2].sin();
-        let x5847 = q[2].cos();
+        let (x5846, x5847) = symbody_runtime::trig::sin_cos(q[2]);
         let x5856 = 0.00000000000000006123233995736766 * x5847;
         let x5857 = x5846 + x5856;
         let x5858 = 0.00000000000000006123233995736766 * x5846;
@@ -14282,10 +14190,8 @@ pub mod reduced {
         out: &mut [f64; 9],
     ) {
         let x5 = 6.283185307179586 * t;
-        let x16 = q[5].sin();
-        let x17 = q[5].cos();
-        let x331 = x5.sin();
-        let x332 = x5.cos();
+        let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
         let x703 = 6.283185307179586 * x332;
         let x705 = 6.283185307179586 * x331;
         let x735 = x17 * qd[5];
@@ -14294,10 +14200,8 @@ pub mod reduced {
         let x1124 = 6.283185307179586 * x703;
         let x1141 = qd[5] * x736;
         let x1143 = qd[5] * x735;
-        let x5846 = q[2].sin();
-        let x5847 = q[2].cos();
-        let x5849 = q[8].sin();
-        let x5850 = q[8].cos();
+        let (x5846, x5847) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x5849, x5850) = symbody_runtime::trig::sin_cos(q[8]);
         let x5856 = 0.00000000000000006123233995736766 * x5847;
         let x5857 = x5846 + x5856;
         let x5858 = 0.00000000000000006123233995736766 * x5846;
@@ -14412,10 +14316,8 @@ pub mod reduced {
         gamma: &mut [f64; 9],
     ) {
         let x5 = 6.283185307179586 * t;
-        let x16 = q[5].sin();
-        let x17 = q[5].cos();
-        let x331 = x5.sin();
-        let x332 = x5.cos();
+        let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
         let x703 = 6.283185307179586 * x332;
         let x705 = 6.283185307179586 * x331;
         let x735 = x17 * qd[5];
@@ -14424,10 +14326,8 @@ pub mod reduced {
         let x1124 = 6.283185307179586 * x703;
         let x1141 = qd[5] * x736;
         let x1143 = qd[5] * x735;
-        let x5846 = q[2].sin();
-        let x5847 = q[2].cos();
-        let x5849 = q[8].sin();
-        let x5850 = q[8].cos();
+        let (x5846, x5847) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x5849, x5850) = symbody_runtime::trig::sin_cos(q[8]);
         let x5856 = 0.00000000000000006123233995736766 * x5847;
         let x5857 = x5846 + x5856;
         let x5858 = 0.00000000000000006123233995736766 * x5846;
@@ -15386,14 +15286,10 @@ pub mod reduced {
             force: &mut [f64; 9],
         ) {
             let x5 = 6.283185307179586 * t;
-            let x16 = q[5].sin();
-            let x17 = q[5].cos();
-            let x331 = x5.sin();
-            let x332 = x5.cos();
-            let x5846 = q[2].sin();
-            let x5847 = q[2].cos();
-            let x5849 = q[8].sin();
-            let x5850 = q[8].cos();
+            let (x16, x17) = symbody_runtime::trig::sin_cos(q[5]);
+            let (x331, x332) = symbody_runtime::trig::sin_cos(x5);
+            let (x5846, x5847) = symbody_runtime::trig::sin_cos(q[2]);
+            let (x5849, x5850) = symbody_runtime::trig::sin_cos(q[8]);
             let x5856 = 0.00000000000000006123233995736766 * x5847;
             let x5857 = x5846 + x5856;
             let x5858 = 0.00000000000000006123233995736766 * x5846;

@@ -72,37 +72,37 @@ fn phi_part_0(k: &[f64; 53], q: &[f64; 7], t: f64, out: &mut [f64; 7]) {
     let x362 = x361 - 1.0;
     let x4353 = x7 + k[3];
     let x4354 = k[2] + x4353;
-    let x4355 = x4354.cos();
+    let x4355 = symbody_runtime::trig::cos(x4354);
     let x4356 = k[1] * x4355;
     let x4358 = k[0] - x4356;
     let x4359 = x4358.sqrt();
     let x4364 = x7 + k[7];
     let x4365 = k[6] + x4364;
-    let x4366 = x4365.cos();
+    let x4366 = symbody_runtime::trig::cos(x4365);
     let x4367 = k[5] * x4366;
     let x4369 = k[4] - x4367;
     let x4370 = x4369.sqrt();
     let x4375 = x7 + k[11];
     let x4376 = k[10] + x4375;
-    let x4377 = x4376.cos();
+    let x4377 = symbody_runtime::trig::cos(x4376);
     let x4378 = k[9] * x4377;
     let x4380 = k[8] - x4378;
     let x4381 = x4380.sqrt();
     let x4386 = x7 + k[15];
     let x4387 = k[14] + x4386;
-    let x4388 = x4387.cos();
+    let x4388 = symbody_runtime::trig::cos(x4387);
     let x4389 = k[13] * x4388;
     let x4391 = k[12] - x4389;
     let x4392 = x4391.sqrt();
     let x4397 = x7 + k[19];
     let x4398 = k[18] + x4397;
-    let x4399 = x4398.cos();
+    let x4399 = symbody_runtime::trig::cos(x4398);
     let x4400 = k[17] * x4399;
     let x4402 = k[16] - x4400;
     let x4403 = x4402.sqrt();
     let x4408 = x7 + k[23];
     let x4409 = k[22] + x4408;
-    let x4410 = x4409.cos();
+    let x4410 = symbody_runtime::trig::cos(x4409);
     let x4411 = k[21] * x4410;
     let x4413 = k[20] - x4411;
     let x4414 = x4413.sqrt();
@@ -774,71 +774,65 @@ fn phi_t_part_0(k: &[f64; 53], t: f64, out: &mut [f64; 7]) {
     let x7 = 0.8726646259971648 * t;
     let x4353 = x7 + k[3];
     let x4354 = k[2] + x4353;
-    let x4355 = x4354.cos();
+    let (x4907, x4355) = symbody_runtime::trig::sin_cos(x4354);
     let x4356 = k[1] * x4355;
     let x4358 = k[0] - x4356;
     let x4359 = x4358.sqrt();
     let x4364 = x7 + k[7];
     let x4365 = k[6] + x4364;
-    let x4366 = x4365.cos();
+    let (x4913, x4366) = symbody_runtime::trig::sin_cos(x4365);
     let x4367 = k[5] * x4366;
     let x4369 = k[4] - x4367;
     let x4370 = x4369.sqrt();
     let x4375 = x7 + k[11];
     let x4376 = k[10] + x4375;
-    let x4377 = x4376.cos();
+    let (x4919, x4377) = symbody_runtime::trig::sin_cos(x4376);
     let x4378 = k[9] * x4377;
     let x4380 = k[8] - x4378;
     let x4381 = x4380.sqrt();
     let x4386 = x7 + k[15];
     let x4387 = k[14] + x4386;
-    let x4388 = x4387.cos();
+    let (x4925, x4388) = symbody_runtime::trig::sin_cos(x4387);
     let x4389 = k[13] * x4388;
     let x4391 = k[12] - x4389;
     let x4392 = x4391.sqrt();
     let x4397 = x7 + k[19];
     let x4398 = k[18] + x4397;
-    let x4399 = x4398.cos();
+    let (x4931, x4399) = symbody_runtime::trig::sin_cos(x4398);
     let x4400 = k[17] * x4399;
     let x4402 = k[16] - x4400;
     let x4403 = x4402.sqrt();
     let x4408 = x7 + k[23];
     let x4409 = k[22] + x4408;
-    let x4410 = x4409.cos();
+    let (x4937, x4410) = symbody_runtime::trig::sin_cos(x4409);
     let x4411 = k[21] * x4410;
     let x4413 = k[20] - x4411;
     let x4414 = x4413.sqrt();
-    let x4907 = x4354.sin();
     let x4908 = 0.8726646259971648 * x4907;
     let x4909 = k[1] * x4908;
     let x4910 = 2.0 * x4359;
     let x4911 = 1.0 / x4910;
     let x4912 = x4909 * x4911;
-    let x4913 = x4365.sin();
     let x4914 = 0.8726646259971648 * x4913;
     let x4915 = k[5] * x4914;
     let x4916 = 2.0 * x4370;
     let x4917 = 1.0 / x4916;
     let x4918 = x4915 * x4917;
-    let x4919 = x4376.sin();
     let x4920 = 0.8726646259971648 * x4919;
     let x4921 = k[9] * x4920;
     let x4922 = 2.0 * x4381;
     let x4923 = 1.0 / x4922;
     let x4924 = x4921 * x4923;
-    let x4925 = x4387.sin();
     let x4926 = 0.8726646259971648 * x4925;
     let x4927 = k[13] * x4926;
     let x4928 = 2.0 * x4392;
     let x4929 = 1.0 / x4928;
     let x4930 = x4927 * x4929;
-    let x4931 = x4398.sin();
     let x4932 = 0.8726646259971648 * x4931;
     let x4933 = k[17] * x4932;
     let x4934 = 2.0 * x4403;
     let x4935 = 1.0 / x4934;
     let x4936 = x4933 * x4935;
-    let x4937 = x4409.sin();
     let x4938 = 0.8726646259971648 * x4937;
     let x4939 = k[21] * x4938;
     let x4940 = 2.0 * x4414;
@@ -1080,31 +1074,31 @@ fn gamma_part_0(
 ) {
     let x4353 = s[0] + k[3];
     let x4354 = k[2] + x4353;
-    let x4355 = x4354.cos();
+    let (x4907, x4355) = symbody_runtime::trig::sin_cos(x4354);
     let x4356 = k[1] * x4355;
     let x4358 = k[0] - x4356;
     let x4359 = x4358.sqrt();
     let x4364 = s[0] + k[7];
     let x4365 = k[6] + x4364;
-    let x4366 = x4365.cos();
+    let (x4913, x4366) = symbody_runtime::trig::sin_cos(x4365);
     let x4367 = k[5] * x4366;
     let x4369 = k[4] - x4367;
     let x4370 = x4369.sqrt();
     let x4375 = s[0] + k[11];
     let x4376 = k[10] + x4375;
-    let x4377 = x4376.cos();
+    let (x4919, x4377) = symbody_runtime::trig::sin_cos(x4376);
     let x4378 = k[9] * x4377;
     let x4380 = k[8] - x4378;
     let x4381 = x4380.sqrt();
     let x4386 = s[0] + k[15];
     let x4387 = k[14] + x4386;
-    let x4388 = x4387.cos();
+    let (x4925, x4388) = symbody_runtime::trig::sin_cos(x4387);
     let x4389 = k[13] * x4388;
     let x4391 = k[12] - x4389;
     let x4392 = x4391.sqrt();
     let x4397 = s[0] + k[19];
     let x4398 = k[18] + x4397;
-    let x4399 = x4398.cos();
+    let (x4931, x4399) = symbody_runtime::trig::sin_cos(x4398);
     let x4400 = k[17] * x4399;
     let x4402 = k[16] - x4400;
     let x4403 = x4402.sqrt();
@@ -1233,31 +1227,26 @@ fn gamma_part_0(
     let x4597 = 2.0 * x4536;
     let x4598 = 2.0 * x4542;
     let x4599 = 1.0 / x4598;
-    let x4907 = x4354.sin();
     let x4908 = 0.8726646259971648 * x4907;
     let x4909 = k[1] * x4908;
     let x4910 = 2.0 * x4359;
     let x4911 = 1.0 / x4910;
     let x4912 = x4909 * x4911;
-    let x4913 = x4365.sin();
     let x4914 = 0.8726646259971648 * x4913;
     let x4915 = k[5] * x4914;
     let x4916 = 2.0 * x4370;
     let x4917 = 1.0 / x4916;
     let x4918 = x4915 * x4917;
-    let x4919 = x4376.sin();
     let x4920 = 0.8726646259971648 * x4919;
     let x4921 = k[9] * x4920;
     let x4922 = 2.0 * x4381;
     let x4923 = 1.0 / x4922;
     let x4924 = x4921 * x4923;
-    let x4925 = x4387.sin();
     let x4926 = 0.8726646259971648 * x4925;
     let x4927 = k[13] * x4926;
     let x4928 = 2.0 * x4392;
     let x4929 = 1.0 / x4928;
     let x4930 = x4927 * x4929;
-    let x4931 = x4398.sin();
     let x4932 = 0.8726646259971648 * x4931;
     let x4933 = k[17] * x4932;
     let x4934 = 2.0 * x4403;
@@ -1574,7 +1563,7 @@ fn gamma_part_1(
     let x1244 = -x1237;
     let x4408 = s[0] + k[23];
     let x4409 = k[22] + x4408;
-    let x4410 = x4409.cos();
+    let (x4937, x4410) = symbody_runtime::trig::sin_cos(x4409);
     let x4411 = k[21] * x4410;
     let x4413 = k[20] - x4411;
     let x4414 = x4413.sqrt();
@@ -1603,7 +1592,6 @@ fn gamma_part_1(
     let x4603 = 2.0 * x4562;
     let x4604 = 2.0 * x4568;
     let x4605 = 1.0 / x4604;
-    let x4937 = x4409.sin();
     let x4938 = 0.8726646259971648 * x4937;
     let x4939 = k[21] * x4938;
     let x4940 = 2.0 * x4414;
@@ -1905,7 +1893,7 @@ fn eval_kinematics_shared_0(
     s[100] = x4386;
     let x4387 = k[14] + x4386;
     s[101] = x4387;
-    let x4388 = x4387.cos();
+    let x4388 = symbody_runtime::trig::cos(x4387);
     s[102] = x4388;
     let x4389 = k[13] * x4388;
     s[103] = x4389;
@@ -1985,19 +1973,19 @@ fn eval_kinematics_part_0(
 ) {
     let x4353 = s[0] + k[3];
     let x4354 = k[2] + x4353;
-    let x4355 = x4354.cos();
+    let (x4907, x4355) = symbody_runtime::trig::sin_cos(x4354);
     let x4356 = k[1] * x4355;
     let x4358 = k[0] - x4356;
     let x4359 = x4358.sqrt();
     let x4364 = s[0] + k[7];
     let x4365 = k[6] + x4364;
-    let x4366 = x4365.cos();
+    let (x4913, x4366) = symbody_runtime::trig::sin_cos(x4365);
     let x4367 = k[5] * x4366;
     let x4369 = k[4] - x4367;
     let x4370 = x4369.sqrt();
     let x4375 = s[0] + k[11];
     let x4376 = k[10] + x4375;
-    let x4377 = x4376.cos();
+    let (x4919, x4377) = symbody_runtime::trig::sin_cos(x4376);
     let x4378 = k[9] * x4377;
     let x4380 = k[8] - x4378;
     let x4381 = x4380.sqrt();
@@ -2246,19 +2234,16 @@ fn eval_kinematics_part_0(
     let x4877 = x4874 + x4875;
     let x4878 = x4876 + x4877;
     let x4879 = x4587 * x4878;
-    let x4907 = x4354.sin();
     let x4908 = 0.8726646259971648 * x4907;
     let x4909 = k[1] * x4908;
     let x4910 = 2.0 * x4359;
     let x4911 = 1.0 / x4910;
     let x4912 = x4909 * x4911;
-    let x4913 = x4365.sin();
     let x4914 = 0.8726646259971648 * x4913;
     let x4915 = k[5] * x4914;
     let x4916 = 2.0 * x4370;
     let x4917 = 1.0 / x4916;
     let x4918 = x4915 * x4917;
-    let x4919 = x4376.sin();
     let x4920 = 0.8726646259971648 * x4919;
     let x4921 = k[9] * x4920;
     let x4922 = 2.0 * x4381;
@@ -2500,13 +2485,13 @@ fn eval_kinematics_part_1(
     let x1244 = -x1237;
     let x4397 = s[0] + k[19];
     let x4398 = k[18] + x4397;
-    let x4399 = x4398.cos();
+    let (x4931, x4399) = symbody_runtime::trig::sin_cos(x4398);
     let x4400 = k[17] * x4399;
     let x4402 = k[16] - x4400;
     let x4403 = x4402.sqrt();
     let x4408 = s[0] + k[23];
     let x4409 = k[22] + x4408;
-    let x4410 = x4409.cos();
+    let (x4937, x4410) = symbody_runtime::trig::sin_cos(x4409);
     let x4411 = k[21] * x4410;
     let x4413 = k[20] - x4411;
     let x4414 = x4413.sqrt();
@@ -2674,19 +2659,17 @@ fn eval_kinematics_part_1(
     let x4904 = x4901 + x4902;
     let x4905 = x4903 + x4904;
     let x4906 = x4605 * x4905;
-    let x4925 = s[101].sin();
+    let x4925 = symbody_runtime::trig::sin(s[101]);
     let x4926 = 0.8726646259971648 * x4925;
     let x4927 = k[13] * x4926;
     let x4928 = 2.0 * s[105];
     let x4929 = 1.0 / x4928;
     let x4930 = x4927 * x4929;
-    let x4931 = x4398.sin();
     let x4932 = 0.8726646259971648 * x4931;
     let x4933 = k[17] * x4932;
     let x4934 = 2.0 * x4403;
     let x4935 = 1.0 / x4934;
     let x4936 = x4933 * x4935;
-    let x4937 = x4409.sin();
     let x4938 = 0.8726646259971648 * x4937;
     let x4939 = k[21] * x4938;
     let x4940 = 2.0 * x4414;
@@ -3583,7 +3566,8 @@ fn kinematic_tangents_shared_0(
     s[299] = x4353;
     let x4354 = k[2] + x4353;
     s[300] = x4354;
-    let x4355 = x4354.cos();
+    let (x4907, x4355) = symbody_runtime::trig::sin_cos(x4354);
+    s[485] = x4907;
     s[301] = x4355;
     let x4356 = k[1] * x4355;
     s[302] = x4356;
@@ -3595,7 +3579,8 @@ fn kinematic_tangents_shared_0(
     s[305] = x4364;
     let x4365 = k[6] + x4364;
     s[306] = x4365;
-    let x4366 = x4365.cos();
+    let (x4913, x4366) = symbody_runtime::trig::sin_cos(x4365);
+    s[490] = x4913;
     s[307] = x4366;
     let x4367 = k[5] * x4366;
     s[308] = x4367;
@@ -3607,7 +3592,8 @@ fn kinematic_tangents_shared_0(
     s[311] = x4375;
     let x4376 = k[10] + x4375;
     s[312] = x4376;
-    let x4377 = x4376.cos();
+    let (x4919, x4377) = symbody_runtime::trig::sin_cos(x4376);
+    s[495] = x4919;
     s[313] = x4377;
     let x4378 = k[9] * x4377;
     s[314] = x4378;
@@ -3619,7 +3605,8 @@ fn kinematic_tangents_shared_0(
     s[317] = x4386;
     let x4387 = k[14] + x4386;
     s[318] = x4387;
-    let x4388 = x4387.cos();
+    let (x4925, x4388) = symbody_runtime::trig::sin_cos(x4387);
+    s[500] = x4925;
     s[319] = x4388;
     let x4389 = k[13] * x4388;
     s[320] = x4389;
@@ -3631,7 +3618,8 @@ fn kinematic_tangents_shared_0(
     s[323] = x4397;
     let x4398 = k[18] + x4397;
     s[324] = x4398;
-    let x4399 = x4398.cos();
+    let (x4931, x4399) = symbody_runtime::trig::sin_cos(x4398);
+    s[505] = x4931;
     s[325] = x4399;
     let x4400 = k[17] * x4399;
     s[326] = x4400;
@@ -3643,7 +3631,8 @@ fn kinematic_tangents_shared_0(
     s[329] = x4408;
     let x4409 = k[22] + x4408;
     s[330] = x4409;
-    let x4410 = x4409.cos();
+    let (x4937, x4410) = symbody_runtime::trig::sin_cos(x4409);
+    s[510] = x4937;
     s[331] = x4410;
     let x4411 = k[21] * x4410;
     s[332] = x4411;
@@ -3951,8 +3940,6 @@ fn kinematic_tangents_shared_0(
     s[483] = x4604;
     let x4605 = 1.0 / x4604;
     s[484] = x4605;
-    let x4907 = x4354.sin();
-    s[485] = x4907;
     let x4908 = 0.8726646259971648 * x4907;
     s[486] = x4908;
     let x4909 = k[1] * x4908;
@@ -3961,8 +3948,6 @@ fn kinematic_tangents_shared_0(
     s[488] = x4910;
     let x4911 = 1.0 / x4910;
     s[489] = x4911;
-    let x4913 = x4365.sin();
-    s[490] = x4913;
     let x4914 = 0.8726646259971648 * x4913;
     s[491] = x4914;
     let x4915 = k[5] * x4914;
@@ -3971,8 +3956,6 @@ fn kinematic_tangents_shared_0(
     s[493] = x4916;
     let x4917 = 1.0 / x4916;
     s[494] = x4917;
-    let x4919 = x4376.sin();
-    s[495] = x4919;
     let x4920 = 0.8726646259971648 * x4919;
     s[496] = x4920;
     let x4921 = k[9] * x4920;
@@ -3981,8 +3964,6 @@ fn kinematic_tangents_shared_0(
     s[498] = x4922;
     let x4923 = 1.0 / x4922;
     s[499] = x4923;
-    let x4925 = x4387.sin();
-    s[500] = x4925;
     let x4926 = 0.8726646259971648 * x4925;
     s[501] = x4926;
     let x4927 = k[13] * x4926;
@@ -3991,8 +3972,6 @@ fn kinematic_tangents_shared_0(
     s[503] = x4928;
     let x4929 = 1.0 / x4928;
     s[504] = x4929;
-    let x4931 = x4398.sin();
-    s[505] = x4931;
     let x4932 = 0.8726646259971648 * x4931;
     s[506] = x4932;
     let x4933 = k[17] * x4932;
@@ -4001,8 +3980,6 @@ fn kinematic_tangents_shared_0(
     s[508] = x4934;
     let x4935 = 1.0 / x4934;
     s[509] = x4935;
-    let x4937 = x4409.sin();
-    s[510] = x4937;
     let x4938 = 0.8726646259971648 * x4937;
     s[511] = x4938;
     let x4939 = k[21] * x4938;
@@ -6788,7 +6765,7 @@ pub static JOINTS: [JointInfo; 7usize] = [
         body2: Some(0usize),
         row_start: 2usize,
         rows: 1usize,
-        point1: [-0.17535097304914957f64, 0f64, -0.2053096107120084f64],
+        point1: [-0.17535097304914957f64, 0f64, -0.20530961071200837f64],
         point2: [-0.10324176529421522f64, 0f64, -0.01913473017667551f64],
         effort_sign: 1f64,
         effort_unit: "N",
@@ -6889,7 +6866,7 @@ pub const PLATFORM: Option<PlatformInfo> = Some(PlatformInfo {
         },
         LegInfo {
             driver: "leg3",
-            base: [-0.17535097304914957f64, 0f64, -0.2053096107120084f64],
+            base: [-0.17535097304914957f64, 0f64, -0.20530961071200837f64],
             platform: [-0.10324176529421522f64, 0f64, -0.01913473017667551f64],
             row: 2usize,
         },
@@ -6964,7 +6941,7 @@ pub static K: [f64; 53] = [
     -0.10324176529421522f64,
     -0.01913473017667551f64,
     0.17535097304914957f64,
-    0.2053096107120084f64,
+    0.20530961071200837f64,
     -0.10324176529421523f64,
     0.019134730176675482f64,
     0.17535097304914954f64,
@@ -7102,7 +7079,7 @@ pub static P0: [f64; 66] = [
     0.03504972021954594f64,
     -0.09897735656467874f64,
     -0.17535097304914957f64,
-    -0.2053096107120084f64,
+    -0.20530961071200837f64,
     -0.10324176529421522f64,
     -0.01913473017667551f64,
     -0.17535097304914954f64,
@@ -8870,37 +8847,37 @@ pub mod exact {
         let x1427 = s[8] * s[11];
         let x4353 = x7 + k[3];
         let x4354 = k[2] + x4353;
-        let x4355 = x4354.cos();
+        let x4355 = symbody_runtime::trig::cos(x4354);
         let x4356 = k[1] * x4355;
         let x4358 = k[0] - x4356;
         let x4359 = x4358.sqrt();
         let x4364 = x7 + k[7];
         let x4365 = k[6] + x4364;
-        let x4366 = x4365.cos();
+        let x4366 = symbody_runtime::trig::cos(x4365);
         let x4367 = k[5] * x4366;
         let x4369 = k[4] - x4367;
         let x4370 = x4369.sqrt();
         let x4375 = x7 + k[11];
         let x4376 = k[10] + x4375;
-        let x4377 = x4376.cos();
+        let x4377 = symbody_runtime::trig::cos(x4376);
         let x4378 = k[9] * x4377;
         let x4380 = k[8] - x4378;
         let x4381 = x4380.sqrt();
         let x4386 = x7 + k[15];
         let x4387 = k[14] + x4386;
-        let x4388 = x4387.cos();
+        let x4388 = symbody_runtime::trig::cos(x4387);
         let x4389 = k[13] * x4388;
         let x4391 = k[12] - x4389;
         let x4392 = x4391.sqrt();
         let x4397 = x7 + k[19];
         let x4398 = k[18] + x4397;
-        let x4399 = x4398.cos();
+        let x4399 = symbody_runtime::trig::cos(x4398);
         let x4400 = k[17] * x4399;
         let x4402 = k[16] - x4400;
         let x4403 = x4402.sqrt();
         let x4408 = x7 + k[23];
         let x4409 = k[22] + x4408;
-        let x4410 = x4409.cos();
+        let x4410 = symbody_runtime::trig::cos(x4409);
         let x4411 = k[21] * x4410;
         let x4413 = k[20] - x4411;
         let x4414 = x4413.sqrt();

@@ -46,12 +46,9 @@ pub fn phi(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
 }
 #[inline(never)]
 fn phi_part_0(k: &[f64; 29], q: &[f64; 30], out: &mut [f64; 35]) {
-    let x6 = q[3].sin();
-    let x7 = q[3].cos();
-    let x8 = q[4].sin();
-    let x9 = q[4].cos();
-    let x10 = q[5].sin();
-    let x11 = q[5].cos();
+    let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
     let x12 = x9 * x11;
     let x13 = x9 * x10;
     let x14 = x8 * x11;
@@ -69,12 +66,9 @@ fn phi_part_0(k: &[f64; 29], q: &[f64; 30], out: &mut [f64; 35]) {
     let x28 = x20 + x21;
     let x29 = x22 + x23;
     let x31 = x24 - x25;
-    let x39 = q[9].sin();
-    let x40 = q[9].cos();
-    let x41 = q[10].sin();
-    let x42 = q[10].cos();
-    let x43 = q[11].sin();
-    let x44 = q[11].cos();
+    let (x39, x40) = symbody_runtime::trig::sin_cos(q[9]);
+    let (x41, x42) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
     let x45 = x42 * x44;
     let x46 = x42 * x43;
     let x47 = x41 * x44;
@@ -92,12 +86,9 @@ fn phi_part_0(k: &[f64; 29], q: &[f64; 30], out: &mut [f64; 35]) {
     let x61 = x53 + x54;
     let x62 = x55 + x56;
     let x64 = x57 - x58;
-    let x72 = q[15].sin();
-    let x73 = q[15].cos();
-    let x74 = q[16].sin();
-    let x75 = q[16].cos();
-    let x76 = q[17].sin();
-    let x77 = q[17].cos();
+    let (x72, x73) = symbody_runtime::trig::sin_cos(q[15]);
+    let (x74, x75) = symbody_runtime::trig::sin_cos(q[16]);
+    let (x76, x77) = symbody_runtime::trig::sin_cos(q[17]);
     let x78 = x75 * x77;
     let x79 = x75 * x76;
     let x80 = x74 * x77;
@@ -115,12 +106,9 @@ fn phi_part_0(k: &[f64; 29], q: &[f64; 30], out: &mut [f64; 35]) {
     let x94 = x86 + x87;
     let x95 = x88 + x89;
     let x97 = x90 - x91;
-    let x105 = q[21].sin();
-    let x106 = q[21].cos();
-    let x107 = q[22].sin();
-    let x108 = q[22].cos();
-    let x109 = q[23].sin();
-    let x110 = q[23].cos();
+    let (x105, x106) = symbody_runtime::trig::sin_cos(q[21]);
+    let (x107, x108) = symbody_runtime::trig::sin_cos(q[22]);
+    let (x109, x110) = symbody_runtime::trig::sin_cos(q[23]);
     let x111 = x108 * x110;
     let x112 = x108 * x109;
     let x113 = x107 * x110;
@@ -132,12 +120,9 @@ fn phi_part_0(k: &[f64; 29], q: &[f64; 30], out: &mut [f64; 35]) {
     let x124 = x105 * x110;
     let x127 = x119 + x120;
     let x130 = x123 - x124;
-    let x138 = q[27].sin();
-    let x139 = q[27].cos();
-    let x140 = q[28].sin();
-    let x141 = q[28].cos();
-    let x142 = q[29].sin();
-    let x143 = q[29].cos();
+    let (x138, x139) = symbody_runtime::trig::sin_cos(q[27]);
+    let (x140, x141) = symbody_runtime::trig::sin_cos(q[28]);
+    let (x142, x143) = symbody_runtime::trig::sin_cos(q[29]);
     let x144 = x141 * x143;
     let x145 = x141 * x142;
     let x146 = x140 * x143;
@@ -403,17 +388,14 @@ pub fn phi_q(k: &[f64], q: &[f64], t: f64, out: &mut [f64]) {
 }
 #[inline(never)]
 fn phi_q_shared_0(_k: &[f64; 29], q: &[f64; 30], _t: f64, s: &mut [f64; 48]) {
-    let x72 = q[15].sin();
+    let (x72, x73) = symbody_runtime::trig::sin_cos(q[15]);
     s[0] = x72;
-    let x73 = q[15].cos();
     s[1] = x73;
-    let x74 = q[16].sin();
+    let (x74, x75) = symbody_runtime::trig::sin_cos(q[16]);
     s[2] = x74;
-    let x75 = q[16].cos();
     s[3] = x75;
-    let x76 = q[17].sin();
+    let (x76, x77) = symbody_runtime::trig::sin_cos(q[17]);
     s[4] = x76;
-    let x77 = q[17].cos();
     s[5] = x77;
     let x78 = x75 * x77;
     s[6] = x78;
@@ -437,17 +419,14 @@ fn phi_q_shared_0(_k: &[f64; 29], q: &[f64; 30], _t: f64, s: &mut [f64; 48]) {
     s[15] = x93;
     let x95 = x88 + x89;
     s[16] = x95;
-    let x138 = q[27].sin();
+    let (x138, x139) = symbody_runtime::trig::sin_cos(q[27]);
     s[17] = x138;
-    let x139 = q[27].cos();
     s[18] = x139;
-    let x140 = q[28].sin();
+    let (x140, x141) = symbody_runtime::trig::sin_cos(q[28]);
     s[19] = x140;
-    let x141 = q[28].cos();
     s[20] = x141;
-    let x142 = q[29].sin();
+    let (x142, x143) = symbody_runtime::trig::sin_cos(q[29]);
     s[21] = x142;
-    let x143 = q[29].cos();
     s[22] = x143;
     let x144 = x141 * x143;
     s[23] = x144;
@@ -502,12 +481,9 @@ fn phi_q_shared_0(_k: &[f64; 29], q: &[f64; 30], _t: f64, s: &mut [f64; 48]) {
 }
 #[inline(never)]
 fn phi_q_part_0(k: &[f64; 29], q: &[f64; 30], s: &[f64; 48], out: &mut [f64; 175]) {
-    let x6 = q[3].sin();
-    let x7 = q[3].cos();
-    let x8 = q[4].sin();
-    let x9 = q[4].cos();
-    let x10 = q[5].sin();
-    let x11 = q[5].cos();
+    let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
     let x12 = x9 * x11;
     let x13 = x9 * x10;
     let x14 = x8 * x11;
@@ -526,12 +502,9 @@ fn phi_q_part_0(k: &[f64; 29], q: &[f64; 30], s: &[f64; 48], out: &mut [f64; 175
     let x28 = x20 + x21;
     let x29 = x22 + x23;
     let x31 = x24 - x25;
-    let x39 = q[9].sin();
-    let x40 = q[9].cos();
-    let x41 = q[10].sin();
-    let x42 = q[10].cos();
-    let x43 = q[11].sin();
-    let x44 = q[11].cos();
+    let (x39, x40) = symbody_runtime::trig::sin_cos(q[9]);
+    let (x41, x42) = symbody_runtime::trig::sin_cos(q[10]);
+    let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
     let x45 = x42 * x44;
     let x46 = x42 * x43;
     let x47 = x41 * x44;
@@ -557,12 +530,9 @@ fn phi_q_part_0(k: &[f64; 29], q: &[f64; 30], s: &[f64; 48], out: &mut [f64; 175
     let x91 = s[0] * s[5];
     let x94 = x86 + x87;
     let x97 = x90 - x91;
-    let x105 = q[21].sin();
-    let x106 = q[21].cos();
-    let x107 = q[22].sin();
-    let x108 = q[22].cos();
-    let x109 = q[23].sin();
-    let x110 = q[23].cos();
+    let (x105, x106) = symbody_runtime::trig::sin_cos(q[21]);
+    let (x107, x108) = symbody_runtime::trig::sin_cos(q[22]);
+    let (x109, x110) = symbody_runtime::trig::sin_cos(q[23]);
     let x111 = x108 * x110;
     let x112 = x108 * x109;
     let x113 = x107 * x110;
@@ -1326,49 +1296,40 @@ fn gamma_shared_0(
     _t: f64,
     s: &mut [f64; 358],
 ) {
-    let x39 = q[9].sin();
+    let (x39, x40) = symbody_runtime::trig::sin_cos(q[9]);
     s[0] = x39;
-    let x40 = q[9].cos();
     s[1] = x40;
-    let x41 = q[10].sin();
+    let (x41, x42) = symbody_runtime::trig::sin_cos(q[10]);
     s[2] = x41;
-    let x42 = q[10].cos();
     s[3] = x42;
-    let x43 = q[11].sin();
+    let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
     s[4] = x43;
-    let x44 = q[11].cos();
     s[5] = x44;
     let x47 = x41 * x44;
     s[6] = x47;
     let x48 = x41 * x43;
     s[7] = x48;
-    let x72 = q[15].sin();
+    let (x72, x73) = symbody_runtime::trig::sin_cos(q[15]);
     s[8] = x72;
-    let x73 = q[15].cos();
     s[9] = x73;
-    let x74 = q[16].sin();
+    let (x74, x75) = symbody_runtime::trig::sin_cos(q[16]);
     s[10] = x74;
-    let x75 = q[16].cos();
     s[11] = x75;
-    let x76 = q[17].sin();
+    let (x76, x77) = symbody_runtime::trig::sin_cos(q[17]);
     s[12] = x76;
-    let x77 = q[17].cos();
     s[13] = x77;
     let x80 = x74 * x77;
     s[14] = x80;
     let x81 = x74 * x76;
     s[15] = x81;
-    let x105 = q[21].sin();
+    let (x105, x106) = symbody_runtime::trig::sin_cos(q[21]);
     s[16] = x105;
-    let x106 = q[21].cos();
     s[17] = x106;
-    let x107 = q[22].sin();
+    let (x107, x108) = symbody_runtime::trig::sin_cos(q[22]);
     s[18] = x107;
-    let x108 = q[22].cos();
     s[19] = x108;
-    let x109 = q[23].sin();
+    let (x109, x110) = symbody_runtime::trig::sin_cos(q[23]);
     s[20] = x109;
-    let x110 = q[23].cos();
     s[21] = x110;
     let x113 = x107 * x110;
     s[22] = x113;
@@ -1388,17 +1349,14 @@ fn gamma_shared_0(
     s[29] = x127;
     let x130 = x123 - x124;
     s[30] = x130;
-    let x138 = q[27].sin();
+    let (x138, x139) = symbody_runtime::trig::sin_cos(q[27]);
     s[31] = x138;
-    let x139 = q[27].cos();
     s[32] = x139;
-    let x140 = q[28].sin();
+    let (x140, x141) = symbody_runtime::trig::sin_cos(q[28]);
     s[33] = x140;
-    let x141 = q[28].cos();
     s[34] = x141;
-    let x142 = q[29].sin();
+    let (x142, x143) = symbody_runtime::trig::sin_cos(q[29]);
     s[35] = x142;
-    let x143 = q[29].cos();
     s[36] = x143;
     let x146 = x140 * x143;
     s[37] = x146;
@@ -2051,12 +2009,9 @@ fn gamma_part_0(
     s: &[f64; 358],
     out: &mut [f64; 35],
 ) {
-    let x6 = q[3].sin();
-    let x7 = q[3].cos();
-    let x8 = q[4].sin();
-    let x9 = q[4].cos();
-    let x10 = q[5].sin();
-    let x11 = q[5].cos();
+    let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
+    let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
+    let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
     let x12 = x9 * x11;
     let x13 = x9 * x10;
     let x14 = x8 * x11;
@@ -2784,17 +2739,14 @@ fn eval_kinematics_shared_0(
     _t: f64,
     s: &mut [f64; 621],
 ) {
-    let x6 = q[3].sin();
+    let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
     s[0] = x6;
-    let x7 = q[3].cos();
     s[1] = x7;
-    let x8 = q[4].sin();
+    let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
     s[2] = x8;
-    let x9 = q[4].cos();
     s[3] = x9;
-    let x10 = q[5].sin();
+    let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
     s[4] = x10;
-    let x11 = q[5].cos();
     s[5] = x11;
     let x12 = x9 * x11;
     s[6] = x12;
@@ -2832,17 +2784,14 @@ fn eval_kinematics_shared_0(
     s[22] = x29;
     let x31 = x24 - x25;
     s[23] = x31;
-    let x39 = q[9].sin();
+    let (x39, x40) = symbody_runtime::trig::sin_cos(q[9]);
     s[24] = x39;
-    let x40 = q[9].cos();
     s[25] = x40;
-    let x41 = q[10].sin();
+    let (x41, x42) = symbody_runtime::trig::sin_cos(q[10]);
     s[26] = x41;
-    let x42 = q[10].cos();
     s[27] = x42;
-    let x43 = q[11].sin();
+    let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
     s[28] = x43;
-    let x44 = q[11].cos();
     s[29] = x44;
     let x45 = x42 * x44;
     s[30] = x45;
@@ -2880,17 +2829,14 @@ fn eval_kinematics_shared_0(
     s[46] = x62;
     let x64 = x57 - x58;
     s[47] = x64;
-    let x72 = q[15].sin();
+    let (x72, x73) = symbody_runtime::trig::sin_cos(q[15]);
     s[48] = x72;
-    let x73 = q[15].cos();
     s[49] = x73;
-    let x74 = q[16].sin();
+    let (x74, x75) = symbody_runtime::trig::sin_cos(q[16]);
     s[50] = x74;
-    let x75 = q[16].cos();
     s[51] = x75;
-    let x76 = q[17].sin();
+    let (x76, x77) = symbody_runtime::trig::sin_cos(q[17]);
     s[52] = x76;
-    let x77 = q[17].cos();
     s[53] = x77;
     let x78 = x75 * x77;
     s[54] = x78;
@@ -2928,17 +2874,14 @@ fn eval_kinematics_shared_0(
     s[70] = x95;
     let x97 = x90 - x91;
     s[71] = x97;
-    let x105 = q[21].sin();
+    let (x105, x106) = symbody_runtime::trig::sin_cos(q[21]);
     s[72] = x105;
-    let x106 = q[21].cos();
     s[73] = x106;
-    let x107 = q[22].sin();
+    let (x107, x108) = symbody_runtime::trig::sin_cos(q[22]);
     s[74] = x107;
-    let x108 = q[22].cos();
     s[75] = x108;
-    let x109 = q[23].sin();
+    let (x109, x110) = symbody_runtime::trig::sin_cos(q[23]);
     s[76] = x109;
-    let x110 = q[23].cos();
     s[77] = x110;
     let x111 = x108 * x110;
     s[78] = x111;
@@ -2974,17 +2917,14 @@ fn eval_kinematics_shared_0(
     s[93] = x128;
     let x130 = x123 - x124;
     s[94] = x130;
-    let x138 = q[27].sin();
+    let (x138, x139) = symbody_runtime::trig::sin_cos(q[27]);
     s[95] = x138;
-    let x139 = q[27].cos();
     s[96] = x139;
-    let x140 = q[28].sin();
+    let (x140, x141) = symbody_runtime::trig::sin_cos(q[28]);
     s[97] = x140;
-    let x141 = q[28].cos();
     s[98] = x141;
-    let x142 = q[29].sin();
+    let (x142, x143) = symbody_runtime::trig::sin_cos(q[29]);
     s[99] = x142;
-    let x143 = q[29].cos();
     s[100] = x143;
     let x144 = x141 * x143;
     s[101] = x144;
@@ -5488,17 +5428,14 @@ fn kinematic_tangents_shared_0(
     _dp: &[f64; 45],
     s: &mut [f64; 2144],
 ) {
-    let x6 = q[3].sin();
+    let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
     s[0] = x6;
-    let x7 = q[3].cos();
     s[1] = x7;
-    let x8 = q[4].sin();
+    let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
     s[2] = x8;
-    let x9 = q[4].cos();
     s[3] = x9;
-    let x10 = q[5].sin();
+    let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
     s[4] = x10;
-    let x11 = q[5].cos();
     s[5] = x11;
     let x12 = x9 * x11;
     s[6] = x12;
@@ -5536,17 +5473,14 @@ fn kinematic_tangents_shared_0(
     s[22] = x29;
     let x31 = x24 - x25;
     s[23] = x31;
-    let x39 = q[9].sin();
+    let (x39, x40) = symbody_runtime::trig::sin_cos(q[9]);
     s[24] = x39;
-    let x40 = q[9].cos();
     s[25] = x40;
-    let x41 = q[10].sin();
+    let (x41, x42) = symbody_runtime::trig::sin_cos(q[10]);
     s[26] = x41;
-    let x42 = q[10].cos();
     s[27] = x42;
-    let x43 = q[11].sin();
+    let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
     s[28] = x43;
-    let x44 = q[11].cos();
     s[29] = x44;
     let x45 = x42 * x44;
     s[30] = x45;
@@ -5584,17 +5518,14 @@ fn kinematic_tangents_shared_0(
     s[46] = x62;
     let x64 = x57 - x58;
     s[47] = x64;
-    let x72 = q[15].sin();
+    let (x72, x73) = symbody_runtime::trig::sin_cos(q[15]);
     s[48] = x72;
-    let x73 = q[15].cos();
     s[49] = x73;
-    let x74 = q[16].sin();
+    let (x74, x75) = symbody_runtime::trig::sin_cos(q[16]);
     s[50] = x74;
-    let x75 = q[16].cos();
     s[51] = x75;
-    let x76 = q[17].sin();
+    let (x76, x77) = symbody_runtime::trig::sin_cos(q[17]);
     s[52] = x76;
-    let x77 = q[17].cos();
     s[53] = x77;
     let x78 = x75 * x77;
     s[54] = x78;
@@ -5632,17 +5563,14 @@ fn kinematic_tangents_shared_0(
     s[70] = x95;
     let x97 = x90 - x91;
     s[71] = x97;
-    let x105 = q[21].sin();
+    let (x105, x106) = symbody_runtime::trig::sin_cos(q[21]);
     s[72] = x105;
-    let x106 = q[21].cos();
     s[73] = x106;
-    let x107 = q[22].sin();
+    let (x107, x108) = symbody_runtime::trig::sin_cos(q[22]);
     s[74] = x107;
-    let x108 = q[22].cos();
     s[75] = x108;
-    let x109 = q[23].sin();
+    let (x109, x110) = symbody_runtime::trig::sin_cos(q[23]);
     s[76] = x109;
-    let x110 = q[23].cos();
     s[77] = x110;
     let x111 = x108 * x110;
     s[78] = x111;
@@ -5678,17 +5606,14 @@ fn kinematic_tangents_shared_0(
     s[93] = x128;
     let x130 = x123 - x124;
     s[94] = x130;
-    let x138 = q[27].sin();
+    let (x138, x139) = symbody_runtime::trig::sin_cos(q[27]);
     s[95] = x138;
-    let x139 = q[27].cos();
     s[96] = x139;
-    let x140 = q[28].sin();
+    let (x140, x141) = symbody_runtime::trig::sin_cos(q[28]);
     s[97] = x140;
-    let x141 = q[28].cos();
     s[98] = x141;
-    let x142 = q[29].sin();
+    let (x142, x143) = symbody_runtime::trig::sin_cos(q[29]);
     s[99] = x142;
-    let x143 = q[29].cos();
     s[100] = x143;
     let x144 = x141 * x143;
     s[101] = x144;
@@ -16923,34 +16848,24 @@ pub mod exact {
     }
     #[inline(never)]
     fn mass_part_0(k: &[f64; 29], q: &[f64; 30], out: &mut [f64; 50]) {
-        let x6 = q[3].sin();
-        let x7 = q[3].cos();
-        let x8 = q[4].sin();
-        let x9 = q[4].cos();
+        let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
         let x16 = x6 * x9;
         let x17 = x7 * x9;
-        let x39 = q[9].sin();
-        let x40 = q[9].cos();
-        let x41 = q[10].sin();
-        let x42 = q[10].cos();
+        let (x39, x40) = symbody_runtime::trig::sin_cos(q[9]);
+        let (x41, x42) = symbody_runtime::trig::sin_cos(q[10]);
         let x49 = x39 * x42;
         let x50 = x40 * x42;
-        let x72 = q[15].sin();
-        let x73 = q[15].cos();
-        let x74 = q[16].sin();
-        let x75 = q[16].cos();
+        let (x72, x73) = symbody_runtime::trig::sin_cos(q[15]);
+        let (x74, x75) = symbody_runtime::trig::sin_cos(q[16]);
         let x82 = x72 * x75;
         let x83 = x73 * x75;
-        let x105 = q[21].sin();
-        let x106 = q[21].cos();
-        let x107 = q[22].sin();
-        let x108 = q[22].cos();
+        let (x105, x106) = symbody_runtime::trig::sin_cos(q[21]);
+        let (x107, x108) = symbody_runtime::trig::sin_cos(q[22]);
         let x115 = x105 * x108;
         let x116 = x106 * x108;
-        let x138 = q[27].sin();
-        let x139 = q[27].cos();
-        let x140 = q[28].sin();
-        let x141 = q[28].cos();
+        let (x138, x139) = symbody_runtime::trig::sin_cos(q[27]);
+        let (x140, x141) = symbody_runtime::trig::sin_cos(q[28]);
         let x148 = x138 * x141;
         let x149 = x139 * x141;
         let x2848 = x8 * 2.0;
@@ -17190,34 +17105,24 @@ pub mod exact {
     }
     #[inline(never)]
     fn force_part_0(k: &[f64; 29], q: &[f64; 30], qd: &[f64; 30], out: &mut [f64; 30]) {
-        let x6 = q[3].sin();
-        let x7 = q[3].cos();
-        let x8 = q[4].sin();
-        let x9 = q[4].cos();
+        let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
         let x16 = x6 * x9;
         let x17 = x7 * x9;
-        let x39 = q[9].sin();
-        let x40 = q[9].cos();
-        let x41 = q[10].sin();
-        let x42 = q[10].cos();
+        let (x39, x40) = symbody_runtime::trig::sin_cos(q[9]);
+        let (x41, x42) = symbody_runtime::trig::sin_cos(q[10]);
         let x49 = x39 * x42;
         let x50 = x40 * x42;
-        let x72 = q[15].sin();
-        let x73 = q[15].cos();
-        let x74 = q[16].sin();
-        let x75 = q[16].cos();
+        let (x72, x73) = symbody_runtime::trig::sin_cos(q[15]);
+        let (x74, x75) = symbody_runtime::trig::sin_cos(q[16]);
         let x82 = x72 * x75;
         let x83 = x73 * x75;
-        let x105 = q[21].sin();
-        let x106 = q[21].cos();
-        let x107 = q[22].sin();
-        let x108 = q[22].cos();
+        let (x105, x106) = symbody_runtime::trig::sin_cos(q[21]);
+        let (x107, x108) = symbody_runtime::trig::sin_cos(q[22]);
         let x115 = x105 * x108;
         let x116 = x106 * x108;
-        let x138 = q[27].sin();
-        let x139 = q[27].cos();
-        let x140 = q[28].sin();
-        let x141 = q[28].cos();
+        let (x138, x139) = symbody_runtime::trig::sin_cos(q[27]);
+        let (x140, x141) = symbody_runtime::trig::sin_cos(q[28]);
         let x148 = x138 * x141;
         let x149 = x139 * x141;
         let x1114 = x7 * qd[3];
@@ -17713,29 +17618,24 @@ pub mod exact {
         _t: f64,
         s: &mut [f64; 91],
     ) {
-        let x6 = q[3].sin();
+        let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
         s[0] = x6;
-        let x7 = q[3].cos();
         s[1] = x7;
-        let x8 = q[4].sin();
+        let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
         s[2] = x8;
-        let x9 = q[4].cos();
         s[3] = x9;
         let x16 = x6 * x9;
         s[4] = x16;
         let x17 = x7 * x9;
         s[5] = x17;
-        let x39 = q[9].sin();
+        let (x39, x40) = symbody_runtime::trig::sin_cos(q[9]);
         s[6] = x39;
-        let x40 = q[9].cos();
         s[7] = x40;
-        let x41 = q[10].sin();
+        let (x41, x42) = symbody_runtime::trig::sin_cos(q[10]);
         s[8] = x41;
-        let x42 = q[10].cos();
         s[9] = x42;
-        let x43 = q[11].sin();
+        let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
         s[10] = x43;
-        let x44 = q[11].cos();
         s[11] = x44;
         let x45 = x42 * x44;
         s[12] = x45;
@@ -17761,17 +17661,14 @@ pub mod exact {
         s[22] = x60;
         let x62 = x55 + x56;
         s[23] = x62;
-        let x72 = q[15].sin();
+        let (x72, x73) = symbody_runtime::trig::sin_cos(q[15]);
         s[24] = x72;
-        let x73 = q[15].cos();
         s[25] = x73;
-        let x74 = q[16].sin();
+        let (x74, x75) = symbody_runtime::trig::sin_cos(q[16]);
         s[26] = x74;
-        let x75 = q[16].cos();
         s[27] = x75;
-        let x76 = q[17].sin();
+        let (x76, x77) = symbody_runtime::trig::sin_cos(q[17]);
         s[28] = x76;
-        let x77 = q[17].cos();
         s[29] = x77;
         let x78 = x75 * x77;
         s[30] = x78;
@@ -17809,29 +17706,24 @@ pub mod exact {
         s[46] = x95;
         let x97 = x90 - x91;
         s[47] = x97;
-        let x105 = q[21].sin();
+        let (x105, x106) = symbody_runtime::trig::sin_cos(q[21]);
         s[48] = x105;
-        let x106 = q[21].cos();
         s[49] = x106;
-        let x107 = q[22].sin();
+        let (x107, x108) = symbody_runtime::trig::sin_cos(q[22]);
         s[50] = x107;
-        let x108 = q[22].cos();
         s[51] = x108;
         let x115 = x105 * x108;
         s[52] = x115;
         let x116 = x106 * x108;
         s[53] = x116;
-        let x138 = q[27].sin();
+        let (x138, x139) = symbody_runtime::trig::sin_cos(q[27]);
         s[54] = x138;
-        let x139 = q[27].cos();
         s[55] = x139;
-        let x140 = q[28].sin();
+        let (x140, x141) = symbody_runtime::trig::sin_cos(q[28]);
         s[56] = x140;
-        let x141 = q[28].cos();
         s[57] = x141;
-        let x142 = q[29].sin();
+        let (x142, x143) = symbody_runtime::trig::sin_cos(q[29]);
         s[58] = x142;
-        let x143 = q[29].cos();
         s[59] = x143;
         let x144 = x141 * x143;
         s[60] = x144;
@@ -17904,8 +17796,7 @@ pub mod exact {
         phi: &mut [f64; 35],
         phi_q: &mut [f64; 175],
     ) {
-        let x10 = q[5].sin();
-        let x11 = q[5].cos();
+        let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
         let x12 = s[3] * x11;
         let x13 = s[3] * x10;
         let x14 = s[2] * x11;
@@ -17928,8 +17819,7 @@ pub mod exact {
         let x58 = s[6] * s[11];
         let x61 = x53 + x54;
         let x64 = x57 - x58;
-        let x109 = q[23].sin();
-        let x110 = q[23].cos();
+        let (x109, x110) = symbody_runtime::trig::sin_cos(q[23]);
         let x111 = s[51] * x110;
         let x112 = s[51] * x109;
         let x113 = s[50] * x110;
@@ -19508,61 +19398,51 @@ pub mod exact {
         dp: &[f64; 45],
         s: &mut [f64; 203],
     ) {
-        let x6 = q[3].sin();
+        let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
         s[0] = x6;
-        let x7 = q[3].cos();
         s[1] = x7;
-        let x8 = q[4].sin();
+        let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
         s[2] = x8;
-        let x9 = q[4].cos();
         s[3] = x9;
         let x16 = x6 * x9;
         s[4] = x16;
         let x17 = x7 * x9;
         s[5] = x17;
-        let x39 = q[9].sin();
+        let (x39, x40) = symbody_runtime::trig::sin_cos(q[9]);
         s[6] = x39;
-        let x40 = q[9].cos();
         s[7] = x40;
-        let x41 = q[10].sin();
+        let (x41, x42) = symbody_runtime::trig::sin_cos(q[10]);
         s[8] = x41;
-        let x42 = q[10].cos();
         s[9] = x42;
         let x49 = x39 * x42;
         s[10] = x49;
         let x50 = x40 * x42;
         s[11] = x50;
-        let x72 = q[15].sin();
+        let (x72, x73) = symbody_runtime::trig::sin_cos(q[15]);
         s[12] = x72;
-        let x73 = q[15].cos();
         s[13] = x73;
-        let x74 = q[16].sin();
+        let (x74, x75) = symbody_runtime::trig::sin_cos(q[16]);
         s[14] = x74;
-        let x75 = q[16].cos();
         s[15] = x75;
         let x82 = x72 * x75;
         s[16] = x82;
         let x83 = x73 * x75;
         s[17] = x83;
-        let x105 = q[21].sin();
+        let (x105, x106) = symbody_runtime::trig::sin_cos(q[21]);
         s[18] = x105;
-        let x106 = q[21].cos();
         s[19] = x106;
-        let x107 = q[22].sin();
+        let (x107, x108) = symbody_runtime::trig::sin_cos(q[22]);
         s[20] = x107;
-        let x108 = q[22].cos();
         s[21] = x108;
         let x115 = x105 * x108;
         s[22] = x115;
         let x116 = x106 * x108;
         s[23] = x116;
-        let x138 = q[27].sin();
+        let (x138, x139) = symbody_runtime::trig::sin_cos(q[27]);
         s[24] = x138;
-        let x139 = q[27].cos();
         s[25] = x139;
-        let x140 = q[28].sin();
+        let (x140, x141) = symbody_runtime::trig::sin_cos(q[28]);
         s[26] = x140;
-        let x141 = q[28].cos();
         s[27] = x141;
         let x148 = x138 * x141;
         s[28] = x148;
@@ -21939,16 +21819,11 @@ pub mod reduced {
     }
     #[inline(never)]
     fn phi_part_0(k: &[f64; 24], q: &[f64; 15], out: &mut [f64; 14]) {
-        let x10 = q[5].sin();
-        let x11 = q[5].cos();
-        let x43 = q[11].sin();
-        let x44 = q[11].cos();
-        let x9217 = q[2].sin();
-        let x9218 = q[2].cos();
-        let x9220 = q[8].sin();
-        let x9221 = q[8].cos();
-        let x9223 = q[14].sin();
-        let x9224 = q[14].cos();
+        let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
+        let (x9217, x9218) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x9220, x9221) = symbody_runtime::trig::sin_cos(q[8]);
+        let (x9223, x9224) = symbody_runtime::trig::sin_cos(q[14]);
         let x9671 = x9218 * k[0];
         let x9672 = x9217 * k[1];
         let x9674 = x9671 - x9672;
@@ -22060,16 +21935,11 @@ pub mod reduced {
     }
     #[inline(never)]
     fn phi_q_part_0(k: &[f64; 24], q: &[f64; 15], out: &mut [f64; 44]) {
-        let x10 = q[5].sin();
-        let x11 = q[5].cos();
-        let x43 = q[11].sin();
-        let x44 = q[11].cos();
-        let x9217 = q[2].sin();
-        let x9218 = q[2].cos();
-        let x9220 = q[8].sin();
-        let x9221 = q[8].cos();
-        let x9223 = q[14].sin();
-        let x9224 = q[14].cos();
+        let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
+        let (x9217, x9218) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x9220, x9221) = symbody_runtime::trig::sin_cos(q[8]);
+        let (x9223, x9224) = symbody_runtime::trig::sin_cos(q[14]);
         let x9671 = x9218 * k[0];
         let x9672 = x9217 * k[1];
         let x9674 = x9671 - x9672;
@@ -22214,10 +22084,8 @@ pub mod reduced {
     }
     #[inline(never)]
     fn gamma_part_0(k: &[f64; 24], q: &[f64; 15], qd: &[f64; 15], out: &mut [f64; 14]) {
-        let x10 = q[5].sin();
-        let x11 = q[5].cos();
-        let x43 = q[11].sin();
-        let x44 = q[11].cos();
+        let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
         let x1120 = x11 * qd[5];
         let x1121 = x10 * qd[5];
         let x1188 = x44 * qd[11];
@@ -22226,12 +22094,9 @@ pub mod reduced {
         let x1741 = qd[5] * x1120;
         let x1873 = qd[11] * x1189;
         let x1875 = qd[11] * x1188;
-        let x9217 = q[2].sin();
-        let x9218 = q[2].cos();
-        let x9220 = q[8].sin();
-        let x9221 = q[8].cos();
-        let x9223 = q[14].sin();
-        let x9224 = q[14].cos();
+        let (x9217, x9218) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x9220, x9221) = symbody_runtime::trig::sin_cos(q[8]);
+        let (x9223, x9224) = symbody_runtime::trig::sin_cos(q[14]);
         let x9382 = qd[2] * x9218;
         let x9383 = qd[2] * x9217;
         let x9385 = qd[8] * x9221;
@@ -22368,10 +22233,8 @@ pub mod reduced {
         phi_t: &mut [f64; 14],
         gamma: &mut [f64; 14],
     ) {
-        let x10 = q[5].sin();
-        let x11 = q[5].cos();
-        let x43 = q[11].sin();
-        let x44 = q[11].cos();
+        let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
+        let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
         let x1120 = x11 * qd[5];
         let x1121 = x10 * qd[5];
         let x1188 = x44 * qd[11];
@@ -22380,12 +22243,9 @@ pub mod reduced {
         let x1741 = qd[5] * x1120;
         let x1873 = qd[11] * x1189;
         let x1875 = qd[11] * x1188;
-        let x9217 = q[2].sin();
-        let x9218 = q[2].cos();
-        let x9220 = q[8].sin();
-        let x9221 = q[8].cos();
-        let x9223 = q[14].sin();
-        let x9224 = q[14].cos();
+        let (x9217, x9218) = symbody_runtime::trig::sin_cos(q[2]);
+        let (x9220, x9221) = symbody_runtime::trig::sin_cos(q[8]);
+        let (x9223, x9224) = symbody_runtime::trig::sin_cos(q[14]);
         let x9382 = qd[2] * x9218;
         let x9383 = qd[2] * x9217;
         let x9385 = qd[8] * x9221;
@@ -23828,16 +23688,11 @@ pub mod reduced {
             mass: &mut [f64; 15],
             force: &mut [f64; 15],
         ) {
-            let x10 = q[5].sin();
-            let x11 = q[5].cos();
-            let x43 = q[11].sin();
-            let x44 = q[11].cos();
-            let x9217 = q[2].sin();
-            let x9218 = q[2].cos();
-            let x9220 = q[8].sin();
-            let x9221 = q[8].cos();
-            let x9223 = q[14].sin();
-            let x9224 = q[14].cos();
+            let (x10, x11) = symbody_runtime::trig::sin_cos(q[5]);
+            let (x43, x44) = symbody_runtime::trig::sin_cos(q[11]);
+            let (x9217, x9218) = symbody_runtime::trig::sin_cos(q[2]);
+            let (x9220, x9221) = symbody_runtime::trig::sin_cos(q[8]);
+            let (x9223, x9224) = symbody_runtime::trig::sin_cos(q[14]);
             let x9671 = x9218 * k[0];
             let x9672 = x9217 * k[1];
             let x9674 = x9671 - x9672;

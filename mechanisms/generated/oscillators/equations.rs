@@ -539,7 +539,7 @@ fn power_nc_into_part_0(
     t: f64,
     out: &mut [f64; 1],
 ) {
-    let x13 = t.sin();
+    let x13 = symbody_runtime::trig::sin(t);
     let x81 = q[10] * q[10];
     let x82 = q[11] * q[11];
     let x85 = x81 + x82;
@@ -596,10 +596,10 @@ fn power_nc_into_part_0(
     let x434 = x433 - x370;
     let x435 = 2.0 * x434;
     let x3028 = t * k[1];
-    let x3029 = x3028.sin();
+    let x3029 = symbody_runtime::trig::sin(x3028);
     let x3030 = k[0] * x3029;
     let x3034 = t * k[4];
-    let x3035 = x3034.cos();
+    let x3035 = symbody_runtime::trig::cos(x3034);
     let x3036 = k[3] * x3035;
     let x3038 = x13 * k[5];
     let x3048 = x347 * k[6];
@@ -3065,7 +3065,7 @@ pub mod exact {
         dq: &mut [f64; 25],
         dqd: &mut [f64; 25],
     ) {
-        let x13 = t.sin();
+        let x13 = symbody_runtime::trig::sin(t);
         let x81 = q[10] * q[10];
         let x82 = q[11] * q[11];
         let x85 = x81 + x82;
@@ -3280,10 +3280,10 @@ pub mod exact {
         let x1617 = x413 * x1597;
         let x1619 = x415 * x1597;
         let x3028 = t * k[1];
-        let x3029 = x3028.sin();
+        let x3029 = symbody_runtime::trig::sin(x3028);
         let x3030 = k[0] * x3029;
         let x3034 = t * k[4];
-        let x3035 = x3034.cos();
+        let x3035 = symbody_runtime::trig::cos(x3034);
         let x3036 = k[3] * x3035;
         let x3038 = x13 * k[5];
         let x3047 = x348 * k[9];
@@ -3846,7 +3846,7 @@ pub mod exact {
         t: f64,
         out: &mut [f64; 14],
     ) {
-        let x13 = t.sin();
+        let x13 = symbody_runtime::trig::sin(t);
         let x81 = q[10] * q[10];
         let x82 = q[11] * q[11];
         let x85 = x81 + x82;
@@ -4153,10 +4153,10 @@ pub mod exact {
         let x1266 = 0.3 * x1201;
         let x1283 = 0.3 * x1216;
         let x3028 = t * k[1];
-        let x3029 = x3028.sin();
+        let x3029 = symbody_runtime::trig::sin(x3028);
         let x3030 = k[0] * x3029;
         let x3034 = t * k[4];
-        let x3035 = x3034.cos();
+        let x3035 = symbody_runtime::trig::cos(x3034);
         let x3036 = k[3] * x3035;
         let x3038 = x13 * k[5];
         let x3047 = x348 * k[9];
@@ -4286,7 +4286,7 @@ pub mod exact {
         t: f64,
         s: &mut [f64; 94],
     ) {
-        let x13 = t.sin();
+        let x13 = symbody_runtime::trig::sin(t);
         s[0] = x13;
         let x81 = q[10] * q[10];
         s[1] = x81;
@@ -4460,7 +4460,7 @@ pub mod exact {
         s[85] = x1229;
         let x3034 = t * k[4];
         s[86] = x3034;
-        let x3035 = x3034.cos();
+        let x3035 = symbody_runtime::trig::cos(x3034);
         s[87] = x3035;
         let x3036 = k[3] * x3035;
         s[88] = x3036;
@@ -4871,7 +4871,7 @@ pub mod exact {
         let x1176 = 0.3 * x1175;
         let x1231 = 0.3 * x1173;
         let x3028 = t * k[1];
-        let x3029 = x3028.sin();
+        let x3029 = symbody_runtime::trig::sin(x3028);
         let x3030 = k[0] * x3029;
         let x3047 = x348 * k[9];
         let x3048 = x347 * k[6];
@@ -5221,7 +5221,7 @@ pub mod exact {
         dp: &[f64; 33],
         s: &mut [f64; 257],
     ) {
-        let x13 = t.sin();
+        let x13 = symbody_runtime::trig::sin(t);
         s[0] = x13;
         let x81 = q[10] * q[10];
         s[1] = x81;
@@ -5699,7 +5699,8 @@ pub mod exact {
         s[237] = x2949;
         let x3034 = t * k[4];
         s[238] = x3034;
-        let x3035 = x3034.cos();
+        let (x3442, x3035) = symbody_runtime::trig::sin_cos(x3034);
+        s[246] = x3442;
         s[239] = x3035;
         let x3036 = k[3] * x3035;
         s[240] = x3036;
@@ -5713,8 +5714,6 @@ pub mod exact {
         s[244] = x3063;
         let x3065 = x3063 - x3060;
         s[245] = x3065;
-        let x3442 = x3034.sin();
-        s[246] = x3442;
         let x3443 = x1767 * x3442;
         s[247] = x3443;
         let x3444 = dp[30] * x3035;
@@ -6121,13 +6120,12 @@ pub mod exact {
         let x2817 = 0.3 * x2688;
         let x2822 = x84 * s[218];
         let x3028 = t * k[1];
-        let x3029 = x3028.sin();
+        let (x3029, x3437) = symbody_runtime::trig::sin_cos(x3028);
         let x3030 = k[0] * x3029;
         let x3047 = x348 * k[9];
         let x3048 = x347 * k[6];
         let x3050 = x3030 - x3048;
         let x3052 = x3050 - x3047;
-        let x3437 = x3028.cos();
         let x3438 = x1761 * x3437;
         let x3439 = dp[27] * x3029;
         let x3440 = k[0] * x3438;
@@ -7529,7 +7527,7 @@ pub mod reduced {
         t: f64,
         out: &mut [f64; 1],
     ) {
-        let x13 = t.sin();
+        let x13 = symbody_runtime::trig::sin(t);
         let x38 = q[5] * q[5];
         let x39 = q[6] * q[6];
         let x138 = q[5] * 2.0;
@@ -7576,10 +7574,10 @@ pub mod reduced {
         let x3214 = x3213 - x3188;
         let x3215 = 2.0 * x3214;
         let x3800 = t * k[1];
-        let x3801 = x3800.sin();
+        let x3801 = symbody_runtime::trig::sin(x3800);
         let x3802 = k[0] * x3801;
         let x3806 = t * k[4];
-        let x3807 = x3806.cos();
+        let x3807 = symbody_runtime::trig::cos(x3806);
         let x3808 = k[3] * x3807;
         let x3810 = x13 * k[5];
         let x3817 = qd[0] * k[2];
@@ -8704,7 +8702,7 @@ pub mod reduced {
             t: f64,
             out: &mut [f64; 9],
         ) {
-            let x13 = t.sin();
+            let x13 = symbody_runtime::trig::sin(t);
             let x38 = q[5] * q[5];
             let x39 = q[6] * q[6];
             let x136 = q[3] * 2.0;
@@ -8999,10 +8997,10 @@ pub mod reduced {
             let x3770 = 0.3 * x3721;
             let x3783 = 0.3 * x3736;
             let x3800 = t * k[1];
-            let x3801 = x3800.sin();
+            let x3801 = symbody_runtime::trig::sin(x3800);
             let x3802 = k[0] * x3801;
             let x3806 = t * k[4];
-            let x3807 = x3806.cos();
+            let x3807 = symbody_runtime::trig::cos(x3806);
             let x3808 = k[3] * x3807;
             let x3810 = x13 * k[5];
             let x3825 = x3181 * k[6];
@@ -9126,7 +9124,7 @@ pub mod reduced {
             t: f64,
             s: &mut [f64; 94],
         ) {
-            let x13 = t.sin();
+            let x13 = symbody_runtime::trig::sin(t);
             s[0] = x13;
             let x38 = q[5] * q[5];
             s[1] = x38;
@@ -9300,7 +9298,7 @@ pub mod reduced {
             s[85] = x3745;
             let x3806 = t * k[4];
             s[86] = x3806;
-            let x3807 = x3806.cos();
+            let x3807 = symbody_runtime::trig::cos(x3806);
             s[87] = x3807;
             let x3808 = k[3] * x3807;
             s[88] = x3808;
@@ -9696,7 +9694,7 @@ pub mod reduced {
             let x3697 = 0.3 * x3696;
             let x3747 = 0.3 * x3694;
             let x3800 = t * k[1];
-            let x3801 = x3800.sin();
+            let x3801 = symbody_runtime::trig::sin(x3800);
             let x3802 = k[0] * x3801;
             let x3825 = x3181 * k[6];
             let x3827 = x3802 - x3825;

@@ -878,10 +878,8 @@ pub mod exact {
     }
     #[inline(never)]
     fn mass_part_0(k: &[f64; 6], q: &[f64; 6], out: &mut [f64; 10]) {
-        let x6 = q[3].sin();
-        let x7 = q[3].cos();
-        let x8 = q[4].sin();
-        let x9 = q[4].cos();
+        let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
         let x16 = x6 * x9;
         let x17 = x7 * x9;
         let x164 = x8 * 2.0;
@@ -941,10 +939,8 @@ pub mod exact {
     }
     #[inline(never)]
     fn force_part_0(k: &[f64; 6], q: &[f64; 6], qd: &[f64; 6], out: &mut [f64; 6]) {
-        let x6 = q[3].sin();
-        let x7 = q[3].cos();
-        let x8 = q[4].sin();
-        let x9 = q[4].cos();
+        let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
         let x16 = x6 * x9;
         let x17 = x7 * x9;
         let x100 = x8 * qd[5];
@@ -1070,10 +1066,8 @@ pub mod exact {
         mass: &mut [f64; 10],
         force: &mut [f64; 6],
     ) {
-        let x6 = q[3].sin();
-        let x7 = q[3].cos();
-        let x8 = q[4].sin();
-        let x9 = q[4].cos();
+        let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
         let x16 = x6 * x9;
         let x17 = x7 * x9;
         let x35 = q[0] * q[0];
@@ -1266,10 +1260,8 @@ pub mod exact {
         mass: &mut [f64; 10],
         force: &mut [f64; 6],
     ) {
-        let x6 = q[3].sin();
-        let x7 = q[3].cos();
-        let x8 = q[4].sin();
-        let x9 = q[4].cos();
+        let (x6, x7) = symbody_runtime::trig::sin_cos(q[3]);
+        let (x8, x9) = symbody_runtime::trig::sin_cos(q[4]);
         let x16 = x6 * x9;
         let x17 = x7 * x9;
         let x100 = x8 * qd[5];

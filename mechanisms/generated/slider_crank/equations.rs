@@ -128,8 +128,7 @@ fn phi_part_0(k: &[f64; 26], q: &[f64; 21], t: f64, out: &mut [f64; 21]) {
     let x135 = x130 - x133;
     let x138 = x124 - x126;
     let x139 = x130 + x133;
-    let x323 = x5.sin();
-    let x324 = x5.cos();
+    let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
     let x329 = x16 + x18;
     let x330 = x17 + x329;
     let x331 = x330 - 1.0;
@@ -307,8 +306,7 @@ fn phi_q_part_0(k: &[f64; 26], q: &[f64; 21], t: f64, out: &mut [f64; 109]) {
     let x131 = q[17] * q[18];
     let x133 = 2.0 * x131;
     let x135 = x130 - x133;
-    let x323 = x5.sin();
-    let x324 = x5.cos();
+    let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
     let x338 = 2.0 * q[3];
     let x339 = 2.0 * q[4];
     let x340 = 2.0 * q[10];
@@ -715,8 +713,7 @@ fn phi_t_part_0(k: &[f64; 26], q: &[f64; 21], t: f64, out: &mut [f64; 21]) {
     let x32 = 2.0 * x30;
     let x34 = x29 - x32;
     let x40 = x29 + x32;
-    let x323 = x5.sin();
-    let x324 = x5.cos();
+    let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
     let x640 = 6.283185307179586 * x324;
     let x642 = 6.283185307179586 * x323;
     let x5301 = x21 * k[2];
@@ -822,8 +819,7 @@ fn gamma_part_0(
     let x131 = q[17] * q[18];
     let x133 = 2.0 * x131;
     let x135 = x130 - x133;
-    let x323 = x5.sin();
-    let x324 = x5.cos();
+    let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
     let x338 = 2.0 * q[3];
     let x339 = 2.0 * q[4];
     let x340 = 2.0 * q[10];
@@ -2023,8 +2019,7 @@ fn eval_kinematics_part_1(
     let x128 = x117 + x120;
     let x138 = s[47] - s[49];
     let x139 = s[52] + s[54];
-    let x323 = x5.sin();
-    let x324 = x5.cos();
+    let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
     let x329 = s[2] + s[3];
     let x330 = x17 + x329;
     let x331 = x330 - 1.0;
@@ -4540,8 +4535,7 @@ fn kinematic_tangents_part_4(
     gamma: &mut [f64; 21],
 ) {
     let x5 = 6.283185307179586 * t;
-    let x323 = x5.sin();
-    let x324 = x5.cos();
+    let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
     let x640 = 6.283185307179586 * x324;
     let x642 = 6.283185307179586 * x323;
     let x669 = s[67] * qd[3];
@@ -9308,8 +9302,7 @@ pub mod exact {
         let x135 = x130 - x133;
         let x138 = x124 - x126;
         let x139 = x130 + x133;
-        let x323 = x5.sin();
-        let x324 = x5.cos();
+        let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
         let x329 = x16 + x18;
         let x330 = x17 + x329;
         let x331 = x330 - 1.0;
@@ -13278,8 +13271,7 @@ pub mod reduced {
         let x104 = q[18] * q[18];
         let x131 = q[17] * q[18];
         let x133 = 2.0 * x131;
-        let x323 = x5.sin();
-        let x324 = x5.cos();
+        let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
         let x329 = x16 + x18;
         let x330 = x17 + x329;
         let x331 = x330 - 1.0;
@@ -13462,8 +13454,7 @@ pub mod reduced {
         let x104 = q[18] * q[18];
         let x131 = q[17] * q[18];
         let x133 = 2.0 * x131;
-        let x323 = x5.sin();
-        let x324 = x5.cos();
+        let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
         let x338 = 2.0 * q[3];
         let x339 = 2.0 * q[4];
         let x340 = 2.0 * q[10];
@@ -13878,8 +13869,7 @@ pub mod reduced {
         let x32 = 2.0 * x30;
         let x34 = x29 - x32;
         let x40 = x29 + x32;
-        let x323 = x5.sin();
-        let x324 = x5.cos();
+        let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
         let x640 = 6.283185307179586 * x324;
         let x642 = 6.283185307179586 * x323;
         let x5714 = x21 * k[2];
@@ -13971,8 +13961,7 @@ pub mod reduced {
         let x104 = q[18] * q[18];
         let x131 = q[17] * q[18];
         let x133 = 2.0 * x131;
-        let x323 = x5.sin();
-        let x324 = x5.cos();
+        let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
         let x338 = 2.0 * q[3];
         let x339 = 2.0 * q[4];
         let x340 = 2.0 * q[10];
@@ -15177,8 +15166,7 @@ pub mod reduced {
         let x5 = 6.283185307179586 * t;
         let x17 = q[6] * q[6];
         let x103 = q[17] * q[17];
-        let x323 = x5.sin();
-        let x324 = x5.cos();
+        let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
         let x329 = s[2] + s[3];
         let x330 = x17 + x329;
         let x331 = x330 - 1.0;
@@ -19447,8 +19435,7 @@ pub mod reduced {
             let x94 = x80 - x82;
             let x95 = x86 + x89;
             let x133 = 2.0 * s[11];
-            let x323 = x5.sin();
-            let x324 = x5.cos();
+            let (x323, x324) = symbody_runtime::trig::sin_cos(x5);
             let x329 = x16 + x18;
             let x330 = x17 + x329;
             let x331 = x330 - 1.0;
