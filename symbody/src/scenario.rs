@@ -1,6 +1,7 @@
 //! The paper's scenario on the generated Stewart platform: consistent start, HHT-α over the
 //! requested span, and the time series the paper plots (pose, joint reactions, actuators).
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
@@ -252,6 +253,16 @@ pub fn kinematic(registry: &Registry, opts: &Options) -> Result<Run, ScenarioErr
 /// a batch of outputs behind, so on two cores the recording takes no wall time. Errors come
 /// in time order: a recorded output's before a later solve's.
 pub fn kinematic_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
+    kinematic_until(mech, opts, &AtomicBool::new(false))
+}
+
+/// [`kinematic_mechanism`], given up with [`ScenarioError::Interrupted`] at the first output
+/// after `stop` is set: a run started before it is known whether it is wanted.
+pub fn kinematic_until<M: Mechanism>(
+    mech: M,
+    opts: &Options,
+    stop: &AtomicBool,
+) -> Result<Run, ScenarioError> {
     let info = mech.info();
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
     let n_out = output_count(opts.t_end, opts.output_step)?;
@@ -281,8 +292,11 @@ pub fn kinematic_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run,
             Ok(run)
         });
         let mut batch = Batch::default();
-        let followed = (|| -> Result<(), Error> {
+        let followed = (|| -> Result<(), ScenarioError> {
             for k in 0..=n_out {
+                if stop.load(Ordering::Relaxed) {
+                    return Err(ScenarioError::Interrupted { time: path.t() });
+                }
                 if k > 0 {
                     path.advance_to((k as f64 * opts.output_step).min(opts.t_end))?;
                 }

@@ -2,6 +2,7 @@
 //! (docs/design.md, decision 23), then the run is made by the paper scenario's or the generic
 //! recorder and restricted to the requested outputs.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
 use symbody_runtime::{
     driver_effort, free_motion, joint_wrench, Entry, FreeMotion, JointKind, Mechanism,
@@ -180,51 +181,71 @@ pub fn run_observed(
     obs: &mut dyn Observer,
 ) -> Result<(PathChoice, Result<Outcome, Stopped>), ScenarioError> {
     let mech = generic::mechanism(entry, Some(scene.formulation))?;
+    if scene.files == Files::Paper {
+        return run_paper(scene, mech);
+    }
     // The choice is part of the run's cost: its wall time is added to the run's.
     let clock = Instant::now();
     let choice = choose_path(scene, mech)?;
     let choice_wall = clock.elapsed();
-    let kinematic = matches!(choice, PathChoice::Kinematic { .. });
-    let outcome = match scene.files {
-        Files::Paper => {
-            let opts = scenario::Options {
-                formulation: scene.formulation,
-                t_end: scene.t_end,
-                step: scene.step,
-                tolerances: scene.tolerances,
-                alpha: scene.alpha,
-                output_step: scene.output_step,
-                reactions: Reactions::Recovered,
-            };
-            let run = if kinematic {
-                scenario::kinematic_mechanism(mech, &opts)
-            } else {
-                scenario::simulate_mechanism(mech, &opts)
-            };
-            run.map(|mut run| {
-                run.wall += choice_wall;
-                Outcome::Paper(run)
-            })
-            .map_err(Stopped::from)
-        }
-        Files::Tables => {
-            let opts = options(scene);
-            let mut obs = Prepared {
-                prepare: |rec: &mut Recording| restrict(rec, scene),
-                inner: obs,
-            };
-            let rec = if kinematic {
-                generic::run_kinematic_observed(entry, &opts, &mut obs)
-            } else {
-                generic::run_observed(entry, &opts, &mut obs)
-            };
-            rec.map(|mut rec| {
-                rec.wall += choice_wall;
-                Outcome::Tables(rec)
-            })
-        }
+    let opts = options(scene);
+    let mut obs = Prepared {
+        prepare: |rec: &mut Recording| restrict(rec, scene),
+        inner: obs,
     };
+    let rec = match choice {
+        PathChoice::Kinematic { .. } => generic::run_kinematic_observed(entry, &opts, &mut obs),
+        PathChoice::Integrate { .. } => generic::run_observed(entry, &opts, &mut obs),
+    };
+    let outcome = rec.map(|mut rec| {
+        rec.wall += choice_wall;
+        Outcome::Tables(rec)
+    });
     Ok((choice, outcome))
+}
+
+/// [`run_observed`] for `files = "paper"` (the paper scenario, which takes no observer). The
+/// kinematic path starts beside the choice, which usually picks it, and is given up when
+/// the choice is integration; the wall time spans both.
+fn run_paper(
+    scene: &Scene,
+    mech: &'static (dyn Mechanism + Sync),
+) -> Result<(PathChoice, Result<Outcome, Stopped>), ScenarioError> {
+    let clock = Instant::now();
+    let opts = scenario::Options {
+        formulation: scene.formulation,
+        t_end: scene.t_end,
+        step: scene.step,
+        tolerances: scene.tolerances,
+        alpha: scene.alpha,
+        output_step: scene.output_step,
+        reactions: Reactions::Recovered,
+    };
+    let integrate = AtomicBool::new(scene.path == PathRequest::Integrate);
+    let (choice, kinematic) = std::thread::scope(|scope| {
+        let chooser = scope.spawn(|| {
+            let choice = choose_path(scene, mech);
+            if !matches!(choice, Ok(PathChoice::Kinematic { .. })) {
+                integrate.store(true, Ordering::Relaxed);
+            }
+            choice
+        });
+        let kinematic = scenario::kinematic_until(mech, &opts, &integrate);
+        let choice = chooser
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+        (choice, kinematic)
+    });
+    let choice = choice?;
+    let run = match choice {
+        PathChoice::Kinematic { .. } => kinematic,
+        PathChoice::Integrate { .. } => scenario::simulate_mechanism(mech, &opts),
+    };
+    let run = run.map(|mut run| {
+        run.wall = clock.elapsed();
+        Outcome::Paper(run)
+    });
+    Ok((choice, run.map_err(Stopped::from)))
 }
 
 /// Records only the outputs `scene` asks for (before the first output: nothing is
