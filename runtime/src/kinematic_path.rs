@@ -579,6 +579,30 @@ mod tests {
         );
     }
 
+    /// The slider driven along a circle of shrinking radius: Y(t) = √(c(t)² − d²) in closed
+    /// form. The path must stay on it, and once seven outputs are known the eighth-order
+    /// prediction alone must meet the position tolerance almost everywhere.
+    #[test]
+    fn prediction_follows_the_circle_driver_without_corrections() {
+        use crate::testmodels::{CIRCLE_D, CIRCLE_V};
+        let mut path = KinematicPath::<_>::new(CircleDriver, 0.0).unwrap();
+        let mut worst = 0.0f64;
+        let mut corrections = Vec::new();
+        for k in 1..=100 {
+            let before = path.stats().chord_iterations;
+            path.advance_to(0.01 * k as f64).unwrap();
+            corrections.push(path.stats().chord_iterations - before);
+            let c = CircleDriver::c(path.t());
+            worst = worst.max((path.q()[1] - (c * c - CIRCLE_D * CIRCLE_D).sqrt()).abs());
+            let y_dot = -c * CIRCLE_V / path.q()[1];
+            worst = worst.max((path.qd()[1] - y_dot).abs());
+        }
+        assert!(worst < 1e-13, "{worst:e} from the closed form");
+        assert_eq!(path.stats().newton_iterations, 0);
+        let late: usize = corrections[6..].iter().sum();
+        assert!(late <= 2, "{corrections:?}");
+    }
+
     /// A free spherical pendulum (three free directions), a hinge whose redundant row is
     /// declared (one), and a driven slider with none.
     #[test]

@@ -278,12 +278,13 @@ pub fn kinematic_until<M: Mechanism>(
     let mut run = std::thread::scope(|scope| {
         let recording = scope.spawn(move || -> Result<Run, ScenarioError> {
             let mut run = Run::default();
-            let mut recorder = Recorder::new(info, layout);
+            // Φq q̇ + Φt.
+            let mut velocity = vec![0.0; info.n_constraints];
             for mut batch in solved {
                 for k in 0..batch.t.len() {
-                    let out = batch.output(info, k, &mut recorder.velocity);
+                    let out = batch.output(info, k, &mut velocity);
                     modes.check(out.q, out.t)?;
-                    recorder.record(info, out, &mut run)?;
+                    record(layout, info, out, &mut run)?;
                 }
                 batch.clear();
                 // The path may have finished: then the batch is not needed.
@@ -466,7 +467,7 @@ pub fn output_count(t_end: f64, output_step: f64) -> Result<usize, ScenarioError
     Ok((t_end / output_step - 1e-9).ceil().max(0.0) as usize)
 }
 
-/// Work memory for recording outputs, allocated once per run.
+/// Work memory for recording integrated outputs, allocated once per run.
 struct Recorder {
     layout: Layout,
     /// For states integrated: residuals and Jacobians, and multipliers recovered at the
@@ -475,8 +476,6 @@ struct Recorder {
     kinematics: Option<Kinematics>,
     qdd: Vec<f64>,
     lambda: Vec<f64>,
-    /// Φq q̇ + Φt.
-    velocity: Vec<f64>,
 }
 
 impl Recorder {
@@ -487,7 +486,6 @@ impl Recorder {
             kinematics: None,
             qdd: vec![0.0; info.n_coords],
             lambda: vec![0.0; info.n_constraints],
-            velocity: vec![0.0; info.n_constraints],
         }
     }
 
@@ -525,10 +523,6 @@ impl Recorder {
             residuals,
             energy,
         };
-        record(self.layout, info, out, run)
-    }
-
-    fn record(&self, info: &MechanismInfo, out: Output<'_>, run: &mut Run) -> Result<(), Error> {
         record(self.layout, info, out, run)
     }
 }
