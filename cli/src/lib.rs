@@ -965,6 +965,9 @@ fn report_paper(
         "Stewart 6-6, paper scenario ({} formulation)",
         formulation.name()
     );
+    if let Some(n) = run.reduced {
+        say!("  reduced model    {n} coordinates followed, read back in full at every output");
+    }
     say!(
         "  time span        0 .. {:.6} s, {method}",
         run.t.last().unwrap_or(&0.0)

@@ -71,6 +71,6 @@ pub use pose::{
     angular_velocity, angular_velocity_jacobian, body_pose, point_world, rotation_matrix,
 };
 pub use reactions::{actuator_force, driver_effort, joint_force, joint_wrench, Wrench};
-pub use reduction::{Reduction, Substitution};
+pub use reduction::{FullState, Reduction, Substitution};
 pub use registry::{source_hash, Entry, Origin, Registry};
 pub use watch::{velocity_residual, EulerLimits, EulerWarning, ResidualWatch, Residuals};

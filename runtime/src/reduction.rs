@@ -4,8 +4,8 @@
 //! eliminated coordinates' equations of motion of the full model.
 
 use crate::error::{check_len, Error};
-use crate::kinematics::mass_times;
-use crate::mechanism::Mechanism;
+use crate::kinematics::{inf_norm, mass_times};
+use crate::mechanism::{Mechanism, MechanismInfo};
 
 /// One eliminated row: `q[coord] = weight · q[target] + c(t)`, where the row's derivative with
 /// respect to `q[coord]` is `slope`.
@@ -47,6 +47,19 @@ impl Reduction {
         order: usize,
         full: &mut [f64],
     ) -> Result<(), Error> {
+        let mut offsets = vec![0.0; 3 * self.substitutions.len()];
+        (self.offsets)(t, &mut offsets);
+        self.expand_with(reduced, &offsets, order, full)
+    }
+
+    /// [`Self::expand`] with the offsets at `t` already evaluated.
+    fn expand_with(
+        &self,
+        reduced: &[f64],
+        offsets: &[f64],
+        order: usize,
+        full: &mut [f64],
+    ) -> Result<(), Error> {
         check_len("reduced coordinates", self.coords.len(), reduced.len())?;
         check_len("full coordinates", self.n_full, full.len())?;
         if order > 2 {
@@ -59,57 +72,116 @@ impl Reduction {
         for (k, &c) in self.coords.iter().enumerate() {
             full[c as usize] = reduced[k];
         }
-        let mut offsets = vec![0.0; 3 * self.substitutions.len()];
-        (self.offsets)(t, &mut offsets);
         for (k, s) in self.substitutions.iter().enumerate() {
             let follow = s.target.map_or(0.0, |j| s.weight * full[j as usize]);
             full[s.coord as usize] = offsets[3 * k + order] + follow;
         }
         Ok(())
     }
+}
 
-    /// The full model's multipliers at the full state `(q, q̇, q̈)` (expanded) from the
-    /// reduced mechanism's `lambda`: kept rows copied, each eliminated row's from
-    /// `(M q̈)ᵢ + Σₛ Φq[s,i] λₛ = Qᵢ` of the full model (no eliminated row touches another
-    /// eliminated coordinate, so one pass suffices).
+/// A reduced mechanism's kinematic states read in its full model's terms, without allocating
+/// after [`FullState::new`]: coordinates, velocities, accelerations and multipliers, and the
+/// full model's Φ, Φq and Φt at the state (what recording it on the full model needs).
+#[derive(Debug, Clone)]
+pub struct FullState {
+    reduction: &'static Reduction,
+    pub q: Vec<f64>,
+    pub qd: Vec<f64>,
+    pub qdd: Vec<f64>,
+    pub lambda: Vec<f64>,
+    pub phi: Vec<f64>,
+    pub phi_q: Vec<f64>,
+    pub phi_t: Vec<f64>,
+    mass: Vec<f64>,
+    force: Vec<f64>,
+    m_qdd: Vec<f64>,
+    offsets: Vec<f64>,
+    /// For each substitution: the Φq nonzeros in its coordinate's column on other rows.
+    coupling: Vec<Vec<usize>>,
+}
+
+impl FullState {
+    /// The work memory for reading `reduction`'s states in terms of `full`, its full model.
+    pub fn new(reduction: &'static Reduction, full: &MechanismInfo) -> Result<Self, Error> {
+        check_len("full model coordinates", reduction.n_full, full.n_coords)?;
+        check_len("full model rows", reduction.m_full, full.n_constraints)?;
+        let (n, m) = (full.n_coords, full.n_constraints);
+        let coupling = reduction
+            .substitutions
+            .iter()
+            .map(|s| {
+                (0..full.phi_q_nnz())
+                    .filter(|&k| {
+                        full.phi_q_cols[k] == s.coord
+                            && s.row.is_none_or(|row| full.phi_q_rows[k] != row)
+                    })
+                    .collect()
+            })
+            .collect();
+        Ok(FullState {
+            reduction,
+            q: vec![0.0; n],
+            qd: vec![0.0; n],
+            qdd: vec![0.0; n],
+            lambda: vec![0.0; m],
+            phi: vec![0.0; m],
+            phi_q: vec![0.0; full.phi_q_nnz()],
+            phi_t: vec![0.0; m],
+            mass: vec![0.0; full.mass_nnz()],
+            force: vec![0.0; n],
+            m_qdd: vec![0.0; n],
+            offsets: vec![0.0; 3 * reduction.substitutions.len()],
+            coupling,
+        })
+    }
+
+    /// |Φ|∞ of the full model at the last state read (redundant rows included).
+    pub fn position_residual(&self) -> f64 {
+        inf_norm(&self.phi)
+    }
+
+    /// Reads the reduced state `(q, q̇, q̈)` at `t` with the reduced rows' multipliers
+    /// `lambda`: the kept rows' multipliers are copied, and each eliminated row's follows
+    /// from its coordinate's equation of motion in the full model,
+    /// `(M q̈)ᵢ + Σₛ Φq[s,i] λₛ = Qᵢ` (no eliminated row touches another eliminated
+    /// coordinate, so one pass suffices).
     #[allow(clippy::too_many_arguments)]
-    pub fn multipliers<M: Mechanism + ?Sized>(
-        &self,
+    pub fn read<M: Mechanism + ?Sized>(
+        &mut self,
         full: &M,
         t: f64,
         q: &[f64],
         qd: &[f64],
         qdd: &[f64],
         lambda: &[f64],
-        out: &mut [f64],
     ) -> Result<(), Error> {
+        let r = self.reduction;
         let info = full.info();
-        check_len("full model coordinates", self.n_full, info.n_coords)?;
-        check_len("full model rows", self.m_full, info.n_constraints)?;
-        check_len("reduced multipliers", self.rows.len(), lambda.len())?;
-        check_len("full multipliers", self.m_full, out.len())?;
-        for v in [q, qd, qdd] {
-            check_len("full state", self.n_full, v.len())?;
+        check_len("full model coordinates", self.q.len(), info.n_coords)?;
+        check_len("reduced multipliers", r.rows.len(), lambda.len())?;
+        (r.offsets)(t, &mut self.offsets);
+        r.expand_with(q, &self.offsets, 0, &mut self.q)?;
+        r.expand_with(qd, &self.offsets, 1, &mut self.qd)?;
+        r.expand_with(qdd, &self.offsets, 2, &mut self.qdd)?;
+        full.phi(&self.q, t, &mut self.phi);
+        full.phi_q(&self.q, t, &mut self.phi_q);
+        full.phi_t(&self.q, t, &mut self.phi_t);
+        full.mass(&self.q, &mut self.mass);
+        full.force(&self.q, &self.qd, t, &mut self.force);
+        mass_times(info, &self.mass, &self.qdd, &mut self.m_qdd);
+        self.lambda.fill(0.0);
+        for (k, &row) in r.rows.iter().enumerate() {
+            self.lambda[row as usize] = lambda[k];
         }
-        out.fill(0.0);
-        for (k, &r) in self.rows.iter().enumerate() {
-            out[r as usize] = lambda[k];
-        }
-        let mut phi_q = vec![0.0; info.phi_q_nnz()];
-        let mut mass = vec![0.0; info.mass_nnz()];
-        let (mut m_qdd, mut force) = (vec![0.0; self.n_full], vec![0.0; self.n_full]);
-        full.phi_q(q, t, &mut phi_q);
-        full.mass(q, &mut mass);
-        full.force(q, qd, t, &mut force);
-        mass_times(info, &mass, qdd, &mut m_qdd);
-        for s in self.substitutions {
+        for (s, others) in r.substitutions.iter().zip(&self.coupling) {
             let Some(row) = s.row else { continue };
-            let (i, row) = (s.coord, row as usize);
-            let coupling: f64 = (0..phi_q.len())
-                .filter(|&k| info.phi_q_cols[k] == i && info.phi_q_rows[k] as usize != row)
-                .map(|k| phi_q[k] * out[info.phi_q_rows[k] as usize])
+            let i = s.coord as usize;
+            let coupling: f64 = others
+                .iter()
+                .map(|&k| self.phi_q[k] * self.lambda[info.phi_q_rows[k] as usize])
                 .sum();
-            out[row] = (force[i as usize] - m_qdd[i as usize] - coupling) / s.slope;
+            self.lambda[row as usize] = (self.force[i] - self.m_qdd[i] - coupling) / s.slope;
         }
         Ok(())
     }

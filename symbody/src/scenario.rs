@@ -6,9 +6,9 @@ use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
-    actuator_force, joint_force, velocity_residual, Entry, Error, Formulation, HhtBuilder,
-    KinematicPath, Kinematics, Mechanism, MechanismInfo, PathStats, Registry, ResidualWatch,
-    Residuals, Stats,
+    actuator_force, joint_force, velocity_residual, Entry, Error, Formulation, FullState,
+    HhtBuilder, KinematicPath, Kinematics, Mechanism, MechanismInfo, PathStats, Reduction,
+    Registry, ResidualWatch, Residuals, Stats,
 };
 
 /// Options of one simulation; `Default` is the paper's scenario over one period.
@@ -137,6 +137,9 @@ pub struct Run {
     pub stats: Stats,
     /// The kinematic path's counters when the run was not integrated ([`kinematic`]).
     pub kinematic: Option<PathStats>,
+    /// The coordinates followed when the kinematic path ran on the generated reduced model
+    /// (recorded on the full one); `None`: the full model.
+    pub reduced: Option<usize>,
     pub wall: Duration,
     /// First Euler-angle warning (time, body, β), if any body came near β = ±90°.
     pub euler_warning: Option<(f64, &'static str, f64)>,
@@ -252,14 +255,24 @@ pub fn kinematic(registry: &Registry, opts: &Options) -> Result<Run, ScenarioErr
 /// on this thread; the outputs' reactions, residuals and assembly-mode watch on a second one,
 /// a batch of outputs behind, so on two cores the recording takes no wall time. Errors come
 /// in time order: a recorded output's before a later solve's.
-pub fn kinematic_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
-    kinematic_until(mech, opts, &AtomicBool::new(false))
+pub fn kinematic_mechanism<M: Mechanism + Sync>(
+    mech: M,
+    opts: &Options,
+) -> Result<Run, ScenarioError> {
+    kinematic_until(mech, None, opts, &AtomicBool::new(false))
 }
 
-/// [`kinematic_mechanism`], given up with [`ScenarioError::Interrupted`] at the first output
-/// after `stop` is set: a run started before it is known whether it is wanted.
-pub fn kinematic_until<M: Mechanism>(
+/// A generated reduced model of a mechanism and the way back to the full one.
+pub type Reduced = (&'static (dyn Mechanism + Sync), &'static Reduction);
+
+/// [`kinematic_mechanism`], on `reduced` when given (the path follows the reduced model;
+/// the recording thread reads each output in the full model's terms, multipliers of the
+/// eliminated rows included, and records it there), given up with
+/// [`ScenarioError::Interrupted`] at the first output after `stop` is set: a run started
+/// before it is known whether it is wanted.
+pub fn kinematic_until<M: Mechanism + Sync>(
     mech: M,
+    reduced: Option<Reduced>,
     opts: &Options,
     stop: &AtomicBool,
 ) -> Result<Run, ScenarioError> {
@@ -267,22 +280,32 @@ pub fn kinematic_until<M: Mechanism>(
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
-    let mut path = KinematicPath::<M>::new(mech, 0.0)?;
-    let modes = ModeWatch::new(
-        &Platform::new(path.mechanism())?,
-        path.q(),
-        SIMULATION_MAX_CONDITION,
-    )?;
+    let followed: &(dyn Mechanism + Sync) = reduced.map_or(&mech, |(r, _)| r);
+    let mut path = KinematicPath::new(followed, 0.0)?;
+    let mut reading = match reduced {
+        Some((_, reduction)) => Some(FullState::new(reduction, info)?),
+        None => None,
+    };
+    let mut q0 = path.q().to_vec();
+    if let Some((_, reduction)) = reduced {
+        q0.resize(info.n_coords, 0.0);
+        reduction.expand(path.q(), path.t(), 0, &mut q0)?;
+    }
+    let modes = ModeWatch::new(&Platform::new(&mech)?, &q0, SIMULATION_MAX_CONDITION)?;
     let (to_recorder, solved) = mpsc::sync_channel::<Batch>(4);
     let (to_path, emptied) = mpsc::channel::<Batch>();
     let mut run = std::thread::scope(|scope| {
+        let mech = &mech;
         let recording = scope.spawn(move || -> Result<Run, ScenarioError> {
             let mut run = Run::default();
             // Φq q̇ + Φt.
             let mut velocity = vec![0.0; info.n_constraints];
             for mut batch in solved {
                 for k in 0..batch.t.len() {
-                    let out = batch.output(info, k, &mut velocity);
+                    let out = match &mut reading {
+                        None => batch.output(k, &mut velocity),
+                        Some(full) => batch.read(k, mech, full, &mut velocity)?,
+                    };
                     modes.check(out.q, out.t)?;
                     record(layout, info, out, &mut run)?;
                 }
@@ -292,7 +315,7 @@ pub fn kinematic_until<M: Mechanism>(
             }
             Ok(run)
         });
-        let mut batch = Batch::default();
+        let mut batch = Batch::new(path.info());
         let followed = (|| -> Result<(), ScenarioError> {
             for k in 0..=n_out {
                 if stop.load(Ordering::Relaxed) {
@@ -303,7 +326,9 @@ pub fn kinematic_until<M: Mechanism>(
                 }
                 batch.push(&path);
                 if batch.t.len() == BATCH {
-                    let next = emptied.try_recv().unwrap_or_default();
+                    let next = emptied
+                        .try_recv()
+                        .unwrap_or_else(|_| Batch::new(path.info()));
                     // A closed channel: the recorder stopped, with the run's error.
                     if to_recorder
                         .send(std::mem::replace(&mut batch, next))
@@ -327,6 +352,7 @@ pub fn kinematic_until<M: Mechanism>(
         Ok::<_, ScenarioError>(run)
     })?;
     run.kinematic = Some(path.stats());
+    run.reduced = reduced.map(|(r, _)| r.info().n_coords);
     run.wall = start.elapsed();
     Ok(run)
 }
@@ -336,11 +362,13 @@ pub fn kinematic_until<M: Mechanism>(
 const BATCH: usize = 16;
 
 /// Solved outputs of a kinematic path, one after another in each field.
-#[derive(Default)]
 struct Batch {
+    /// The followed model's.
+    info: &'static MechanismInfo,
     t: Vec<f64>,
     q: Vec<f64>,
     qd: Vec<f64>,
+    qdd: Vec<f64>,
     lambda: Vec<f64>,
     phi_q: Vec<f64>,
     phi_t: Vec<f64>,
@@ -349,10 +377,26 @@ struct Batch {
 }
 
 impl Batch {
+    fn new(info: &'static MechanismInfo) -> Self {
+        Batch {
+            info,
+            t: Vec::new(),
+            q: Vec::new(),
+            qd: Vec::new(),
+            qdd: Vec::new(),
+            lambda: Vec::new(),
+            phi_q: Vec::new(),
+            phi_t: Vec::new(),
+            position_residual: Vec::new(),
+            energy: Vec::new(),
+        }
+    }
+
     fn push<M: Mechanism>(&mut self, path: &KinematicPath<M>) {
         self.t.push(path.t());
         self.q.extend_from_slice(path.q());
         self.qd.extend_from_slice(path.qd());
+        self.qdd.extend_from_slice(path.qdd());
         self.lambda.extend_from_slice(path.lambda());
         self.phi_q.extend_from_slice(path.phi_q());
         self.phi_t.extend_from_slice(path.phi_t());
@@ -360,24 +404,50 @@ impl Batch {
         self.energy.push(path.energy());
     }
 
+    /// Output `k`'s state `(q, q̇, q̈, λ)`.
+    fn state(&self, k: usize) -> [&[f64]; 4] {
+        let (n, m) = (self.info.n_coords, self.info.n_constraints);
+        [
+            &self.q[k * n..][..n],
+            &self.qd[k * n..][..n],
+            &self.qdd[k * n..][..n],
+            &self.lambda[k * m..][..m],
+        ]
+    }
+
     /// Output `k`, with its velocity residual (computed into `work`).
-    fn output<'a>(&'a self, info: &MechanismInfo, k: usize, work: &mut [f64]) -> Output<'a> {
-        let (n, m, nnz) = (info.n_coords, info.n_constraints, info.phi_q_nnz());
-        let (q, qd) = (&self.q[k * n..][..n], &self.qd[k * n..][..n]);
+    fn output<'a>(&'a self, k: usize, work: &mut [f64]) -> Output<'a> {
+        let (m, nnz) = (self.info.n_constraints, self.info.phi_q_nnz());
+        let [q, qd, _, lambda] = self.state(k);
         let (phi_q, phi_t) = (&self.phi_q[k * nnz..][..nnz], &self.phi_t[k * m..][..m]);
-        Output {
-            t: self.t[k],
-            q,
-            qd,
-            lambda: &self.lambda[k * m..][..m],
-            phi_q,
-            phi_t,
-            residuals: Residuals {
-                position: self.position_residual[k],
-                velocity: velocity_residual(info, phi_q, phi_t, qd, work),
-            },
-            energy: self.energy[k],
-        }
+        let state = [q, qd, lambda, phi_q, phi_t];
+        let (position, energy) = (self.position_residual[k], self.energy[k]);
+        Output::new(self.info, self.t[k], state, position, energy, work)
+    }
+
+    /// Output `k` of a path on a reduced model, read in `full`'s terms by `reading`; the
+    /// position residual is the larger of the path's and the full model's at the state.
+    fn read<'a, M: Mechanism + ?Sized>(
+        &self,
+        k: usize,
+        full: &M,
+        reading: &'a mut FullState,
+        work: &mut [f64],
+    ) -> Result<Output<'a>, Error> {
+        let [q, qd, qdd, lambda] = self.state(k);
+        let t = self.t[k];
+        reading.read(full, t, q, qd, qdd, lambda)?;
+        let position = reading.position_residual().max(self.position_residual[k]);
+        let r = &*reading;
+        let state = [&r.q[..], &r.qd, &r.lambda, &r.phi_q, &r.phi_t];
+        Ok(Output::new(
+            full.info(),
+            t,
+            state,
+            position,
+            self.energy[k],
+            work,
+        ))
     }
 
     fn clear(&mut self) {
@@ -385,6 +455,7 @@ impl Batch {
             &mut self.t,
             &mut self.q,
             &mut self.qd,
+            &mut self.qdd,
             &mut self.lambda,
             &mut self.phi_q,
             &mut self.phi_t,
@@ -442,6 +513,33 @@ struct Output<'a> {
     residuals: Residuals,
     /// Kinetic plus potential energy (J).
     energy: f64,
+}
+
+impl<'a> Output<'a> {
+    /// The output at `t` of the state `[q, q̇, λ, Φq, Φt]` with its position residual, its
+    /// velocity residual computed into `work`.
+    fn new(
+        info: &MechanismInfo,
+        t: f64,
+        [q, qd, lambda, phi_q, phi_t]: [&'a [f64]; 5],
+        position: f64,
+        energy: f64,
+        work: &mut [f64],
+    ) -> Self {
+        Output {
+            t,
+            q,
+            qd,
+            lambda,
+            phi_q,
+            phi_t,
+            residuals: Residuals {
+                position,
+                velocity: velocity_residual(info, phi_q, phi_t, qd, work),
+            },
+            energy,
+        }
+    }
 }
 
 /// Number of output intervals of `t_end` at `output_step` (outputs at 0, Δ, …, t_end),

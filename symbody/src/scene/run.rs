@@ -182,7 +182,7 @@ pub fn run_observed(
 ) -> Result<(PathChoice, Result<Outcome, Stopped>), ScenarioError> {
     let mech = generic::mechanism(entry, Some(scene.formulation))?;
     if scene.files == Files::Paper {
-        return run_paper(scene, mech);
+        return run_paper(scene, entry, mech);
     }
     // The choice is part of the run's cost: its wall time is added to the run's.
     let clock = Instant::now();
@@ -206,9 +206,11 @@ pub fn run_observed(
 
 /// [`run_observed`] for `files = "paper"` (the paper scenario, which takes no observer). The
 /// kinematic path starts beside the choice, which usually picks it, and is given up when
-/// the choice is integration; the wall time spans both.
+/// the choice is integration; the wall time spans both. With `reduce`, the path follows the
+/// generated reduced model where there is one.
 fn run_paper(
     scene: &Scene,
+    entry: &Entry,
     mech: &'static (dyn Mechanism + Sync),
 ) -> Result<(PathChoice, Result<Outcome, Stopped>), ScenarioError> {
     let clock = Instant::now();
@@ -230,7 +232,11 @@ fn run_paper(
             }
             choice
         });
-        let kinematic = scenario::kinematic_until(mech, &opts, &integrate);
+        let reduced = scene
+            .reduce
+            .then(|| entry.reduced(mech.info().formulation))
+            .flatten();
+        let kinematic = scenario::kinematic_until(mech, reduced, &opts, &integrate);
         let choice = chooser
             .join()
             .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
