@@ -728,8 +728,12 @@ fn report_named(
         say!("  equations        {origin}");
     }
     if let Some(n) = rec.reduced {
+        let (verb, when) = match rec.kinematic {
+            Some(_) => ("followed", "output"),
+            None => ("integrated", "step"),
+        };
         say!(
-            "  reduced model    {n} coordinates integrated (of {}), read back in full at every step",
+            "  reduced model    {n} coordinates {verb} (of {}), read back in full at every {when}",
             info.n_coords
         );
     }

@@ -4,16 +4,16 @@
 
 pub use symbody_codegen::diag::closest;
 
-use crate::scenario::{output_count, ScenarioError};
+use crate::scenario::{output_count, Reduced, ScenarioError};
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
-    body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, Entry, EulerWarning,
-    Formulation, HhtBuilder, Integrator, JointKind, KinematicPath, KinematicSettings, Mechanism,
-    MechanismInfo, PathStats, Pivots, Reduction, Registry, ResidualWatch, Residuals, Rotation,
-    Stats, Wrench,
+    body_pose, driver_effort, joint_wrench, velocity_residual, EnergyMeter, EnergySample, Entry,
+    EulerWarning, Formulation, FullState, HhtBuilder, Integrator, JointKind, KinematicPath,
+    KinematicSettings, Mechanism, MechanismInfo, PathStats, Pivots, Registry, ResidualWatch,
+    Residuals, Rotation, Stats, Wrench,
 };
 
 /// Why a run could not be made: an option out of range or not available for the mechanism
@@ -46,10 +46,10 @@ pub struct Options {
     /// absolute) and on |Φ|∞ (`None`: the integrator's defaults, 1e-6 and 1e-10). Tighter
     /// makes a run a smooth function of its parameters, as differencing whole runs needs.
     pub newton_tolerance: Option<f64>,
-    /// Integrate the mechanism's reduced model where the generator emitted one (rows
-    /// qᵢ − qⱼ − c(t) substituted away, docs/design.md decision 24), read back in the full
-    /// model's terms at every step: the same motion and forces with fewer coordinates.
-    /// Without a reduced model the full one is integrated.
+    /// Integrate (or follow by the kinematic path) the mechanism's reduced model where the
+    /// generator emitted one (rows qᵢ − qⱼ − c(t) substituted away, docs/design.md decision
+    /// 24), read back in the full model's terms at every step or output: the same motion and
+    /// forces with fewer coordinates. Without a reduced model the full one is run.
     pub reduce: bool,
 }
 
@@ -361,9 +361,6 @@ pub fn run_observed(
     observed(entry, opts, obs, integrate)
 }
 
-/// A generated reduced mechanism and the way back to its full model.
-type Reduced = (&'static (dyn Mechanism + Sync), &'static Reduction);
-
 /// An error unless `entry` has a generated reduced model in formulation `f` (its default):
 /// for an explicit request (`--reduced`), where [`Options::reduce`] alone falls back to the
 /// full model.
@@ -519,13 +516,9 @@ pub fn run_kinematic_observed(
 }
 
 /// Moves `path` to `t`, keeping its counters in `rec` whether or not it gets there.
-fn advance<M: Mechanism>(
-    path: &mut KinematicPath<M>,
-    t: f64,
-    rec: &mut Recording,
-) -> Result<(), Error> {
+fn advance(path: &mut Followed, t: f64, rec: &mut Recording) -> Result<(), Error> {
     let advanced = path.advance_to(t);
-    rec.kinematic = Some(counted(path, rec));
+    rec.kinematic = Some(counted(&path.path, rec));
     Ok(advanced?)
 }
 
@@ -538,9 +531,76 @@ fn counted<M: Mechanism>(path: &KinematicPath<M>, rec: &Recording) -> PathStats 
     }
 }
 
+/// A kinematic path seen in the full model's terms: its own state when it follows the full
+/// model, each state read back through [`FullState`] when it follows the reduced one.
+struct Followed {
+    path: KinematicPath<&'static (dyn Mechanism + Sync)>,
+    full: Option<(&'static (dyn Mechanism + Sync), FullState)>,
+    /// Φq q̇ + Φt of the full model.
+    work: Vec<f64>,
+}
+
+impl Followed {
+    fn new(mech: &'static (dyn Mechanism + Sync), reduced: Option<Reduced>) -> Result<Self, Error> {
+        let info = mech.info();
+        let mut followed = Followed {
+            path: KinematicPath::new(reduced.map_or(mech, |(r, _)| r), 0.0)?,
+            full: match reduced {
+                Some((_, reduction)) => Some((mech, FullState::new(reduction, info)?)),
+                None => None,
+            },
+            work: vec![0.0; info.n_constraints],
+        };
+        followed.read()?;
+        Ok(followed)
+    }
+
+    fn advance_to(&mut self, t: f64) -> Result<(), Error> {
+        self.path.advance_to(t)?;
+        self.read()
+    }
+
+    fn read(&mut self) -> Result<(), Error> {
+        let p = &self.path;
+        match &mut self.full {
+            Some((mech, full)) => {
+                Ok(full.read(*mech, p.t(), p.q(), p.qd(), p.qdd(), p.lambda())?)
+            }
+            None => Ok(()),
+        }
+    }
+
+    fn t(&self) -> f64 {
+        self.path.t()
+    }
+    fn q(&self) -> &[f64] {
+        self.full.as_ref().map_or(self.path.q(), |(_, f)| &f.q)
+    }
+    fn qd(&self) -> &[f64] {
+        self.full.as_ref().map_or(self.path.qd(), |(_, f)| &f.qd)
+    }
+    fn lambda(&self) -> &[f64] {
+        self.full
+            .as_ref()
+            .map_or(self.path.lambda(), |(_, f)| &f.lambda)
+    }
+
+    /// The full model's drift: on the reduced model, the larger of the path's |Φ| and the
+    /// full model's at the state read back, and the full model's velocity residual there.
+    fn residuals(&mut self) -> Residuals {
+        match &self.full {
+            None => self.path.residuals(),
+            Some((mech, f)) => Residuals {
+                position: f.position_residual().max(self.path.position_residual()),
+                velocity: velocity_residual(mech.info(), &f.phi_q, &f.phi_t, &f.qd, &mut self.work),
+            },
+        }
+    }
+}
+
 /// The loop of [`run_kinematic_observed`].
 fn follow_path(
-    (mech, _): (&'static (dyn Mechanism + Sync), Option<Reduced>),
+    (mech, reduced): (&'static (dyn Mechanism + Sync), Option<Reduced>),
     opts: &Options,
     (t_end, n_out): (f64, usize),
     rec: &mut Recording,
@@ -548,7 +608,7 @@ fn follow_path(
 ) -> Result<(), Error> {
     use symbody_runtime::{energy, quadrature};
     let info = mech.info();
-    let mut path = KinematicPath::<_>::new(mech, 0.0)?;
+    let mut path = Followed::new(mech, reduced)?;
     let mut meter: EnergyMeter = EnergyMeter::new(info)?;
     let modes = mode_watch(mech, path.q())?;
     let mut phi_t = vec![0.0; info.n_constraints];
@@ -590,7 +650,7 @@ fn follow_path(
             (path.t(), path.q(), path.qd()),
             sample,
         )?;
-        rec.kinematic = Some(counted(&path, rec));
+        rec.kinematic = Some(counted(&path.path, rec));
         obs.output(rec)?;
         if obs.progress(path.t()).is_break() {
             return Err(ScenarioError::Interrupted { time: path.t() });

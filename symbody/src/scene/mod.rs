@@ -130,7 +130,7 @@ pub struct Scene {
     pub alpha: f64,
     /// Let the integrator pass singular positions ([`crate::generic::Options::cross_singular`]).
     pub cross_singular: bool,
-    /// Integrate the generated reduced model where there is one
-    /// ([`crate::generic::Options::reduce`]; `[solver] reduce = "auto"`).
+    /// Integrate, or follow by the kinematic path, the generated reduced model where there
+    /// is one ([`crate::generic::Options::reduce`]; `[solver] reduce = "auto"`).
     pub reduce: bool,
 }

@@ -347,7 +347,7 @@ fn check(
                     r.span(),
                     "[solver] `reduce`",
                     format!("unknown reduce `{other}`"),
-                    "use \"auto\" (integrate the generated reduced model where there is one) or \"off\"",
+                    "use \"auto\" (run the generated reduced model where there is one) or \"off\"",
                 ));
                 false
             }
