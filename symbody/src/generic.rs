@@ -519,7 +519,7 @@ pub fn run_kinematic_observed(
 fn advance(path: &mut Followed, t: f64, rec: &mut Recording) -> Result<(), Error> {
     let advanced = path.advance_to(t);
     rec.kinematic = Some(counted(&path.path, rec));
-    Ok(advanced?)
+    advanced
 }
 
 /// The path's counters with `outputs` the outputs recorded: the quadrature's interior
