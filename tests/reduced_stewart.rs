@@ -163,11 +163,13 @@ fn the_kinematic_path_on_the_reduced_model_records_the_full_models_series() {
     let lower = force(|r, k| r.lower[k].as_flattened());
     let act = force(|r, k| &r.actuators[k]);
     let pose = force(|r, k| &r.platform[k]);
+    let energy = force(|r, k| std::slice::from_ref(&r.energy[k]));
     assert!(
         upper.max(lower).max(act) <= 1e-10,
         "{upper:e} {lower:e} {act:e}"
     );
     assert!(pose <= 1e-12, "{pose:e}");
+    assert!(energy <= 1e-12, "energy {energy:e} J");
     assert!(red.max_phi <= 1e-14, "{:e}", red.max_phi);
     assert!(
         red.max_velocity_residual <= 1e-12,

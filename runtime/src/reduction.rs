@@ -4,7 +4,7 @@
 //! eliminated coordinates' equations of motion of the full model.
 
 use crate::error::{check_len, Error};
-use crate::kinematics::{inf_norm, mass_times};
+use crate::kinematics::{inf_norm, kinetic_energy, mass_times};
 use crate::mechanism::{Mechanism, MechanismInfo};
 
 /// One eliminated row: `q[coord] = weight · q[target] + c(t)`, where the row's derivative with
@@ -139,6 +139,11 @@ impl FullState {
     /// |Φ|∞ of the full model at the last state read (redundant rows included).
     pub fn position_residual(&self) -> f64 {
         inf_norm(&self.phi)
+    }
+
+    /// Kinetic plus potential energy of `full`, the full model, at the last state read (J).
+    pub fn energy<M: Mechanism + ?Sized>(&self, full: &M) -> f64 {
+        kinetic_energy(full.info(), &self.mass, &self.qd) + full.potential(&self.q)
     }
 
     /// Reads the reduced state `(q, q̇, q̈)` at `t` with the reduced rows' multipliers

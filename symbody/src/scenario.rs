@@ -315,7 +315,7 @@ pub fn kinematic_until<M: Mechanism + Sync>(
             }
             Ok(run)
         });
-        let mut batch = Batch::new(path.info());
+        let mut batch = Batch::new(path.info(), reduced.is_some());
         let followed = (|| -> Result<(), ScenarioError> {
             for k in 0..=n_out {
                 if stop.load(Ordering::Relaxed) {
@@ -328,7 +328,7 @@ pub fn kinematic_until<M: Mechanism + Sync>(
                 if batch.t.len() == BATCH {
                     let next = emptied
                         .try_recv()
-                        .unwrap_or_else(|_| Batch::new(path.info()));
+                        .unwrap_or_else(|_| Batch::new(path.info(), reduced.is_some()));
                     // A closed channel: the recorder stopped, with the run's error.
                     if to_recorder
                         .send(std::mem::replace(&mut batch, next))
@@ -365,6 +365,9 @@ const BATCH: usize = 16;
 struct Batch {
     /// The followed model's.
     info: &'static MechanismInfo,
+    /// The path follows a reduced model: the recording thread evaluates Φq, Φt and the
+    /// energy on the full one, so the path's are not kept.
+    reduced: bool,
     t: Vec<f64>,
     q: Vec<f64>,
     qd: Vec<f64>,
@@ -377,9 +380,10 @@ struct Batch {
 }
 
 impl Batch {
-    fn new(info: &'static MechanismInfo) -> Self {
+    fn new(info: &'static MechanismInfo, reduced: bool) -> Self {
         Batch {
             info,
+            reduced,
             t: Vec::new(),
             q: Vec::new(),
             qd: Vec::new(),
@@ -398,10 +402,12 @@ impl Batch {
         self.qd.extend_from_slice(path.qd());
         self.qdd.extend_from_slice(path.qdd());
         self.lambda.extend_from_slice(path.lambda());
-        self.phi_q.extend_from_slice(path.phi_q());
-        self.phi_t.extend_from_slice(path.phi_t());
         self.position_residual.push(path.position_residual());
-        self.energy.push(path.energy());
+        if !self.reduced {
+            self.phi_q.extend_from_slice(path.phi_q());
+            self.phi_t.extend_from_slice(path.phi_t());
+            self.energy.push(path.energy());
+        }
     }
 
     /// Output `k`'s state `(q, q̇, q̈, λ)`.
@@ -440,14 +446,8 @@ impl Batch {
         let position = reading.position_residual().max(self.position_residual[k]);
         let r = &*reading;
         let state = [&r.q[..], &r.qd, &r.lambda, &r.phi_q, &r.phi_t];
-        Ok(Output::new(
-            full.info(),
-            t,
-            state,
-            position,
-            self.energy[k],
-            work,
-        ))
+        let energy = reading.energy(full);
+        Ok(Output::new(full.info(), t, state, position, energy, work))
     }
 
     fn clear(&mut self) {
