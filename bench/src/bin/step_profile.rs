@@ -171,7 +171,7 @@ fn main() {
         info.n_coords + info.n_constraints,
         info.phi_q_nnz(),
         info.mass_nnz(),
-        schur.factor_nnz()
+        loops.factor_nnz()
     );
     let _ = writeln!(md, "| solver | factor (µs) | solve (µs) |");
     let _ = writeln!(md, "|---|---|---|");

@@ -140,13 +140,14 @@ pub struct SchurPlan<'a> {
 
 impl SchurKkt {
     /// Number of structural nonzeros of the factor `L` (strict lower triangle); 0 when a
-    /// semi-definite `M` is solved densely.
+    /// semi-definite `M` is solved densely or the generated kernels run.
     pub fn factor_nnz(&self) -> usize {
         self.lval.len()
     }
 
     /// Sizes of the detected diagonal blocks of `M` (connected components of its pattern),
-    /// in order of their first coordinate; empty when a semi-definite `M` is solved densely.
+    /// in order of their first coordinate; empty when a semi-definite `M` is solved densely or
+    /// the generated kernels run (no analysis is made then).
     pub fn block_sizes(&self) -> Vec<usize> {
         self.component_sizes.clone()
     }
@@ -161,9 +162,10 @@ impl SchurKkt {
         self.kernels.is_some()
     }
 
-    /// The symbolic analysis, for the generator; `None` when `M` is solved densely.
+    /// The symbolic analysis, for the generator; `None` when `M` is solved densely or the
+    /// generated kernels run.
     pub fn plan(&self) -> Option<SchurPlan<'_>> {
-        self.dense.is_none().then_some(SchurPlan {
+        (self.dense.is_none() && self.kernels.is_none()).then_some(SchurPlan {
             block_ptr: &self.block_ptr,
             block_coords: &self.block_coords,
             chol_off: &self.chol_off,
@@ -186,9 +188,14 @@ impl SchurKkt {
         })
     }
 
-    /// The solver for a semi-definite `M`: a [`DenseKkt`] and nothing else.
-    fn dense(pattern: &KktPattern) -> Result<Self, Error> {
-        Ok(SchurKkt {
+    /// A solver without the symbolic analysis: the dense LU for a semi-definite `M`, or the
+    /// generator's kernels for this pattern, which carry their own.
+    fn without_analysis(
+        pattern: &KktPattern,
+        dense: Option<Box<DenseKkt>>,
+        kernels: Option<&'static KktKernels>,
+    ) -> Self {
+        SchurKkt {
             n: pattern.n,
             m: pattern.m,
             component_sizes: Vec::new(),
@@ -221,10 +228,10 @@ impl SchurKkt {
             pivot_tol: DEFAULT_PIVOT_TOLERANCE,
             drop_dependent: false,
             pivots: Pivots::default(),
-            dense: Some(Box::new(DenseKkt::new(pattern)?)),
-            kernels: None,
-            state: Vec::new(),
-        })
+            dense,
+            kernels,
+            state: vec![0.0; kernels.map_or(0, |k| k.storage)],
+        }
     }
 }
 
@@ -468,7 +475,14 @@ impl KktSolver for SchurKkt {
     fn new(pattern: &KktPattern) -> Result<Self, Error> {
         pattern.validate()?;
         if pattern.mass_semidefinite {
-            return Self::dense(pattern);
+            let dense = Box::new(DenseKkt::new(pattern)?);
+            return Ok(Self::without_analysis(pattern, Some(dense), None));
+        }
+        // Generated kernels were emitted for this pattern's own analysis: the ordering and
+        // slot tables below would go unused (1.3 M instructions for the Stewart model).
+        let fingerprint = pattern.fingerprint();
+        if let Some(kernels) = pattern.kernels.iter().find(|k| k.pattern == fingerprint) {
+            return Ok(Self::without_analysis(pattern, None, Some(kernels)));
         }
         let (n, m) = (pattern.n, pattern.m);
 
@@ -687,8 +701,6 @@ impl KktSolver for SchurKkt {
             "update slots lie in the factor"
         );
         let redundant = sym.perm.iter().map(|&r| is_redundant[r]).collect();
-        let fingerprint = pattern.fingerprint();
-        let kernels = pattern.kernels.iter().find(|k| k.pattern == fingerprint);
         Ok(SchurKkt {
             n,
             m,
@@ -723,8 +735,8 @@ impl KktSolver for SchurKkt {
             drop_dependent: false,
             pivots: Pivots::default(),
             dense: None,
-            kernels,
-            state: vec![0.0; kernels.map_or(0, |k| k.storage)],
+            kernels: None,
+            state: Vec::new(),
         })
     }
 
@@ -733,15 +745,16 @@ impl KktSolver for SchurKkt {
             return d.factor(mass, mass_scale, phi_q);
         }
         self.factored = false;
-        check_kkt_len(self.mass_dest.len(), mass.len())?;
-        check_kkt_len(self.phi_q_dest.len(), phi_q.len())?;
         if let Some(kernels) = self.kernels {
+            // The kernels check the lengths themselves.
             let mut pivoting = Pivoting::new(self.pivot_tol, self.drop_dependent);
             (kernels.factor)(mass, mass_scale, phi_q, &mut self.state, &mut pivoting)?;
             self.pivots = pivoting.finish()?;
             self.factored = true;
             return Ok(());
         }
+        check_kkt_len(self.mass_dest.len(), mass.len())?;
+        check_kkt_len(self.phi_q_dest.len(), phi_q.len())?;
 
         // Per group: Cholesky of c·M_b (lower triangle, row-major), W_b = L_b⁻¹ Φq_bᵀ and
         // S += W_bᵀ W_b.
