@@ -128,17 +128,20 @@ fn the_paper_scenario_on_the_reduced_model_records_the_same_series() {
         simulate(&symbody_benchmark_mechanisms::REGISTRY, &opts).unwrap(),
         simulate_reduced(&symbody_benchmark_mechanisms::REGISTRY, &opts).unwrap(),
     );
-    let force =
-        |f: fn(&symbody::scenario::Run, usize) -> &[f64]| red.max_difference(&full, f).unwrap().0;
-    let upper = force(|r, k| r.upper[k].as_flattened());
-    let lower = force(|r, k| r.lower[k].as_flattened());
-    let act = force(|r, k| &r.actuators[k]);
-    let pose = force(|r, k| &r.platform[k]);
-    assert!(
-        upper.max(lower).max(act) <= 1e-10,
-        "{upper:e} {lower:e} {act:e}"
-    );
+    let (forces, pose, _) = differences(&red, &full);
+    assert!(forces <= 1e-10, "forces {forces:e} N");
     assert!(pose <= 1e-12, "{pose:e}");
+}
+
+/// The largest differences of two runs' recorded forces (N), platform pose and energy (J).
+fn differences(a: &symbody::scenario::Run, b: &symbody::scenario::Run) -> (f64, f64, f64) {
+    let most = |f: fn(&symbody::scenario::Run, usize) -> &[f64]| a.max_difference(b, f).unwrap().0;
+    let forces = most(|r, k| r.upper[k].as_flattened())
+        .max(most(|r, k| r.lower[k].as_flattened()))
+        .max(most(|r, k| &r.actuators[k]));
+    let pose = most(|r, k| &r.platform[k]);
+    let energy = most(|r, k| std::slice::from_ref(&r.energy[k]));
+    (forces, pose, energy)
 }
 
 /// The paper's kinematic path followed on the reduced model (what `scenes/paper.toml` runs)
@@ -157,17 +160,8 @@ fn the_kinematic_path_on_the_reduced_model_records_the_full_models_series() {
     let (full, red) = (run(None), run(Some((&reduced::Exact, &reduced::REDUCTION))));
     assert_eq!((full.reduced, red.reduced), (None, Some(60)));
     assert_eq!(red.t.len(), 101);
-    let force =
-        |f: fn(&symbody::scenario::Run, usize) -> &[f64]| red.max_difference(&full, f).unwrap().0;
-    let upper = force(|r, k| r.upper[k].as_flattened());
-    let lower = force(|r, k| r.lower[k].as_flattened());
-    let act = force(|r, k| &r.actuators[k]);
-    let pose = force(|r, k| &r.platform[k]);
-    let energy = force(|r, k| std::slice::from_ref(&r.energy[k]));
-    assert!(
-        upper.max(lower).max(act) <= 1e-10,
-        "{upper:e} {lower:e} {act:e}"
-    );
+    let (forces, pose, energy) = differences(&red, &full);
+    assert!(forces <= 1e-10, "forces {forces:e} N");
     assert!(pose <= 1e-12, "{pose:e}");
     assert!(energy <= 1e-12, "energy {energy:e} J");
     assert!(red.max_phi <= 1e-14, "{:e}", red.max_phi);
