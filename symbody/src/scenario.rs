@@ -286,11 +286,14 @@ pub fn kinematic_until<M: Mechanism + Sync>(
         Some((_, reduction)) => Some(FullState::new(reduction, info)?),
         None => None,
     };
-    let mut q0 = path.q().to_vec();
-    if let Some((_, reduction)) = reduced {
-        q0.resize(info.n_coords, 0.0);
-        reduction.expand(path.q(), path.t(), 0, &mut q0)?;
-    }
+    let q0 = match reduced {
+        Some((_, reduction)) => {
+            let mut q = vec![0.0; info.n_coords];
+            reduction.expand(path.q(), path.t(), 0, &mut q)?;
+            q
+        }
+        None => path.q().to_vec(),
+    };
     let modes = ModeWatch::new(&Platform::new(&mech)?, &q0, SIMULATION_MAX_CONDITION)?;
     let (to_recorder, solved) = mpsc::sync_channel::<Batch>(4);
     let (to_path, emptied) = mpsc::channel::<Batch>();
