@@ -5,7 +5,8 @@
 
 use crate::error::{check_len, Error};
 use crate::kinematics::{inf_norm, kinetic_energy, mass_times};
-use crate::mechanism::{Mechanism, MechanismInfo};
+use crate::mechanism::{Mechanism, MechanismInfo, NewtonOutputs};
+use crate::watch::{velocity_residual, Residuals};
 
 /// One eliminated row: `q[coord] = weight · q[target] + c(t)`, where the row's derivative with
 /// respect to `q[coord]` is `slope`.
@@ -86,6 +87,8 @@ impl Reduction {
 #[derive(Debug, Clone)]
 pub struct FullState {
     reduction: &'static Reduction,
+    /// The full model's.
+    info: &'static MechanismInfo,
     pub q: Vec<f64>,
     pub qd: Vec<f64>,
     pub qdd: Vec<f64>,
@@ -97,13 +100,15 @@ pub struct FullState {
     force: Vec<f64>,
     m_qdd: Vec<f64>,
     offsets: Vec<f64>,
+    /// Φq q̇ + Φt.
+    velocity: Vec<f64>,
     /// For each substitution: the Φq nonzeros in its coordinate's column on other rows.
     coupling: Vec<Vec<usize>>,
 }
 
 impl FullState {
     /// The work memory for reading `reduction`'s states in terms of `full`, its full model.
-    pub fn new(reduction: &'static Reduction, full: &MechanismInfo) -> Result<Self, Error> {
+    pub fn new(reduction: &'static Reduction, full: &'static MechanismInfo) -> Result<Self, Error> {
         check_len("full model coordinates", reduction.n_full, full.n_coords)?;
         check_len("full model rows", reduction.m_full, full.n_constraints)?;
         let (n, m) = (full.n_coords, full.n_constraints);
@@ -121,6 +126,7 @@ impl FullState {
             .collect();
         Ok(FullState {
             reduction,
+            info: full,
             q: vec![0.0; n],
             qd: vec![0.0; n],
             qdd: vec![0.0; n],
@@ -132,13 +138,25 @@ impl FullState {
             force: vec![0.0; n],
             m_qdd: vec![0.0; n],
             offsets: vec![0.0; 3 * reduction.substitutions.len()],
+            velocity: vec![0.0; m],
             coupling,
         })
     }
 
-    /// |Φ|∞ of the full model at the last state read (redundant rows included).
-    pub fn position_residual(&self) -> f64 {
-        inf_norm(&self.phi)
+    /// The full model's drift at the last state read: |Φ|∞ (redundant rows included), or
+    /// `followed`, the reduced model's own |Φ|∞ there, where that is larger; and
+    /// |Φq q̇ + Φt|∞.
+    pub fn residuals(&mut self, followed: f64) -> Residuals {
+        Residuals {
+            position: inf_norm(&self.phi).max(followed),
+            velocity: velocity_residual(
+                self.info,
+                &self.phi_q,
+                &self.phi_t,
+                &self.qd,
+                &mut self.velocity,
+            ),
+        }
     }
 
     /// Kinetic plus potential energy of `full`, the full model, at the last state read (J).
@@ -161,19 +179,33 @@ impl FullState {
         qdd: &[f64],
         lambda: &[f64],
     ) -> Result<(), Error> {
-        let r = self.reduction;
-        let info = full.info();
-        check_len("full model coordinates", self.q.len(), info.n_coords)?;
+        let (r, info) = (self.reduction, self.info);
+        let given = full.info();
+        check_len("full model coordinates", info.n_coords, given.n_coords)?;
+        check_len("full model rows", info.n_constraints, given.n_constraints)?;
+        check_len(
+            "full model Φq nonzeros",
+            info.phi_q_nnz(),
+            given.phi_q_nnz(),
+        )?;
+        check_len(
+            "full model mass nonzeros",
+            info.mass_nnz(),
+            given.mass_nnz(),
+        )?;
         check_len("reduced multipliers", r.rows.len(), lambda.len())?;
         (r.offsets)(t, &mut self.offsets);
         r.expand_with(q, &self.offsets, 0, &mut self.q)?;
         r.expand_with(qd, &self.offsets, 1, &mut self.qd)?;
         r.expand_with(qdd, &self.offsets, 2, &mut self.qdd)?;
-        full.phi(&self.q, t, &mut self.phi);
-        full.phi_q(&self.q, t, &mut self.phi_q);
+        let out = NewtonOutputs {
+            phi: &mut self.phi,
+            phi_q: &mut self.phi_q,
+            mass: &mut self.mass,
+            force: &mut self.force,
+        };
+        full.eval_newton(&self.q, &self.qd, t, out);
         full.phi_t(&self.q, t, &mut self.phi_t);
-        full.mass(&self.q, &mut self.mass);
-        full.force(&self.q, &self.qd, t, &mut self.force);
         mass_times(info, &self.mass, &self.qdd, &mut self.m_qdd);
         self.lambda.fill(0.0);
         for (k, &row) in r.rows.iter().enumerate() {

@@ -10,10 +10,10 @@ use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
-    body_pose, driver_effort, joint_wrench, velocity_residual, EnergyMeter, EnergySample, Entry,
-    EulerWarning, Formulation, FullState, HhtBuilder, Integrator, JointKind, KinematicPath,
-    KinematicSettings, Mechanism, MechanismInfo, PathStats, Pivots, Registry, ResidualWatch,
-    Residuals, Rotation, Stats, Wrench,
+    body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, Entry, EulerWarning,
+    Formulation, FullState, HhtBuilder, Integrator, JointKind, KinematicPath, KinematicSettings,
+    Mechanism, MechanismInfo, PathStats, Pivots, Registry, ResidualWatch, Residuals, Rotation,
+    Stats, Wrench,
 };
 
 /// Why a run could not be made: an option out of range or not available for the mechanism
@@ -361,6 +361,18 @@ pub fn run_observed(
     observed(entry, opts, obs, integrate)
 }
 
+/// `entry`'s generated reduced model of `mech`'s formulation when `reduce` asks for it and
+/// there is one ([`Options::reduce`]).
+pub fn reduced_model(
+    entry: &Entry,
+    mech: &'static (dyn Mechanism + Sync),
+    reduce: bool,
+) -> Option<Reduced> {
+    reduce
+        .then(|| entry.reduced(mech.info().formulation))
+        .flatten()
+}
+
 /// An error unless `entry` has a generated reduced model in formulation `f` (its default):
 /// for an explicit request (`--reduced`), where [`Options::reduce`] alone falls back to the
 /// full model.
@@ -408,10 +420,7 @@ fn observed(
     let t_end = opts.t_end.unwrap_or(entry.t_end);
     let n_out = output_count(t_end, opts.output_step)?;
     let mut rec = Recording::new(mech.info());
-    let reduced = match opts.reduce {
-        true => entry.reduced(mech.info().formulation),
-        false => None,
-    };
+    let reduced = reduced_model(entry, mech, opts.reduce);
     rec.reduced = reduced.map(|(r, _)| r.info().n_coords);
     obs.start(&mut rec)?;
     let start = Instant::now();
@@ -536,8 +545,6 @@ fn counted<M: Mechanism>(path: &KinematicPath<M>, rec: &Recording) -> PathStats 
 struct Followed {
     path: KinematicPath<&'static (dyn Mechanism + Sync)>,
     full: Option<(&'static (dyn Mechanism + Sync), FullState)>,
-    /// Φq q̇ + Φt of the full model.
-    work: Vec<f64>,
 }
 
 impl Followed {
@@ -549,7 +556,6 @@ impl Followed {
                 Some((_, reduction)) => Some((mech, FullState::new(reduction, info)?)),
                 None => None,
             },
-            work: vec![0.0; info.n_constraints],
         };
         followed.read()?;
         Ok(followed)
@@ -585,15 +591,11 @@ impl Followed {
             .map_or(self.path.lambda(), |(_, f)| &f.lambda)
     }
 
-    /// The full model's drift: on the reduced model, the larger of the path's |Φ| and the
-    /// full model's at the state read back, and the full model's velocity residual there.
+    /// The full model's drift at the state (on the reduced model, at the state read back).
     fn residuals(&mut self) -> Residuals {
-        match &self.full {
+        match &mut self.full {
             None => self.path.residuals(),
-            Some((mech, f)) => Residuals {
-                position: f.position_residual().max(self.path.position_residual()),
-                velocity: velocity_residual(mech.info(), &f.phi_q, &f.phi_t, &f.qd, &mut self.work),
-            },
+            Some((_, f)) => f.residuals(self.path.position_residual()),
         }
     }
 }

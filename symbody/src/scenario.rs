@@ -307,7 +307,7 @@ pub fn kinematic_until<M: Mechanism + Sync>(
                 for k in 0..batch.t.len() {
                     let out = match &mut reading {
                         None => batch.output(k, &mut velocity),
-                        Some(full) => batch.read(k, mech, full, &mut velocity)?,
+                        Some(full) => batch.read(k, mech, full)?,
                     };
                     modes.check(out.q, out.t)?;
                     record(layout, info, out, &mut run)?;
@@ -429,28 +429,44 @@ impl Batch {
         let (m, nnz) = (self.info.n_constraints, self.info.phi_q_nnz());
         let [q, qd, _, lambda] = self.state(k);
         let (phi_q, phi_t) = (&self.phi_q[k * nnz..][..nnz], &self.phi_t[k * m..][..m]);
-        let state = [q, qd, lambda, phi_q, phi_t];
-        let (position, energy) = (self.position_residual[k], self.energy[k]);
-        Output::new(self.info, self.t[k], state, position, energy, work)
+        Output {
+            t: self.t[k],
+            q,
+            qd,
+            lambda,
+            phi_q,
+            phi_t,
+            residuals: Residuals {
+                position: self.position_residual[k],
+                velocity: velocity_residual(self.info, phi_q, phi_t, qd, work),
+            },
+            energy: self.energy[k],
+        }
     }
 
-    /// Output `k` of a path on a reduced model, read in `full`'s terms by `reading`; the
-    /// position residual is the larger of the path's and the full model's at the state.
+    /// Output `k` of a path on a reduced model, read in `full`'s terms by `reading`.
     fn read<'a, M: Mechanism + ?Sized>(
         &self,
         k: usize,
         full: &M,
         reading: &'a mut FullState,
-        work: &mut [f64],
     ) -> Result<Output<'a>, Error> {
         let [q, qd, qdd, lambda] = self.state(k);
         let t = self.t[k];
         reading.read(full, t, q, qd, qdd, lambda)?;
-        let position = reading.position_residual().max(self.position_residual[k]);
-        let r = &*reading;
-        let state = [&r.q[..], &r.qd, &r.lambda, &r.phi_q, &r.phi_t];
+        let residuals = reading.residuals(self.position_residual[k]);
         let energy = reading.energy(full);
-        Ok(Output::new(full.info(), t, state, position, energy, work))
+        let r = &*reading;
+        Ok(Output {
+            t,
+            q: &r.q,
+            qd: &r.qd,
+            lambda: &r.lambda,
+            phi_q: &r.phi_q,
+            phi_t: &r.phi_t,
+            residuals,
+            energy,
+        })
     }
 
     fn clear(&mut self) {
@@ -516,33 +532,6 @@ struct Output<'a> {
     residuals: Residuals,
     /// Kinetic plus potential energy (J).
     energy: f64,
-}
-
-impl<'a> Output<'a> {
-    /// The output at `t` of the state `[q, q̇, λ, Φq, Φt]` with its position residual, its
-    /// velocity residual computed into `work`.
-    fn new(
-        info: &MechanismInfo,
-        t: f64,
-        [q, qd, lambda, phi_q, phi_t]: [&'a [f64]; 5],
-        position: f64,
-        energy: f64,
-        work: &mut [f64],
-    ) -> Self {
-        Output {
-            t,
-            q,
-            qd,
-            lambda,
-            phi_q,
-            phi_t,
-            residuals: Residuals {
-                position,
-                velocity: velocity_residual(info, phi_q, phi_t, qd, work),
-            },
-            energy,
-        }
-    }
 }
 
 /// Number of output intervals of `t_end` at `output_step` (outputs at 0, Δ, …, t_end),

@@ -232,10 +232,7 @@ fn run_paper(
             }
             choice
         });
-        let reduced = scene
-            .reduce
-            .then(|| entry.reduced(mech.info().formulation))
-            .flatten();
+        let reduced = generic::reduced_model(entry, mech, scene.reduce);
         let kinematic = scenario::kinematic_until(mech, reduced, &opts, &integrate);
         let choice = chooser
             .join()
