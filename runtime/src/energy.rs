@@ -49,6 +49,14 @@ pub struct EnergyMeter<K: KktSolver = SchurKkt> {
     /// Time of the last record (`None` before the first).
     last: Option<f64>,
     work: RunningIntegral,
+    /// Power at the last record.
+    power: f64,
+    /// `qdd` and `lambda` belong to the last record's state.
+    solved: bool,
+    /// Some row may depend on time (a driver, or rows no joint describes), so the
+    /// constraint power `λᵀΦt` needs λ at every record. Without, `Φt = 0` and records
+    /// between outputs ([`EnergyMeter::advance`]) need no saddle-point solve.
+    rheonomic: bool,
 }
 
 impl<K: KktSolver> EnergyMeter<K> {
@@ -71,6 +79,9 @@ impl<K: KktSolver> EnergyMeter<K> {
             lambda: vec![0.0; info.n_constraints],
             last: None,
             work: RunningIntegral::default(),
+            power: 0.0,
+            solved: false,
+            rheonomic: info.rows_may_depend_on_time(),
         })
     }
 
@@ -92,7 +103,24 @@ impl<K: KktSolver> EnergyMeter<K> {
         q: &[f64],
         qd: &[f64],
     ) -> Result<EnergySample, Error> {
+        self.advance(mech, t, q, qd)?;
+        self.sample(mech, q, qd)
+    }
+
+    /// Integrates the power up to the state `(q, q̇)` at time `t` (not before the last
+    /// record's time), as [`EnergyMeter::record`] does, without the energies: for the
+    /// steps between outputs, where the work must be integrated at the step but nothing is
+    /// recorded. Where no row depends on time the constraint power is zero and this solves
+    /// nothing; [`EnergyMeter::sample`] then solves at the output's state only.
+    pub fn advance<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+    ) -> Result<(), Error> {
         let info = self.info;
+        check_len("mechanism coordinates", info.n_coords, mech.info().n_coords)?;
         check_len("q", info.n_coords, q.len())?;
         check_len("qd", info.n_coords, qd.len())?;
         if !t.is_finite() {
@@ -111,25 +139,71 @@ impl<K: KktSolver> EnergyMeter<K> {
                 });
             }
         }
-        // Checks the mechanism against `info` too.
-        self.kin
-            .acceleration(mech, t, q, qd, &mut self.qdd, &mut self.lambda)?;
-        let power = power(mech, t, q, qd, &self.lambda, &mut self.phi_t);
-        let kinetic = kinetic_energy(info, self.kin.mass(), qd);
-        let potential = mech.potential(q);
-        if !(kinetic.is_finite() && potential.is_finite() && power.is_finite()) {
+        self.solved = false;
+        let power = if self.rheonomic {
+            self.solve(mech, t, q, qd)?;
+            power(mech, t, q, qd, &self.lambda, &mut self.phi_t)
+        } else {
+            // Φt = 0 on every row: λᵀΦt is zero whatever λ is (the sum above would add
+            // exact zeros), so the power is the loads' alone.
+            mech.power_nc(q, qd, t)
+        };
+        if !power.is_finite() {
             return Err(Error::NotFinite {
                 time: t,
                 what: "energy or power",
             });
         }
         self.last = Some(t);
+        self.power = power;
+        self.work.push(t, power);
+        Ok(())
+    }
+
+    /// The energies at the last record's state, which `(q, q̇)` must be, and its `q̈` and λ
+    /// (solved here unless that record solved them).
+    pub fn sample<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        q: &[f64],
+        qd: &[f64],
+    ) -> Result<EnergySample, Error> {
+        let t = self.last.ok_or(Error::InvalidSetting {
+            name: "t",
+            value: f64::NAN,
+            reason: "no state recorded yet: advance or record first",
+        })?;
+        if !self.solved {
+            self.solve(mech, t, q, qd)?;
+        }
+        let kinetic = kinetic_energy(self.info, self.kin.mass(), qd);
+        let potential = mech.potential(q);
+        if !(kinetic.is_finite() && potential.is_finite()) {
+            return Err(Error::NotFinite {
+                time: t,
+                what: "energy or power",
+            });
+        }
         Ok(EnergySample {
             kinetic,
             potential,
-            work: self.work.push(t, power),
-            power,
+            work: self.work.value(),
+            power: self.power,
         })
+    }
+
+    /// `q̈` and λ at the state; checks the mechanism against `info` too.
+    fn solve<M: Mechanism>(
+        &mut self,
+        mech: &M,
+        t: f64,
+        q: &[f64],
+        qd: &[f64],
+    ) -> Result<(), Error> {
+        self.kin
+            .acceleration(mech, t, q, qd, &mut self.qdd, &mut self.lambda)?;
+        self.solved = true;
+        Ok(())
     }
 
     /// Multipliers λ at the last recorded state (`M q̈ + Φqᵀλ = Q`).
@@ -254,5 +328,57 @@ mod tests {
         assert!(meter.record(&mech, 0.6, &q[..5], &qd).is_err());
         meter.reset();
         assert_eq!(meter.record(&mech, 0.0, q, &qd).unwrap().work, 0.0);
+    }
+
+    /// Between outputs `advance` integrates the power without solving where no row depends
+    /// on time: at the outputs the energies, work, q̈ and λ are those of a meter that records
+    /// (and solves) at every step, bit for bit (the skipped constraint power is a sum of
+    /// exact zeros). A driven model solves at every step either way.
+    #[test]
+    fn advancing_between_outputs_records_what_recording_every_step_does() {
+        fn compare<M: Mechanism + Copy>(mech: M, q0: &[f64], qd0: &[f64]) {
+            let mut hht = HhtBuilder::new()
+                .step(1e-3)
+                .q0(q0)
+                .qd0(qd0)
+                .build(mech)
+                .unwrap();
+            let mut every = EnergyMeter::<SchurKkt>::new(mech.info()).unwrap();
+            let mut between = EnergyMeter::<SchurKkt>::new(mech.info()).unwrap();
+            let (mut some_work, mut records) = (0.0f64, 0);
+            for k in 0..=300 {
+                if k > 0 {
+                    hht.step().unwrap();
+                }
+                let (t, q, qd) = (hht.t(), hht.q(), hht.qd());
+                let expected = every.record(&mech, t, q, qd).unwrap();
+                between.advance(&mech, t, q, qd).unwrap();
+                if k % 10 == 0 {
+                    assert_eq!(between.sample(&mech, q, qd).unwrap(), expected, "t = {t}");
+                    assert_eq!(between.lambda(), every.lambda());
+                    assert_eq!(between.qdd(), every.qdd());
+                    some_work = some_work.max(expected.work.abs());
+                    records += 1;
+                }
+            }
+            assert_eq!(records, 31);
+            if mech.info().rows_may_depend_on_time() {
+                assert!(some_work > 1e-3, "the driver does work: {some_work}");
+            }
+        }
+        assert!(!Pendulum::exact().info().rows_may_depend_on_time());
+        let q0 = [0.0, 0.0, 0.0, 0.5, 0.1, -0.4];
+        compare(Pendulum::exact(), &q0, &[0.0, 0.0, 0.0, 0.0, 0.5, 0.0]);
+        assert!(CircleDriver.info().rows_may_depend_on_time());
+        let q0 = CircleDriver.info().q0;
+        compare(CircleDriver, q0, &[0.0, -0.125, 0.0, 0.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn a_sample_needs_a_state_first() {
+        let mech = CircleDriver;
+        let mut meter = EnergyMeter::<SchurKkt>::new(mech.info()).unwrap();
+        let (q, qd) = (mech.info().q0, [0.0, -0.125, 0.0, 0.0, 0.0, 0.0]);
+        assert!(meter.sample(&mech, q, &qd).is_err());
     }
 }

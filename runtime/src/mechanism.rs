@@ -219,6 +219,13 @@ impl MechanismInfo {
     pub fn mass_nnz(&self) -> usize {
         self.mass_rows.len()
     }
+    /// Whether a row of Φ may depend on time, so that Φt may be nonzero: a driver (the only
+    /// joint kind that does), or rows its joints do not all describe (a hand-written model),
+    /// where nothing is known.
+    pub fn rows_may_depend_on_time(&self) -> bool {
+        let described: usize = self.joints.iter().map(|j| j.rows).sum();
+        described != self.n_constraints || self.joints.iter().any(|j| j.kind == JointKind::Driver)
+    }
     /// The joint owning constraint row `row`.
     pub fn joint_of_row(&self, row: usize) -> Option<&JointInfo> {
         self.joints
