@@ -70,7 +70,9 @@ pub use mechanism::{
 pub use pose::{
     angular_velocity, angular_velocity_jacobian, body_pose, point_world, rotation_matrix,
 };
-pub use reactions::{actuator_force, driver_effort, joint_force, joint_wrench, Wrench};
+pub use reactions::{
+    actuator_force, driver_effort, joint_force, joint_wrench, ForceOnBody, Wrench,
+};
 pub use reduction::{FullState, Reduction, Substitution};
 pub use registry::{source_hash, Entry, Origin, Registry};
 pub use watch::{velocity_residual, EulerLimits, EulerWarning, ResidualWatch, Residuals};

@@ -160,6 +160,7 @@ pub fn driver_effort(info: &MechanismInfo, lambda: &[f64], joint: usize) -> Resu
 /// `Φᵏ_{r_i}` are the joint's rows of `Φq` in the body's three translational columns.
 ///
 /// `phi_q` holds the Jacobian's nonzeros at the state the multipliers `lambda` belong to.
+/// A recording that asks at every output finds the entries once with [`ForceOnBody`].
 pub fn joint_force(
     info: &MechanismInfo,
     phi_q: &[f64],
@@ -167,35 +168,64 @@ pub fn joint_force(
     joint: usize,
     body: usize,
 ) -> Result<[f64; 3], Error> {
-    check_len("Φq nonzeros", info.phi_q_nnz(), phi_q.len())?;
-    check_len("lambda", info.n_constraints, lambda.len())?;
-    let j = info.joints.get(joint).ok_or(Error::InvalidIndex {
-        what: "joint",
-        index: joint,
-        reason: "no such joint",
-    })?;
-    let b = info.bodies.get(body).ok_or(Error::InvalidIndex {
-        what: "body",
-        index: body,
-        reason: "no such body",
-    })?;
-    if j.body1 != Some(body) && j.body2 != Some(body) {
-        return Err(Error::InvalidIndex {
+    ForceOnBody::new(info, joint, body)?.force(phi_q, lambda)
+}
+
+/// [`joint_force`] with the joint's Φq entries in the body's columns found once.
+#[derive(Debug, Clone)]
+pub struct ForceOnBody {
+    /// The mechanism's sizes, to check the arrays given.
+    nnz: usize,
+    n_constraints: usize,
+    /// `(nonzero, row, component)` of each entry, in the pattern's order.
+    terms: Vec<(usize, usize, usize)>,
+}
+
+impl ForceOnBody {
+    /// The force of joint `joint` on body `body`, which it must connect.
+    pub fn new(info: &MechanismInfo, joint: usize, body: usize) -> Result<Self, Error> {
+        let j = info.joints.get(joint).ok_or(Error::InvalidIndex {
+            what: "joint",
+            index: joint,
+            reason: "no such joint",
+        })?;
+        let b = info.bodies.get(body).ok_or(Error::InvalidIndex {
             what: "body",
             index: body,
-            reason: "the joint does not connect this body",
-        });
-    }
-    let rows = j.row_start..j.row_start + j.rows;
-    let cols = b.coord_offset..b.coord_offset + 3;
-    let mut f = [0.0; 3];
-    for k in rows_nonzeros(info, &rows) {
-        let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
-        if rows.contains(&r) && cols.contains(&c) {
-            f[c - cols.start] -= phi_q[k] * lambda[r];
+            reason: "no such body",
+        })?;
+        if j.body1 != Some(body) && j.body2 != Some(body) {
+            return Err(Error::InvalidIndex {
+                what: "body",
+                index: body,
+                reason: "the joint does not connect this body",
+            });
         }
+        let rows = j.row_start..j.row_start + j.rows;
+        let cols = b.coord_offset..b.coord_offset + 3;
+        let terms = rows_nonzeros(info, &rows)
+            .filter_map(|k| {
+                let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
+                (rows.contains(&r) && cols.contains(&c)).then_some((k, r, c - cols.start))
+            })
+            .collect();
+        Ok(ForceOnBody {
+            nnz: info.phi_q_nnz(),
+            n_constraints: info.n_constraints,
+            terms,
+        })
     }
-    Ok(f)
+
+    /// The force at the state whose Φq nonzeros and multipliers are given.
+    pub fn force(&self, phi_q: &[f64], lambda: &[f64]) -> Result<[f64; 3], Error> {
+        check_len("Φq nonzeros", self.nnz, phi_q.len())?;
+        check_len("lambda", self.n_constraints, lambda.len())?;
+        let mut f = [0.0; 3];
+        for &(k, r, c) in &self.terms {
+            f[c] -= phi_q[k] * lambda[r];
+        }
+        Ok(f)
+    }
 }
 
 /// The nonzeros of Φq that may lie in `rows`: in a row-major pattern (as `MechanismInfo`

@@ -134,8 +134,19 @@ pub fn velocity_residual(
     work: &mut [f64],
 ) -> f64 {
     work.copy_from_slice(phi_t);
-    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
-        work[r as usize] += v * qd[c as usize];
+    // Each run of one row's nonzeros (a row-major pattern is one run per row) is summed in a
+    // register rather than through `work`, in the same order.
+    let (rows, cols) = (info.phi_q_rows, info.phi_q_cols);
+    let n = rows.len().min(cols.len()).min(phi_q.len());
+    let mut k = 0;
+    while k < n {
+        let r = rows[k];
+        let mut sum = work[r as usize];
+        while k < n && rows[k] == r {
+            sum += phi_q[k] * qd[cols[k] as usize];
+            k += 1;
+        }
+        work[r as usize] = sum;
     }
     inf_norm(work)
 }

@@ -884,7 +884,10 @@ mod tests {
                 assert!(!moving, "{}: Φt ≠ 0 without a driver", entry.name);
             }
         }
-        assert!(with > 0 && without > 0, "{with} moved by drivers, {without} without");
+        assert!(
+            with > 0 && without > 0,
+            "{with} moved by drivers, {without} without"
+        );
     }
 
     /// Without drivers the integration loop's meter solves only at the outputs

@@ -6,7 +6,7 @@ use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
-    actuator_force, joint_force, velocity_residual, Entry, Error, Formulation, FullState,
+    actuator_force, velocity_residual, Entry, Error, ForceOnBody, Formulation, FullState,
     HhtBuilder, KinematicPath, Kinematics, Mechanism, MechanismInfo, PathStats, Reduction,
     Registry, ResidualWatch, Residuals, Stats,
 };
@@ -209,6 +209,29 @@ pub fn simulate(registry: &Registry, opts: &Options) -> Result<Run, ScenarioErro
     simulate_mechanism(platform(registry, opts.formulation)?, opts)
 }
 
+/// The recorded joint forces of a [`Layout`], their Φq entries found once.
+#[derive(Debug, Clone)]
+struct Forces {
+    /// On the platform at each upper joint, and on each lower leg at its base joint.
+    upper: [ForceOnBody; LEGS],
+    lower: [ForceOnBody; LEGS],
+}
+
+impl Forces {
+    fn new(info: &MechanismInfo, l: &Layout) -> Result<Self, Error> {
+        let on = |joint: [usize; LEGS], body: &dyn Fn(usize) -> usize| {
+            let forces = (0..LEGS)
+                .map(|i| ForceOnBody::new(info, joint[i], body(i)))
+                .collect::<Result<Vec<_>, _>>()?;
+            Ok::<_, Error>(forces.try_into().expect("one per leg"))
+        };
+        Ok(Forces {
+            upper: on(l.upper_joints, &|_| l.platform)?,
+            lower: on(l.lower_joints, &|i| l.lower_bodies[i])?,
+        })
+    }
+}
+
 /// Runs any mechanism with the Stewart platform's names (see [`Layout::find`]).
 pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
     let info = mech.info();
@@ -217,7 +240,8 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
     let start = Instant::now();
     let mut it = hht(opts).build(mech)?;
     let mut run = Run::default();
-    let mut recorder = Recorder::new(info, layout);
+    run.reserve(n_out + 1);
+    let mut recorder = Recorder::new(info, layout)?;
     // The platform's determinant sign is watched at the outputs: a pose that crossed a
     // parallel singularity between two outputs is on another assembly mode at the next.
     let modes = ModeWatch::new(
@@ -295,12 +319,14 @@ pub fn kinematic_until<M: Mechanism + Sync>(
         None => path.q().to_vec(),
     };
     let modes = ModeWatch::new(&Platform::new(&mech)?, &q0, SIMULATION_MAX_CONDITION)?;
+    let forces = Forces::new(info, &layout)?;
     let (to_recorder, solved) = mpsc::sync_channel::<Batch>(4);
     let (to_path, emptied) = mpsc::channel::<Batch>();
     let mut run = std::thread::scope(|scope| {
         let mech = &mech;
         let recording = scope.spawn(move || -> Result<Run, ScenarioError> {
             let mut run = Run::default();
+            run.reserve(n_out + 1);
             // Φq q̇ + Φt.
             let mut velocity = vec![0.0; info.n_constraints];
             for mut batch in solved {
@@ -310,7 +336,7 @@ pub fn kinematic_until<M: Mechanism + Sync>(
                         Some(full) => batch.read(k, mech, full)?,
                     };
                     modes.check(out.q, out.t)?;
-                    record(layout, info, out, &mut run)?;
+                    record((layout, &forces), info, out, &mut run)?;
                 }
                 batch.clear();
                 // The path may have finished: then the batch is not needed.
@@ -505,7 +531,8 @@ pub fn simulate_reduced(registry: &Registry, opts: &Options) -> Result<Run, Scen
     let start = Instant::now();
     let mut it = hht(opts).build(red)?;
     let mut run = Run::default();
-    let mut recorder = Recorder::new(info, layout);
+    run.reserve(n_out + 1);
+    let mut recorder = Recorder::new(info, layout)?;
     let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(opts.t_end);
@@ -560,6 +587,7 @@ pub fn output_count(t_end: f64, output_step: f64) -> Result<usize, ScenarioError
 /// Work memory for recording integrated outputs, allocated once per run.
 struct Recorder {
     layout: Layout,
+    forces: Forces,
     /// For states integrated: residuals and Jacobians, and multipliers recovered at the
     /// state (made on first use).
     watch: ResidualWatch,
@@ -569,14 +597,15 @@ struct Recorder {
 }
 
 impl Recorder {
-    fn new(info: &'static MechanismInfo, layout: Layout) -> Self {
-        Recorder {
+    fn new(info: &'static MechanismInfo, layout: Layout) -> Result<Self, Error> {
+        Ok(Recorder {
             layout,
+            forces: Forces::new(info, &layout)?,
             watch: ResidualWatch::new(info),
             kinematics: None,
             qdd: vec![0.0; info.n_coords],
             lambda: vec![0.0; info.n_constraints],
-        }
+        })
     }
 
     /// Records an integrated state `(t, q, q̇)`: residuals and Jacobians evaluated there, the
@@ -613,13 +642,13 @@ impl Recorder {
             residuals,
             energy,
         };
-        record(self.layout, info, out, run)
+        record((self.layout, &self.forces), info, out, run)
     }
 }
 
 /// Appends one output's pose, joint forces, actuator forces and power, energy and drift.
 fn record(
-    layout: Layout,
+    (layout, forces): (Layout, &Forces),
     info: &MechanismInfo,
     out: Output<'_>,
     run: &mut Run,
@@ -647,14 +676,8 @@ fn record(
     let mut act = [0.0; LEGS];
     let mut power = 0.0;
     for i in 0..LEGS {
-        upper[i] = joint_force(info, phi_q, lambda, layout.upper_joints[i], layout.platform)?;
-        lower[i] = joint_force(
-            info,
-            phi_q,
-            lambda,
-            layout.lower_joints[i],
-            layout.lower_bodies[i],
-        )?;
+        upper[i] = forces.upper[i].force(phi_q, lambda)?;
+        lower[i] = forces.lower[i].force(phi_q, lambda)?;
         act[i] = actuator_force(info, lambda, layout.drivers[i])?;
         power += act[i] * c_dot[i];
     }
@@ -670,6 +693,20 @@ fn record(
 }
 
 impl Run {
+    /// Room for `n` outputs, taken at once instead of by doubling as they come (each
+    /// doubling copies what was recorded and touches fresh pages).
+    fn reserve(&mut self, n: usize) {
+        self.t.reserve(n);
+        self.q.reserve(n);
+        self.qd.reserve(n);
+        self.platform.reserve(n);
+        self.upper.reserve(n);
+        self.lower.reserve(n);
+        self.actuators.reserve(n);
+        self.energy.reserve(n);
+        self.actuator_power.reserve(n);
+    }
+
     /// Work done by the actuators from the first output to each output (J), by the
     /// trapezoidal rule over the recorded power.
     pub fn actuator_work(&self) -> Vec<f64> {
