@@ -46,6 +46,8 @@ pub struct KinematicPath<M: Mechanism, K: KktSolver = SchurKkt> {
     previous_qdd: [Vec<f64>; HISTORY],
     /// The last good position while a new one is sought.
     saved: Vec<f64>,
+    /// The predictor's last weights.
+    weights: Option<Weights>,
     /// |Φ|∞ (redundant rows included) at `q`, from the position solve's last evaluation.
     position_residual: f64,
     /// Φq q̇ + Φt, for [`Self::residuals`].
@@ -106,6 +108,7 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
             previous_step: [0.0; HISTORY],
             previous_qdd: std::array::from_fn(|_| vec![0.0; n]),
             saved: vec![0.0; n],
+            weights: None,
             position_residual: f64::NAN,
             work: vec![0.0; m],
             stats: PathStats::default(),
@@ -168,31 +171,14 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
             tau[nodes] = tau[nodes - 1] - self.previous_step[nodes - 1];
             nodes += 1;
         }
-        // The increment is linear in the accelerations: Σₖ βₖ aₖ with βₖ = ∫₀ʰ (h − τ) Lₖ(τ) dτ
-        // for the Lagrange polynomials Lₖ of the nodes, by four-point Gauss–Legendre (exact
-        // for these polynomials of degree ≤ 7).
-        let (inner, outer) = (
-            (3.0 / 7.0 - 2.0 / 7.0 * 1.2f64.sqrt()).sqrt(),
-            (3.0 / 7.0 + 2.0 / 7.0 * 1.2f64.sqrt()).sqrt(),
-        );
-        let (w_inner, w_outer) = ((18.0 + 30f64.sqrt()) / 72.0, (18.0 - 30f64.sqrt()) / 72.0);
-        let gauss = [
-            (0.5 - 0.5 * outer, w_outer),
-            (0.5 - 0.5 * inner, w_inner),
-            (0.5 + 0.5 * inner, w_inner),
-            (0.5 + 0.5 * outer, w_outer),
-        ];
-        let mut beta = [0.0; HISTORY + 1];
-        for (x, w) in gauss {
-            let x = x * h;
-            for (k, b) in beta.iter_mut().enumerate().take(nodes) {
-                let lagrange: f64 = (0..nodes)
-                    .filter(|&j| j != k)
-                    .map(|j| (x - tau[j]) / (tau[k] - tau[j]))
-                    .product();
-                *b += w * h * (h - x) * lagrange;
+        let beta = match self.weights {
+            Some(w) if w.serves(h, &tau, nodes) => w.beta,
+            _ => {
+                let w = Weights::new(h, tau, nodes);
+                self.weights = Some(w);
+                w.beta
             }
-        }
+        };
         for ((q, &v), &a) in self.q.iter_mut().zip(&self.qd).zip(&self.qdd) {
             *q += h * v + beta[0] * a;
         }
@@ -346,6 +332,66 @@ impl FreeMotion {
 /// output of the path, not an integration state, so it is solved close to roundoff; the
 /// chord corrections converging linearly make the last digits cheap.
 pub const PATH_POSITION_TOLERANCE: f64 = 1e-14;
+
+/// The predictor's weights βₖ for the step `h` and the nodes `tau` (see
+/// [`KinematicPath::predict`]), kept while the outputs' spacing repeats.
+#[derive(Debug, Clone, Copy)]
+struct Weights {
+    h: f64,
+    tau: [f64; HISTORY + 1],
+    nodes: usize,
+    beta: [f64; HISTORY + 1],
+}
+
+impl Weights {
+    /// The increment is linear in the accelerations: Σₖ βₖ aₖ with βₖ = ∫₀ʰ (h − τ) Lₖ(τ) dτ
+    /// for the Lagrange polynomials Lₖ of the nodes, by four-point Gauss–Legendre (exact
+    /// for these polynomials of degree ≤ 7).
+    fn new(h: f64, tau: [f64; HISTORY + 1], nodes: usize) -> Self {
+        let (inner, outer) = (
+            (3.0 / 7.0 - 2.0 / 7.0 * 1.2f64.sqrt()).sqrt(),
+            (3.0 / 7.0 + 2.0 / 7.0 * 1.2f64.sqrt()).sqrt(),
+        );
+        let (w_inner, w_outer) = ((18.0 + 30f64.sqrt()) / 72.0, (18.0 - 30f64.sqrt()) / 72.0);
+        let gauss = [
+            (0.5 - 0.5 * outer, w_outer),
+            (0.5 - 0.5 * inner, w_inner),
+            (0.5 + 0.5 * inner, w_inner),
+            (0.5 + 0.5 * outer, w_outer),
+        ];
+        let mut beta = [0.0; HISTORY + 1];
+        for (x, w) in gauss {
+            let x = x * h;
+            for (k, b) in beta.iter_mut().enumerate().take(nodes) {
+                let lagrange: f64 = (0..nodes)
+                    .filter(|&j| j != k)
+                    .map(|j| (x - tau[j]) / (tau[k] - tau[j]))
+                    .product();
+                *b += w * h * (h - x) * lagrange;
+            }
+        }
+        Weights {
+            h,
+            tau,
+            nodes,
+            beta,
+        }
+    }
+
+    /// Whether these weights serve the step `h` from the nodes `tau`: the same nodes to
+    /// 1e-12 of the step. Output times `k·Δt` space their steps equally up to the last bits;
+    /// weights that far off move the prediction by ~1e-12 of its acceleration term, far below
+    /// the position tolerance, and the position solve corrects it anyway.
+    fn serves(&self, h: f64, tau: &[f64; HISTORY + 1], nodes: usize) -> bool {
+        let near = |a: f64, b: f64| (a - b).abs() <= 1e-12 * h.abs();
+        nodes == self.nodes
+            && near(h, self.h)
+            && self.tau[..nodes]
+                .iter()
+                .zip(&tau[..nodes])
+                .all(|(&a, &b)| near(a, b))
+    }
+}
 
 /// Earlier outputs whose accelerations the predictor continues ([`KinematicPath::predict`]).
 const HISTORY: usize = 6;
@@ -582,6 +628,48 @@ mod tests {
     /// The slider driven along a circle of shrinking radius: Y(t) = √(c(t)² − d²) in closed
     /// form. The path must stay on it, and once seven outputs are known the eighth-order
     /// prediction alone must meet the position tolerance almost everywhere.
+    /// Weights kept for steps equal up to the last bits predict what the steps' own weights
+    /// do: on a smooth acceleration sampled at the actual nodes, the two increments agree to
+    /// 1e-13 of h²·max|a| (the individual weights differ more, ~1e-12 relative: extrapolation
+    /// weights alternate, and for smooth data the difference cancels). A different spacing
+    /// computes its own.
+    #[test]
+    fn kept_predictor_weights_predict_as_the_steps_own() {
+        let h = 0.01;
+        let nodes_of = |steps: &[f64]| {
+            let mut tau = [0.0; HISTORY + 1];
+            for (k, s) in steps.iter().enumerate() {
+                tau[k + 1] = tau[k] - s;
+            }
+            tau
+        };
+        let even = Weights::new(h, nodes_of(&[h; HISTORY]), HISTORY + 1);
+        // Steps between output times k·Δt: 0.01 up to a few ulps of t ≈ 6.
+        let jitter = [h + 1.7e-15, h - 8.9e-16, h, h + 8.9e-16, h - 1.7e-15, h];
+        let (step, tau) = (h + 8.9e-16, nodes_of(&jitter));
+        assert!(even.serves(step, &tau, HISTORY + 1));
+        let own = Weights::new(step, tau, HISTORY + 1);
+        let a = |t: f64| 5.0 * (3.0 * t + 0.4).cos();
+        let increment =
+            |w: &Weights| -> f64 { w.beta.iter().zip(&tau).map(|(b, &t)| b * a(t)).sum() };
+        let (kept, exact) = (increment(&even), increment(&own));
+        assert!(
+            (kept - exact).abs() <= 1e-13 * h * h * 5.0,
+            "{kept} vs {exact}"
+        );
+        // The four-point Lobatto nodes of the tables' path: another spacing.
+        let lobatto = nodes_of(&[
+            0.276 * h,
+            0.447 * h,
+            0.276 * h,
+            0.276 * h,
+            0.447 * h,
+            0.276 * h,
+        ]);
+        assert!(!even.serves(0.276 * h, &lobatto, HISTORY + 1));
+        assert!(!even.serves(h, &tau, HISTORY));
+    }
+
     #[test]
     fn prediction_follows_the_circle_driver_without_corrections() {
         use crate::testmodels::{CIRCLE_D, CIRCLE_V};
