@@ -26,6 +26,10 @@ enum V {
     Zero,
     Var(u32),
     Slot(u32),
+    /// `c · mass[i]` and `phi_q[i]`, written where they are used: bound at the top they
+    /// lived through the whole factorization, and LLVM spilled and reloaded every one.
+    Mass(u32),
+    PhiQ(u32),
     /// An entry of the solve's `x` or `y`, which hold `u` and `r` in between.
     In(&'static str, u32),
 }
@@ -36,6 +40,8 @@ impl std::fmt::Display for V {
             V::Zero => write!(f, "0.0"),
             V::Var(i) => write!(f, "v{i}"),
             V::Slot(i) => write!(f, "st[{i}]"),
+            V::Mass(i) => write!(f, "(c * mass[{i}])"),
+            V::PhiQ(i) => write!(f, "phi_q[{i}]"),
             V::In(a, i) => write!(f, "{a}[{i}]"),
         }
     }
@@ -44,23 +50,62 @@ impl std::fmt::Display for V {
 /// Straight-line code under construction.
 #[derive(Default)]
 struct Code {
-    text: String,
+    lines: Vec<String>,
+    /// The line defining each local `v{n}`.
+    defined_at: Vec<usize>,
+    /// Stores of locals into the state, each to be written right after its local's
+    /// definition (`(line, store)`): a value stored at once need not stay live (spilled)
+    /// until the end. The state is read only by the solves, after a successful factor.
+    stores: Vec<(usize, String)>,
     next: u32,
     ops: usize,
 }
 
 impl Code {
     fn line(&mut self, s: &str) {
-        self.text.push_str(s);
-        self.text.push('\n');
+        self.lines.push(s.to_owned());
+    }
+
+    /// Names the next `count` locals, defined by the line emitted next.
+    fn locals(&mut self, count: u32) -> u32 {
+        let first = self.next;
+        self.next += count;
+        let at = self.lines.len();
+        self.defined_at.resize(self.next as usize, at);
+        first
     }
 
     fn bind(&mut self, expr: std::fmt::Arguments<'_>) -> V {
-        let id = self.next;
-        self.next += 1;
+        let id = self.locals(1);
         self.ops += 1;
-        let _ = writeln!(self.text, "let v{id}: f64 = {expr};");
+        self.lines.push(format!("let v{id}: f64 = {expr};"));
         V::Var(id)
+    }
+
+    /// `st[slot] = v`, next to `v`'s definition when it is a local.
+    fn store(&mut self, slot: usize, v: V) {
+        let line = format!("st[{slot}] = {v};");
+        match v {
+            V::Var(id) => self.stores.push((self.defined_at[id as usize], line)),
+            _ => self.lines.push(line),
+        }
+    }
+
+    /// The code, each store after its local's definition.
+    fn text(&self) -> String {
+        let mut stores = self.stores.clone();
+        stores.sort_by_key(|&(at, _)| at);
+        let mut stores = stores.into_iter().peekable();
+        let mut text = String::new();
+        for (i, l) in self.lines.iter().enumerate() {
+            text.push_str(l);
+            text.push('\n');
+            while let Some((_, s)) = stores.next_if(|(at, _)| *at == i) {
+                text.push_str(&s);
+                text.push('\n');
+            }
+        }
+        text
     }
 
     /// `acc − a·b` (`acc −= a * b` in the loops).
@@ -191,7 +236,8 @@ let st: &[f64; {ns}] = st.try_into().map_err(|_| length_error({ns}, st.len()))?;
 Ok(())
 }}
 ",
-        factor.text, solve.text
+        factor.text(),
+        solve.text()
     );
     Some((text, entry))
 }
@@ -236,8 +282,10 @@ fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) ->
     let mut chol = vec![V::Zero; plan.chol_len];
     for (i, &d) in plan.mass_dest.iter().enumerate() {
         // Both triangles land on the same slot; the later write wins, as in the loop.
-        chol[d] = code.bind(format_args!("c * mass[{i}]"));
+        chol[d] = V::Mass(i as u32);
     }
+    // Counted as the bindings they were, so the same patterns stay under `MAX_OPS`.
+    code.ops += plan.mass_dest.len();
     let dummy = plan.w_len - 1;
     let mut wmat = vec![V::Zero; plan.w_len];
     for (i, &d) in plan.phi_q_dest.iter().enumerate() {
@@ -248,7 +296,8 @@ fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) ->
                 "if !phi_q[{i}].is_finite() {{ return Err(KktError::NotFinite); }}"
             ));
         } else {
-            wmat[d] = code.bind(format_args!("phi_q[{i}]"));
+            wmat[d] = V::PhiQ(i as u32);
+            code.ops += 1;
         }
     }
     let n_rows = pattern.m;
@@ -313,9 +362,8 @@ fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) ->
         if k == plan.n_first {
             scale[k..].copy_from_slice(&diag[k..]);
         }
-        let inv = code.next;
+        let inv = code.locals(2);
         let dk = inv + 1;
-        code.next += 2;
         code.ops += 1;
         code.line(&format!(
             "let (v{inv}, v{dk}) = piv.pivot({}, {}, {}, {})?;",
@@ -339,7 +387,7 @@ fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) ->
     let mut slots = 0;
     let mut store = |code: &mut Code, v: &mut V| {
         if *v != V::Zero {
-            code.line(&format!("st[{slots}] = {v};"));
+            code.store(slots, *v);
             *v = V::Slot(slots as u32);
             slots += 1;
         }

@@ -691,74 +691,61 @@ pub mod exact {
             .map_err(|_| length_error(3, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 12] = st.try_into().map_err(|_| length_error(12, st_len))?;
-        let v0: f64 = c * mass[0];
-        let v1: f64 = c * mass[1];
-        let v2: f64 = c * mass[2];
-        let v3: f64 = c * mass[3];
-        let v4: f64 = c * mass[4];
-        let v5: f64 = c * mass[5];
-        let v6: f64 = c * mass[6];
-        let v7: f64 = c * mass[7];
-        let v8: f64 = c * mass[8];
-        let v9: f64 = c * mass[9];
-        let v10: f64 = phi_q[0];
-        let v11: f64 = phi_q[1];
-        let v12: f64 = phi_q[2];
-        if !(v0 > 0.0) || !v0.is_finite() {
-            return Err(mass_pivot_error(v0, 0));
+        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+            return Err(mass_pivot_error((c * mass[0]), 0));
         }
-        let v13: f64 = v0.sqrt();
-        let v14: f64 = 1.0 / v13;
-        if !(v1 > 0.0) || !v1.is_finite() {
-            return Err(mass_pivot_error(v1, 1));
+        let v0: f64 = (c * mass[0]).sqrt();
+        let v1: f64 = 1.0 / v0;
+        st[2] = v1;
+        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+            return Err(mass_pivot_error((c * mass[1]), 1));
         }
-        let v15: f64 = v1.sqrt();
-        let v16: f64 = 1.0 / v15;
-        if !(v2 > 0.0) || !v2.is_finite() {
-            return Err(mass_pivot_error(v2, 2));
+        let v2: f64 = (c * mass[1]).sqrt();
+        let v3: f64 = 1.0 / v2;
+        st[3] = v3;
+        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+            return Err(mass_pivot_error((c * mass[2]), 2));
         }
-        let v17: f64 = v2.sqrt();
-        let v18: f64 = 1.0 / v17;
-        if !(v3 > 0.0) || !v3.is_finite() {
-            return Err(mass_pivot_error(v3, 3));
+        let v4: f64 = (c * mass[2]).sqrt();
+        let v5: f64 = 1.0 / v4;
+        st[4] = v5;
+        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+            return Err(mass_pivot_error((c * mass[3]), 3));
         }
-        let v19: f64 = v3.sqrt();
-        let v20: f64 = 1.0 / v19;
-        let v21: f64 = v7 * v20;
-        if !(v5 > 0.0) || !v5.is_finite() {
-            return Err(mass_pivot_error(v5, 4));
+        let v6: f64 = (c * mass[3]).sqrt();
+        let v7: f64 = 1.0 / v6;
+        st[5] = v7;
+        let v8: f64 = (c * mass[7]) * v7;
+        st[0] = v8;
+        if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+            return Err(mass_pivot_error((c * mass[5]), 4));
         }
-        let v22: f64 = v5.sqrt();
-        let v23: f64 = 1.0 / v22;
-        let v24: f64 = v8 * v23;
-        let v25: f64 = v9 - v21 * v21;
-        let v26: f64 = v25 - v24 * v24;
-        if !(v26 > 0.0) || !v26.is_finite() {
-            return Err(mass_pivot_error(v26, 5));
+        let v9: f64 = (c * mass[5]).sqrt();
+        let v10: f64 = 1.0 / v9;
+        st[6] = v10;
+        let v11: f64 = (c * mass[8]) * v10;
+        st[1] = v11;
+        let v12: f64 = (c * mass[9]) - v8 * v8;
+        let v13: f64 = v12 - v11 * v11;
+        if !(v13 > 0.0) || !v13.is_finite() {
+            return Err(mass_pivot_error(v13, 5));
         }
-        let v27: f64 = v26.sqrt();
-        let v28: f64 = 1.0 / v27;
-        let v29: f64 = v10 * v14;
-        let v30: f64 = v11 * v16;
-        let v31: f64 = v12 * v18;
-        let v32: f64 = v29 * v29;
-        let v33: f64 = v30 * v30;
-        let v34: f64 = v32 + v33;
-        let v35: f64 = v31 * v31;
-        let v36: f64 = v34 + v35;
-        let (v37, v38) = piv.pivot(v36, v36, 0, false)?;
-        st[0] = v21;
-        st[1] = v24;
-        st[2] = v14;
-        st[3] = v16;
-        st[4] = v18;
-        st[5] = v20;
-        st[6] = v23;
-        st[7] = v28;
-        st[8] = v29;
-        st[9] = v30;
-        st[10] = v31;
-        st[11] = v37;
+        let v14: f64 = v13.sqrt();
+        let v15: f64 = 1.0 / v14;
+        st[7] = v15;
+        let v16: f64 = phi_q[0] * v1;
+        st[8] = v16;
+        let v17: f64 = phi_q[1] * v3;
+        st[9] = v17;
+        let v18: f64 = phi_q[2] * v5;
+        st[10] = v18;
+        let v19: f64 = v16 * v16;
+        let v20: f64 = v17 * v17;
+        let v21: f64 = v19 + v20;
+        let v22: f64 = v18 * v18;
+        let v23: f64 = v21 + v22;
+        let (v24, v25) = piv.pivot(v23, v23, 0, false)?;
+        st[11] = v24;
         Ok(())
     }
     #[allow(
@@ -2010,38 +1997,33 @@ pub mod reduced {
                 .map_err(|_| length_error(2, phi_q.len()))?;
             let st_len = st.len();
             let st: &mut [f64; 6] = st.try_into().map_err(|_| length_error(6, st_len))?;
-            let v0: f64 = c * mass[0];
-            let v1: f64 = c * mass[1];
-            let v2: f64 = c * mass[2];
-            let v3: f64 = phi_q[0];
-            let v4: f64 = phi_q[1];
-            if !(v0 > 0.0) || !v0.is_finite() {
-                return Err(mass_pivot_error(v0, 0));
+            if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+                return Err(mass_pivot_error((c * mass[0]), 0));
             }
-            let v5: f64 = v0.sqrt();
-            let v6: f64 = 1.0 / v5;
-            if !(v1 > 0.0) || !v1.is_finite() {
-                return Err(mass_pivot_error(v1, 1));
+            let v0: f64 = (c * mass[0]).sqrt();
+            let v1: f64 = 1.0 / v0;
+            st[0] = v1;
+            if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+                return Err(mass_pivot_error((c * mass[1]), 1));
             }
-            let v7: f64 = v1.sqrt();
-            let v8: f64 = 1.0 / v7;
-            if !(v2 > 0.0) || !v2.is_finite() {
-                return Err(mass_pivot_error(v2, 2));
+            let v2: f64 = (c * mass[1]).sqrt();
+            let v3: f64 = 1.0 / v2;
+            st[1] = v3;
+            if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+                return Err(mass_pivot_error((c * mass[2]), 2));
             }
-            let v9: f64 = v2.sqrt();
-            let v10: f64 = 1.0 / v9;
-            let v11: f64 = v3 * v6;
-            let v12: f64 = v4 * v8;
-            let v13: f64 = v11 * v11;
-            let v14: f64 = v12 * v12;
-            let v15: f64 = v13 + v14;
-            let (v16, v17) = piv.pivot(v15, v15, 0, false)?;
-            st[0] = v6;
-            st[1] = v8;
-            st[2] = v10;
-            st[3] = v11;
-            st[4] = v12;
-            st[5] = v16;
+            let v4: f64 = (c * mass[2]).sqrt();
+            let v5: f64 = 1.0 / v4;
+            st[2] = v5;
+            let v6: f64 = phi_q[0] * v1;
+            st[3] = v6;
+            let v7: f64 = phi_q[1] * v3;
+            st[4] = v7;
+            let v8: f64 = v6 * v6;
+            let v9: f64 = v7 * v7;
+            let v10: f64 = v8 + v9;
+            let (v11, v12) = piv.pivot(v10, v10, 0, false)?;
+            st[5] = v11;
             Ok(())
         }
         #[allow(
