@@ -214,7 +214,7 @@ fn one(pattern: &KktPattern, i: usize) -> Option<(String, String)> {
         "KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor_{i}, solve: kkt_solve_{i}, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times }}"
     );
     let text = format!(
-        "#[allow(unused_variables, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
+        "#[allow(unused_variables, unused_parens, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
 fn kkt_factor_{i}(mass: &[f64], c: f64, phi_q: &[f64], st: &mut [f64], piv: &mut Pivoting) -> Result<(), KktError> {{
 let mass: &[f64; {nm}] = mass.try_into().map_err(|_| length_error({nm}, mass.len()))?;
 let phi_q: &[f64; {np}] = phi_q.try_into().map_err(|_| length_error({np}, phi_q.len()))?;

@@ -160,7 +160,8 @@ pub fn driver_effort(info: &MechanismInfo, lambda: &[f64], joint: usize) -> Resu
 /// `Φᵏ_{r_i}` are the joint's rows of `Φq` in the body's three translational columns.
 ///
 /// `phi_q` holds the Jacobian's nonzeros at the state the multipliers `lambda` belong to.
-/// A recording that asks at every output finds the entries once with [`ForceOnBody`].
+/// Allocates nothing; a recording that asks at every output finds the entries once with
+/// [`ForceOnBody`].
 pub fn joint_force(
     info: &MechanismInfo,
     phi_q: &[f64],
@@ -168,10 +169,49 @@ pub fn joint_force(
     joint: usize,
     body: usize,
 ) -> Result<[f64; 3], Error> {
-    ForceOnBody::new(info, joint, body)?.force(phi_q, lambda)
+    check_len("Φq nonzeros", info.phi_q_nnz(), phi_q.len())?;
+    check_len("lambda", info.n_constraints, lambda.len())?;
+    let mut f = [0.0; 3];
+    for (k, r, c) in force_terms(info, joint, body)? {
+        f[c] -= phi_q[k] * lambda[r];
+    }
+    Ok(f)
 }
 
-/// [`joint_force`] with the joint's Φq entries in the body's columns found once.
+/// The Φq entries of joint `joint`'s rows in body `body`'s translational columns, as
+/// `(nonzero, row, component)` in the pattern's order; the joint must connect the body.
+fn force_terms(
+    info: &MechanismInfo,
+    joint: usize,
+    body: usize,
+) -> Result<impl Iterator<Item = (usize, usize, usize)> + '_, Error> {
+    let j = info.joints.get(joint).ok_or(Error::InvalidIndex {
+        what: "joint",
+        index: joint,
+        reason: "no such joint",
+    })?;
+    let b = info.bodies.get(body).ok_or(Error::InvalidIndex {
+        what: "body",
+        index: body,
+        reason: "no such body",
+    })?;
+    if j.body1 != Some(body) && j.body2 != Some(body) {
+        return Err(Error::InvalidIndex {
+            what: "body",
+            index: body,
+            reason: "the joint does not connect this body",
+        });
+    }
+    let rows = j.row_start..j.row_start + j.rows;
+    let cols = b.coord_offset..b.coord_offset + 3;
+    Ok(rows_nonzeros(info, &rows).filter_map(move |k| {
+        let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
+        (rows.contains(&r) && cols.contains(&c)).then_some((k, r, c - cols.start))
+    }))
+}
+
+/// [`joint_force`] with the joint's Φq entries in the body's columns found once, for a
+/// recording that asks at every output.
 #[derive(Debug, Clone)]
 pub struct ForceOnBody {
     /// The mechanism's sizes, to check the arrays given.
@@ -184,35 +224,10 @@ pub struct ForceOnBody {
 impl ForceOnBody {
     /// The force of joint `joint` on body `body`, which it must connect.
     pub fn new(info: &MechanismInfo, joint: usize, body: usize) -> Result<Self, Error> {
-        let j = info.joints.get(joint).ok_or(Error::InvalidIndex {
-            what: "joint",
-            index: joint,
-            reason: "no such joint",
-        })?;
-        let b = info.bodies.get(body).ok_or(Error::InvalidIndex {
-            what: "body",
-            index: body,
-            reason: "no such body",
-        })?;
-        if j.body1 != Some(body) && j.body2 != Some(body) {
-            return Err(Error::InvalidIndex {
-                what: "body",
-                index: body,
-                reason: "the joint does not connect this body",
-            });
-        }
-        let rows = j.row_start..j.row_start + j.rows;
-        let cols = b.coord_offset..b.coord_offset + 3;
-        let terms = rows_nonzeros(info, &rows)
-            .filter_map(|k| {
-                let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
-                (rows.contains(&r) && cols.contains(&c)).then_some((k, r, c - cols.start))
-            })
-            .collect();
         Ok(ForceOnBody {
             nnz: info.phi_q_nnz(),
             n_constraints: info.n_constraints,
-            terms,
+            terms: force_terms(info, joint, body)?.collect(),
         })
     }
 

@@ -21923,6 +21923,7 @@ pub mod exact {
     ];
     #[allow(
         unused_variables,
+        unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
@@ -29240,6 +29241,7 @@ pub mod exact {
     }
     #[allow(
         unused_variables,
+        unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
@@ -46372,6 +46374,7 @@ pub mod reduced {
         ];
         #[allow(
             unused_variables,
+            unused_parens,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]

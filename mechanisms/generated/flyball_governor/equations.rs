@@ -10327,6 +10327,7 @@ pub mod exact {
     ];
     #[allow(
         unused_variables,
+        unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
@@ -14805,6 +14806,7 @@ pub mod exact {
     }
     #[allow(
         unused_variables,
+        unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]

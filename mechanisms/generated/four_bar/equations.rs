@@ -8483,6 +8483,7 @@ pub mod exact {
     ];
     #[allow(
         unused_variables,
+        unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
@@ -14499,6 +14500,7 @@ pub mod reduced {
         ];
         #[allow(
             unused_variables,
+            unused_parens,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]

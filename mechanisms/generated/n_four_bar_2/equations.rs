@@ -12736,6 +12736,7 @@ pub mod exact {
     ];
     #[allow(
         unused_variables,
+        unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
@@ -22433,6 +22434,7 @@ pub mod reduced {
         ];
         #[allow(
             unused_variables,
+            unused_parens,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]

@@ -21807,6 +21807,7 @@ pub mod exact {
     ];
     #[allow(
         unused_variables,
+        unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
@@ -43605,6 +43606,7 @@ pub mod paper {
     ];
     #[allow(
         unused_variables,
+        unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
@@ -64225,6 +64227,7 @@ pub mod reduced {
         ];
         #[allow(
             unused_variables,
+            unused_parens,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
@@ -78128,6 +78131,7 @@ pub mod reduced {
         ];
         #[allow(
             unused_variables,
+            unused_parens,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
