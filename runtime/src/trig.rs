@@ -38,8 +38,10 @@ pub fn sin_cos(x: f64) -> (f64, f64) {
 /// angles, the coordinates themselves (the kinematic path evaluates Φ, Φq, M, γ and Q at
 /// each output: five calls per angle), so the last result of each argument is kept: a hit
 /// costs about a tenth of a call, a miss about a tenth more. Exact: the same bits as
-/// computing it again.
-const MEMO_BITS: u32 = 6;
+/// computing it again. One slot per argument value: the Stewart model's 23 angles in 64
+/// slots collided often enough that each output computed ~14 of them twice (callgrind's
+/// calls from the later evaluations); in 256 (6 KiB a thread) rarely.
+const MEMO_BITS: u32 = 8;
 const MEMO_SLOTS: usize = 1 << MEMO_BITS;
 
 thread_local! {
