@@ -12,6 +12,7 @@ pub mod compiled_numbers;
 pub mod files;
 pub mod fk;
 pub mod generic;
+pub mod number;
 pub mod output;
 pub mod scenario;
 pub mod scene;

@@ -1,23 +1,24 @@
 //! CSV outputs of a run: platform pose, joint reactions, actuator forces.
 
+use crate::number::Shortest;
 use crate::scenario::{Run, LEGS};
 use crate::tables::Table;
-use std::fmt::Write as _;
 use std::io;
 use std::path::Path;
 
 /// Writes a CSV: the header line, then one line per row (shortest round-trip numbers).
 pub fn write(path: &Path, header: &str, rows: impl Iterator<Item = Vec<f64>>) -> io::Result<()> {
     let mut s = String::with_capacity(1 << 16);
+    let mut num = Shortest::default();
     s.push_str(header);
     s.push('\n');
     for row in rows {
-        for (i, v) in row.iter().enumerate() {
+        for (i, &v) in row.iter().enumerate() {
             if i > 0 {
                 s.push(',');
             }
             // Shortest representation that reads back to the same f64.
-            let _ = write!(s, "{v:?}");
+            s.push_str(num.format(v));
         }
         s.push('\n');
     }

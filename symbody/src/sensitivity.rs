@@ -74,8 +74,9 @@ impl Sensitivities {
         let mut w = csv::Writer::from_path(&path)?;
         let table = self.table();
         w.write_record(&table.columns)?;
+        let mut num = crate::number::Shortest::default();
         for row in &table.rows {
-            w.write_record(row.iter().map(|v| format!("{v:?}")))?;
+            crate::number::write_record(&mut w, row.iter().copied(), &mut num)?;
         }
         w.flush()?;
         Ok(path)

@@ -3,6 +3,7 @@
 //! so that a run that stops keeps every output it reached.
 
 use crate::generic::Recording;
+use crate::number::{self, Shortest};
 use std::fs::File;
 use std::io::{self, BufWriter};
 use std::path::{Path, PathBuf};
@@ -197,6 +198,7 @@ const FLUSH_EVERY: Duration = Duration::from_millis(200);
 pub struct CsvTables {
     files: Vec<(&'static str, PathBuf, csv::Writer<BufWriter<File>>)>,
     flushed: Instant,
+    number: Shortest,
 }
 
 impl CsvTables {
@@ -215,6 +217,7 @@ impl CsvTables {
         let mut tables = CsvTables {
             files,
             flushed: Instant::now(),
+            number: Shortest::default(),
         };
         tables.flush()?;
         Ok(tables)
@@ -225,7 +228,7 @@ impl CsvTables {
     pub fn append(&mut self, rec: &Recording, k: usize) -> io::Result<()> {
         for (stem, _, w) in &mut self.files {
             // Shortest text that reads back to the same f64 (as the paper's CSVs).
-            w.write_record(row(rec, stem, k).iter().map(|v| format!("{v:?}")))?;
+            number::write_record(w, row(rec, stem, k), &mut self.number)?;
         }
         if self.flushed.elapsed() >= FLUSH_EVERY {
             self.flush()?;
