@@ -5,10 +5,11 @@
 use std::fmt::Write as _;
 
 /// Formats f64's as `{:?}` does: the shortest digits that read back to the same f64, the
-/// closest of them to its value. `zmij` writes them as `{:?}` does in its plain-decimal
-/// range and serves `1e-4 ≤ |v| < 1e15` and zero; `{:?}` itself the rest (it switches to
-/// exponents at other bounds, and writes them without `+`), and every value that may be a
-/// tie (see [`may_tie`]), where the two break it differently.
+/// closest of them to its value. `zmij` writes them as `{:?}` does where both write plain
+/// decimals, `1e-4 ≤ |v| < 1e15` here, and where both write exponents below, |v| < 1e-5
+/// (`1.5e-7`), and zero; `{:?}` itself writes the rest (between 1e-5 and 1e-4 `zmij` still
+/// writes decimals, and from 1e16 its exponents carry a `+`), and every value that may be a
+/// tie ([`may_tie`]), which the two break differently.
 #[derive(Default)]
 pub struct Shortest {
     fast: zmij::Buffer,
@@ -19,7 +20,7 @@ impl Shortest {
     /// `v` as `format!("{v:?}")`.
     pub fn format(&mut self, v: f64) -> &str {
         let a = v.abs();
-        if a == 0.0 || ((1e-4..1e15).contains(&a) && !may_tie(v)) {
+        if a < 1e-5 || ((1e-4..1e15).contains(&a) && !may_tie(v)) {
             self.fast.format_finite(v)
         } else {
             self.slow.clear();
@@ -29,7 +30,7 @@ impl Shortest {
     }
 }
 
-/// Whether `v` (finite, nonzero, |v| < 1e15) may lie exactly halfway between two shortest
+/// Whether `v` (finite, nonzero, 1e-4 ≤ |v| < 1e15) may lie exactly halfway between two shortest
 /// texts (`-1149636667324797.25`: `{:?}` writes `.3`, `zmij` `.2`). That needs its exact
 /// decimal expansion to have 17 or 18 significant digits: one more than the shortest text,
 /// ending in 5, and close enough to it that the shorter text reads back. With `v = m·2^e`
@@ -88,7 +89,7 @@ mod tests {
         for _ in 0..300_000 {
             values.push(f64::from_bits(next()));
             let u = (next() >> 11) as f64 / (1u64 << 53) as f64;
-            values.push((u - 0.5) * 10f64.powi((next() % 24) as i32 - 6));
+            values.push((u - 0.5) * 10f64.powi((next() % 40) as i32 - 22));
             let int = (next() >> 11) % (1u64 << 50);
             values.push(int as f64 / (1u64 << (next() % 12)) as f64);
         }
