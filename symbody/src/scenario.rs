@@ -329,7 +329,7 @@ pub fn kinematic_until<M: Mechanism + Sync>(
             run.reserve(n_out + 1);
             // Φq q̇ + Φt.
             let mut velocity = vec![0.0; info.n_constraints];
-            for mut batch in solved {
+            while let Some(mut batch) = next_batch(&solved) {
                 for k in 0..batch.t.len() {
                     let out = match &mut reading {
                         None => batch.output(k, &mut velocity),
@@ -389,6 +389,29 @@ pub fn kinematic_until<M: Mechanism + Sync>(
 /// Outputs the kinematic path hands to the recording thread at a time: each hand-over costs
 /// a wake-up, which 16 outputs' solves hide.
 const BATCH: usize = 16;
+
+/// The next batch for the recording thread (`None` once the path has finished), waited for
+/// by polling for [`POLL`] before sleeping. The recorder is faster than the path and would
+/// sleep before every batch; Linux then wakes it on the path's core (it counts the sender's
+/// core as warm for it), and for a run of a few milliseconds it often stays there: the two
+/// threads share one core while the other idles. The paper scene's printed time fell into
+/// two groups, about 5 and 8.5 ms, and 8 ms is what both threads pinned to one core take.
+fn next_batch(solved: &mpsc::Receiver<Batch>) -> Option<Batch> {
+    let start = Instant::now();
+    loop {
+        match solved.try_recv() {
+            Ok(batch) => return Some(batch),
+            Err(mpsc::TryRecvError::Disconnected) => return None,
+            Err(mpsc::TryRecvError::Empty) if start.elapsed() < POLL => std::hint::spin_loop(),
+            Err(mpsc::TryRecvError::Empty) => return solved.recv().ok(),
+        }
+    }
+}
+
+/// How long the recording thread polls for a batch before it sleeps: several batches'
+/// worth of the paper path's solves (≈ 0.1 ms each), so that it sleeps only when the path
+/// is slow (a full Newton solve, a failure being reported).
+const POLL: Duration = Duration::from_millis(2);
 
 /// Solved outputs of a kinematic path, one after another in each field.
 struct Batch {
