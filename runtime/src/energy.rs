@@ -144,7 +144,7 @@ impl<K: KktSolver> EnergyMeter<K> {
             self.solve(mech, t, q, qd)?;
             power(mech, t, q, qd, &self.lambda, &mut self.phi_t)
         } else {
-            // Φt = 0 on every row: λᵀΦt is zero whatever λ is (the sum above would add
+            // Φt = 0 on every row: λᵀΦt is zero whatever λ is (`power`'s sum would add
             // exact zeros), so the power is the loads' alone.
             mech.power_nc(q, qd, t)
         };
