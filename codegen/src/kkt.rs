@@ -92,10 +92,9 @@ impl Code {
     }
 
     /// The code, each store after its local's definition.
-    fn text(&self) -> String {
-        let mut stores = self.stores.clone();
-        stores.sort_by_key(|&(at, _)| at);
-        let mut stores = stores.into_iter().peekable();
+    fn text(mut self) -> String {
+        self.stores.sort_by_key(|&(at, _)| at);
+        let mut stores = self.stores.into_iter().peekable();
         let mut text = String::new();
         for (i, l) in self.lines.iter().enumerate() {
             text.push_str(l);

@@ -181,7 +181,7 @@ impl<K: KktSolver> EnergyMeter<K> {
         if !(kinetic.is_finite() && potential.is_finite()) {
             return Err(Error::NotFinite {
                 time: t,
-                what: "energy or power",
+                what: "energy",
             });
         }
         Ok(EnergySample {

@@ -346,8 +346,8 @@ impl From<Error> for Stopped {
 /// The integrator projects the velocities onto the constraints after every step, and the
 /// energy meter integrates the power after every step, so the work of drivers and
 /// non-conservative loads is integrated at the integration step (without a saddle-point
-/// solve between outputs where no row depends on time: [`EnergyMeter::advance`]). Reactions come from the multipliers of the
-/// saddle-point solve at each output state.
+/// solve between outputs where no row depends on time: [`EnergyMeter::advance`]).
+/// Reactions come from the multipliers of the saddle-point solve at each output state.
 pub fn run(entry: &Entry, opts: &Options) -> Result<Recording, Error> {
     run_observed(entry, opts, &mut ()).map_err(|s| s.error)
 }
@@ -571,6 +571,7 @@ impl Followed {
     fn read(&mut self) -> Result<(), Error> {
         let p = &self.path;
         match &mut self.full {
+            // The runtime's error, as this module's.
             Some((mech, full)) => {
                 Ok(full.read(*mech, p.t(), p.q(), p.qd(), p.qdd(), p.lambda())?)
             }

@@ -212,22 +212,20 @@ pub fn simulate(registry: &Registry, opts: &Options) -> Result<Run, ScenarioErro
 /// The recorded joint forces of a [`Layout`], their Φq entries found once.
 #[derive(Debug, Clone)]
 struct Forces {
-    /// On the platform at each upper joint, and on each lower leg at its base joint.
-    upper: [ForceOnBody; LEGS],
-    lower: [ForceOnBody; LEGS],
+    /// By leg: on the platform at its upper joint, and on the lower leg at its base joint.
+    upper: Vec<ForceOnBody>,
+    lower: Vec<ForceOnBody>,
 }
 
 impl Forces {
     fn new(info: &MechanismInfo, l: &Layout) -> Result<Self, Error> {
-        let on = |joint: [usize; LEGS], body: &dyn Fn(usize) -> usize| {
-            let forces = (0..LEGS)
-                .map(|i| ForceOnBody::new(info, joint[i], body(i)))
-                .collect::<Result<Vec<_>, _>>()?;
-            Ok::<_, Error>(forces.try_into().expect("one per leg"))
-        };
         Ok(Forces {
-            upper: on(l.upper_joints, &|_| l.platform)?,
-            lower: on(l.lower_joints, &|i| l.lower_bodies[i])?,
+            upper: (0..LEGS)
+                .map(|i| ForceOnBody::new(info, l.upper_joints[i], l.platform))
+                .collect::<Result<_, _>>()?,
+            lower: (0..LEGS)
+                .map(|i| ForceOnBody::new(info, l.lower_joints[i], l.lower_bodies[i]))
+                .collect::<Result<_, _>>()?,
         })
     }
 }
@@ -239,8 +237,7 @@ pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, 
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
     let mut it = hht(opts).build(mech)?;
-    let mut run = Run::default();
-    run.reserve(n_out + 1);
+    let mut run = Run::with_capacity(n_out + 1);
     let mut recorder = Recorder::new(info, layout)?;
     // The platform's determinant sign is watched at the outputs: a pose that crossed a
     // parallel singularity between two outputs is on another assembly mode at the next.
@@ -325,8 +322,7 @@ pub fn kinematic_until<M: Mechanism + Sync>(
     let mut run = std::thread::scope(|scope| {
         let mech = &mech;
         let recording = scope.spawn(move || -> Result<Run, ScenarioError> {
-            let mut run = Run::default();
-            run.reserve(n_out + 1);
+            let mut run = Run::with_capacity(n_out + 1);
             // Φq q̇ + Φt.
             let mut velocity = vec![0.0; info.n_constraints];
             while let Some(mut batch) = next_batch(&solved) {
@@ -553,8 +549,7 @@ pub fn simulate_reduced(registry: &Registry, opts: &Options) -> Result<Run, Scen
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
     let mut it = hht(opts).build(red)?;
-    let mut run = Run::default();
-    run.reserve(n_out + 1);
+    let mut run = Run::with_capacity(n_out + 1);
     let mut recorder = Recorder::new(info, layout)?;
     let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);
     for k in 0..=n_out {
@@ -716,18 +711,21 @@ fn record(
 }
 
 impl Run {
-    /// Room for `n` outputs, taken at once instead of by doubling as they come (each
-    /// doubling copies what was recorded and touches fresh pages).
-    fn reserve(&mut self, n: usize) {
-        self.t.reserve(n);
-        self.q.reserve(n);
-        self.qd.reserve(n);
-        self.platform.reserve(n);
-        self.upper.reserve(n);
-        self.lower.reserve(n);
-        self.actuators.reserve(n);
-        self.energy.reserve(n);
-        self.actuator_power.reserve(n);
+    /// An empty run with room for `n` outputs, taken at once instead of by doubling as they
+    /// come (each doubling copies what was recorded and touches fresh pages).
+    fn with_capacity(n: usize) -> Self {
+        Run {
+            t: Vec::with_capacity(n),
+            q: Vec::with_capacity(n),
+            qd: Vec::with_capacity(n),
+            platform: Vec::with_capacity(n),
+            upper: Vec::with_capacity(n),
+            lower: Vec::with_capacity(n),
+            actuators: Vec::with_capacity(n),
+            energy: Vec::with_capacity(n),
+            actuator_power: Vec::with_capacity(n),
+            ..Run::default()
+        }
     }
 
     /// Work done by the actuators from the first output to each output (J), by the
