@@ -171,7 +171,7 @@ pub fn kernels(patterns: &[KktPattern]) -> Option<TokenStream> {
     let (n, m, np) = (pattern.n, pattern.m, pattern.phi_q_rows.len());
     let k = entries.len();
     let text = format!(
-        "use symbody_runtime::kkt::{{length_error, mass_pivot_error, KktError, KktKernels, Pivoting}};
+        "use symbody_runtime::kkt::{{kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting}};
 /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
 pub static KKT: [KktKernels; {k}] = [{}];
 {items}
@@ -213,8 +213,10 @@ fn one(pattern: &KktPattern, i: usize) -> Option<(String, String)> {
         "KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor_{i}, solve: kkt_solve_{i}, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times }}"
     );
     let text = format!(
-        "#[allow(unused_variables, unused_parens, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
-fn kkt_factor_{i}(mass: &[f64], c: f64, phi_q: &[f64], st: &mut [f64], piv: &mut Pivoting) -> Result<(), KktError> {{
+        "{}
+#[allow(unused_variables, unused_parens, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
+#[inline(always)]
+fn kkt_factor_{i}_any(mass: &[f64], c: f64, phi_q: &[f64], st: &mut [f64], piv: &mut Pivoting) -> Result<(), KktError> {{
 let mass: &[f64; {nm}] = mass.try_into().map_err(|_| length_error({nm}, mass.len()))?;
 let phi_q: &[f64; {np}] = phi_q.try_into().map_err(|_| length_error({np}, phi_q.len()))?;
 let st_len = st.len();
@@ -222,8 +224,10 @@ let st: &mut [f64; {ns}] = st.try_into().map_err(|_| length_error({ns}, st_len))
 {}
 Ok(())
 }}
+{}
 #[allow(unused_variables, clippy::neg_cmp_op_on_partial_ord, clippy::nonminimal_bool)]
-fn kkt_solve_{i}(f: &[f64], g: &[f64], x: &mut [f64], y: &mut [f64], st: &[f64]) -> Result<(), KktError> {{
+#[inline(always)]
+fn kkt_solve_{i}_any(f: &[f64], g: &[f64], x: &mut [f64], y: &mut [f64], st: &[f64]) -> Result<(), KktError> {{
 let f: &[f64; {n}] = f.try_into().map_err(|_| length_error({n}, f.len()))?;
 let g: &[f64; {m}] = g.try_into().map_err(|_| length_error({m}, g.len()))?;
 let x_len = x.len();
@@ -235,10 +239,49 @@ let st: &[f64; {ns}] = st.try_into().map_err(|_| length_error({ns}, st.len()))?;
 Ok(())
 }}
 ",
+        dispatch(
+            &format!("kkt_factor_{i}"),
+            "mass: &[f64], c: f64, phi_q: &[f64], st: &mut [f64], piv: &mut Pivoting",
+            "mass, c, phi_q, st, piv"
+        ),
         factor.text(),
+        dispatch(
+            &format!("kkt_solve_{i}"),
+            "f: &[f64], g: &[f64], x: &mut [f64], y: &mut [f64], st: &[f64]",
+            "f, g, x, y, st"
+        ),
         solve.text()
     );
     Some((text, entry))
+}
+
+/// `name`, which runs `name_any` (the straight-line body, inlined into one caller only, so
+/// compiled once). On x86-64 that caller is compiled for AVX: the kernels are tens of
+/// kilobytes of scalar arithmetic run once per call, and SSE2's two-operand forms need a
+/// register copy before most products (13 % of the Stewart factorization's instructions),
+/// AVX's three-operand forms do not. Same operations in the same order (nothing is fused
+/// into an FMA), so the same bits. `SchurKkt` takes the kernels only where
+/// `kernels_run_here()`, and runs its loops on a CPU without AVX.
+fn dispatch(name: &str, params: &str, args: &str) -> String {
+    format!(
+        "#[cfg(target_arch = \"x86_64\")]
+#[target_feature(enable = \"avx\")]
+fn {name}_avx({params}) -> Result<(), KktError> {{
+{name}_any({args})
+}}
+fn {name}({params}) -> Result<(), KktError> {{
+#[cfg(target_arch = \"x86_64\")]
+{{
+if !kernels_run_here() {{
+return Err(KktError::KernelsUnsupported);
+}}
+// SAFETY: the CPU has AVX (`kernels_run_here`), checked just above.
+unsafe {{ {name}_avx({args}) }}
+}}
+#[cfg(not(target_arch = \"x86_64\"))]
+{name}_any({args})
+}}"
+    )
 }
 
 /// `out[c] = Σ phi_q[k]·y[row k]` over column `c`'s nonzeros in their order, as

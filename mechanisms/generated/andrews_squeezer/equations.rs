@@ -21898,7 +21898,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 2] = [
@@ -21921,13 +21921,41 @@ pub mod exact {
             transpose_times: kkt_transpose_times,
         },
     ];
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn kkt_factor_0_avx(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        kkt_factor_0_any(mass, c, phi_q, st, piv)
+    }
+    fn kkt_factor_0(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if !kernels_run_here() {
+                return Err(KktError::KernelsUnsupported);
+            }
+            unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
+        }
+        #[cfg(not(target_arch = "x86_64"))] kkt_factor_0_any(mass, c, phi_q, st, piv)
+    }
     #[allow(
         unused_variables,
         unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_factor_0(
+    #[inline(always)]
+    fn kkt_factor_0_any(
         mass: &[f64],
         c: f64,
         phi_q: &[f64],
@@ -27493,12 +27521,40 @@ pub mod exact {
         st[654] = v4708;
         Ok(())
     }
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn kkt_solve_0_avx(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        kkt_solve_0_any(f, g, x, y, st)
+    }
+    fn kkt_solve_0(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if !kernels_run_here() {
+                return Err(KktError::KernelsUnsupported);
+            }
+            unsafe { kkt_solve_0_avx(f, g, x, y, st) }
+        }
+        #[cfg(not(target_arch = "x86_64"))] kkt_solve_0_any(f, g, x, y, st)
+    }
     #[allow(
         unused_variables,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_solve_0(
+    #[inline(always)]
+    fn kkt_solve_0_any(
         f: &[f64],
         g: &[f64],
         x: &mut [f64],
@@ -29239,13 +29295,41 @@ pub mod exact {
         x[41] = v1462;
         Ok(())
     }
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn kkt_factor_1_avx(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        kkt_factor_1_any(mass, c, phi_q, st, piv)
+    }
+    fn kkt_factor_1(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if !kernels_run_here() {
+                return Err(KktError::KernelsUnsupported);
+            }
+            unsafe { kkt_factor_1_avx(mass, c, phi_q, st, piv) }
+        }
+        #[cfg(not(target_arch = "x86_64"))] kkt_factor_1_any(mass, c, phi_q, st, piv)
+    }
     #[allow(
         unused_variables,
         unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_factor_1(
+    #[inline(always)]
+    fn kkt_factor_1_any(
         mass: &[f64],
         c: f64,
         phi_q: &[f64],
@@ -34986,12 +35070,40 @@ pub mod exact {
         st[674] = v4863;
         Ok(())
     }
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn kkt_solve_1_avx(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        kkt_solve_1_any(f, g, x, y, st)
+    }
+    fn kkt_solve_1(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if !kernels_run_here() {
+                return Err(KktError::KernelsUnsupported);
+            }
+            unsafe { kkt_solve_1_avx(f, g, x, y, st) }
+        }
+        #[cfg(not(target_arch = "x86_64"))] kkt_solve_1_any(f, g, x, y, st)
+    }
     #[allow(
         unused_variables,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_solve_1(
+    #[inline(always)]
+    fn kkt_solve_1_any(
         f: &[f64],
         g: &[f64],
         x: &mut [f64],
@@ -46358,7 +46470,8 @@ pub mod reduced {
             kkt: &KKT,
         };
         use symbody_runtime::kkt::{
-            length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+            kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels,
+            Pivoting,
         };
         /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
         pub static KKT: [KktKernels; 1] = [
@@ -46372,13 +46485,41 @@ pub mod reduced {
                 transpose_times: kkt_transpose_times,
             },
         ];
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx")]
+        fn kkt_factor_0_avx(
+            mass: &[f64],
+            c: f64,
+            phi_q: &[f64],
+            st: &mut [f64],
+            piv: &mut Pivoting,
+        ) -> Result<(), KktError> {
+            kkt_factor_0_any(mass, c, phi_q, st, piv)
+        }
+        fn kkt_factor_0(
+            mass: &[f64],
+            c: f64,
+            phi_q: &[f64],
+            st: &mut [f64],
+            piv: &mut Pivoting,
+        ) -> Result<(), KktError> {
+            #[cfg(target_arch = "x86_64")]
+            {
+                if !kernels_run_here() {
+                    return Err(KktError::KernelsUnsupported);
+                }
+                unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
+            }
+            #[cfg(not(target_arch = "x86_64"))] kkt_factor_0_any(mass, c, phi_q, st, piv)
+        }
         #[allow(
             unused_variables,
             unused_parens,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_factor_0(
+        #[inline(always)]
+        fn kkt_factor_0_any(
             mass: &[f64],
             c: f64,
             phi_q: &[f64],
@@ -47171,12 +47312,40 @@ pub mod reduced {
             st[162] = v566;
             Ok(())
         }
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx")]
+        fn kkt_solve_0_avx(
+            f: &[f64],
+            g: &[f64],
+            x: &mut [f64],
+            y: &mut [f64],
+            st: &[f64],
+        ) -> Result<(), KktError> {
+            kkt_solve_0_any(f, g, x, y, st)
+        }
+        fn kkt_solve_0(
+            f: &[f64],
+            g: &[f64],
+            x: &mut [f64],
+            y: &mut [f64],
+            st: &[f64],
+        ) -> Result<(), KktError> {
+            #[cfg(target_arch = "x86_64")]
+            {
+                if !kernels_run_here() {
+                    return Err(KktError::KernelsUnsupported);
+                }
+                unsafe { kkt_solve_0_avx(f, g, x, y, st) }
+            }
+            #[cfg(not(target_arch = "x86_64"))] kkt_solve_0_any(f, g, x, y, st)
+        }
         #[allow(
             unused_variables,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_solve_0(
+        #[inline(always)]
+        fn kkt_solve_0_any(
             f: &[f64],
             g: &[f64],
             x: &mut [f64],

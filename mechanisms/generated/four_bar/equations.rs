@@ -8467,7 +8467,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 1] = [
@@ -8481,13 +8481,41 @@ pub mod exact {
             transpose_times: kkt_transpose_times,
         },
     ];
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn kkt_factor_0_avx(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        kkt_factor_0_any(mass, c, phi_q, st, piv)
+    }
+    fn kkt_factor_0(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if !kernels_run_here() {
+                return Err(KktError::KernelsUnsupported);
+            }
+            unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
+        }
+        #[cfg(not(target_arch = "x86_64"))] kkt_factor_0_any(mass, c, phi_q, st, piv)
+    }
     #[allow(
         unused_variables,
         unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_factor_0(
+    #[inline(always)]
+    fn kkt_factor_0_any(
         mass: &[f64],
         c: f64,
         phi_q: &[f64],
@@ -10202,12 +10230,40 @@ pub mod exact {
         st[237] = v1398;
         Ok(())
     }
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn kkt_solve_0_avx(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        kkt_solve_0_any(f, g, x, y, st)
+    }
+    fn kkt_solve_0(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if !kernels_run_here() {
+                return Err(KktError::KernelsUnsupported);
+            }
+            unsafe { kkt_solve_0_avx(f, g, x, y, st) }
+        }
+        #[cfg(not(target_arch = "x86_64"))] kkt_solve_0_any(f, g, x, y, st)
+    }
     #[allow(
         unused_variables,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_solve_0(
+    #[inline(always)]
+    fn kkt_solve_0_any(
         f: &[f64],
         g: &[f64],
         x: &mut [f64],
@@ -14484,7 +14540,8 @@ pub mod reduced {
             kkt: &KKT,
         };
         use symbody_runtime::kkt::{
-            length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+            kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels,
+            Pivoting,
         };
         /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
         pub static KKT: [KktKernels; 1] = [
@@ -14498,13 +14555,41 @@ pub mod reduced {
                 transpose_times: kkt_transpose_times,
             },
         ];
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx")]
+        fn kkt_factor_0_avx(
+            mass: &[f64],
+            c: f64,
+            phi_q: &[f64],
+            st: &mut [f64],
+            piv: &mut Pivoting,
+        ) -> Result<(), KktError> {
+            kkt_factor_0_any(mass, c, phi_q, st, piv)
+        }
+        fn kkt_factor_0(
+            mass: &[f64],
+            c: f64,
+            phi_q: &[f64],
+            st: &mut [f64],
+            piv: &mut Pivoting,
+        ) -> Result<(), KktError> {
+            #[cfg(target_arch = "x86_64")]
+            {
+                if !kernels_run_here() {
+                    return Err(KktError::KernelsUnsupported);
+                }
+                unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
+            }
+            #[cfg(not(target_arch = "x86_64"))] kkt_factor_0_any(mass, c, phi_q, st, piv)
+        }
         #[allow(
             unused_variables,
             unused_parens,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_factor_0(
+        #[inline(always)]
+        fn kkt_factor_0_any(
             mass: &[f64],
             c: f64,
             phi_q: &[f64],
@@ -14800,12 +14885,40 @@ pub mod reduced {
             st[62] = v194;
             Ok(())
         }
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx")]
+        fn kkt_solve_0_avx(
+            f: &[f64],
+            g: &[f64],
+            x: &mut [f64],
+            y: &mut [f64],
+            st: &[f64],
+        ) -> Result<(), KktError> {
+            kkt_solve_0_any(f, g, x, y, st)
+        }
+        fn kkt_solve_0(
+            f: &[f64],
+            g: &[f64],
+            x: &mut [f64],
+            y: &mut [f64],
+            st: &[f64],
+        ) -> Result<(), KktError> {
+            #[cfg(target_arch = "x86_64")]
+            {
+                if !kernels_run_here() {
+                    return Err(KktError::KernelsUnsupported);
+                }
+                unsafe { kkt_solve_0_avx(f, g, x, y, st) }
+            }
+            #[cfg(not(target_arch = "x86_64"))] kkt_solve_0_any(f, g, x, y, st)
+        }
         #[allow(
             unused_variables,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_solve_0(
+        #[inline(always)]
+        fn kkt_solve_0_any(
             f: &[f64],
             g: &[f64],
             x: &mut [f64],

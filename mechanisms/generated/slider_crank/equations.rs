@@ -5353,7 +5353,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 1] = [
@@ -5367,13 +5367,41 @@ pub mod exact {
             transpose_times: kkt_transpose_times,
         },
     ];
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn kkt_factor_0_avx(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        kkt_factor_0_any(mass, c, phi_q, st, piv)
+    }
+    fn kkt_factor_0(
+        mass: &[f64],
+        c: f64,
+        phi_q: &[f64],
+        st: &mut [f64],
+        piv: &mut Pivoting,
+    ) -> Result<(), KktError> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if !kernels_run_here() {
+                return Err(KktError::KernelsUnsupported);
+            }
+            unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
+        }
+        #[cfg(not(target_arch = "x86_64"))] kkt_factor_0_any(mass, c, phi_q, st, piv)
+    }
     #[allow(
         unused_variables,
         unused_parens,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_factor_0(
+    #[inline(always)]
+    fn kkt_factor_0_any(
         mass: &[f64],
         c: f64,
         phi_q: &[f64],
@@ -7206,12 +7234,40 @@ pub mod exact {
         st[250] = v1521;
         Ok(())
     }
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn kkt_solve_0_avx(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        kkt_solve_0_any(f, g, x, y, st)
+    }
+    fn kkt_solve_0(
+        f: &[f64],
+        g: &[f64],
+        x: &mut [f64],
+        y: &mut [f64],
+        st: &[f64],
+    ) -> Result<(), KktError> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if !kernels_run_here() {
+                return Err(KktError::KernelsUnsupported);
+            }
+            unsafe { kkt_solve_0_avx(f, g, x, y, st) }
+        }
+        #[cfg(not(target_arch = "x86_64"))] kkt_solve_0_any(f, g, x, y, st)
+    }
     #[allow(
         unused_variables,
         clippy::neg_cmp_op_on_partial_ord,
         clippy::nonminimal_bool
     )]
-    fn kkt_solve_0(
+    #[inline(always)]
+    fn kkt_solve_0_any(
         f: &[f64],
         g: &[f64],
         x: &mut [f64],
@@ -15400,7 +15456,8 @@ pub mod reduced {
             kkt: &KKT,
         };
         use symbody_runtime::kkt::{
-            length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+            kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels,
+            Pivoting,
         };
         /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
         pub static KKT: [KktKernels; 1] = [
@@ -15414,13 +15471,41 @@ pub mod reduced {
                 transpose_times: kkt_transpose_times,
             },
         ];
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx")]
+        fn kkt_factor_0_avx(
+            mass: &[f64],
+            c: f64,
+            phi_q: &[f64],
+            st: &mut [f64],
+            piv: &mut Pivoting,
+        ) -> Result<(), KktError> {
+            kkt_factor_0_any(mass, c, phi_q, st, piv)
+        }
+        fn kkt_factor_0(
+            mass: &[f64],
+            c: f64,
+            phi_q: &[f64],
+            st: &mut [f64],
+            piv: &mut Pivoting,
+        ) -> Result<(), KktError> {
+            #[cfg(target_arch = "x86_64")]
+            {
+                if !kernels_run_here() {
+                    return Err(KktError::KernelsUnsupported);
+                }
+                unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
+            }
+            #[cfg(not(target_arch = "x86_64"))] kkt_factor_0_any(mass, c, phi_q, st, piv)
+        }
         #[allow(
             unused_variables,
             unused_parens,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_factor_0(
+        #[inline(always)]
+        fn kkt_factor_0_any(
             mass: &[f64],
             c: f64,
             phi_q: &[f64],
@@ -17217,12 +17302,40 @@ pub mod reduced {
             st[240] = v1497;
             Ok(())
         }
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx")]
+        fn kkt_solve_0_avx(
+            f: &[f64],
+            g: &[f64],
+            x: &mut [f64],
+            y: &mut [f64],
+            st: &[f64],
+        ) -> Result<(), KktError> {
+            kkt_solve_0_any(f, g, x, y, st)
+        }
+        fn kkt_solve_0(
+            f: &[f64],
+            g: &[f64],
+            x: &mut [f64],
+            y: &mut [f64],
+            st: &[f64],
+        ) -> Result<(), KktError> {
+            #[cfg(target_arch = "x86_64")]
+            {
+                if !kernels_run_here() {
+                    return Err(KktError::KernelsUnsupported);
+                }
+                unsafe { kkt_solve_0_avx(f, g, x, y, st) }
+            }
+            #[cfg(not(target_arch = "x86_64"))] kkt_solve_0_any(f, g, x, y, st)
+        }
         #[allow(
             unused_variables,
             clippy::neg_cmp_op_on_partial_ord,
             clippy::nonminimal_bool
         )]
-        fn kkt_solve_0(
+        #[inline(always)]
+        fn kkt_solve_0_any(
             f: &[f64],
             g: &[f64],
             x: &mut [f64],

@@ -13,6 +13,17 @@
 
 use super::{KktError, KktPattern, Pivots};
 
+/// Whether generated kernels run on this CPU. On x86-64 the generator compiles them for AVX
+/// (`codegen/src/kkt.rs`, `dispatch`), whose three-operand forms spare the register copy
+/// that SSE2's two-operand forms need before most products; without AVX, `SchurKkt` runs
+/// its loops, which compute the same bits.
+pub fn kernels_run_here() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    return std::arch::is_x86_feature_detected!("avx");
+    #[cfg(not(target_arch = "x86_64"))]
+    return true;
+}
+
 /// A generated factorization: `(mass, mass_scale, phi_q, state, pivoting)`, as
 /// [`KktSolver::factor`](super::KktSolver::factor), leaving in `state` what the solves read.
 pub type FactorKernel = fn(&[f64], f64, &[f64], &mut [f64], &mut Pivoting) -> Result<(), KktError>;

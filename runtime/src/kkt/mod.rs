@@ -25,8 +25,8 @@ mod schur;
 
 pub use dense::DenseKkt;
 pub use kernels::{
-    length_error, mass_pivot_error, FactorKernel, KktKernels, Pivoting, SolveKernel,
-    TransposeKernel,
+    kernels_run_here, length_error, mass_pivot_error, FactorKernel, KktKernels, Pivoting,
+    SolveKernel, TransposeKernel,
 };
 pub use schur::{SchurKkt, SchurPlan};
 
@@ -173,6 +173,9 @@ pub enum KktError {
     NotFactored,
     /// An input slice has the wrong length.
     Dimension { expected: usize, got: usize },
+    /// Generated kernels called on a CPU without what they were compiled for
+    /// ([`kernels_run_here`]); `SchurKkt` selects them only where they run.
+    KernelsUnsupported,
 }
 
 impl KktError {
@@ -209,6 +212,11 @@ impl KktError {
                 expected,
                 got,
             },
+            KktError::KernelsUnsupported => Error::InvalidSetting {
+                name: "kkt",
+                value: f64::NAN,
+                reason: "generated KKT kernels need AVX, which this CPU lacks",
+            },
         }
     }
 }
@@ -232,6 +240,7 @@ impl fmt::Display for KktError {
             KktError::Dimension { expected, got } => {
                 write!(f, "KKT input has length {got}, expected {expected}")
             }
+            KktError::KernelsUnsupported => write!(f, "generated KKT kernels need AVX"),
         }
     }
 }

@@ -18,8 +18,8 @@
 
 use super::ordering::{minimum_degree, Symbolic};
 use super::{
-    check_kkt_len, DenseKkt, KktError, KktKernels, KktPattern, KktSolver, Pivoting, Pivots,
-    DEFAULT_PIVOT_TOLERANCE,
+    check_kkt_len, kernels_run_here, DenseKkt, KktError, KktKernels, KktPattern, KktSolver,
+    Pivoting, Pivots, DEFAULT_PIVOT_TOLERANCE,
 };
 use crate::error::Error;
 
@@ -481,7 +481,8 @@ impl KktSolver for SchurKkt {
         // Generated kernels were emitted for this pattern's own analysis: the ordering and
         // slot tables below would go unused (1.3 M instructions for the Stewart model).
         let fingerprint = pattern.fingerprint();
-        if let Some(kernels) = pattern.kernels.iter().find(|k| k.pattern == fingerprint) {
+        let kernels = pattern.kernels.iter().find(|k| k.pattern == fingerprint);
+        if let Some(kernels) = kernels.filter(|_| kernels_run_here()) {
             return Ok(Self::without_analysis(pattern, None, Some(kernels)));
         }
         let (n, m) = (pattern.n, pattern.m);
