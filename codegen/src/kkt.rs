@@ -171,7 +171,7 @@ pub fn kernels(patterns: &[KktPattern]) -> Option<TokenStream> {
     let (n, m, np) = (pattern.n, pattern.m, pattern.phi_q_rows.len());
     let k = entries.len();
     let text = format!(
-        "use symbody_runtime::kkt::{{kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting}};
+        "use symbody_runtime::kkt::{{length_error, mass_pivot_error, KktError, KktKernels, Pivoting}};
 /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
 pub static KKT: [KktKernels; {k}] = [{}];
 {items}
@@ -272,7 +272,7 @@ fn {name}_avx({params}) -> Result<(), KktError> {{
 fn {name}({params}) -> Result<(), KktError> {{
 #[cfg(target_arch = \"x86_64\")]
 {{
-if !kernels_run_here() {{
+if !symbody_runtime::kkt::kernels_run_here() {{
 return Err(KktError::KernelsUnsupported);
 }}
 // SAFETY: the CPU has AVX (`kernels_run_here`), checked just above.

@@ -21898,7 +21898,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 2] = [
@@ -21941,7 +21941,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -27541,7 +27541,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_0_avx(f, g, x, y, st) }
@@ -29315,7 +29315,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_1_avx(mass, c, phi_q, st, piv) }
@@ -35090,7 +35090,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_1_avx(f, g, x, y, st) }
@@ -46470,8 +46470,7 @@ pub mod reduced {
             kkt: &KKT,
         };
         use symbody_runtime::kkt::{
-            kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels,
-            Pivoting,
+            length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
         /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
         pub static KKT: [KktKernels; 1] = [
@@ -46505,7 +46504,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -47332,7 +47331,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_solve_0_avx(f, g, x, y, st) }

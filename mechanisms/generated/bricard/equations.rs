@@ -10572,7 +10572,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 1] = [
@@ -10606,7 +10606,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -15673,7 +15673,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_0_avx(f, g, x, y, st) }

@@ -5577,7 +5577,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 1] = [
@@ -5611,7 +5611,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -6217,7 +6217,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_0_avx(f, g, x, y, st) }

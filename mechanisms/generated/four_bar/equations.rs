@@ -8467,7 +8467,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 1] = [
@@ -8501,7 +8501,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -10250,7 +10250,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_0_avx(f, g, x, y, st) }
@@ -14540,8 +14540,7 @@ pub mod reduced {
             kkt: &KKT,
         };
         use symbody_runtime::kkt::{
-            kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels,
-            Pivoting,
+            length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
         /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
         pub static KKT: [KktKernels; 1] = [
@@ -14575,7 +14574,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -14905,7 +14904,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_solve_0_avx(f, g, x, y, st) }

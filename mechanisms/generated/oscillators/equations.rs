@@ -1404,7 +1404,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 2] = [
@@ -1447,7 +1447,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -1907,7 +1907,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_0_avx(f, g, x, y, st) }
@@ -2206,7 +2206,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_1_avx(mass, c, phi_q, st, piv) }
@@ -2685,7 +2685,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_1_avx(f, g, x, y, st) }
@@ -7619,8 +7619,7 @@ pub mod reduced {
             kkt: &KKT,
         };
         use symbody_runtime::kkt::{
-            kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels,
-            Pivoting,
+            length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
         /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
         pub static KKT: [KktKernels; 1] = [
@@ -7654,7 +7653,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -8061,7 +8060,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_solve_0_avx(f, g, x, y, st) }

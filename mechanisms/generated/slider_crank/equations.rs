@@ -5353,7 +5353,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 1] = [
@@ -5387,7 +5387,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -7254,7 +7254,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_0_avx(f, g, x, y, st) }
@@ -15456,8 +15456,7 @@ pub mod reduced {
             kkt: &KKT,
         };
         use symbody_runtime::kkt::{
-            kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels,
-            Pivoting,
+            length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
         /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
         pub static KKT: [KktKernels; 1] = [
@@ -15491,7 +15490,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -17322,7 +17321,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_solve_0_avx(f, g, x, y, st) }

@@ -21791,7 +21791,7 @@ pub mod exact {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 1] = [
@@ -21825,7 +21825,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -29666,7 +29666,7 @@ pub mod exact {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_0_avx(f, g, x, y, st) }
@@ -43646,7 +43646,7 @@ pub mod paper {
         kkt: &KKT,
     };
     use symbody_runtime::kkt::{
-        kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
+        length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
     };
     /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
     pub static KKT: [KktKernels; 1] = [
@@ -43680,7 +43680,7 @@ pub mod paper {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -50573,7 +50573,7 @@ pub mod paper {
     ) -> Result<(), KktError> {
         #[cfg(target_arch = "x86_64")]
         {
-            if !kernels_run_here() {
+            if !symbody_runtime::kkt::kernels_run_here() {
                 return Err(KktError::KernelsUnsupported);
             }
             unsafe { kkt_solve_0_avx(f, g, x, y, st) }
@@ -64323,8 +64323,7 @@ pub mod reduced {
             kkt: &KKT,
         };
         use symbody_runtime::kkt::{
-            kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels,
-            Pivoting,
+            length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
         /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
         pub static KKT: [KktKernels; 1] = [
@@ -64358,7 +64357,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -71149,7 +71148,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_solve_0_avx(f, g, x, y, st) }
@@ -78284,8 +78283,7 @@ pub mod reduced {
             kkt: &KKT,
         };
         use symbody_runtime::kkt::{
-            kernels_run_here, length_error, mass_pivot_error, KktError, KktKernels,
-            Pivoting,
+            length_error, mass_pivot_error, KktError, KktKernels, Pivoting,
         };
         /// The KKT factor and solve for this model's patterns, straight-line (`KktKernels`).
         pub static KKT: [KktKernels; 1] = [
@@ -78319,7 +78317,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_factor_0_avx(mass, c, phi_q, st, piv) }
@@ -84504,7 +84502,7 @@ pub mod reduced {
         ) -> Result<(), KktError> {
             #[cfg(target_arch = "x86_64")]
             {
-                if !kernels_run_here() {
+                if !symbody_runtime::kkt::kernels_run_here() {
                     return Err(KktError::KernelsUnsupported);
                 }
                 unsafe { kkt_solve_0_avx(f, g, x, y, st) }
