@@ -64,3 +64,29 @@ fn the_kinematic_path_allocates_nothing_per_output() {
     });
     assert_eq!(n, 0, "{n} allocations in 99 outputs");
 }
+
+#[test]
+fn reading_a_reduced_state_in_full_terms_allocates_nothing() {
+    use symbody_benchmark_mechanisms::stewart_6_6::reduced;
+    use symbody_runtime::Mechanism;
+    let r = &reduced::REDUCTION;
+    let q = reduced::Exact.info().q0;
+    let qd: Vec<f64> = (0..q.len()).map(|i| 0.01 * i as f64 - 0.2).collect();
+    let mut offsets = vec![0.0; 3 * r.substitutions.len()];
+    let (mut full_q, mut full_qd) = (vec![0.0; r.n_full], vec![0.0; r.n_full]);
+    let n = allocations(|| {
+        r.expand_state((q, &qd), 0.3, &mut offsets, (&mut full_q, &mut full_qd))
+            .unwrap();
+    });
+    assert_eq!(n, 0, "{n} allocations");
+    // What the per-vector expansion (which allocates its offsets) gives.
+    let (mut each_q, mut each_qd) = (vec![0.0; r.n_full], vec![0.0; r.n_full]);
+    r.expand(q, 0.3, 0, &mut each_q).unwrap();
+    r.expand(&qd, 0.3, 1, &mut each_qd).unwrap();
+    assert_eq!((full_q, full_qd), (each_q, each_qd));
+    // Work memory of the wrong length is an error, not a panic.
+    let (mut a, mut b) = (vec![0.0; r.n_full], vec![0.0; r.n_full]);
+    assert!(r
+        .expand_state((q, &qd), 0.3, &mut [0.0; 2], (&mut a, &mut b))
+        .is_err());
+}

@@ -53,6 +53,26 @@ impl Reduction {
         self.expand_with(reduced, &offsets, order, full)
     }
 
+    /// [`Self::expand`] of a whole state: positions and velocities `(q, q̇)` at `t` into
+    /// `full`'s two, with `offsets` (three per substitution) as work memory. Evaluates the
+    /// offsets once and allocates nothing: for loops that read every step in full terms.
+    pub fn expand_state(
+        &self,
+        (q, qd): (&[f64], &[f64]),
+        t: f64,
+        offsets: &mut [f64],
+        full: (&mut [f64], &mut [f64]),
+    ) -> Result<(), Error> {
+        check_len(
+            "substitution offsets",
+            3 * self.substitutions.len(),
+            offsets.len(),
+        )?;
+        (self.offsets)(t, offsets);
+        self.expand_with(q, offsets, 0, full.0)?;
+        self.expand_with(qd, offsets, 1, full.1)
+    }
+
     /// [`Self::expand`] with the offsets at `t` already evaluated.
     fn expand_with(
         &self,

@@ -448,7 +448,8 @@ fn integrate(
     let mut it = integrator(reduced.map_or(mech, |(r, _)| r), opts)?;
     // The full model's state, which every output and the meter see.
     let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);
-    full_state(&it, reduced, &mut q, &mut qd)?;
+    let mut offsets = vec![0.0; reduced.map_or(0, |(_, r)| 3 * r.substitutions.len())];
+    full_state(&it, reduced, &mut offsets, (&mut q, &mut qd))?;
     let mut meter: EnergyMeter =
         EnergyMeter::with_settings(info, solve_settings(opts.cross_singular))?;
     let mut watch = ResidualWatch::new(info);
@@ -466,7 +467,7 @@ fn integrate(
             if stepped?.is_none() {
                 break;
             }
-            full_state(&it, reduced, &mut q, &mut qd)?;
+            full_state(&it, reduced, &mut offsets, (&mut q, &mut qd))?;
             if let Some(w) = &modes {
                 w.check(&q, it.t())?;
             }
@@ -484,22 +485,19 @@ fn integrate(
 }
 
 /// The full model's state `(q, q̇)` from the integrator's, expanded when it integrates the
-/// reduced model.
+/// reduced model (`offsets`: the reduction's work memory). Runs at every step.
 fn full_state(
     it: &Integrator<&'static (dyn Mechanism + Sync)>,
     reduced: Option<Reduced>,
-    q: &mut [f64],
-    qd: &mut [f64],
+    offsets: &mut [f64],
+    (q, qd): (&mut [f64], &mut [f64]),
 ) -> Result<(), Error> {
     match reduced {
         None => {
             q.copy_from_slice(it.q());
             qd.copy_from_slice(it.qd());
         }
-        Some((_, r)) => {
-            r.expand(it.q(), it.t(), 0, q)?;
-            r.expand(it.qd(), it.t(), 1, qd)?;
-        }
+        Some((_, r)) => r.expand_state((it.q(), it.qd()), it.t(), offsets, (q, qd))?,
     }
     Ok(())
 }

@@ -552,11 +552,12 @@ pub fn simulate_reduced(registry: &Registry, opts: &Options) -> Result<Run, Scen
     let mut run = Run::with_capacity(n_out + 1);
     let mut recorder = Recorder::new(info, layout)?;
     let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);
+    let mut offsets = vec![0.0; 3 * reduction.substitutions.len()];
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(opts.t_end);
         it.advance_to(t_out)?;
-        reduction.expand(it.q(), it.t(), 0, &mut q)?;
-        reduction.expand(it.qd(), it.t(), 1, &mut qd)?;
+        let state = (it.q(), it.qd());
+        reduction.expand_state(state, it.t(), &mut offsets, (&mut q, &mut qd))?;
         let state = (it.t(), &q[..], &qd[..]);
         recorder.record_state(&full, state, None, it.energy(), &mut run)?;
     }
