@@ -556,8 +556,8 @@ pub fn simulate_reduced(registry: &Registry, opts: &Options) -> Result<Run, Scen
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(opts.t_end);
         it.advance_to(t_out)?;
-        let state = (it.q(), it.qd());
-        reduction.expand_state(state, it.t(), &mut offsets, (&mut q, &mut qd))?;
+        let reduced_state = (it.q(), it.qd());
+        reduction.expand_state(reduced_state, it.t(), &mut offsets, (&mut q, &mut qd))?;
         let state = (it.t(), &q[..], &qd[..]);
         recorder.record_state(&full, state, None, it.energy(), &mut run)?;
     }
