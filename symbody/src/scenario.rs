@@ -297,6 +297,39 @@ pub fn kinematic_until<M: Mechanism + Sync>(
     opts: &Options,
     stop: &AtomicBool,
 ) -> Result<Run, ScenarioError> {
+    kinematic_beside(mech, reduced, opts, stop, || ()).0
+}
+
+/// [`kinematic_until`], with `beside` run on the recording thread before it records: work
+/// that would otherwise need a third thread beside the path (the scene's choice of path,
+/// which may set `stop`). The path starts at once; the recorder, faster than the path,
+/// catches up. Returns the run and what `beside` returned.
+pub fn kinematic_beside<M: Mechanism + Sync, R: Send>(
+    mech: M,
+    reduced: Option<Reduced>,
+    opts: &Options,
+    stop: &AtomicBool,
+    beside: impl FnOnce() -> R + Send,
+) -> (Result<Run, ScenarioError>, R) {
+    let mut beside = Some(beside);
+    let mut done = None;
+    let run = kinematic_run(mech, reduced, opts, stop, &mut || {
+        if let Some(b) = beside.take() {
+            done = Some(b());
+        }
+    });
+    // `beside` ran unless the run failed before its recording thread started.
+    let done = done.unwrap_or_else(|| (beside.take().expect("beside runs once"))());
+    (run, done)
+}
+
+fn kinematic_run<M: Mechanism + Sync>(
+    mech: M,
+    reduced: Option<Reduced>,
+    opts: &Options,
+    stop: &AtomicBool,
+    beside: &mut (dyn FnMut() + Send),
+) -> Result<Run, ScenarioError> {
     let info = mech.info();
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
     let n_out = output_count(opts.t_end, opts.output_step)?;
@@ -317,11 +350,14 @@ pub fn kinematic_until<M: Mechanism + Sync>(
     };
     let modes = ModeWatch::new(&Platform::new(&mech)?, &q0, SIMULATION_MAX_CONDITION)?;
     let forces = Forces::new(info, &layout)?;
-    let (to_recorder, solved) = mpsc::sync_channel::<Batch>(4);
+    // Room for the batches the path solves while the recorder is still busy with `beside`
+    // (the paper's choice of path: ≈ 1.5 ms, 150 outputs): a full queue stops the path.
+    let (to_recorder, solved) = mpsc::sync_channel::<Batch>(QUEUE);
     let (to_path, emptied) = mpsc::channel::<Batch>();
     let mut run = std::thread::scope(|scope| {
         let mech = &mech;
         let recording = scope.spawn(move || -> Result<Run, ScenarioError> {
+            beside();
             let mut run = Run::with_capacity(n_out + 1);
             // Φq q̇ + Φt.
             let mut velocity = vec![0.0; info.n_constraints];
@@ -381,6 +417,9 @@ pub fn kinematic_until<M: Mechanism + Sync>(
     run.wall = start.elapsed();
     Ok(run)
 }
+
+/// Batches that may wait for the recording thread.
+const QUEUE: usize = 32;
 
 /// Outputs the kinematic path hands to the recording thread at a time: each hand-over costs
 /// a wake-up, which 16 outputs' solves hide.

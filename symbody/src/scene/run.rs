@@ -205,8 +205,9 @@ pub fn run_observed(
 }
 
 /// [`run_observed`] for `files = "paper"` (the paper scenario, which takes no observer). The
-/// kinematic path starts beside the choice, which usually picks it, and is given up when
-/// the choice is integration; the wall time spans both. With `reduce`, the path follows the
+/// kinematic path starts while the recording thread makes the choice, which usually picks
+/// it, and is given up when the choice is integration (two threads, not three: on two
+/// cores a third took turns with the path); the wall time spans both. With `reduce`, the path follows the
 /// generated reduced model where there is one.
 fn run_paper(
     scene: &Scene,
@@ -224,20 +225,13 @@ fn run_paper(
         reactions: Reactions::Recovered,
     };
     let integrate = AtomicBool::new(scene.path == PathRequest::Integrate);
-    let (choice, kinematic) = std::thread::scope(|scope| {
-        let chooser = scope.spawn(|| {
-            let choice = choose_path(scene, mech);
-            if !matches!(choice, Ok(PathChoice::Kinematic { .. })) {
-                integrate.store(true, Ordering::Relaxed);
-            }
-            choice
-        });
-        let reduced = generic::reduced_model(entry, mech, scene.reduce);
-        let kinematic = scenario::kinematic_until(mech, reduced, &opts, &integrate);
-        let choice = chooser
-            .join()
-            .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-        (choice, kinematic)
+    let reduced = generic::reduced_model(entry, mech, scene.reduce);
+    let (kinematic, choice) = scenario::kinematic_beside(mech, reduced, &opts, &integrate, || {
+        let choice = choose_path(scene, mech);
+        if !matches!(choice, Ok(PathChoice::Kinematic { .. })) {
+            integrate.store(true, Ordering::Relaxed);
+        }
+        choice
     });
     let choice = choice?;
     let run = match choice {
