@@ -360,8 +360,12 @@ fn replay_factor(plan: &SchurPlan<'_>, pattern: &KktPattern, code: &mut Code) ->
                 d = code.sub_mul(d, a, a);
             }
             let coord = plan.block_coords[c0 + j];
+            // Positive and finite as two comparisons: LLVM turns `!(d > 0.0) ||
+            // !d.is_finite()` into a floating-point class test that x86 evaluates in ~25
+            // integer instructions (measured on the Stewart factorization: one per
+            // coordinate), `d <= f64::MAX` into one comparison.
             code.line(&format!(
-                "if !({d} > 0.0) || !{d}.is_finite() {{ return Err(mass_pivot_error({d}, {coord})); }}"
+                "if !({d} > 0.0 && {d} <= f64::MAX) {{ return Err(mass_pivot_error({d}, {coord})); }}"
             ));
             let root = code.bind(format_args!("{d}.sqrt()"));
             chol[off + j * s + j] = root;

@@ -22078,25 +22078,25 @@ pub mod exact {
         if !phi_q[259].is_finite() {
             return Err(KktError::NotFinite);
         }
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[14] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[15] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[16] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -22104,7 +22104,7 @@ pub mod exact {
         st[17] = v7;
         let v8: f64 = (c * mass[7]) * v7;
         st[0] = v8;
-        if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+        if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[5]), 4));
         }
         let v9: f64 = (c * mass[5]).sqrt();
@@ -22114,7 +22114,7 @@ pub mod exact {
         st[1] = v11;
         let v12: f64 = (c * mass[9]) - v8 * v8;
         let v13: f64 = v12 - v11 * v11;
-        if !(v13 > 0.0) || !v13.is_finite() {
+        if !(v13 > 0.0 && v13 <= f64::MAX) {
             return Err(mass_pivot_error(v13, 5));
         }
         let v14: f64 = v13.sqrt();
@@ -22505,25 +22505,25 @@ pub mod exact {
         let v362: f64 = v360 + v361;
         let v363: f64 = v71 * v71;
         let v364: f64 = v362 + v363;
-        if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+        if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[10]), 6));
         }
         let v365: f64 = (c * mass[10]).sqrt();
         let v366: f64 = 1.0 / v365;
         st[20] = v366;
-        if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+        if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[11]), 7));
         }
         let v367: f64 = (c * mass[11]).sqrt();
         let v368: f64 = 1.0 / v367;
         st[21] = v368;
-        if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+        if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[12]), 8));
         }
         let v369: f64 = (c * mass[12]).sqrt();
         let v370: f64 = 1.0 / v369;
         st[22] = v370;
-        if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+        if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[13]), 9));
         }
         let v371: f64 = (c * mass[13]).sqrt();
@@ -22531,7 +22531,7 @@ pub mod exact {
         st[23] = v372;
         let v373: f64 = (c * mass[17]) * v372;
         st[2] = v373;
-        if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+        if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[15]), 10));
         }
         let v374: f64 = (c * mass[15]).sqrt();
@@ -22541,7 +22541,7 @@ pub mod exact {
         st[3] = v376;
         let v377: f64 = (c * mass[19]) - v373 * v373;
         let v378: f64 = v377 - v376 * v376;
-        if !(v378 > 0.0) || !v378.is_finite() {
+        if !(v378 > 0.0 && v378 <= f64::MAX) {
             return Err(mass_pivot_error(v378, 11));
         }
         let v379: f64 = v378.sqrt();
@@ -23472,25 +23472,25 @@ pub mod exact {
         let v1243: f64 = v1241 + v1242;
         let v1244: f64 = v468 * v468;
         let v1245: f64 = v1243 + v1244;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 12));
         }
         let v1246: f64 = (c * mass[20]).sqrt();
         let v1247: f64 = 1.0 / v1246;
         st[26] = v1247;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 13));
         }
         let v1248: f64 = (c * mass[21]).sqrt();
         let v1249: f64 = 1.0 / v1248;
         st[27] = v1249;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 14));
         }
         let v1250: f64 = (c * mass[22]).sqrt();
         let v1251: f64 = 1.0 / v1250;
         st[28] = v1251;
-        if !((c * mass[23]) > 0.0) || !(c * mass[23]).is_finite() {
+        if !((c * mass[23]) > 0.0 && (c * mass[23]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[23]), 15));
         }
         let v1252: f64 = (c * mass[23]).sqrt();
@@ -23498,7 +23498,7 @@ pub mod exact {
         st[29] = v1253;
         let v1254: f64 = (c * mass[27]) * v1253;
         st[4] = v1254;
-        if !((c * mass[25]) > 0.0) || !(c * mass[25]).is_finite() {
+        if !((c * mass[25]) > 0.0 && (c * mass[25]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[25]), 16));
         }
         let v1255: f64 = (c * mass[25]).sqrt();
@@ -23508,7 +23508,7 @@ pub mod exact {
         st[5] = v1257;
         let v1258: f64 = (c * mass[29]) - v1254 * v1254;
         let v1259: f64 = v1258 - v1257 * v1257;
-        if !(v1259 > 0.0) || !v1259.is_finite() {
+        if !(v1259 > 0.0 && v1259 <= f64::MAX) {
             return Err(mass_pivot_error(v1259, 17));
         }
         let v1260: f64 = v1259.sqrt();
@@ -23749,25 +23749,25 @@ pub mod exact {
         let v1468: f64 = v1466 + v1467;
         let v1469: f64 = v1301 * v1301;
         let v1470: f64 = v1468 + v1469;
-        if !((c * mass[30]) > 0.0) || !(c * mass[30]).is_finite() {
+        if !((c * mass[30]) > 0.0 && (c * mass[30]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[30]), 18));
         }
         let v1471: f64 = (c * mass[30]).sqrt();
         let v1472: f64 = 1.0 / v1471;
         st[32] = v1472;
-        if !((c * mass[31]) > 0.0) || !(c * mass[31]).is_finite() {
+        if !((c * mass[31]) > 0.0 && (c * mass[31]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[31]), 19));
         }
         let v1473: f64 = (c * mass[31]).sqrt();
         let v1474: f64 = 1.0 / v1473;
         st[33] = v1474;
-        if !((c * mass[32]) > 0.0) || !(c * mass[32]).is_finite() {
+        if !((c * mass[32]) > 0.0 && (c * mass[32]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[32]), 20));
         }
         let v1475: f64 = (c * mass[32]).sqrt();
         let v1476: f64 = 1.0 / v1475;
         st[34] = v1476;
-        if !((c * mass[33]) > 0.0) || !(c * mass[33]).is_finite() {
+        if !((c * mass[33]) > 0.0 && (c * mass[33]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[33]), 21));
         }
         let v1477: f64 = (c * mass[33]).sqrt();
@@ -23775,7 +23775,7 @@ pub mod exact {
         st[35] = v1478;
         let v1479: f64 = (c * mass[37]) * v1478;
         st[6] = v1479;
-        if !((c * mass[35]) > 0.0) || !(c * mass[35]).is_finite() {
+        if !((c * mass[35]) > 0.0 && (c * mass[35]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[35]), 22));
         }
         let v1480: f64 = (c * mass[35]).sqrt();
@@ -23785,7 +23785,7 @@ pub mod exact {
         st[7] = v1482;
         let v1483: f64 = (c * mass[39]) - v1479 * v1479;
         let v1484: f64 = v1483 - v1482 * v1482;
-        if !(v1484 > 0.0) || !v1484.is_finite() {
+        if !(v1484 > 0.0 && v1484 <= f64::MAX) {
             return Err(mass_pivot_error(v1484, 23));
         }
         let v1485: f64 = v1484.sqrt();
@@ -24191,25 +24191,25 @@ pub mod exact {
         let v1848: f64 = v1846 + v1847;
         let v1849: f64 = v1542 * v1542;
         let v1850: f64 = v1848 + v1849;
-        if !((c * mass[40]) > 0.0) || !(c * mass[40]).is_finite() {
+        if !((c * mass[40]) > 0.0 && (c * mass[40]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[40]), 24));
         }
         let v1851: f64 = (c * mass[40]).sqrt();
         let v1852: f64 = 1.0 / v1851;
         st[38] = v1852;
-        if !((c * mass[41]) > 0.0) || !(c * mass[41]).is_finite() {
+        if !((c * mass[41]) > 0.0 && (c * mass[41]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[41]), 25));
         }
         let v1853: f64 = (c * mass[41]).sqrt();
         let v1854: f64 = 1.0 / v1853;
         st[39] = v1854;
-        if !((c * mass[42]) > 0.0) || !(c * mass[42]).is_finite() {
+        if !((c * mass[42]) > 0.0 && (c * mass[42]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[42]), 26));
         }
         let v1855: f64 = (c * mass[42]).sqrt();
         let v1856: f64 = 1.0 / v1855;
         st[40] = v1856;
-        if !((c * mass[43]) > 0.0) || !(c * mass[43]).is_finite() {
+        if !((c * mass[43]) > 0.0 && (c * mass[43]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[43]), 27));
         }
         let v1857: f64 = (c * mass[43]).sqrt();
@@ -24217,7 +24217,7 @@ pub mod exact {
         st[41] = v1858;
         let v1859: f64 = (c * mass[47]) * v1858;
         st[8] = v1859;
-        if !((c * mass[45]) > 0.0) || !(c * mass[45]).is_finite() {
+        if !((c * mass[45]) > 0.0 && (c * mass[45]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[45]), 28));
         }
         let v1860: f64 = (c * mass[45]).sqrt();
@@ -24227,7 +24227,7 @@ pub mod exact {
         st[9] = v1862;
         let v1863: f64 = (c * mass[49]) - v1859 * v1859;
         let v1864: f64 = v1863 - v1862 * v1862;
-        if !(v1864 > 0.0) || !v1864.is_finite() {
+        if !(v1864 > 0.0 && v1864 <= f64::MAX) {
             return Err(mass_pivot_error(v1864, 29));
         }
         let v1865: f64 = v1864.sqrt();
@@ -24468,25 +24468,25 @@ pub mod exact {
         let v2073: f64 = v2071 + v2072;
         let v2074: f64 = v1906 * v1906;
         let v2075: f64 = v2073 + v2074;
-        if !((c * mass[50]) > 0.0) || !(c * mass[50]).is_finite() {
+        if !((c * mass[50]) > 0.0 && (c * mass[50]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[50]), 30));
         }
         let v2076: f64 = (c * mass[50]).sqrt();
         let v2077: f64 = 1.0 / v2076;
         st[44] = v2077;
-        if !((c * mass[51]) > 0.0) || !(c * mass[51]).is_finite() {
+        if !((c * mass[51]) > 0.0 && (c * mass[51]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[51]), 31));
         }
         let v2078: f64 = (c * mass[51]).sqrt();
         let v2079: f64 = 1.0 / v2078;
         st[45] = v2079;
-        if !((c * mass[52]) > 0.0) || !(c * mass[52]).is_finite() {
+        if !((c * mass[52]) > 0.0 && (c * mass[52]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[52]), 32));
         }
         let v2080: f64 = (c * mass[52]).sqrt();
         let v2081: f64 = 1.0 / v2080;
         st[46] = v2081;
-        if !((c * mass[53]) > 0.0) || !(c * mass[53]).is_finite() {
+        if !((c * mass[53]) > 0.0 && (c * mass[53]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[53]), 33));
         }
         let v2082: f64 = (c * mass[53]).sqrt();
@@ -24494,7 +24494,7 @@ pub mod exact {
         st[47] = v2083;
         let v2084: f64 = (c * mass[57]) * v2083;
         st[10] = v2084;
-        if !((c * mass[55]) > 0.0) || !(c * mass[55]).is_finite() {
+        if !((c * mass[55]) > 0.0 && (c * mass[55]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[55]), 34));
         }
         let v2085: f64 = (c * mass[55]).sqrt();
@@ -24504,7 +24504,7 @@ pub mod exact {
         st[11] = v2087;
         let v2088: f64 = (c * mass[59]) - v2084 * v2084;
         let v2089: f64 = v2088 - v2087 * v2087;
-        if !(v2089 > 0.0) || !v2089.is_finite() {
+        if !(v2089 > 0.0 && v2089 <= f64::MAX) {
             return Err(mass_pivot_error(v2089, 35));
         }
         let v2090: f64 = v2089.sqrt();
@@ -24745,25 +24745,25 @@ pub mod exact {
         let v2298: f64 = v2296 + v2297;
         let v2299: f64 = v2131 * v2131;
         let v2300: f64 = v2298 + v2299;
-        if !((c * mass[60]) > 0.0) || !(c * mass[60]).is_finite() {
+        if !((c * mass[60]) > 0.0 && (c * mass[60]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[60]), 36));
         }
         let v2301: f64 = (c * mass[60]).sqrt();
         let v2302: f64 = 1.0 / v2301;
         st[50] = v2302;
-        if !((c * mass[61]) > 0.0) || !(c * mass[61]).is_finite() {
+        if !((c * mass[61]) > 0.0 && (c * mass[61]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[61]), 37));
         }
         let v2303: f64 = (c * mass[61]).sqrt();
         let v2304: f64 = 1.0 / v2303;
         st[51] = v2304;
-        if !((c * mass[62]) > 0.0) || !(c * mass[62]).is_finite() {
+        if !((c * mass[62]) > 0.0 && (c * mass[62]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[62]), 38));
         }
         let v2305: f64 = (c * mass[62]).sqrt();
         let v2306: f64 = 1.0 / v2305;
         st[52] = v2306;
-        if !((c * mass[63]) > 0.0) || !(c * mass[63]).is_finite() {
+        if !((c * mass[63]) > 0.0 && (c * mass[63]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[63]), 39));
         }
         let v2307: f64 = (c * mass[63]).sqrt();
@@ -24771,7 +24771,7 @@ pub mod exact {
         st[53] = v2308;
         let v2309: f64 = (c * mass[67]) * v2308;
         st[12] = v2309;
-        if !((c * mass[65]) > 0.0) || !(c * mass[65]).is_finite() {
+        if !((c * mass[65]) > 0.0 && (c * mass[65]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[65]), 40));
         }
         let v2310: f64 = (c * mass[65]).sqrt();
@@ -24781,7 +24781,7 @@ pub mod exact {
         st[13] = v2312;
         let v2313: f64 = (c * mass[69]) - v2309 * v2309;
         let v2314: f64 = v2313 - v2312 * v2312;
-        if !(v2314 > 0.0) || !v2314.is_finite() {
+        if !(v2314 > 0.0 && v2314 <= f64::MAX) {
             return Err(mass_pivot_error(v2314, 41));
         }
         let v2315: f64 = v2314.sqrt();
@@ -29452,25 +29452,25 @@ pub mod exact {
         if !phi_q[259].is_finite() {
             return Err(KktError::NotFinite);
         }
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[28] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[29] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[30] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -29481,7 +29481,7 @@ pub mod exact {
         let v9: f64 = (c * mass[9]) * v7;
         st[1] = v9;
         let v10: f64 = (c * mass[7]) - v8 * v8;
-        if !(v10 > 0.0) || !v10.is_finite() {
+        if !(v10 > 0.0 && v10 <= f64::MAX) {
             return Err(mass_pivot_error(v10, 4));
         }
         let v11: f64 = v10.sqrt();
@@ -29492,7 +29492,7 @@ pub mod exact {
         st[2] = v14;
         let v15: f64 = (c * mass[11]) - v9 * v9;
         let v16: f64 = v15 - v14 * v14;
-        if !(v16 > 0.0) || !v16.is_finite() {
+        if !(v16 > 0.0 && v16 <= f64::MAX) {
             return Err(mass_pivot_error(v16, 5));
         }
         let v17: f64 = v16.sqrt();
@@ -29893,25 +29893,25 @@ pub mod exact {
         let v375: f64 = v373 + v374;
         let v376: f64 = v84 * v84;
         let v377: f64 = v375 + v376;
-        if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+        if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[12]), 6));
         }
         let v378: f64 = (c * mass[12]).sqrt();
         let v379: f64 = 1.0 / v378;
         st[34] = v379;
-        if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+        if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[13]), 7));
         }
         let v380: f64 = (c * mass[13]).sqrt();
         let v381: f64 = 1.0 / v380;
         st[35] = v381;
-        if !((c * mass[14]) > 0.0) || !(c * mass[14]).is_finite() {
+        if !((c * mass[14]) > 0.0 && (c * mass[14]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[14]), 8));
         }
         let v382: f64 = (c * mass[14]).sqrt();
         let v383: f64 = 1.0 / v382;
         st[36] = v383;
-        if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+        if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[15]), 9));
         }
         let v384: f64 = (c * mass[15]).sqrt();
@@ -29919,7 +29919,7 @@ pub mod exact {
         st[37] = v385;
         let v386: f64 = (c * mass[19]) * v385;
         st[3] = v386;
-        if !((c * mass[17]) > 0.0) || !(c * mass[17]).is_finite() {
+        if !((c * mass[17]) > 0.0 && (c * mass[17]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[17]), 10));
         }
         let v387: f64 = (c * mass[17]).sqrt();
@@ -29929,7 +29929,7 @@ pub mod exact {
         st[4] = v389;
         let v390: f64 = (c * mass[21]) - v386 * v386;
         let v391: f64 = v390 - v389 * v389;
-        if !(v391 > 0.0) || !v391.is_finite() {
+        if !(v391 > 0.0 && v391 <= f64::MAX) {
             return Err(mass_pivot_error(v391, 11));
         }
         let v392: f64 = v391.sqrt();
@@ -30860,7 +30860,7 @@ pub mod exact {
         let v1256: f64 = v1254 + v1255;
         let v1257: f64 = v481 * v481;
         let v1258: f64 = v1256 + v1257;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 12));
         }
         let v1259: f64 = (c * mass[22]).sqrt();
@@ -30877,7 +30877,7 @@ pub mod exact {
         let v1265: f64 = (c * mass[52]) * v1260;
         st[15] = v1265;
         let v1266: f64 = (c * mass[29]) - v1261 * v1261;
-        if !(v1266 > 0.0) || !v1266.is_finite() {
+        if !(v1266 > 0.0 && v1266 <= f64::MAX) {
             return Err(mass_pivot_error(v1266, 13));
         }
         let v1267: f64 = v1266.sqrt();
@@ -30897,7 +30897,7 @@ pub mod exact {
         st[16] = v1276;
         let v1277: f64 = (c * mass[36]) - v1262 * v1262;
         let v1278: f64 = v1277 - v1270 * v1270;
-        if !(v1278 > 0.0) || !v1278.is_finite() {
+        if !(v1278 > 0.0 && v1278 <= f64::MAX) {
             return Err(mass_pivot_error(v1278, 14));
         }
         let v1279: f64 = v1278.sqrt();
@@ -30918,7 +30918,7 @@ pub mod exact {
         let v1290: f64 = (c * mass[43]) - v1263 * v1263;
         let v1291: f64 = v1290 - v1272 * v1272;
         let v1292: f64 = v1291 - v1283 * v1283;
-        if !(v1292 > 0.0) || !v1292.is_finite() {
+        if !(v1292 > 0.0 && v1292 <= f64::MAX) {
             return Err(mass_pivot_error(v1292, 15));
         }
         let v1293: f64 = v1292.sqrt();
@@ -30938,7 +30938,7 @@ pub mod exact {
         let v1304: f64 = v1303 - v1274 * v1274;
         let v1305: f64 = v1304 - v1286 * v1286;
         let v1306: f64 = v1305 - v1298 * v1298;
-        if !(v1306 > 0.0) || !v1306.is_finite() {
+        if !(v1306 > 0.0 && v1306 <= f64::MAX) {
             return Err(mass_pivot_error(v1306, 16));
         }
         let v1307: f64 = v1306.sqrt();
@@ -30955,7 +30955,7 @@ pub mod exact {
         let v1316: f64 = v1315 - v1289 * v1289;
         let v1317: f64 = v1316 - v1302 * v1302;
         let v1318: f64 = v1317 - v1313 * v1313;
-        if !(v1318 > 0.0) || !v1318.is_finite() {
+        if !(v1318 > 0.0 && v1318 <= f64::MAX) {
             return Err(mass_pivot_error(v1318, 17));
         }
         let v1319: f64 = v1318.sqrt();
@@ -31298,25 +31298,25 @@ pub mod exact {
         let v1623: f64 = v1621 + v1622;
         let v1624: f64 = v1414 * v1414;
         let v1625: f64 = v1623 + v1624;
-        if !((c * mass[58]) > 0.0) || !(c * mass[58]).is_finite() {
+        if !((c * mass[58]) > 0.0 && (c * mass[58]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[58]), 18));
         }
         let v1626: f64 = (c * mass[58]).sqrt();
         let v1627: f64 = 1.0 / v1626;
         st[46] = v1627;
-        if !((c * mass[59]) > 0.0) || !(c * mass[59]).is_finite() {
+        if !((c * mass[59]) > 0.0 && (c * mass[59]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[59]), 19));
         }
         let v1628: f64 = (c * mass[59]).sqrt();
         let v1629: f64 = 1.0 / v1628;
         st[47] = v1629;
-        if !((c * mass[60]) > 0.0) || !(c * mass[60]).is_finite() {
+        if !((c * mass[60]) > 0.0 && (c * mass[60]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[60]), 20));
         }
         let v1630: f64 = (c * mass[60]).sqrt();
         let v1631: f64 = 1.0 / v1630;
         st[48] = v1631;
-        if !((c * mass[61]) > 0.0) || !(c * mass[61]).is_finite() {
+        if !((c * mass[61]) > 0.0 && (c * mass[61]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[61]), 21));
         }
         let v1632: f64 = (c * mass[61]).sqrt();
@@ -31324,7 +31324,7 @@ pub mod exact {
         st[49] = v1633;
         let v1634: f64 = (c * mass[65]) * v1633;
         st[20] = v1634;
-        if !((c * mass[63]) > 0.0) || !(c * mass[63]).is_finite() {
+        if !((c * mass[63]) > 0.0 && (c * mass[63]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[63]), 22));
         }
         let v1635: f64 = (c * mass[63]).sqrt();
@@ -31334,7 +31334,7 @@ pub mod exact {
         st[21] = v1637;
         let v1638: f64 = (c * mass[67]) - v1634 * v1634;
         let v1639: f64 = v1638 - v1637 * v1637;
-        if !(v1639 > 0.0) || !v1639.is_finite() {
+        if !(v1639 > 0.0 && v1639 <= f64::MAX) {
             return Err(mass_pivot_error(v1639, 23));
         }
         let v1640: f64 = v1639.sqrt();
@@ -31740,25 +31740,25 @@ pub mod exact {
         let v2003: f64 = v2001 + v2002;
         let v2004: f64 = v1697 * v1697;
         let v2005: f64 = v2003 + v2004;
-        if !((c * mass[68]) > 0.0) || !(c * mass[68]).is_finite() {
+        if !((c * mass[68]) > 0.0 && (c * mass[68]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[68]), 24));
         }
         let v2006: f64 = (c * mass[68]).sqrt();
         let v2007: f64 = 1.0 / v2006;
         st[52] = v2007;
-        if !((c * mass[69]) > 0.0) || !(c * mass[69]).is_finite() {
+        if !((c * mass[69]) > 0.0 && (c * mass[69]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[69]), 25));
         }
         let v2008: f64 = (c * mass[69]).sqrt();
         let v2009: f64 = 1.0 / v2008;
         st[53] = v2009;
-        if !((c * mass[70]) > 0.0) || !(c * mass[70]).is_finite() {
+        if !((c * mass[70]) > 0.0 && (c * mass[70]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[70]), 26));
         }
         let v2010: f64 = (c * mass[70]).sqrt();
         let v2011: f64 = 1.0 / v2010;
         st[54] = v2011;
-        if !((c * mass[71]) > 0.0) || !(c * mass[71]).is_finite() {
+        if !((c * mass[71]) > 0.0 && (c * mass[71]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[71]), 27));
         }
         let v2012: f64 = (c * mass[71]).sqrt();
@@ -31766,7 +31766,7 @@ pub mod exact {
         st[55] = v2013;
         let v2014: f64 = (c * mass[75]) * v2013;
         st[22] = v2014;
-        if !((c * mass[73]) > 0.0) || !(c * mass[73]).is_finite() {
+        if !((c * mass[73]) > 0.0 && (c * mass[73]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[73]), 28));
         }
         let v2015: f64 = (c * mass[73]).sqrt();
@@ -31776,7 +31776,7 @@ pub mod exact {
         st[23] = v2017;
         let v2018: f64 = (c * mass[77]) - v2014 * v2014;
         let v2019: f64 = v2018 - v2017 * v2017;
-        if !(v2019 > 0.0) || !v2019.is_finite() {
+        if !(v2019 > 0.0 && v2019 <= f64::MAX) {
             return Err(mass_pivot_error(v2019, 29));
         }
         let v2020: f64 = v2019.sqrt();
@@ -32017,25 +32017,25 @@ pub mod exact {
         let v2228: f64 = v2226 + v2227;
         let v2229: f64 = v2061 * v2061;
         let v2230: f64 = v2228 + v2229;
-        if !((c * mass[78]) > 0.0) || !(c * mass[78]).is_finite() {
+        if !((c * mass[78]) > 0.0 && (c * mass[78]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[78]), 30));
         }
         let v2231: f64 = (c * mass[78]).sqrt();
         let v2232: f64 = 1.0 / v2231;
         st[58] = v2232;
-        if !((c * mass[79]) > 0.0) || !(c * mass[79]).is_finite() {
+        if !((c * mass[79]) > 0.0 && (c * mass[79]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[79]), 31));
         }
         let v2233: f64 = (c * mass[79]).sqrt();
         let v2234: f64 = 1.0 / v2233;
         st[59] = v2234;
-        if !((c * mass[80]) > 0.0) || !(c * mass[80]).is_finite() {
+        if !((c * mass[80]) > 0.0 && (c * mass[80]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[80]), 32));
         }
         let v2235: f64 = (c * mass[80]).sqrt();
         let v2236: f64 = 1.0 / v2235;
         st[60] = v2236;
-        if !((c * mass[81]) > 0.0) || !(c * mass[81]).is_finite() {
+        if !((c * mass[81]) > 0.0 && (c * mass[81]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[81]), 33));
         }
         let v2237: f64 = (c * mass[81]).sqrt();
@@ -32043,7 +32043,7 @@ pub mod exact {
         st[61] = v2238;
         let v2239: f64 = (c * mass[85]) * v2238;
         st[24] = v2239;
-        if !((c * mass[83]) > 0.0) || !(c * mass[83]).is_finite() {
+        if !((c * mass[83]) > 0.0 && (c * mass[83]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[83]), 34));
         }
         let v2240: f64 = (c * mass[83]).sqrt();
@@ -32053,7 +32053,7 @@ pub mod exact {
         st[25] = v2242;
         let v2243: f64 = (c * mass[87]) - v2239 * v2239;
         let v2244: f64 = v2243 - v2242 * v2242;
-        if !(v2244 > 0.0) || !v2244.is_finite() {
+        if !(v2244 > 0.0 && v2244 <= f64::MAX) {
             return Err(mass_pivot_error(v2244, 35));
         }
         let v2245: f64 = v2244.sqrt();
@@ -32294,25 +32294,25 @@ pub mod exact {
         let v2453: f64 = v2451 + v2452;
         let v2454: f64 = v2286 * v2286;
         let v2455: f64 = v2453 + v2454;
-        if !((c * mass[88]) > 0.0) || !(c * mass[88]).is_finite() {
+        if !((c * mass[88]) > 0.0 && (c * mass[88]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[88]), 36));
         }
         let v2456: f64 = (c * mass[88]).sqrt();
         let v2457: f64 = 1.0 / v2456;
         st[64] = v2457;
-        if !((c * mass[89]) > 0.0) || !(c * mass[89]).is_finite() {
+        if !((c * mass[89]) > 0.0 && (c * mass[89]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[89]), 37));
         }
         let v2458: f64 = (c * mass[89]).sqrt();
         let v2459: f64 = 1.0 / v2458;
         st[65] = v2459;
-        if !((c * mass[90]) > 0.0) || !(c * mass[90]).is_finite() {
+        if !((c * mass[90]) > 0.0 && (c * mass[90]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[90]), 38));
         }
         let v2460: f64 = (c * mass[90]).sqrt();
         let v2461: f64 = 1.0 / v2460;
         st[66] = v2461;
-        if !((c * mass[91]) > 0.0) || !(c * mass[91]).is_finite() {
+        if !((c * mass[91]) > 0.0 && (c * mass[91]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[91]), 39));
         }
         let v2462: f64 = (c * mass[91]).sqrt();
@@ -32320,7 +32320,7 @@ pub mod exact {
         st[67] = v2463;
         let v2464: f64 = (c * mass[95]) * v2463;
         st[26] = v2464;
-        if !((c * mass[93]) > 0.0) || !(c * mass[93]).is_finite() {
+        if !((c * mass[93]) > 0.0 && (c * mass[93]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[93]), 40));
         }
         let v2465: f64 = (c * mass[93]).sqrt();
@@ -32330,7 +32330,7 @@ pub mod exact {
         st[27] = v2467;
         let v2468: f64 = (c * mass[97]) - v2464 * v2464;
         let v2469: f64 = v2468 - v2467 * v2467;
-        if !(v2469 > 0.0) || !v2469.is_finite() {
+        if !(v2469 > 0.0 && v2469 <= f64::MAX) {
             return Err(mass_pivot_error(v2469, 41));
         }
         let v2470: f64 = v2469.sqrt();
@@ -46535,19 +46535,19 @@ pub mod reduced {
             let st: &mut [f64; 163] = st
                 .try_into()
                 .map_err(|_| length_error(163, st_len))?;
-            if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+            if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[0]), 0));
             }
             let v0: f64 = (c * mass[0]).sqrt();
             let v1: f64 = 1.0 / v0;
             st[0] = v1;
-            if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+            if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[1]), 1));
             }
             let v2: f64 = (c * mass[1]).sqrt();
             let v3: f64 = 1.0 / v2;
             st[1] = v3;
-            if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+            if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[2]), 2));
             }
             let v4: f64 = (c * mass[2]).sqrt();
@@ -46591,19 +46591,19 @@ pub mod reduced {
             let v33: f64 = v12 * v12;
             let v34: f64 = v13 * v13;
             let v35: f64 = v33 + v34;
-            if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+            if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[3]), 3));
             }
             let v36: f64 = (c * mass[3]).sqrt();
             let v37: f64 = 1.0 / v36;
             st[3] = v37;
-            if !((c * mass[4]) > 0.0) || !(c * mass[4]).is_finite() {
+            if !((c * mass[4]) > 0.0 && (c * mass[4]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[4]), 4));
             }
             let v38: f64 = (c * mass[4]).sqrt();
             let v39: f64 = 1.0 / v38;
             st[4] = v39;
-            if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+            if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[5]), 5));
             }
             let v40: f64 = (c * mass[5]).sqrt();
@@ -46720,19 +46720,19 @@ pub mod reduced {
             let v134: f64 = v56 * v56;
             let v135: f64 = v57 * v57;
             let v136: f64 = v134 + v135;
-            if !((c * mass[6]) > 0.0) || !(c * mass[6]).is_finite() {
+            if !((c * mass[6]) > 0.0 && (c * mass[6]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[6]), 6));
             }
             let v137: f64 = (c * mass[6]).sqrt();
             let v138: f64 = 1.0 / v137;
             st[6] = v138;
-            if !((c * mass[7]) > 0.0) || !(c * mass[7]).is_finite() {
+            if !((c * mass[7]) > 0.0 && (c * mass[7]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[7]), 7));
             }
             let v139: f64 = (c * mass[7]).sqrt();
             let v140: f64 = 1.0 / v139;
             st[7] = v140;
-            if !((c * mass[8]) > 0.0) || !(c * mass[8]).is_finite() {
+            if !((c * mass[8]) > 0.0 && (c * mass[8]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[8]), 8));
             }
             let v141: f64 = (c * mass[8]).sqrt();
@@ -46779,19 +46779,19 @@ pub mod reduced {
             let v173: f64 = v149 * v149;
             let v174: f64 = v150 * v150;
             let v175: f64 = v173 + v174;
-            if !((c * mass[9]) > 0.0) || !(c * mass[9]).is_finite() {
+            if !((c * mass[9]) > 0.0 && (c * mass[9]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[9]), 9));
             }
             let v176: f64 = (c * mass[9]).sqrt();
             let v177: f64 = 1.0 / v176;
             st[9] = v177;
-            if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+            if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[10]), 10));
             }
             let v178: f64 = (c * mass[10]).sqrt();
             let v179: f64 = 1.0 / v178;
             st[10] = v179;
-            if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+            if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[11]), 11));
             }
             let v180: f64 = (c * mass[11]).sqrt();
@@ -46838,19 +46838,19 @@ pub mod reduced {
             let v212: f64 = v188 * v188;
             let v213: f64 = v189 * v189;
             let v214: f64 = v212 + v213;
-            if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+            if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[12]), 12));
             }
             let v215: f64 = (c * mass[12]).sqrt();
             let v216: f64 = 1.0 / v215;
             st[12] = v216;
-            if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+            if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[13]), 13));
             }
             let v217: f64 = (c * mass[13]).sqrt();
             let v218: f64 = 1.0 / v217;
             st[13] = v218;
-            if !((c * mass[14]) > 0.0) || !(c * mass[14]).is_finite() {
+            if !((c * mass[14]) > 0.0 && (c * mass[14]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[14]), 14));
             }
             let v219: f64 = (c * mass[14]).sqrt();
@@ -46897,19 +46897,19 @@ pub mod reduced {
             let v251: f64 = v227 * v227;
             let v252: f64 = v228 * v228;
             let v253: f64 = v251 + v252;
-            if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+            if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[15]), 15));
             }
             let v254: f64 = (c * mass[15]).sqrt();
             let v255: f64 = 1.0 / v254;
             st[15] = v255;
-            if !((c * mass[16]) > 0.0) || !(c * mass[16]).is_finite() {
+            if !((c * mass[16]) > 0.0 && (c * mass[16]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[16]), 16));
             }
             let v256: f64 = (c * mass[16]).sqrt();
             let v257: f64 = 1.0 / v256;
             st[16] = v257;
-            if !((c * mass[17]) > 0.0) || !(c * mass[17]).is_finite() {
+            if !((c * mass[17]) > 0.0 && (c * mass[17]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[17]), 17));
             }
             let v258: f64 = (c * mass[17]).sqrt();
@@ -46956,19 +46956,19 @@ pub mod reduced {
             let v290: f64 = v266 * v266;
             let v291: f64 = v267 * v267;
             let v292: f64 = v290 + v291;
-            if !((c * mass[18]) > 0.0) || !(c * mass[18]).is_finite() {
+            if !((c * mass[18]) > 0.0 && (c * mass[18]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[18]), 18));
             }
             let v293: f64 = (c * mass[18]).sqrt();
             let v294: f64 = 1.0 / v293;
             st[18] = v294;
-            if !((c * mass[19]) > 0.0) || !(c * mass[19]).is_finite() {
+            if !((c * mass[19]) > 0.0 && (c * mass[19]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[19]), 19));
             }
             let v295: f64 = (c * mass[19]).sqrt();
             let v296: f64 = 1.0 / v295;
             st[19] = v296;
-            if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+            if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[20]), 20));
             }
             let v297: f64 = (c * mass[20]).sqrt();

@@ -10647,25 +10647,25 @@ pub mod exact {
         if !phi_q[225].is_finite() {
             return Err(KktError::NotFinite);
         }
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[30] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[31] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[32] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -10678,7 +10678,7 @@ pub mod exact {
         let v10: f64 = (c * mass[15]) * v7;
         st[3] = v10;
         let v11: f64 = (c * mass[8]) - v8 * v8;
-        if !(v11 > 0.0) || !v11.is_finite() {
+        if !(v11 > 0.0 && v11 <= f64::MAX) {
             return Err(mass_pivot_error(v11, 4));
         }
         let v12: f64 = v11.sqrt();
@@ -10692,7 +10692,7 @@ pub mod exact {
         st[4] = v17;
         let v18: f64 = (c * mass[13]) - v9 * v9;
         let v19: f64 = v18 - v15 * v15;
-        if !(v19 > 0.0) || !v19.is_finite() {
+        if !(v19 > 0.0 && v19 <= f64::MAX) {
             return Err(mass_pivot_error(v19, 5));
         }
         let v20: f64 = v19.sqrt();
@@ -10705,7 +10705,7 @@ pub mod exact {
         let v25: f64 = (c * mass[18]) - v10 * v10;
         let v26: f64 = v25 - v17 * v17;
         let v27: f64 = v26 - v24 * v24;
-        if !(v27 > 0.0) || !v27.is_finite() {
+        if !(v27 > 0.0 && v27 <= f64::MAX) {
             return Err(mass_pivot_error(v27, 6));
         }
         let v28: f64 = v27.sqrt();
@@ -11357,25 +11357,25 @@ pub mod exact {
         let v623: f64 = v621 + v622;
         let v624: f64 = v145 * v145;
         let v625: f64 = v623 + v624;
-        if !((c * mass[19]) > 0.0) || !(c * mass[19]).is_finite() {
+        if !((c * mass[19]) > 0.0 && (c * mass[19]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[19]), 7));
         }
         let v626: f64 = (c * mass[19]).sqrt();
         let v627: f64 = 1.0 / v626;
         st[37] = v627;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 8));
         }
         let v628: f64 = (c * mass[20]).sqrt();
         let v629: f64 = 1.0 / v628;
         st[38] = v629;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 9));
         }
         let v630: f64 = (c * mass[21]).sqrt();
         let v631: f64 = 1.0 / v630;
         st[39] = v631;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 10));
         }
         let v632: f64 = (c * mass[22]).sqrt();
@@ -11388,7 +11388,7 @@ pub mod exact {
         let v636: f64 = (c * mass[34]) * v633;
         st[9] = v636;
         let v637: f64 = (c * mass[27]) - v634 * v634;
-        if !(v637 > 0.0) || !v637.is_finite() {
+        if !(v637 > 0.0 && v637 <= f64::MAX) {
             return Err(mass_pivot_error(v637, 11));
         }
         let v638: f64 = v637.sqrt();
@@ -11402,7 +11402,7 @@ pub mod exact {
         st[10] = v643;
         let v644: f64 = (c * mass[32]) - v635 * v635;
         let v645: f64 = v644 - v641 * v641;
-        if !(v645 > 0.0) || !v645.is_finite() {
+        if !(v645 > 0.0 && v645 <= f64::MAX) {
             return Err(mass_pivot_error(v645, 12));
         }
         let v646: f64 = v645.sqrt();
@@ -11415,7 +11415,7 @@ pub mod exact {
         let v651: f64 = (c * mass[37]) - v636 * v636;
         let v652: f64 = v651 - v643 * v643;
         let v653: f64 = v652 - v650 * v650;
-        if !(v653 > 0.0) || !v653.is_finite() {
+        if !(v653 > 0.0 && v653 <= f64::MAX) {
             return Err(mass_pivot_error(v653, 13));
         }
         let v654: f64 = v653.sqrt();
@@ -12082,25 +12082,25 @@ pub mod exact {
         let v1264: f64 = v1262 + v1263;
         let v1265: f64 = v771 * v771;
         let v1266: f64 = v1264 + v1265;
-        if !((c * mass[38]) > 0.0) || !(c * mass[38]).is_finite() {
+        if !((c * mass[38]) > 0.0 && (c * mass[38]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[38]), 14));
         }
         let v1267: f64 = (c * mass[38]).sqrt();
         let v1268: f64 = 1.0 / v1267;
         st[44] = v1268;
-        if !((c * mass[39]) > 0.0) || !(c * mass[39]).is_finite() {
+        if !((c * mass[39]) > 0.0 && (c * mass[39]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[39]), 15));
         }
         let v1269: f64 = (c * mass[39]).sqrt();
         let v1270: f64 = 1.0 / v1269;
         st[45] = v1270;
-        if !((c * mass[40]) > 0.0) || !(c * mass[40]).is_finite() {
+        if !((c * mass[40]) > 0.0 && (c * mass[40]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[40]), 16));
         }
         let v1271: f64 = (c * mass[40]).sqrt();
         let v1272: f64 = 1.0 / v1271;
         st[46] = v1272;
-        if !((c * mass[41]) > 0.0) || !(c * mass[41]).is_finite() {
+        if !((c * mass[41]) > 0.0 && (c * mass[41]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[41]), 17));
         }
         let v1273: f64 = (c * mass[41]).sqrt();
@@ -12113,7 +12113,7 @@ pub mod exact {
         let v1277: f64 = (c * mass[53]) * v1274;
         st[15] = v1277;
         let v1278: f64 = (c * mass[46]) - v1275 * v1275;
-        if !(v1278 > 0.0) || !v1278.is_finite() {
+        if !(v1278 > 0.0 && v1278 <= f64::MAX) {
             return Err(mass_pivot_error(v1278, 18));
         }
         let v1279: f64 = v1278.sqrt();
@@ -12127,7 +12127,7 @@ pub mod exact {
         st[16] = v1284;
         let v1285: f64 = (c * mass[51]) - v1276 * v1276;
         let v1286: f64 = v1285 - v1282 * v1282;
-        if !(v1286 > 0.0) || !v1286.is_finite() {
+        if !(v1286 > 0.0 && v1286 <= f64::MAX) {
             return Err(mass_pivot_error(v1286, 19));
         }
         let v1287: f64 = v1286.sqrt();
@@ -12140,7 +12140,7 @@ pub mod exact {
         let v1292: f64 = (c * mass[56]) - v1277 * v1277;
         let v1293: f64 = v1292 - v1284 * v1284;
         let v1294: f64 = v1293 - v1291 * v1291;
-        if !(v1294 > 0.0) || !v1294.is_finite() {
+        if !(v1294 > 0.0 && v1294 <= f64::MAX) {
             return Err(mass_pivot_error(v1294, 20));
         }
         let v1295: f64 = v1294.sqrt();
@@ -12807,25 +12807,25 @@ pub mod exact {
         let v1905: f64 = v1903 + v1904;
         let v1906: f64 = v1412 * v1412;
         let v1907: f64 = v1905 + v1906;
-        if !((c * mass[57]) > 0.0) || !(c * mass[57]).is_finite() {
+        if !((c * mass[57]) > 0.0 && (c * mass[57]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[57]), 21));
         }
         let v1908: f64 = (c * mass[57]).sqrt();
         let v1909: f64 = 1.0 / v1908;
         st[51] = v1909;
-        if !((c * mass[58]) > 0.0) || !(c * mass[58]).is_finite() {
+        if !((c * mass[58]) > 0.0 && (c * mass[58]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[58]), 22));
         }
         let v1910: f64 = (c * mass[58]).sqrt();
         let v1911: f64 = 1.0 / v1910;
         st[52] = v1911;
-        if !((c * mass[59]) > 0.0) || !(c * mass[59]).is_finite() {
+        if !((c * mass[59]) > 0.0 && (c * mass[59]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[59]), 23));
         }
         let v1912: f64 = (c * mass[59]).sqrt();
         let v1913: f64 = 1.0 / v1912;
         st[53] = v1913;
-        if !((c * mass[60]) > 0.0) || !(c * mass[60]).is_finite() {
+        if !((c * mass[60]) > 0.0 && (c * mass[60]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[60]), 24));
         }
         let v1914: f64 = (c * mass[60]).sqrt();
@@ -12838,7 +12838,7 @@ pub mod exact {
         let v1918: f64 = (c * mass[72]) * v1915;
         st[21] = v1918;
         let v1919: f64 = (c * mass[65]) - v1916 * v1916;
-        if !(v1919 > 0.0) || !v1919.is_finite() {
+        if !(v1919 > 0.0 && v1919 <= f64::MAX) {
             return Err(mass_pivot_error(v1919, 25));
         }
         let v1920: f64 = v1919.sqrt();
@@ -12852,7 +12852,7 @@ pub mod exact {
         st[22] = v1925;
         let v1926: f64 = (c * mass[70]) - v1917 * v1917;
         let v1927: f64 = v1926 - v1923 * v1923;
-        if !(v1927 > 0.0) || !v1927.is_finite() {
+        if !(v1927 > 0.0 && v1927 <= f64::MAX) {
             return Err(mass_pivot_error(v1927, 26));
         }
         let v1928: f64 = v1927.sqrt();
@@ -12865,7 +12865,7 @@ pub mod exact {
         let v1933: f64 = (c * mass[75]) - v1918 * v1918;
         let v1934: f64 = v1933 - v1925 * v1925;
         let v1935: f64 = v1934 - v1932 * v1932;
-        if !(v1935 > 0.0) || !v1935.is_finite() {
+        if !(v1935 > 0.0 && v1935 <= f64::MAX) {
             return Err(mass_pivot_error(v1935, 27));
         }
         let v1936: f64 = v1935.sqrt();
@@ -13532,25 +13532,25 @@ pub mod exact {
         let v2546: f64 = v2544 + v2545;
         let v2547: f64 = v2053 * v2053;
         let v2548: f64 = v2546 + v2547;
-        if !((c * mass[76]) > 0.0) || !(c * mass[76]).is_finite() {
+        if !((c * mass[76]) > 0.0 && (c * mass[76]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[76]), 28));
         }
         let v2549: f64 = (c * mass[76]).sqrt();
         let v2550: f64 = 1.0 / v2549;
         st[58] = v2550;
-        if !((c * mass[77]) > 0.0) || !(c * mass[77]).is_finite() {
+        if !((c * mass[77]) > 0.0 && (c * mass[77]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[77]), 29));
         }
         let v2551: f64 = (c * mass[77]).sqrt();
         let v2552: f64 = 1.0 / v2551;
         st[59] = v2552;
-        if !((c * mass[78]) > 0.0) || !(c * mass[78]).is_finite() {
+        if !((c * mass[78]) > 0.0 && (c * mass[78]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[78]), 30));
         }
         let v2553: f64 = (c * mass[78]).sqrt();
         let v2554: f64 = 1.0 / v2553;
         st[60] = v2554;
-        if !((c * mass[79]) > 0.0) || !(c * mass[79]).is_finite() {
+        if !((c * mass[79]) > 0.0 && (c * mass[79]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[79]), 31));
         }
         let v2555: f64 = (c * mass[79]).sqrt();
@@ -13563,7 +13563,7 @@ pub mod exact {
         let v2559: f64 = (c * mass[91]) * v2556;
         st[27] = v2559;
         let v2560: f64 = (c * mass[84]) - v2557 * v2557;
-        if !(v2560 > 0.0) || !v2560.is_finite() {
+        if !(v2560 > 0.0 && v2560 <= f64::MAX) {
             return Err(mass_pivot_error(v2560, 32));
         }
         let v2561: f64 = v2560.sqrt();
@@ -13577,7 +13577,7 @@ pub mod exact {
         st[28] = v2566;
         let v2567: f64 = (c * mass[89]) - v2558 * v2558;
         let v2568: f64 = v2567 - v2564 * v2564;
-        if !(v2568 > 0.0) || !v2568.is_finite() {
+        if !(v2568 > 0.0 && v2568 <= f64::MAX) {
             return Err(mass_pivot_error(v2568, 33));
         }
         let v2569: f64 = v2568.sqrt();
@@ -13590,7 +13590,7 @@ pub mod exact {
         let v2574: f64 = (c * mass[94]) - v2559 * v2559;
         let v2575: f64 = v2574 - v2566 * v2566;
         let v2576: f64 = v2575 - v2573 * v2573;
-        if !(v2576 > 0.0) || !v2576.is_finite() {
+        if !(v2576 > 0.0 && v2576 <= f64::MAX) {
             return Err(mass_pivot_error(v2576, 34));
         }
         let v2577: f64 = v2576.sqrt();

@@ -5640,19 +5640,19 @@ pub mod exact {
             .map_err(|_| length_error(42, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 82] = st.try_into().map_err(|_| length_error(82, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[6] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[7] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
@@ -5799,7 +5799,7 @@ pub mod exact {
         let v126: f64 = v124 + v125;
         let v127: f64 = v23 * v23;
         let v128: f64 = v126 + v127;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v129: f64 = (c * mass[3]).sqrt();
@@ -5812,7 +5812,7 @@ pub mod exact {
         let v133: f64 = (c * mass[15]) * v130;
         st[3] = v133;
         let v134: f64 = (c * mass[8]) - v131 * v131;
-        if !(v134 > 0.0) || !v134.is_finite() {
+        if !(v134 > 0.0 && v134 <= f64::MAX) {
             return Err(mass_pivot_error(v134, 4));
         }
         let v135: f64 = v134.sqrt();
@@ -5826,7 +5826,7 @@ pub mod exact {
         st[4] = v140;
         let v141: f64 = (c * mass[13]) - v132 * v132;
         let v142: f64 = v141 - v138 * v138;
-        if !(v142 > 0.0) || !v142.is_finite() {
+        if !(v142 > 0.0 && v142 <= f64::MAX) {
             return Err(mass_pivot_error(v142, 5));
         }
         let v143: f64 = v142.sqrt();
@@ -5839,7 +5839,7 @@ pub mod exact {
         let v148: f64 = (c * mass[18]) - v133 * v133;
         let v149: f64 = v148 - v140 * v140;
         let v150: f64 = v149 - v147 * v147;
-        if !(v150 > 0.0) || !v150.is_finite() {
+        if !(v150 > 0.0 && v150 <= f64::MAX) {
             return Err(mass_pivot_error(v150, 6));
         }
         let v151: f64 = v150.sqrt();

@@ -10374,25 +10374,25 @@ pub mod exact {
             .map_err(|_| length_error(117, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 364] = st.try_into().map_err(|_| length_error(364, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[8] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[9] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[10] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -10400,7 +10400,7 @@ pub mod exact {
         st[11] = v7;
         let v8: f64 = (c * mass[7]) * v7;
         st[0] = v8;
-        if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+        if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[5]), 4));
         }
         let v9: f64 = (c * mass[5]).sqrt();
@@ -10410,13 +10410,13 @@ pub mod exact {
         st[1] = v11;
         let v12: f64 = (c * mass[9]) - v8 * v8;
         let v13: f64 = v12 - v11 * v11;
-        if !(v13 > 0.0) || !v13.is_finite() {
+        if !(v13 > 0.0 && v13 <= f64::MAX) {
             return Err(mass_pivot_error(v13, 5));
         }
         let v14: f64 = v13.sqrt();
         let v15: f64 = 1.0 / v14;
         st[13] = v15;
-        if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+        if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[10]), 6));
         }
         let v16: f64 = (c * mass[10]).sqrt();
@@ -11639,13 +11639,13 @@ pub mod exact {
         let v1158: f64 = v1156 + v1157;
         let v1159: f64 = v128 * v128;
         let v1160: f64 = v1158 + v1159;
-        if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+        if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[11]), 7));
         }
         let v1161: f64 = (c * mass[11]).sqrt();
         let v1162: f64 = 1.0 / v1161;
         st[15] = v1162;
-        if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+        if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[12]), 8));
         }
         let v1163: f64 = (c * mass[12]).sqrt();
@@ -11671,7 +11671,7 @@ pub mod exact {
         let v1178: f64 = v1168 * v1168;
         let v1179: f64 = v1177 + v1178;
         let v1180: f64 = v377 + v1179;
-        if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+        if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[13]), 9));
         }
         let v1181: f64 = (c * mass[13]).sqrt();
@@ -11679,7 +11679,7 @@ pub mod exact {
         st[17] = v1182;
         let v1183: f64 = (c * mass[17]) * v1182;
         st[2] = v1183;
-        if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+        if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[15]), 10));
         }
         let v1184: f64 = (c * mass[15]).sqrt();
@@ -11689,7 +11689,7 @@ pub mod exact {
         st[3] = v1186;
         let v1187: f64 = (c * mass[19]) - v1183 * v1183;
         let v1188: f64 = v1187 - v1186 * v1186;
-        if !(v1188 > 0.0) || !v1188.is_finite() {
+        if !(v1188 > 0.0 && v1188 <= f64::MAX) {
             return Err(mass_pivot_error(v1188, 11));
         }
         let v1189: f64 = v1188.sqrt();
@@ -11746,25 +11746,25 @@ pub mod exact {
         let v1231: f64 = v1203 * v1203;
         let v1232: f64 = v1230 + v1231;
         let v1233: f64 = v425 + v1232;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 12));
         }
         let v1234: f64 = (c * mass[20]).sqrt();
         let v1235: f64 = 1.0 / v1234;
         st[20] = v1235;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 13));
         }
         let v1236: f64 = (c * mass[21]).sqrt();
         let v1237: f64 = 1.0 / v1236;
         st[21] = v1237;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 14));
         }
         let v1238: f64 = (c * mass[22]).sqrt();
         let v1239: f64 = 1.0 / v1238;
         st[22] = v1239;
-        if !((c * mass[23]) > 0.0) || !(c * mass[23]).is_finite() {
+        if !((c * mass[23]) > 0.0 && (c * mass[23]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[23]), 15));
         }
         let v1240: f64 = (c * mass[23]).sqrt();
@@ -11772,7 +11772,7 @@ pub mod exact {
         st[23] = v1241;
         let v1242: f64 = (c * mass[27]) * v1241;
         st[4] = v1242;
-        if !((c * mass[25]) > 0.0) || !(c * mass[25]).is_finite() {
+        if !((c * mass[25]) > 0.0 && (c * mass[25]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[25]), 16));
         }
         let v1243: f64 = (c * mass[25]).sqrt();
@@ -11782,7 +11782,7 @@ pub mod exact {
         st[5] = v1245;
         let v1246: f64 = (c * mass[29]) - v1242 * v1242;
         let v1247: f64 = v1246 - v1245 * v1245;
-        if !(v1247 > 0.0) || !v1247.is_finite() {
+        if !(v1247 > 0.0 && v1247 <= f64::MAX) {
             return Err(mass_pivot_error(v1247, 17));
         }
         let v1248: f64 = v1247.sqrt();
@@ -11930,25 +11930,25 @@ pub mod exact {
         let v1371: f64 = v1277 * v1277;
         let v1372: f64 = v1370 + v1371;
         let v1373: f64 = v736 + v1372;
-        if !((c * mass[30]) > 0.0) || !(c * mass[30]).is_finite() {
+        if !((c * mass[30]) > 0.0 && (c * mass[30]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[30]), 18));
         }
         let v1374: f64 = (c * mass[30]).sqrt();
         let v1375: f64 = 1.0 / v1374;
         st[26] = v1375;
-        if !((c * mass[31]) > 0.0) || !(c * mass[31]).is_finite() {
+        if !((c * mass[31]) > 0.0 && (c * mass[31]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[31]), 19));
         }
         let v1376: f64 = (c * mass[31]).sqrt();
         let v1377: f64 = 1.0 / v1376;
         st[27] = v1377;
-        if !((c * mass[32]) > 0.0) || !(c * mass[32]).is_finite() {
+        if !((c * mass[32]) > 0.0 && (c * mass[32]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[32]), 20));
         }
         let v1378: f64 = (c * mass[32]).sqrt();
         let v1379: f64 = 1.0 / v1378;
         st[28] = v1379;
-        if !((c * mass[33]) > 0.0) || !(c * mass[33]).is_finite() {
+        if !((c * mass[33]) > 0.0 && (c * mass[33]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[33]), 21));
         }
         let v1380: f64 = (c * mass[33]).sqrt();
@@ -11956,7 +11956,7 @@ pub mod exact {
         st[29] = v1381;
         let v1382: f64 = (c * mass[37]) * v1381;
         st[6] = v1382;
-        if !((c * mass[35]) > 0.0) || !(c * mass[35]).is_finite() {
+        if !((c * mass[35]) > 0.0 && (c * mass[35]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[35]), 22));
         }
         let v1383: f64 = (c * mass[35]).sqrt();
@@ -11966,7 +11966,7 @@ pub mod exact {
         st[7] = v1385;
         let v1386: f64 = (c * mass[39]) - v1382 * v1382;
         let v1387: f64 = v1386 - v1385 * v1385;
-        if !(v1387 > 0.0) || !v1387.is_finite() {
+        if !(v1387 > 0.0 && v1387 <= f64::MAX) {
             return Err(mass_pivot_error(v1387, 23));
         }
         let v1388: f64 = v1387.sqrt();
@@ -14909,25 +14909,25 @@ pub mod exact {
             .map_err(|_| length_error(117, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 595] = st.try_into().map_err(|_| length_error(595, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[139] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[140] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[141] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -14935,7 +14935,7 @@ pub mod exact {
         st[142] = v7;
         let v8: f64 = (c * mass[7]) * v7;
         st[0] = v8;
-        if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+        if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[5]), 4));
         }
         let v9: f64 = (c * mass[5]).sqrt();
@@ -14945,7 +14945,7 @@ pub mod exact {
         st[1] = v11;
         let v12: f64 = (c * mass[9]) - v8 * v8;
         let v13: f64 = v12 - v11 * v11;
-        if !(v13 > 0.0) || !v13.is_finite() {
+        if !(v13 > 0.0 && v13 <= f64::MAX) {
             return Err(mass_pivot_error(v13, 5));
         }
         let v14: f64 = v13.sqrt();
@@ -16158,7 +16158,7 @@ pub mod exact {
         let v1148: f64 = v1146 + v1147;
         let v1149: f64 = v124 * v124;
         let v1150: f64 = v1148 + v1149;
-        if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+        if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[10]), 6));
         }
         let v1151: f64 = (c * mass[10]).sqrt();
@@ -16197,7 +16197,7 @@ pub mod exact {
         let v1168: f64 = (c * mass[219]) * v1152;
         st[123] = v1168;
         let v1169: f64 = (c * mass[28]) - v1153 * v1153;
-        if !(v1169 > 0.0) || !v1169.is_finite() {
+        if !(v1169 > 0.0 && v1169 <= f64::MAX) {
             return Err(mass_pivot_error(v1169, 7));
         }
         let v1170: f64 = v1169.sqrt();
@@ -16250,7 +16250,7 @@ pub mod exact {
         st[124] = v1201;
         let v1202: f64 = (c * mass[46]) - v1154 * v1154;
         let v1203: f64 = v1202 - v1173 * v1173;
-        if !(v1203 > 0.0) || !v1203.is_finite() {
+        if !(v1203 > 0.0 && v1203 <= f64::MAX) {
             return Err(mass_pivot_error(v1203, 8));
         }
         let v1204: f64 = v1203.sqrt();
@@ -16312,7 +16312,7 @@ pub mod exact {
         let v1246: f64 = v1245 - v1201 * v1173;
         let v1247: f64 = v1246 * v1205;
         st[125] = v1247;
-        if !((c * mass[61]) > 0.0) || !(c * mass[61]).is_finite() {
+        if !((c * mass[61]) > 0.0 && (c * mass[61]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[61]), 9));
         }
         let v1248: f64 = (c * mass[61]).sqrt();
@@ -16323,7 +16323,7 @@ pub mod exact {
         let v1251: f64 = (c * mass[66]) - v1155 * v1155;
         let v1252: f64 = v1251 - v1175 * v1175;
         let v1253: f64 = v1252 - v1208 * v1208;
-        if !(v1253 > 0.0) || !v1253.is_finite() {
+        if !(v1253 > 0.0 && v1253 <= f64::MAX) {
             return Err(mass_pivot_error(v1253, 10));
         }
         let v1254: f64 = v1253.sqrt();
@@ -16399,7 +16399,7 @@ pub mod exact {
         let v1310: f64 = v1309 - v1211 * v1211;
         let v1311: f64 = v1310 - v1250 * v1250;
         let v1312: f64 = v1311 - v1259 * v1259;
-        if !(v1312 > 0.0) || !v1312.is_finite() {
+        if !(v1312 > 0.0 && v1312 <= f64::MAX) {
             return Err(mass_pivot_error(v1312, 11));
         }
         let v1313: f64 = v1312.sqrt();
@@ -16482,7 +16482,7 @@ pub mod exact {
         let v1377: f64 = v1376 - v1214 * v1214;
         let v1378: f64 = v1377 - v1263 * v1263;
         let v1379: f64 = v1378 - v1319 * v1319;
-        if !(v1379 > 0.0) || !v1379.is_finite() {
+        if !(v1379 > 0.0 && v1379 <= f64::MAX) {
             return Err(mass_pivot_error(v1379, 12));
         }
         let v1380: f64 = v1379.sqrt();
@@ -16571,7 +16571,7 @@ pub mod exact {
         let v1451: f64 = v1450 - v1267 * v1267;
         let v1452: f64 = v1451 - v1324 * v1324;
         let v1453: f64 = v1452 - v1387 * v1387;
-        if !(v1453 > 0.0) || !v1453.is_finite() {
+        if !(v1453 > 0.0 && v1453 <= f64::MAX) {
             return Err(mass_pivot_error(v1453, 13));
         }
         let v1454: f64 = v1453.sqrt();
@@ -16664,7 +16664,7 @@ pub mod exact {
         let v1530: f64 = v1529 - v1329 * v1329;
         let v1531: f64 = v1530 - v1393 * v1393;
         let v1532: f64 = v1531 - v1462 * v1462;
-        if !(v1532 > 0.0) || !v1532.is_finite() {
+        if !(v1532 > 0.0 && v1532 <= f64::MAX) {
             return Err(mass_pivot_error(v1532, 14));
         }
         let v1533: f64 = v1532.sqrt();
@@ -16759,7 +16759,7 @@ pub mod exact {
         let v1612: f64 = v1611 - v1399 * v1399;
         let v1613: f64 = v1612 - v1469 * v1469;
         let v1614: f64 = v1613 - v1542 * v1542;
-        if !(v1614 > 0.0) || !v1614.is_finite() {
+        if !(v1614 > 0.0 && v1614 <= f64::MAX) {
             return Err(mass_pivot_error(v1614, 15));
         }
         let v1615: f64 = v1614.sqrt();
@@ -16854,7 +16854,7 @@ pub mod exact {
         let v1695: f64 = v1694 - v1476 * v1476;
         let v1696: f64 = v1695 - v1550 * v1550;
         let v1697: f64 = v1696 - v1625 * v1625;
-        if !(v1697 > 0.0) || !v1697.is_finite() {
+        if !(v1697 > 0.0 && v1697 <= f64::MAX) {
             return Err(mass_pivot_error(v1697, 16));
         }
         let v1698: f64 = v1697.sqrt();
@@ -16947,7 +16947,7 @@ pub mod exact {
         let v1777: f64 = v1776 - v1558 * v1558;
         let v1778: f64 = v1777 - v1634 * v1634;
         let v1779: f64 = v1778 - v1709 * v1709;
-        if !(v1779 > 0.0) || !v1779.is_finite() {
+        if !(v1779 > 0.0 && v1779 <= f64::MAX) {
             return Err(mass_pivot_error(v1779, 17));
         }
         let v1780: f64 = v1779.sqrt();
@@ -17036,7 +17036,7 @@ pub mod exact {
         let v1856: f64 = v1855 - v1643 * v1643;
         let v1857: f64 = v1856 - v1719 * v1719;
         let v1858: f64 = v1857 - v1792 * v1792;
-        if !(v1858 > 0.0) || !v1858.is_finite() {
+        if !(v1858 > 0.0 && v1858 <= f64::MAX) {
             return Err(mass_pivot_error(v1858, 18));
         }
         let v1859: f64 = v1858.sqrt();
@@ -17119,7 +17119,7 @@ pub mod exact {
         let v1930: f64 = v1929 - v1729 * v1729;
         let v1931: f64 = v1930 - v1803 * v1803;
         let v1932: f64 = v1931 - v1872 * v1872;
-        if !(v1932 > 0.0) || !v1932.is_finite() {
+        if !(v1932 > 0.0 && v1932 <= f64::MAX) {
             return Err(mass_pivot_error(v1932, 19));
         }
         let v1933: f64 = v1932.sqrt();
@@ -17194,7 +17194,7 @@ pub mod exact {
         let v1997: f64 = v1996 - v1814 * v1814;
         let v1998: f64 = v1997 - v1884 * v1884;
         let v1999: f64 = v1998 - v1947 * v1947;
-        if !(v1999 > 0.0) || !v1999.is_finite() {
+        if !(v1999 > 0.0 && v1999 <= f64::MAX) {
             return Err(mass_pivot_error(v1999, 20));
         }
         let v2000: f64 = v1999.sqrt();
@@ -17259,7 +17259,7 @@ pub mod exact {
         let v2055: f64 = v2054 - v1896 * v1896;
         let v2056: f64 = v2055 - v1960 * v1960;
         let v2057: f64 = v2056 - v2015 * v2015;
-        if !(v2057 > 0.0) || !v2057.is_finite() {
+        if !(v2057 > 0.0 && v2057 <= f64::MAX) {
             return Err(mass_pivot_error(v2057, 21));
         }
         let v2058: f64 = v2057.sqrt();
@@ -17312,7 +17312,7 @@ pub mod exact {
         let v2102: f64 = v2101 - v1973 * v1973;
         let v2103: f64 = v2102 - v2029 * v2029;
         let v2104: f64 = v2103 - v2074 * v2074;
-        if !(v2104 > 0.0) || !v2104.is_finite() {
+        if !(v2104 > 0.0 && v2104 <= f64::MAX) {
             return Err(mass_pivot_error(v2104, 22));
         }
         let v2105: f64 = v2104.sqrt();
@@ -17351,7 +17351,7 @@ pub mod exact {
         let v2136: f64 = v2135 - v2043 * v2043;
         let v2137: f64 = v2136 - v2089 * v2089;
         let v2138: f64 = v2137 - v2122 * v2122;
-        if !(v2138 > 0.0) || !v2138.is_finite() {
+        if !(v2138 > 0.0 && v2138 <= f64::MAX) {
             return Err(mass_pivot_error(v2138, 23));
         }
         let v2139: f64 = v2138.sqrt();

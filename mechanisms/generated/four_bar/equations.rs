@@ -8557,25 +8557,25 @@ pub mod exact {
         if !phi_q[92].is_finite() {
             return Err(KktError::NotFinite);
         }
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[6] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[7] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[8] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -8583,7 +8583,7 @@ pub mod exact {
         st[9] = v7;
         let v8: f64 = (c * mass[7]) * v7;
         st[0] = v8;
-        if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+        if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[5]), 4));
         }
         let v9: f64 = (c * mass[5]).sqrt();
@@ -8593,7 +8593,7 @@ pub mod exact {
         st[1] = v11;
         let v12: f64 = (c * mass[9]) - v8 * v8;
         let v13: f64 = v12 - v11 * v11;
-        if !(v13 > 0.0) || !v13.is_finite() {
+        if !(v13 > 0.0 && v13 <= f64::MAX) {
             return Err(mass_pivot_error(v13, 5));
         }
         let v14: f64 = v13.sqrt();
@@ -8927,25 +8927,25 @@ pub mod exact {
         let v308: f64 = v306 + v307;
         let v309: f64 = v64 * v64;
         let v310: f64 = v308 + v309;
-        if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+        if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[10]), 6));
         }
         let v311: f64 = (c * mass[10]).sqrt();
         let v312: f64 = 1.0 / v311;
         st[12] = v312;
-        if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+        if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[11]), 7));
         }
         let v313: f64 = (c * mass[11]).sqrt();
         let v314: f64 = 1.0 / v313;
         st[13] = v314;
-        if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+        if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[12]), 8));
         }
         let v315: f64 = (c * mass[12]).sqrt();
         let v316: f64 = 1.0 / v315;
         st[14] = v316;
-        if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+        if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[13]), 9));
         }
         let v317: f64 = (c * mass[13]).sqrt();
@@ -8953,7 +8953,7 @@ pub mod exact {
         st[15] = v318;
         let v319: f64 = (c * mass[17]) * v318;
         st[2] = v319;
-        if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+        if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[15]), 10));
         }
         let v320: f64 = (c * mass[15]).sqrt();
@@ -8963,7 +8963,7 @@ pub mod exact {
         st[3] = v322;
         let v323: f64 = (c * mass[19]) - v319 * v319;
         let v324: f64 = v323 - v322 * v322;
-        if !(v324 > 0.0) || !v324.is_finite() {
+        if !(v324 > 0.0 && v324 <= f64::MAX) {
             return Err(mass_pivot_error(v324, 11));
         }
         let v325: f64 = v324.sqrt();
@@ -9306,25 +9306,25 @@ pub mod exact {
         let v628: f64 = v626 + v627;
         let v629: f64 = v376 * v376;
         let v630: f64 = v628 + v629;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 12));
         }
         let v631: f64 = (c * mass[20]).sqrt();
         let v632: f64 = 1.0 / v631;
         st[18] = v632;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 13));
         }
         let v633: f64 = (c * mass[21]).sqrt();
         let v634: f64 = 1.0 / v633;
         st[19] = v634;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 14));
         }
         let v635: f64 = (c * mass[22]).sqrt();
         let v636: f64 = 1.0 / v635;
         st[20] = v636;
-        if !((c * mass[23]) > 0.0) || !(c * mass[23]).is_finite() {
+        if !((c * mass[23]) > 0.0 && (c * mass[23]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[23]), 15));
         }
         let v637: f64 = (c * mass[23]).sqrt();
@@ -9332,7 +9332,7 @@ pub mod exact {
         st[21] = v638;
         let v639: f64 = (c * mass[27]) * v638;
         st[4] = v639;
-        if !((c * mass[25]) > 0.0) || !(c * mass[25]).is_finite() {
+        if !((c * mass[25]) > 0.0 && (c * mass[25]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[25]), 16));
         }
         let v640: f64 = (c * mass[25]).sqrt();
@@ -9342,7 +9342,7 @@ pub mod exact {
         st[5] = v642;
         let v643: f64 = (c * mass[29]) - v639 * v639;
         let v644: f64 = v643 - v642 * v642;
-        if !(v644 > 0.0) || !v644.is_finite() {
+        if !(v644 > 0.0 && v644 <= f64::MAX) {
             return Err(mass_pivot_error(v644, 17));
         }
         let v645: f64 = v644.sqrt();
@@ -14605,19 +14605,19 @@ pub mod reduced {
             let st: &mut [f64; 63] = st
                 .try_into()
                 .map_err(|_| length_error(63, st_len))?;
-            if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+            if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[0]), 0));
             }
             let v0: f64 = (c * mass[0]).sqrt();
             let v1: f64 = 1.0 / v0;
             st[0] = v1;
-            if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+            if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[1]), 1));
             }
             let v2: f64 = (c * mass[1]).sqrt();
             let v3: f64 = 1.0 / v2;
             st[1] = v3;
-            if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+            if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[2]), 2));
             }
             let v4: f64 = (c * mass[2]).sqrt();
@@ -14668,19 +14668,19 @@ pub mod reduced {
             let v39: f64 = v14 * v11;
             let v40: f64 = v14 * v13;
             let v41: f64 = v14 * v14;
-            if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+            if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[3]), 3));
             }
             let v42: f64 = (c * mass[3]).sqrt();
             let v43: f64 = 1.0 / v42;
             st[3] = v43;
-            if !((c * mass[4]) > 0.0) || !(c * mass[4]).is_finite() {
+            if !((c * mass[4]) > 0.0 && (c * mass[4]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[4]), 4));
             }
             let v44: f64 = (c * mass[4]).sqrt();
             let v45: f64 = 1.0 / v44;
             st[4] = v45;
-            if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+            if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[5]), 5));
             }
             let v46: f64 = (c * mass[5]).sqrt();
@@ -14727,19 +14727,19 @@ pub mod reduced {
             let v78: f64 = v54 * v54;
             let v79: f64 = v55 * v55;
             let v80: f64 = v78 + v79;
-            if !((c * mass[6]) > 0.0) || !(c * mass[6]).is_finite() {
+            if !((c * mass[6]) > 0.0 && (c * mass[6]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[6]), 6));
             }
             let v81: f64 = (c * mass[6]).sqrt();
             let v82: f64 = 1.0 / v81;
             st[6] = v82;
-            if !((c * mass[7]) > 0.0) || !(c * mass[7]).is_finite() {
+            if !((c * mass[7]) > 0.0 && (c * mass[7]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[7]), 7));
             }
             let v83: f64 = (c * mass[7]).sqrt();
             let v84: f64 = 1.0 / v83;
             st[7] = v84;
-            if !((c * mass[8]) > 0.0) || !(c * mass[8]).is_finite() {
+            if !((c * mass[8]) > 0.0 && (c * mass[8]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[8]), 8));
             }
             let v85: f64 = (c * mass[8]).sqrt();

@@ -7364,25 +7364,25 @@ pub mod exact {
             .map_err(|_| length_error(46, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 87] = st.try_into().map_err(|_| length_error(87, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[6] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[7] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[8] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -7395,7 +7395,7 @@ pub mod exact {
         let v10: f64 = (c * mass[15]) * v7;
         st[3] = v10;
         let v11: f64 = (c * mass[8]) - v8 * v8;
-        if !(v11 > 0.0) || !v11.is_finite() {
+        if !(v11 > 0.0 && v11 <= f64::MAX) {
             return Err(mass_pivot_error(v11, 4));
         }
         let v12: f64 = v11.sqrt();
@@ -7409,7 +7409,7 @@ pub mod exact {
         st[4] = v17;
         let v18: f64 = (c * mass[13]) - v9 * v9;
         let v19: f64 = v18 - v15 * v15;
-        if !(v19 > 0.0) || !v19.is_finite() {
+        if !(v19 > 0.0 && v19 <= f64::MAX) {
             return Err(mass_pivot_error(v19, 5));
         }
         let v20: f64 = v19.sqrt();
@@ -7422,7 +7422,7 @@ pub mod exact {
         let v25: f64 = (c * mass[18]) - v10 * v10;
         let v26: f64 = v25 - v17 * v17;
         let v27: f64 = v26 - v24 * v24;
-        if !(v27 > 0.0) || !v27.is_finite() {
+        if !(v27 > 0.0 && v27 <= f64::MAX) {
             return Err(mass_pivot_error(v27, 6));
         }
         let v28: f64 = v27.sqrt();

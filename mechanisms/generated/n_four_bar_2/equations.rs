@@ -12885,25 +12885,25 @@ pub mod exact {
         if !phi_q[174].is_finite() {
             return Err(KktError::NotFinite);
         }
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[10] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[11] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[12] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -12911,7 +12911,7 @@ pub mod exact {
         st[13] = v7;
         let v8: f64 = (c * mass[7]) * v7;
         st[0] = v8;
-        if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+        if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[5]), 4));
         }
         let v9: f64 = (c * mass[5]).sqrt();
@@ -12921,7 +12921,7 @@ pub mod exact {
         st[1] = v11;
         let v12: f64 = (c * mass[9]) - v8 * v8;
         let v13: f64 = v12 - v11 * v11;
-        if !(v13 > 0.0) || !v13.is_finite() {
+        if !(v13 > 0.0 && v13 <= f64::MAX) {
             return Err(mass_pivot_error(v13, 5));
         }
         let v14: f64 = v13.sqrt();
@@ -13312,25 +13312,25 @@ pub mod exact {
         let v362: f64 = v360 + v361;
         let v363: f64 = v71 * v71;
         let v364: f64 = v362 + v363;
-        if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+        if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[10]), 6));
         }
         let v365: f64 = (c * mass[10]).sqrt();
         let v366: f64 = 1.0 / v365;
         st[16] = v366;
-        if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+        if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[11]), 7));
         }
         let v367: f64 = (c * mass[11]).sqrt();
         let v368: f64 = 1.0 / v367;
         st[17] = v368;
-        if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+        if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[12]), 8));
         }
         let v369: f64 = (c * mass[12]).sqrt();
         let v370: f64 = 1.0 / v369;
         st[18] = v370;
-        if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+        if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[13]), 9));
         }
         let v371: f64 = (c * mass[13]).sqrt();
@@ -13338,7 +13338,7 @@ pub mod exact {
         st[19] = v372;
         let v373: f64 = (c * mass[17]) * v372;
         st[2] = v373;
-        if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+        if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[15]), 10));
         }
         let v374: f64 = (c * mass[15]).sqrt();
@@ -13348,7 +13348,7 @@ pub mod exact {
         st[3] = v376;
         let v377: f64 = (c * mass[19]) - v373 * v373;
         let v378: f64 = v377 - v376 * v376;
-        if !(v378 > 0.0) || !v378.is_finite() {
+        if !(v378 > 0.0 && v378 <= f64::MAX) {
             return Err(mass_pivot_error(v378, 11));
         }
         let v379: f64 = v378.sqrt();
@@ -13886,25 +13886,25 @@ pub mod exact {
         let v866: f64 = v864 + v865;
         let v867: f64 = v448 * v448;
         let v868: f64 = v866 + v867;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 12));
         }
         let v869: f64 = (c * mass[20]).sqrt();
         let v870: f64 = 1.0 / v869;
         st[22] = v870;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 13));
         }
         let v871: f64 = (c * mass[21]).sqrt();
         let v872: f64 = 1.0 / v871;
         st[23] = v872;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 14));
         }
         let v873: f64 = (c * mass[22]).sqrt();
         let v874: f64 = 1.0 / v873;
         st[24] = v874;
-        if !((c * mass[23]) > 0.0) || !(c * mass[23]).is_finite() {
+        if !((c * mass[23]) > 0.0 && (c * mass[23]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[23]), 15));
         }
         let v875: f64 = (c * mass[23]).sqrt();
@@ -13912,7 +13912,7 @@ pub mod exact {
         st[25] = v876;
         let v877: f64 = (c * mass[27]) * v876;
         st[4] = v877;
-        if !((c * mass[25]) > 0.0) || !(c * mass[25]).is_finite() {
+        if !((c * mass[25]) > 0.0 && (c * mass[25]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[25]), 16));
         }
         let v878: f64 = (c * mass[25]).sqrt();
@@ -13922,7 +13922,7 @@ pub mod exact {
         st[5] = v880;
         let v881: f64 = (c * mass[29]) - v877 * v877;
         let v882: f64 = v881 - v880 * v880;
-        if !(v882 > 0.0) || !v882.is_finite() {
+        if !(v882 > 0.0 && v882 <= f64::MAX) {
             return Err(mass_pivot_error(v882, 17));
         }
         let v883: f64 = v882.sqrt();
@@ -14148,25 +14148,25 @@ pub mod exact {
         let v1076: f64 = v1074 + v1075;
         let v1077: f64 = v924 * v924;
         let v1078: f64 = v1076 + v1077;
-        if !((c * mass[30]) > 0.0) || !(c * mass[30]).is_finite() {
+        if !((c * mass[30]) > 0.0 && (c * mass[30]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[30]), 18));
         }
         let v1079: f64 = (c * mass[30]).sqrt();
         let v1080: f64 = 1.0 / v1079;
         st[28] = v1080;
-        if !((c * mass[31]) > 0.0) || !(c * mass[31]).is_finite() {
+        if !((c * mass[31]) > 0.0 && (c * mass[31]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[31]), 19));
         }
         let v1081: f64 = (c * mass[31]).sqrt();
         let v1082: f64 = 1.0 / v1081;
         st[29] = v1082;
-        if !((c * mass[32]) > 0.0) || !(c * mass[32]).is_finite() {
+        if !((c * mass[32]) > 0.0 && (c * mass[32]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[32]), 20));
         }
         let v1083: f64 = (c * mass[32]).sqrt();
         let v1084: f64 = 1.0 / v1083;
         st[30] = v1084;
-        if !((c * mass[33]) > 0.0) || !(c * mass[33]).is_finite() {
+        if !((c * mass[33]) > 0.0 && (c * mass[33]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[33]), 21));
         }
         let v1085: f64 = (c * mass[33]).sqrt();
@@ -14174,7 +14174,7 @@ pub mod exact {
         st[31] = v1086;
         let v1087: f64 = (c * mass[37]) * v1086;
         st[6] = v1087;
-        if !((c * mass[35]) > 0.0) || !(c * mass[35]).is_finite() {
+        if !((c * mass[35]) > 0.0 && (c * mass[35]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[35]), 22));
         }
         let v1088: f64 = (c * mass[35]).sqrt();
@@ -14184,7 +14184,7 @@ pub mod exact {
         st[7] = v1090;
         let v1091: f64 = (c * mass[39]) - v1087 * v1087;
         let v1092: f64 = v1091 - v1090 * v1090;
-        if !(v1092 > 0.0) || !v1092.is_finite() {
+        if !(v1092 > 0.0 && v1092 <= f64::MAX) {
             return Err(mass_pivot_error(v1092, 23));
         }
         let v1093: f64 = v1092.sqrt();
@@ -14363,25 +14363,25 @@ pub mod exact {
         let v1244: f64 = v1124 * v1124;
         let v1245: f64 = v1243 + v1244;
         let v1246: f64 = v602 + v1245;
-        if !((c * mass[40]) > 0.0) || !(c * mass[40]).is_finite() {
+        if !((c * mass[40]) > 0.0 && (c * mass[40]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[40]), 24));
         }
         let v1247: f64 = (c * mass[40]).sqrt();
         let v1248: f64 = 1.0 / v1247;
         st[34] = v1248;
-        if !((c * mass[41]) > 0.0) || !(c * mass[41]).is_finite() {
+        if !((c * mass[41]) > 0.0 && (c * mass[41]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[41]), 25));
         }
         let v1249: f64 = (c * mass[41]).sqrt();
         let v1250: f64 = 1.0 / v1249;
         st[35] = v1250;
-        if !((c * mass[42]) > 0.0) || !(c * mass[42]).is_finite() {
+        if !((c * mass[42]) > 0.0 && (c * mass[42]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[42]), 26));
         }
         let v1251: f64 = (c * mass[42]).sqrt();
         let v1252: f64 = 1.0 / v1251;
         st[36] = v1252;
-        if !((c * mass[43]) > 0.0) || !(c * mass[43]).is_finite() {
+        if !((c * mass[43]) > 0.0 && (c * mass[43]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[43]), 27));
         }
         let v1253: f64 = (c * mass[43]).sqrt();
@@ -14389,7 +14389,7 @@ pub mod exact {
         st[37] = v1254;
         let v1255: f64 = (c * mass[47]) * v1254;
         st[8] = v1255;
-        if !((c * mass[45]) > 0.0) || !(c * mass[45]).is_finite() {
+        if !((c * mass[45]) > 0.0 && (c * mass[45]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[45]), 28));
         }
         let v1256: f64 = (c * mass[45]).sqrt();
@@ -14399,7 +14399,7 @@ pub mod exact {
         st[9] = v1258;
         let v1259: f64 = (c * mass[49]) - v1255 * v1255;
         let v1260: f64 = v1259 - v1258 * v1258;
-        if !(v1260 > 0.0) || !v1260.is_finite() {
+        if !(v1260 > 0.0 && v1260 <= f64::MAX) {
             return Err(mass_pivot_error(v1260, 29));
         }
         let v1261: f64 = v1260.sqrt();
@@ -22539,19 +22539,19 @@ pub mod reduced {
             let st: &mut [f64; 108] = st
                 .try_into()
                 .map_err(|_| length_error(108, st_len))?;
-            if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+            if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[0]), 0));
             }
             let v0: f64 = (c * mass[0]).sqrt();
             let v1: f64 = 1.0 / v0;
             st[0] = v1;
-            if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+            if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[1]), 1));
             }
             let v2: f64 = (c * mass[1]).sqrt();
             let v3: f64 = 1.0 / v2;
             st[1] = v3;
-            if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+            if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[2]), 2));
             }
             let v4: f64 = (c * mass[2]).sqrt();
@@ -22595,19 +22595,19 @@ pub mod reduced {
             let v33: f64 = v12 * v12;
             let v34: f64 = v13 * v13;
             let v35: f64 = v33 + v34;
-            if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+            if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[3]), 3));
             }
             let v36: f64 = (c * mass[3]).sqrt();
             let v37: f64 = 1.0 / v36;
             st[3] = v37;
-            if !((c * mass[4]) > 0.0) || !(c * mass[4]).is_finite() {
+            if !((c * mass[4]) > 0.0 && (c * mass[4]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[4]), 4));
             }
             let v38: f64 = (c * mass[4]).sqrt();
             let v39: f64 = 1.0 / v38;
             st[4] = v39;
-            if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+            if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[5]), 5));
             }
             let v40: f64 = (c * mass[5]).sqrt();
@@ -22682,19 +22682,19 @@ pub mod reduced {
             let v96: f64 = v52 * v52;
             let v97: f64 = v53 * v53;
             let v98: f64 = v96 + v97;
-            if !((c * mass[6]) > 0.0) || !(c * mass[6]).is_finite() {
+            if !((c * mass[6]) > 0.0 && (c * mass[6]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[6]), 6));
             }
             let v99: f64 = (c * mass[6]).sqrt();
             let v100: f64 = 1.0 / v99;
             st[6] = v100;
-            if !((c * mass[7]) > 0.0) || !(c * mass[7]).is_finite() {
+            if !((c * mass[7]) > 0.0 && (c * mass[7]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[7]), 7));
             }
             let v101: f64 = (c * mass[7]).sqrt();
             let v102: f64 = 1.0 / v101;
             st[7] = v102;
-            if !((c * mass[8]) > 0.0) || !(c * mass[8]).is_finite() {
+            if !((c * mass[8]) > 0.0 && (c * mass[8]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[8]), 8));
             }
             let v103: f64 = (c * mass[8]).sqrt();
@@ -22738,19 +22738,19 @@ pub mod reduced {
             let v132: f64 = v111 * v111;
             let v133: f64 = v112 * v112;
             let v134: f64 = v132 + v133;
-            if !((c * mass[9]) > 0.0) || !(c * mass[9]).is_finite() {
+            if !((c * mass[9]) > 0.0 && (c * mass[9]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[9]), 9));
             }
             let v135: f64 = (c * mass[9]).sqrt();
             let v136: f64 = 1.0 / v135;
             st[9] = v136;
-            if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+            if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[10]), 10));
             }
             let v137: f64 = (c * mass[10]).sqrt();
             let v138: f64 = 1.0 / v137;
             st[10] = v138;
-            if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+            if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[11]), 11));
             }
             let v139: f64 = (c * mass[11]).sqrt();
@@ -22800,19 +22800,19 @@ pub mod reduced {
             let v174: f64 = v148 * v148;
             let v175: f64 = v173 + v174;
             let v176: f64 = v75 + v175;
-            if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+            if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[12]), 12));
             }
             let v177: f64 = (c * mass[12]).sqrt();
             let v178: f64 = 1.0 / v177;
             st[12] = v178;
-            if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+            if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[13]), 13));
             }
             let v179: f64 = (c * mass[13]).sqrt();
             let v180: f64 = 1.0 / v179;
             st[13] = v180;
-            if !((c * mass[14]) > 0.0) || !(c * mass[14]).is_finite() {
+            if !((c * mass[14]) > 0.0 && (c * mass[14]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[14]), 14));
             }
             let v181: f64 = (c * mass[14]).sqrt();

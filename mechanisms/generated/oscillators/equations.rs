@@ -1476,13 +1476,13 @@ pub mod exact {
             .map_err(|_| length_error(33, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 80] = st.try_into().map_err(|_| length_error(80, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[12] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
@@ -1491,7 +1491,7 @@ pub mod exact {
         let v4: f64 = phi_q[8] * v3;
         st[26] = v4;
         let v5: f64 = v4 * v4;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v6: f64 = (c * mass[2]).sqrt();
@@ -1500,7 +1500,7 @@ pub mod exact {
         let v8: f64 = phi_q[9] * v7;
         st[27] = v8;
         let v9: f64 = v8 * v8;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v10: f64 = (c * mass[3]).sqrt();
@@ -1513,7 +1513,7 @@ pub mod exact {
         let v14: f64 = (c * mass[15]) * v11;
         st[3] = v14;
         let v15: f64 = (c * mass[8]) - v12 * v12;
-        if !(v15 > 0.0) || !v15.is_finite() {
+        if !(v15 > 0.0 && v15 <= f64::MAX) {
             return Err(mass_pivot_error(v15, 4));
         }
         let v16: f64 = v15.sqrt();
@@ -1527,7 +1527,7 @@ pub mod exact {
         st[4] = v21;
         let v22: f64 = (c * mass[13]) - v13 * v13;
         let v23: f64 = v22 - v19 * v19;
-        if !(v23 > 0.0) || !v23.is_finite() {
+        if !(v23 > 0.0 && v23 <= f64::MAX) {
             return Err(mass_pivot_error(v23, 5));
         }
         let v24: f64 = v23.sqrt();
@@ -1540,7 +1540,7 @@ pub mod exact {
         let v29: f64 = (c * mass[18]) - v14 * v14;
         let v30: f64 = v29 - v21 * v21;
         let v31: f64 = v30 - v28 * v28;
-        if !(v31 > 0.0) || !v31.is_finite() {
+        if !(v31 > 0.0 && v31 <= f64::MAX) {
             return Err(mass_pivot_error(v31, 6));
         }
         let v32: f64 = v31.sqrt();
@@ -1672,7 +1672,7 @@ pub mod exact {
         let v141: f64 = v139 + v140;
         let v142: f64 = v73 * v73;
         let v143: f64 = v141 + v142;
-        if !((c * mass[19]) > 0.0) || !(c * mass[19]).is_finite() {
+        if !((c * mass[19]) > 0.0 && (c * mass[19]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[19]), 7));
         }
         let v144: f64 = (c * mass[19]).sqrt();
@@ -1681,7 +1681,7 @@ pub mod exact {
         let v146: f64 = phi_q[14] * v145;
         st[44] = v146;
         let v147: f64 = v146 * v146;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 8));
         }
         let v148: f64 = (c * mass[20]).sqrt();
@@ -1690,7 +1690,7 @@ pub mod exact {
         let v150: f64 = phi_q[15] * v149;
         st[45] = v150;
         let v151: f64 = v150 * v150;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 9));
         }
         let v152: f64 = (c * mass[21]).sqrt();
@@ -1699,7 +1699,7 @@ pub mod exact {
         let v154: f64 = phi_q[16] * v153;
         st[46] = v154;
         let v155: f64 = v154 * v154;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 10));
         }
         let v156: f64 = (c * mass[22]).sqrt();
@@ -1712,7 +1712,7 @@ pub mod exact {
         let v160: f64 = (c * mass[34]) * v157;
         st[9] = v160;
         let v161: f64 = (c * mass[27]) - v158 * v158;
-        if !(v161 > 0.0) || !v161.is_finite() {
+        if !(v161 > 0.0 && v161 <= f64::MAX) {
             return Err(mass_pivot_error(v161, 11));
         }
         let v162: f64 = v161.sqrt();
@@ -1726,7 +1726,7 @@ pub mod exact {
         st[10] = v167;
         let v168: f64 = (c * mass[32]) - v159 * v159;
         let v169: f64 = v168 - v165 * v165;
-        if !(v169 > 0.0) || !v169.is_finite() {
+        if !(v169 > 0.0 && v169 <= f64::MAX) {
             return Err(mass_pivot_error(v169, 12));
         }
         let v170: f64 = v169.sqrt();
@@ -1739,7 +1739,7 @@ pub mod exact {
         let v175: f64 = (c * mass[37]) - v160 * v160;
         let v176: f64 = v175 - v167 * v167;
         let v177: f64 = v176 - v174 * v174;
-        if !(v177 > 0.0) || !v177.is_finite() {
+        if !(v177 > 0.0 && v177 <= f64::MAX) {
             return Err(mass_pivot_error(v177, 13));
         }
         let v178: f64 = v177.sqrt();
@@ -2235,7 +2235,7 @@ pub mod exact {
             .map_err(|_| length_error(33, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 85] = st.try_into().map_err(|_| length_error(85, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
@@ -2246,7 +2246,7 @@ pub mod exact {
         let v3: f64 = (c * mass[6]) * v1;
         st[1] = v3;
         let v4: f64 = (c * mass[4]) - v2 * v2;
-        if !(v4 > 0.0) || !v4.is_finite() {
+        if !(v4 > 0.0 && v4 <= f64::MAX) {
             return Err(mass_pivot_error(v4, 1));
         }
         let v5: f64 = v4.sqrt();
@@ -2257,7 +2257,7 @@ pub mod exact {
         st[2] = v8;
         let v9: f64 = (c * mass[8]) - v3 * v3;
         let v10: f64 = v9 - v8 * v8;
-        if !(v10 > 0.0) || !v10.is_finite() {
+        if !(v10 > 0.0 && v10 <= f64::MAX) {
             return Err(mass_pivot_error(v10, 2));
         }
         let v11: f64 = v10.sqrt();
@@ -2275,7 +2275,7 @@ pub mod exact {
         let v19: f64 = v17 + v18;
         let v20: f64 = v16 * v15;
         let v21: f64 = v16 * v16;
-        if !((c * mass[9]) > 0.0) || !(c * mass[9]).is_finite() {
+        if !((c * mass[9]) > 0.0 && (c * mass[9]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[9]), 3));
         }
         let v22: f64 = (c * mass[9]).sqrt();
@@ -2288,7 +2288,7 @@ pub mod exact {
         let v26: f64 = (c * mass[21]) * v23;
         st[6] = v26;
         let v27: f64 = (c * mass[14]) - v24 * v24;
-        if !(v27 > 0.0) || !v27.is_finite() {
+        if !(v27 > 0.0 && v27 <= f64::MAX) {
             return Err(mass_pivot_error(v27, 4));
         }
         let v28: f64 = v27.sqrt();
@@ -2302,7 +2302,7 @@ pub mod exact {
         st[7] = v33;
         let v34: f64 = (c * mass[19]) - v25 * v25;
         let v35: f64 = v34 - v31 * v31;
-        if !(v35 > 0.0) || !v35.is_finite() {
+        if !(v35 > 0.0 && v35 <= f64::MAX) {
             return Err(mass_pivot_error(v35, 5));
         }
         let v36: f64 = v35.sqrt();
@@ -2315,7 +2315,7 @@ pub mod exact {
         let v41: f64 = (c * mass[24]) - v26 * v26;
         let v42: f64 = v41 - v33 * v33;
         let v43: f64 = v42 - v40 * v40;
-        if !(v43 > 0.0) || !v43.is_finite() {
+        if !(v43 > 0.0 && v43 <= f64::MAX) {
             return Err(mass_pivot_error(v43, 6));
         }
         let v44: f64 = v43.sqrt();
@@ -2447,7 +2447,7 @@ pub mod exact {
         let v153: f64 = v151 + v152;
         let v154: f64 = v85 * v85;
         let v155: f64 = v153 + v154;
-        if !((c * mass[25]) > 0.0) || !(c * mass[25]).is_finite() {
+        if !((c * mass[25]) > 0.0 && (c * mass[25]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[25]), 7));
         }
         let v156: f64 = (c * mass[25]).sqrt();
@@ -2456,7 +2456,7 @@ pub mod exact {
         let v158: f64 = phi_q[14] * v157;
         st[48] = v158;
         let v159: f64 = v158 * v158;
-        if !((c * mass[26]) > 0.0) || !(c * mass[26]).is_finite() {
+        if !((c * mass[26]) > 0.0 && (c * mass[26]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[26]), 8));
         }
         let v160: f64 = (c * mass[26]).sqrt();
@@ -2465,7 +2465,7 @@ pub mod exact {
         let v162: f64 = phi_q[15] * v161;
         st[49] = v162;
         let v163: f64 = v162 * v162;
-        if !((c * mass[27]) > 0.0) || !(c * mass[27]).is_finite() {
+        if !((c * mass[27]) > 0.0 && (c * mass[27]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[27]), 9));
         }
         let v164: f64 = (c * mass[27]).sqrt();
@@ -2474,7 +2474,7 @@ pub mod exact {
         let v166: f64 = phi_q[16] * v165;
         st[50] = v166;
         let v167: f64 = v166 * v166;
-        if !((c * mass[28]) > 0.0) || !(c * mass[28]).is_finite() {
+        if !((c * mass[28]) > 0.0 && (c * mass[28]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[28]), 10));
         }
         let v168: f64 = (c * mass[28]).sqrt();
@@ -2487,7 +2487,7 @@ pub mod exact {
         let v172: f64 = (c * mass[40]) * v169;
         st[12] = v172;
         let v173: f64 = (c * mass[33]) - v170 * v170;
-        if !(v173 > 0.0) || !v173.is_finite() {
+        if !(v173 > 0.0 && v173 <= f64::MAX) {
             return Err(mass_pivot_error(v173, 11));
         }
         let v174: f64 = v173.sqrt();
@@ -2501,7 +2501,7 @@ pub mod exact {
         st[13] = v179;
         let v180: f64 = (c * mass[38]) - v171 * v171;
         let v181: f64 = v180 - v177 * v177;
-        if !(v181 > 0.0) || !v181.is_finite() {
+        if !(v181 > 0.0 && v181 <= f64::MAX) {
             return Err(mass_pivot_error(v181, 12));
         }
         let v182: f64 = v181.sqrt();
@@ -2514,7 +2514,7 @@ pub mod exact {
         let v187: f64 = (c * mass[43]) - v172 * v172;
         let v188: f64 = v187 - v179 * v179;
         let v189: f64 = v188 - v186 * v186;
-        if !(v189 > 0.0) || !v189.is_finite() {
+        if !(v189 > 0.0 && v189 <= f64::MAX) {
             return Err(mass_pivot_error(v189, 13));
         }
         let v190: f64 = v189.sqrt();
@@ -7684,13 +7684,13 @@ pub mod reduced {
             let st: &mut [f64; 65] = st
                 .try_into()
                 .map_err(|_| length_error(65, st_len))?;
-            if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+            if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[0]), 0));
             }
             let v0: f64 = (c * mass[0]).sqrt();
             let v1: f64 = 1.0 / v0;
             st[12] = v1;
-            if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+            if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[1]), 1));
             }
             let v2: f64 = (c * mass[1]).sqrt();
@@ -7703,7 +7703,7 @@ pub mod reduced {
             let v6: f64 = (c * mass[13]) * v3;
             st[3] = v6;
             let v7: f64 = (c * mass[6]) - v4 * v4;
-            if !(v7 > 0.0) || !v7.is_finite() {
+            if !(v7 > 0.0 && v7 <= f64::MAX) {
                 return Err(mass_pivot_error(v7, 2));
             }
             let v8: f64 = v7.sqrt();
@@ -7717,7 +7717,7 @@ pub mod reduced {
             st[4] = v13;
             let v14: f64 = (c * mass[11]) - v5 * v5;
             let v15: f64 = v14 - v11 * v11;
-            if !(v15 > 0.0) || !v15.is_finite() {
+            if !(v15 > 0.0 && v15 <= f64::MAX) {
                 return Err(mass_pivot_error(v15, 3));
             }
             let v16: f64 = v15.sqrt();
@@ -7730,7 +7730,7 @@ pub mod reduced {
             let v21: f64 = (c * mass[16]) - v6 * v6;
             let v22: f64 = v21 - v13 * v13;
             let v23: f64 = v22 - v20 * v20;
-            if !(v23 > 0.0) || !v23.is_finite() {
+            if !(v23 > 0.0 && v23 <= f64::MAX) {
                 return Err(mass_pivot_error(v23, 4));
             }
             let v24: f64 = v23.sqrt();
@@ -7862,7 +7862,7 @@ pub mod reduced {
             let v133: f64 = v131 + v132;
             let v134: f64 = v65 * v65;
             let v135: f64 = v133 + v134;
-            if !((c * mass[17]) > 0.0) || !(c * mass[17]).is_finite() {
+            if !((c * mass[17]) > 0.0 && (c * mass[17]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[17]), 5));
             }
             let v136: f64 = (c * mass[17]).sqrt();
@@ -7875,7 +7875,7 @@ pub mod reduced {
             let v140: f64 = (c * mass[29]) * v137;
             st[9] = v140;
             let v141: f64 = (c * mass[22]) - v138 * v138;
-            if !(v141 > 0.0) || !v141.is_finite() {
+            if !(v141 > 0.0 && v141 <= f64::MAX) {
                 return Err(mass_pivot_error(v141, 6));
             }
             let v142: f64 = v141.sqrt();
@@ -7889,7 +7889,7 @@ pub mod reduced {
             st[10] = v147;
             let v148: f64 = (c * mass[27]) - v139 * v139;
             let v149: f64 = v148 - v145 * v145;
-            if !(v149 > 0.0) || !v149.is_finite() {
+            if !(v149 > 0.0 && v149 <= f64::MAX) {
                 return Err(mass_pivot_error(v149, 7));
             }
             let v150: f64 = v149.sqrt();
@@ -7902,7 +7902,7 @@ pub mod reduced {
             let v155: f64 = (c * mass[32]) - v140 * v140;
             let v156: f64 = v155 - v147 * v147;
             let v157: f64 = v156 - v154 * v154;
-            if !(v157 > 0.0) || !v157.is_finite() {
+            if !(v157 > 0.0 && v157 <= f64::MAX) {
                 return Err(mass_pivot_error(v157, 8));
             }
             let v158: f64 = v157.sqrt();

@@ -720,25 +720,25 @@ pub mod exact {
             .map_err(|_| length_error(3, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 12] = st.try_into().map_err(|_| length_error(12, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[2] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[3] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[4] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -746,7 +746,7 @@ pub mod exact {
         st[5] = v7;
         let v8: f64 = (c * mass[7]) * v7;
         st[0] = v8;
-        if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+        if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[5]), 4));
         }
         let v9: f64 = (c * mass[5]).sqrt();
@@ -756,7 +756,7 @@ pub mod exact {
         st[1] = v11;
         let v12: f64 = (c * mass[9]) - v8 * v8;
         let v13: f64 = v12 - v11 * v11;
-        if !(v13 > 0.0) || !v13.is_finite() {
+        if !(v13 > 0.0 && v13 <= f64::MAX) {
             return Err(mass_pivot_error(v13, 5));
         }
         let v14: f64 = v13.sqrt();
@@ -2083,19 +2083,19 @@ pub mod reduced {
                 .map_err(|_| length_error(2, phi_q.len()))?;
             let st_len = st.len();
             let st: &mut [f64; 6] = st.try_into().map_err(|_| length_error(6, st_len))?;
-            if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+            if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[0]), 0));
             }
             let v0: f64 = (c * mass[0]).sqrt();
             let v1: f64 = 1.0 / v0;
             st[0] = v1;
-            if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+            if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[1]), 1));
             }
             let v2: f64 = (c * mass[1]).sqrt();
             let v3: f64 = 1.0 / v2;
             st[1] = v3;
-            if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+            if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[2]), 2));
             }
             let v4: f64 = (c * mass[2]).sqrt();

@@ -5416,25 +5416,25 @@ pub mod exact {
             .map_err(|_| length_error(109, phi_q.len()))?;
         let st_len = st.len();
         let st: &mut [f64; 251] = st.try_into().map_err(|_| length_error(251, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[18] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[19] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[20] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -5447,7 +5447,7 @@ pub mod exact {
         let v10: f64 = (c * mass[15]) * v7;
         st[3] = v10;
         let v11: f64 = (c * mass[8]) - v8 * v8;
-        if !(v11 > 0.0) || !v11.is_finite() {
+        if !(v11 > 0.0 && v11 <= f64::MAX) {
             return Err(mass_pivot_error(v11, 4));
         }
         let v12: f64 = v11.sqrt();
@@ -5461,7 +5461,7 @@ pub mod exact {
         st[4] = v17;
         let v18: f64 = (c * mass[13]) - v9 * v9;
         let v19: f64 = v18 - v15 * v15;
-        if !(v19 > 0.0) || !v19.is_finite() {
+        if !(v19 > 0.0 && v19 <= f64::MAX) {
             return Err(mass_pivot_error(v19, 5));
         }
         let v20: f64 = v19.sqrt();
@@ -5474,7 +5474,7 @@ pub mod exact {
         let v25: f64 = (c * mass[18]) - v10 * v10;
         let v26: f64 = v25 - v17 * v17;
         let v27: f64 = v26 - v24 * v24;
-        if !(v27 > 0.0) || !v27.is_finite() {
+        if !(v27 > 0.0 && v27 <= f64::MAX) {
             return Err(mass_pivot_error(v27, 6));
         }
         let v28: f64 = v27.sqrt();
@@ -6035,25 +6035,25 @@ pub mod exact {
         let v536: f64 = v534 + v535;
         let v537: f64 = v135 * v135;
         let v538: f64 = v536 + v537;
-        if !((c * mass[19]) > 0.0) || !(c * mass[19]).is_finite() {
+        if !((c * mass[19]) > 0.0 && (c * mass[19]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[19]), 7));
         }
         let v539: f64 = (c * mass[19]).sqrt();
         let v540: f64 = 1.0 / v539;
         st[25] = v540;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 8));
         }
         let v541: f64 = (c * mass[20]).sqrt();
         let v542: f64 = 1.0 / v541;
         st[26] = v542;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 9));
         }
         let v543: f64 = (c * mass[21]).sqrt();
         let v544: f64 = 1.0 / v543;
         st[27] = v544;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 10));
         }
         let v545: f64 = (c * mass[22]).sqrt();
@@ -6066,7 +6066,7 @@ pub mod exact {
         let v549: f64 = (c * mass[34]) * v546;
         st[9] = v549;
         let v550: f64 = (c * mass[27]) - v547 * v547;
-        if !(v550 > 0.0) || !v550.is_finite() {
+        if !(v550 > 0.0 && v550 <= f64::MAX) {
             return Err(mass_pivot_error(v550, 11));
         }
         let v551: f64 = v550.sqrt();
@@ -6080,7 +6080,7 @@ pub mod exact {
         st[10] = v556;
         let v557: f64 = (c * mass[32]) - v548 * v548;
         let v558: f64 = v557 - v554 * v554;
-        if !(v558 > 0.0) || !v558.is_finite() {
+        if !(v558 > 0.0 && v558 <= f64::MAX) {
             return Err(mass_pivot_error(v558, 12));
         }
         let v559: f64 = v558.sqrt();
@@ -6093,7 +6093,7 @@ pub mod exact {
         let v564: f64 = (c * mass[37]) - v549 * v549;
         let v565: f64 = v564 - v556 * v556;
         let v566: f64 = v565 - v563 * v563;
-        if !(v566 > 0.0) || !v566.is_finite() {
+        if !(v566 > 0.0 && v566 <= f64::MAX) {
             return Err(mass_pivot_error(v566, 13));
         }
         let v567: f64 = v566.sqrt();
@@ -6499,7 +6499,7 @@ pub mod exact {
         let v928: f64 = v926 + v927;
         let v929: f64 = v654 * v654;
         let v930: f64 = v928 + v929;
-        if !((c * mass[38]) > 0.0) || !(c * mass[38]).is_finite() {
+        if !((c * mass[38]) > 0.0 && (c * mass[38]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[38]), 14));
         }
         let v931: f64 = (c * mass[38]).sqrt();
@@ -6509,7 +6509,7 @@ pub mod exact {
         st[123] = v933;
         let v934: f64 = v933 * v933;
         let v935: f64 = v740 + v934;
-        if !((c * mass[39]) > 0.0) || !(c * mass[39]).is_finite() {
+        if !((c * mass[39]) > 0.0 && (c * mass[39]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[39]), 15));
         }
         let v936: f64 = (c * mass[39]).sqrt();
@@ -6523,7 +6523,7 @@ pub mod exact {
         let v941: f64 = v779 + v940;
         let v942: f64 = v939 * v938;
         let v943: f64 = v939 * v939;
-        if !((c * mass[40]) > 0.0) || !(c * mass[40]).is_finite() {
+        if !((c * mass[40]) > 0.0 && (c * mass[40]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[40]), 16));
         }
         let v944: f64 = (c * mass[40]).sqrt();
@@ -6537,7 +6537,7 @@ pub mod exact {
         let v949: f64 = v825 + v948;
         let v950: f64 = v947 * v946;
         let v951: f64 = v947 * v947;
-        if !((c * mass[41]) > 0.0) || !(c * mass[41]).is_finite() {
+        if !((c * mass[41]) > 0.0 && (c * mass[41]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[41]), 17));
         }
         let v952: f64 = (c * mass[41]).sqrt();
@@ -6550,7 +6550,7 @@ pub mod exact {
         let v956: f64 = (c * mass[53]) * v953;
         st[15] = v956;
         let v957: f64 = (c * mass[46]) - v954 * v954;
-        if !(v957 > 0.0) || !v957.is_finite() {
+        if !(v957 > 0.0 && v957 <= f64::MAX) {
             return Err(mass_pivot_error(v957, 18));
         }
         let v958: f64 = v957.sqrt();
@@ -6564,7 +6564,7 @@ pub mod exact {
         st[16] = v963;
         let v964: f64 = (c * mass[51]) - v955 * v955;
         let v965: f64 = v964 - v961 * v961;
-        if !(v965 > 0.0) || !v965.is_finite() {
+        if !(v965 > 0.0 && v965 <= f64::MAX) {
             return Err(mass_pivot_error(v965, 19));
         }
         let v966: f64 = v965.sqrt();
@@ -6577,7 +6577,7 @@ pub mod exact {
         let v971: f64 = (c * mass[56]) - v956 * v956;
         let v972: f64 = v971 - v963 * v963;
         let v973: f64 = v972 - v970 * v970;
-        if !(v973 > 0.0) || !v973.is_finite() {
+        if !(v973 > 0.0 && v973 <= f64::MAX) {
             return Err(mass_pivot_error(v973, 20));
         }
         let v974: f64 = v973.sqrt();
@@ -15521,25 +15521,25 @@ pub mod reduced {
             let st: &mut [f64; 241] = st
                 .try_into()
                 .map_err(|_| length_error(241, st_len))?;
-            if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+            if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[0]), 0));
             }
             let v0: f64 = (c * mass[0]).sqrt();
             let v1: f64 = 1.0 / v0;
             st[18] = v1;
-            if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+            if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[1]), 1));
             }
             let v2: f64 = (c * mass[1]).sqrt();
             let v3: f64 = 1.0 / v2;
             st[19] = v3;
-            if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+            if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[2]), 2));
             }
             let v4: f64 = (c * mass[2]).sqrt();
             let v5: f64 = 1.0 / v4;
             st[20] = v5;
-            if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+            if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[3]), 3));
             }
             let v6: f64 = (c * mass[3]).sqrt();
@@ -15552,7 +15552,7 @@ pub mod reduced {
             let v10: f64 = (c * mass[15]) * v7;
             st[3] = v10;
             let v11: f64 = (c * mass[8]) - v8 * v8;
-            if !(v11 > 0.0) || !v11.is_finite() {
+            if !(v11 > 0.0 && v11 <= f64::MAX) {
                 return Err(mass_pivot_error(v11, 4));
             }
             let v12: f64 = v11.sqrt();
@@ -15566,7 +15566,7 @@ pub mod reduced {
             st[4] = v17;
             let v18: f64 = (c * mass[13]) - v9 * v9;
             let v19: f64 = v18 - v15 * v15;
-            if !(v19 > 0.0) || !v19.is_finite() {
+            if !(v19 > 0.0 && v19 <= f64::MAX) {
                 return Err(mass_pivot_error(v19, 5));
             }
             let v20: f64 = v19.sqrt();
@@ -15579,7 +15579,7 @@ pub mod reduced {
             let v25: f64 = (c * mass[18]) - v10 * v10;
             let v26: f64 = v25 - v17 * v17;
             let v27: f64 = v26 - v24 * v24;
-            if !(v27 > 0.0) || !v27.is_finite() {
+            if !(v27 > 0.0 && v27 <= f64::MAX) {
                 return Err(mass_pivot_error(v27, 6));
             }
             let v28: f64 = v27.sqrt();
@@ -16140,25 +16140,25 @@ pub mod reduced {
             let v536: f64 = v534 + v535;
             let v537: f64 = v135 * v135;
             let v538: f64 = v536 + v537;
-            if !((c * mass[19]) > 0.0) || !(c * mass[19]).is_finite() {
+            if !((c * mass[19]) > 0.0 && (c * mass[19]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[19]), 7));
             }
             let v539: f64 = (c * mass[19]).sqrt();
             let v540: f64 = 1.0 / v539;
             st[25] = v540;
-            if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+            if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[20]), 8));
             }
             let v541: f64 = (c * mass[20]).sqrt();
             let v542: f64 = 1.0 / v541;
             st[26] = v542;
-            if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+            if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[21]), 9));
             }
             let v543: f64 = (c * mass[21]).sqrt();
             let v544: f64 = 1.0 / v543;
             st[27] = v544;
-            if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+            if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[22]), 10));
             }
             let v545: f64 = (c * mass[22]).sqrt();
@@ -16171,7 +16171,7 @@ pub mod reduced {
             let v549: f64 = (c * mass[34]) * v546;
             st[9] = v549;
             let v550: f64 = (c * mass[27]) - v547 * v547;
-            if !(v550 > 0.0) || !v550.is_finite() {
+            if !(v550 > 0.0 && v550 <= f64::MAX) {
                 return Err(mass_pivot_error(v550, 11));
             }
             let v551: f64 = v550.sqrt();
@@ -16185,7 +16185,7 @@ pub mod reduced {
             st[10] = v556;
             let v557: f64 = (c * mass[32]) - v548 * v548;
             let v558: f64 = v557 - v554 * v554;
-            if !(v558 > 0.0) || !v558.is_finite() {
+            if !(v558 > 0.0 && v558 <= f64::MAX) {
                 return Err(mass_pivot_error(v558, 12));
             }
             let v559: f64 = v558.sqrt();
@@ -16198,7 +16198,7 @@ pub mod reduced {
             let v564: f64 = (c * mass[37]) - v549 * v549;
             let v565: f64 = v564 - v556 * v556;
             let v566: f64 = v565 - v563 * v563;
-            if !(v566 > 0.0) || !v566.is_finite() {
+            if !(v566 > 0.0 && v566 <= f64::MAX) {
                 return Err(mass_pivot_error(v566, 13));
             }
             let v567: f64 = v566.sqrt();
@@ -16604,7 +16604,7 @@ pub mod reduced {
             let v928: f64 = v926 + v927;
             let v929: f64 = v654 * v654;
             let v930: f64 = v928 + v929;
-            if !((c * mass[38]) > 0.0) || !(c * mass[38]).is_finite() {
+            if !((c * mass[38]) > 0.0 && (c * mass[38]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[38]), 14));
             }
             let v931: f64 = (c * mass[38]).sqrt();
@@ -16614,7 +16614,7 @@ pub mod reduced {
             st[121] = v933;
             let v934: f64 = v933 * v933;
             let v935: f64 = v740 + v934;
-            if !((c * mass[39]) > 0.0) || !(c * mass[39]).is_finite() {
+            if !((c * mass[39]) > 0.0 && (c * mass[39]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[39]), 15));
             }
             let v936: f64 = (c * mass[39]).sqrt();
@@ -16627,7 +16627,7 @@ pub mod reduced {
             let v940: f64 = (c * mass[51]) * v937;
             st[15] = v940;
             let v941: f64 = (c * mass[44]) - v938 * v938;
-            if !(v941 > 0.0) || !v941.is_finite() {
+            if !(v941 > 0.0 && v941 <= f64::MAX) {
                 return Err(mass_pivot_error(v941, 16));
             }
             let v942: f64 = v941.sqrt();
@@ -16641,7 +16641,7 @@ pub mod reduced {
             st[16] = v947;
             let v948: f64 = (c * mass[49]) - v939 * v939;
             let v949: f64 = v948 - v945 * v945;
-            if !(v949 > 0.0) || !v949.is_finite() {
+            if !(v949 > 0.0 && v949 <= f64::MAX) {
                 return Err(mass_pivot_error(v949, 17));
             }
             let v950: f64 = v949.sqrt();
@@ -16654,7 +16654,7 @@ pub mod reduced {
             let v955: f64 = (c * mass[54]) - v940 * v940;
             let v956: f64 = v955 - v947 * v947;
             let v957: f64 = v956 - v954 * v954;
-            if !(v957 > 0.0) || !v957.is_finite() {
+            if !(v957 > 0.0 && v957 <= f64::MAX) {
                 return Err(mass_pivot_error(v957, 18));
             }
             let v958: f64 = v957.sqrt();

@@ -21856,25 +21856,25 @@ pub mod exact {
         let st: &mut [f64; 1085] = st
             .try_into()
             .map_err(|_| length_error(1085, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[26] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[27] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[28] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -21882,7 +21882,7 @@ pub mod exact {
         st[29] = v7;
         let v8: f64 = (c * mass[7]) * v7;
         st[0] = v8;
-        if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+        if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[5]), 4));
         }
         let v9: f64 = (c * mass[5]).sqrt();
@@ -21892,7 +21892,7 @@ pub mod exact {
         st[1] = v11;
         let v12: f64 = (c * mass[9]) - v8 * v8;
         let v13: f64 = v12 - v11 * v11;
-        if !(v13 > 0.0) || !v13.is_finite() {
+        if !(v13 > 0.0 && v13 <= f64::MAX) {
             return Err(mass_pivot_error(v13, 5));
         }
         let v14: f64 = v13.sqrt();
@@ -23059,7 +23059,7 @@ pub mod exact {
         let v1102: f64 = v1100 + v1101;
         let v1103: f64 = v123 * v123;
         let v1104: f64 = v1102 + v1103;
-        if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+        if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[10]), 6));
         }
         let v1105: f64 = (c * mass[10]).sqrt();
@@ -23084,7 +23084,7 @@ pub mod exact {
         let v1119: f64 = v1110 * v1108;
         let v1120: f64 = v1110 * v1109;
         let v1121: f64 = v1110 * v1110;
-        if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+        if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[11]), 7));
         }
         let v1122: f64 = (c * mass[11]).sqrt();
@@ -23115,7 +23115,7 @@ pub mod exact {
         let v1142: f64 = v1120 + v1141;
         let v1143: f64 = v1127 * v1127;
         let v1144: f64 = v1121 + v1143;
-        if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+        if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[12]), 8));
         }
         let v1145: f64 = (c * mass[12]).sqrt();
@@ -23146,7 +23146,7 @@ pub mod exact {
         let v1165: f64 = v1142 + v1164;
         let v1166: f64 = v1150 * v1150;
         let v1167: f64 = v1144 + v1166;
-        if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+        if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[13]), 9));
         }
         let v1168: f64 = (c * mass[13]).sqrt();
@@ -23154,7 +23154,7 @@ pub mod exact {
         st[35] = v1169;
         let v1170: f64 = (c * mass[17]) * v1169;
         st[2] = v1170;
-        if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+        if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[15]), 10));
         }
         let v1171: f64 = (c * mass[15]).sqrt();
@@ -23164,7 +23164,7 @@ pub mod exact {
         st[3] = v1173;
         let v1174: f64 = (c * mass[19]) - v1170 * v1170;
         let v1175: f64 = v1174 - v1173 * v1173;
-        if !(v1175 > 0.0) || !v1175.is_finite() {
+        if !(v1175 > 0.0 && v1175 <= f64::MAX) {
             return Err(mass_pivot_error(v1175, 11));
         }
         let v1176: f64 = v1175.sqrt();
@@ -23273,7 +23273,7 @@ pub mod exact {
         let v1264: f64 = v1199 * v1195;
         let v1265: f64 = v1199 * v1198;
         let v1266: f64 = v1199 * v1199;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 12));
         }
         let v1267: f64 = (c * mass[20]).sqrt();
@@ -23298,7 +23298,7 @@ pub mod exact {
         let v1281: f64 = v1272 * v1270;
         let v1282: f64 = v1272 * v1271;
         let v1283: f64 = v1272 * v1272;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 13));
         }
         let v1284: f64 = (c * mass[21]).sqrt();
@@ -23329,7 +23329,7 @@ pub mod exact {
         let v1304: f64 = v1282 + v1303;
         let v1305: f64 = v1289 * v1289;
         let v1306: f64 = v1283 + v1305;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 14));
         }
         let v1307: f64 = (c * mass[22]).sqrt();
@@ -23360,7 +23360,7 @@ pub mod exact {
         let v1327: f64 = v1304 + v1326;
         let v1328: f64 = v1312 * v1312;
         let v1329: f64 = v1306 + v1328;
-        if !((c * mass[23]) > 0.0) || !(c * mass[23]).is_finite() {
+        if !((c * mass[23]) > 0.0 && (c * mass[23]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[23]), 15));
         }
         let v1330: f64 = (c * mass[23]).sqrt();
@@ -23368,7 +23368,7 @@ pub mod exact {
         st[41] = v1331;
         let v1332: f64 = (c * mass[27]) * v1331;
         st[4] = v1332;
-        if !((c * mass[25]) > 0.0) || !(c * mass[25]).is_finite() {
+        if !((c * mass[25]) > 0.0 && (c * mass[25]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[25]), 16));
         }
         let v1333: f64 = (c * mass[25]).sqrt();
@@ -23378,7 +23378,7 @@ pub mod exact {
         st[5] = v1335;
         let v1336: f64 = (c * mass[29]) - v1332 * v1332;
         let v1337: f64 = v1336 - v1335 * v1335;
-        if !(v1337 > 0.0) || !v1337.is_finite() {
+        if !(v1337 > 0.0 && v1337 <= f64::MAX) {
             return Err(mass_pivot_error(v1337, 17));
         }
         let v1338: f64 = v1337.sqrt();
@@ -23487,7 +23487,7 @@ pub mod exact {
         let v1426: f64 = v1361 * v1357;
         let v1427: f64 = v1361 * v1360;
         let v1428: f64 = v1361 * v1361;
-        if !((c * mass[30]) > 0.0) || !(c * mass[30]).is_finite() {
+        if !((c * mass[30]) > 0.0 && (c * mass[30]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[30]), 18));
         }
         let v1429: f64 = (c * mass[30]).sqrt();
@@ -23512,7 +23512,7 @@ pub mod exact {
         let v1443: f64 = v1434 * v1432;
         let v1444: f64 = v1434 * v1433;
         let v1445: f64 = v1434 * v1434;
-        if !((c * mass[31]) > 0.0) || !(c * mass[31]).is_finite() {
+        if !((c * mass[31]) > 0.0 && (c * mass[31]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[31]), 19));
         }
         let v1446: f64 = (c * mass[31]).sqrt();
@@ -23543,7 +23543,7 @@ pub mod exact {
         let v1466: f64 = v1444 + v1465;
         let v1467: f64 = v1451 * v1451;
         let v1468: f64 = v1445 + v1467;
-        if !((c * mass[32]) > 0.0) || !(c * mass[32]).is_finite() {
+        if !((c * mass[32]) > 0.0 && (c * mass[32]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[32]), 20));
         }
         let v1469: f64 = (c * mass[32]).sqrt();
@@ -23574,7 +23574,7 @@ pub mod exact {
         let v1489: f64 = v1466 + v1488;
         let v1490: f64 = v1474 * v1474;
         let v1491: f64 = v1468 + v1490;
-        if !((c * mass[33]) > 0.0) || !(c * mass[33]).is_finite() {
+        if !((c * mass[33]) > 0.0 && (c * mass[33]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[33]), 21));
         }
         let v1492: f64 = (c * mass[33]).sqrt();
@@ -23582,7 +23582,7 @@ pub mod exact {
         st[47] = v1493;
         let v1494: f64 = (c * mass[37]) * v1493;
         st[6] = v1494;
-        if !((c * mass[35]) > 0.0) || !(c * mass[35]).is_finite() {
+        if !((c * mass[35]) > 0.0 && (c * mass[35]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[35]), 22));
         }
         let v1495: f64 = (c * mass[35]).sqrt();
@@ -23592,7 +23592,7 @@ pub mod exact {
         st[7] = v1497;
         let v1498: f64 = (c * mass[39]) - v1494 * v1494;
         let v1499: f64 = v1498 - v1497 * v1497;
-        if !(v1499 > 0.0) || !v1499.is_finite() {
+        if !(v1499 > 0.0 && v1499 <= f64::MAX) {
             return Err(mass_pivot_error(v1499, 23));
         }
         let v1500: f64 = v1499.sqrt();
@@ -23701,7 +23701,7 @@ pub mod exact {
         let v1588: f64 = v1523 * v1519;
         let v1589: f64 = v1523 * v1522;
         let v1590: f64 = v1523 * v1523;
-        if !((c * mass[40]) > 0.0) || !(c * mass[40]).is_finite() {
+        if !((c * mass[40]) > 0.0 && (c * mass[40]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[40]), 24));
         }
         let v1591: f64 = (c * mass[40]).sqrt();
@@ -23726,7 +23726,7 @@ pub mod exact {
         let v1605: f64 = v1596 * v1594;
         let v1606: f64 = v1596 * v1595;
         let v1607: f64 = v1596 * v1596;
-        if !((c * mass[41]) > 0.0) || !(c * mass[41]).is_finite() {
+        if !((c * mass[41]) > 0.0 && (c * mass[41]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[41]), 25));
         }
         let v1608: f64 = (c * mass[41]).sqrt();
@@ -23757,7 +23757,7 @@ pub mod exact {
         let v1628: f64 = v1606 + v1627;
         let v1629: f64 = v1613 * v1613;
         let v1630: f64 = v1607 + v1629;
-        if !((c * mass[42]) > 0.0) || !(c * mass[42]).is_finite() {
+        if !((c * mass[42]) > 0.0 && (c * mass[42]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[42]), 26));
         }
         let v1631: f64 = (c * mass[42]).sqrt();
@@ -23788,7 +23788,7 @@ pub mod exact {
         let v1651: f64 = v1628 + v1650;
         let v1652: f64 = v1636 * v1636;
         let v1653: f64 = v1630 + v1652;
-        if !((c * mass[43]) > 0.0) || !(c * mass[43]).is_finite() {
+        if !((c * mass[43]) > 0.0 && (c * mass[43]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[43]), 27));
         }
         let v1654: f64 = (c * mass[43]).sqrt();
@@ -23796,7 +23796,7 @@ pub mod exact {
         st[53] = v1655;
         let v1656: f64 = (c * mass[47]) * v1655;
         st[8] = v1656;
-        if !((c * mass[45]) > 0.0) || !(c * mass[45]).is_finite() {
+        if !((c * mass[45]) > 0.0 && (c * mass[45]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[45]), 28));
         }
         let v1657: f64 = (c * mass[45]).sqrt();
@@ -23806,7 +23806,7 @@ pub mod exact {
         st[9] = v1659;
         let v1660: f64 = (c * mass[49]) - v1656 * v1656;
         let v1661: f64 = v1660 - v1659 * v1659;
-        if !(v1661 > 0.0) || !v1661.is_finite() {
+        if !(v1661 > 0.0 && v1661 <= f64::MAX) {
             return Err(mass_pivot_error(v1661, 29));
         }
         let v1662: f64 = v1661.sqrt();
@@ -23915,7 +23915,7 @@ pub mod exact {
         let v1750: f64 = v1685 * v1681;
         let v1751: f64 = v1685 * v1684;
         let v1752: f64 = v1685 * v1685;
-        if !((c * mass[50]) > 0.0) || !(c * mass[50]).is_finite() {
+        if !((c * mass[50]) > 0.0 && (c * mass[50]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[50]), 30));
         }
         let v1753: f64 = (c * mass[50]).sqrt();
@@ -23940,7 +23940,7 @@ pub mod exact {
         let v1767: f64 = v1758 * v1756;
         let v1768: f64 = v1758 * v1757;
         let v1769: f64 = v1758 * v1758;
-        if !((c * mass[51]) > 0.0) || !(c * mass[51]).is_finite() {
+        if !((c * mass[51]) > 0.0 && (c * mass[51]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[51]), 31));
         }
         let v1770: f64 = (c * mass[51]).sqrt();
@@ -23971,7 +23971,7 @@ pub mod exact {
         let v1790: f64 = v1768 + v1789;
         let v1791: f64 = v1775 * v1775;
         let v1792: f64 = v1769 + v1791;
-        if !((c * mass[52]) > 0.0) || !(c * mass[52]).is_finite() {
+        if !((c * mass[52]) > 0.0 && (c * mass[52]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[52]), 32));
         }
         let v1793: f64 = (c * mass[52]).sqrt();
@@ -24002,7 +24002,7 @@ pub mod exact {
         let v1813: f64 = v1790 + v1812;
         let v1814: f64 = v1798 * v1798;
         let v1815: f64 = v1792 + v1814;
-        if !((c * mass[53]) > 0.0) || !(c * mass[53]).is_finite() {
+        if !((c * mass[53]) > 0.0 && (c * mass[53]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[53]), 33));
         }
         let v1816: f64 = (c * mass[53]).sqrt();
@@ -24010,7 +24010,7 @@ pub mod exact {
         st[59] = v1817;
         let v1818: f64 = (c * mass[57]) * v1817;
         st[10] = v1818;
-        if !((c * mass[55]) > 0.0) || !(c * mass[55]).is_finite() {
+        if !((c * mass[55]) > 0.0 && (c * mass[55]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[55]), 34));
         }
         let v1819: f64 = (c * mass[55]).sqrt();
@@ -24020,7 +24020,7 @@ pub mod exact {
         st[11] = v1821;
         let v1822: f64 = (c * mass[59]) - v1818 * v1818;
         let v1823: f64 = v1822 - v1821 * v1821;
-        if !(v1823 > 0.0) || !v1823.is_finite() {
+        if !(v1823 > 0.0 && v1823 <= f64::MAX) {
             return Err(mass_pivot_error(v1823, 35));
         }
         let v1824: f64 = v1823.sqrt();
@@ -24129,7 +24129,7 @@ pub mod exact {
         let v1912: f64 = v1847 * v1843;
         let v1913: f64 = v1847 * v1846;
         let v1914: f64 = v1847 * v1847;
-        if !((c * mass[60]) > 0.0) || !(c * mass[60]).is_finite() {
+        if !((c * mass[60]) > 0.0 && (c * mass[60]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[60]), 36));
         }
         let v1915: f64 = (c * mass[60]).sqrt();
@@ -24154,7 +24154,7 @@ pub mod exact {
         let v1929: f64 = v1920 * v1918;
         let v1930: f64 = v1920 * v1919;
         let v1931: f64 = v1920 * v1920;
-        if !((c * mass[61]) > 0.0) || !(c * mass[61]).is_finite() {
+        if !((c * mass[61]) > 0.0 && (c * mass[61]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[61]), 37));
         }
         let v1932: f64 = (c * mass[61]).sqrt();
@@ -24185,7 +24185,7 @@ pub mod exact {
         let v1952: f64 = v1930 + v1951;
         let v1953: f64 = v1937 * v1937;
         let v1954: f64 = v1931 + v1953;
-        if !((c * mass[62]) > 0.0) || !(c * mass[62]).is_finite() {
+        if !((c * mass[62]) > 0.0 && (c * mass[62]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[62]), 38));
         }
         let v1955: f64 = (c * mass[62]).sqrt();
@@ -24216,7 +24216,7 @@ pub mod exact {
         let v1975: f64 = v1952 + v1974;
         let v1976: f64 = v1960 * v1960;
         let v1977: f64 = v1954 + v1976;
-        if !((c * mass[63]) > 0.0) || !(c * mass[63]).is_finite() {
+        if !((c * mass[63]) > 0.0 && (c * mass[63]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[63]), 39));
         }
         let v1978: f64 = (c * mass[63]).sqrt();
@@ -24224,7 +24224,7 @@ pub mod exact {
         st[65] = v1979;
         let v1980: f64 = (c * mass[67]) * v1979;
         st[12] = v1980;
-        if !((c * mass[65]) > 0.0) || !(c * mass[65]).is_finite() {
+        if !((c * mass[65]) > 0.0 && (c * mass[65]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[65]), 40));
         }
         let v1981: f64 = (c * mass[65]).sqrt();
@@ -24234,7 +24234,7 @@ pub mod exact {
         st[13] = v1983;
         let v1984: f64 = (c * mass[69]) - v1980 * v1980;
         let v1985: f64 = v1984 - v1983 * v1983;
-        if !(v1985 > 0.0) || !v1985.is_finite() {
+        if !(v1985 > 0.0 && v1985 <= f64::MAX) {
             return Err(mass_pivot_error(v1985, 41));
         }
         let v1986: f64 = v1985.sqrt();
@@ -24343,25 +24343,25 @@ pub mod exact {
         let v2074: f64 = v2009 * v2005;
         let v2075: f64 = v2009 * v2008;
         let v2076: f64 = v2009 * v2009;
-        if !((c * mass[70]) > 0.0) || !(c * mass[70]).is_finite() {
+        if !((c * mass[70]) > 0.0 && (c * mass[70]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[70]), 42));
         }
         let v2077: f64 = (c * mass[70]).sqrt();
         let v2078: f64 = 1.0 / v2077;
         st[68] = v2078;
-        if !((c * mass[71]) > 0.0) || !(c * mass[71]).is_finite() {
+        if !((c * mass[71]) > 0.0 && (c * mass[71]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[71]), 43));
         }
         let v2079: f64 = (c * mass[71]).sqrt();
         let v2080: f64 = 1.0 / v2079;
         st[69] = v2080;
-        if !((c * mass[72]) > 0.0) || !(c * mass[72]).is_finite() {
+        if !((c * mass[72]) > 0.0 && (c * mass[72]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[72]), 44));
         }
         let v2081: f64 = (c * mass[72]).sqrt();
         let v2082: f64 = 1.0 / v2081;
         st[70] = v2082;
-        if !((c * mass[73]) > 0.0) || !(c * mass[73]).is_finite() {
+        if !((c * mass[73]) > 0.0 && (c * mass[73]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[73]), 45));
         }
         let v2083: f64 = (c * mass[73]).sqrt();
@@ -24369,7 +24369,7 @@ pub mod exact {
         st[71] = v2084;
         let v2085: f64 = (c * mass[77]) * v2084;
         st[14] = v2085;
-        if !((c * mass[75]) > 0.0) || !(c * mass[75]).is_finite() {
+        if !((c * mass[75]) > 0.0 && (c * mass[75]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[75]), 46));
         }
         let v2086: f64 = (c * mass[75]).sqrt();
@@ -24379,7 +24379,7 @@ pub mod exact {
         st[15] = v2088;
         let v2089: f64 = (c * mass[79]) - v2085 * v2085;
         let v2090: f64 = v2089 - v2088 * v2088;
-        if !(v2090 > 0.0) || !v2090.is_finite() {
+        if !(v2090 > 0.0 && v2090 <= f64::MAX) {
             return Err(mass_pivot_error(v2090, 47));
         }
         let v2091: f64 = v2090.sqrt();
@@ -24681,25 +24681,25 @@ pub mod exact {
         let v2352: f64 = v2139 * v2139;
         let v2353: f64 = v2351 + v2352;
         let v2354: f64 = v1167 + v2353;
-        if !((c * mass[80]) > 0.0) || !(c * mass[80]).is_finite() {
+        if !((c * mass[80]) > 0.0 && (c * mass[80]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[80]), 48));
         }
         let v2355: f64 = (c * mass[80]).sqrt();
         let v2356: f64 = 1.0 / v2355;
         st[74] = v2356;
-        if !((c * mass[81]) > 0.0) || !(c * mass[81]).is_finite() {
+        if !((c * mass[81]) > 0.0 && (c * mass[81]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[81]), 49));
         }
         let v2357: f64 = (c * mass[81]).sqrt();
         let v2358: f64 = 1.0 / v2357;
         st[75] = v2358;
-        if !((c * mass[82]) > 0.0) || !(c * mass[82]).is_finite() {
+        if !((c * mass[82]) > 0.0 && (c * mass[82]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[82]), 50));
         }
         let v2359: f64 = (c * mass[82]).sqrt();
         let v2360: f64 = 1.0 / v2359;
         st[76] = v2360;
-        if !((c * mass[83]) > 0.0) || !(c * mass[83]).is_finite() {
+        if !((c * mass[83]) > 0.0 && (c * mass[83]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[83]), 51));
         }
         let v2361: f64 = (c * mass[83]).sqrt();
@@ -24707,7 +24707,7 @@ pub mod exact {
         st[77] = v2362;
         let v2363: f64 = (c * mass[87]) * v2362;
         st[16] = v2363;
-        if !((c * mass[85]) > 0.0) || !(c * mass[85]).is_finite() {
+        if !((c * mass[85]) > 0.0 && (c * mass[85]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[85]), 52));
         }
         let v2364: f64 = (c * mass[85]).sqrt();
@@ -24717,7 +24717,7 @@ pub mod exact {
         st[17] = v2366;
         let v2367: f64 = (c * mass[89]) - v2363 * v2363;
         let v2368: f64 = v2367 - v2366 * v2366;
-        if !(v2368 > 0.0) || !v2368.is_finite() {
+        if !(v2368 > 0.0 && v2368 <= f64::MAX) {
             return Err(mass_pivot_error(v2368, 53));
         }
         let v2369: f64 = v2368.sqrt();
@@ -25019,25 +25019,25 @@ pub mod exact {
         let v2630: f64 = v2417 * v2417;
         let v2631: f64 = v2629 + v2630;
         let v2632: f64 = v1329 + v2631;
-        if !((c * mass[90]) > 0.0) || !(c * mass[90]).is_finite() {
+        if !((c * mass[90]) > 0.0 && (c * mass[90]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[90]), 54));
         }
         let v2633: f64 = (c * mass[90]).sqrt();
         let v2634: f64 = 1.0 / v2633;
         st[80] = v2634;
-        if !((c * mass[91]) > 0.0) || !(c * mass[91]).is_finite() {
+        if !((c * mass[91]) > 0.0 && (c * mass[91]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[91]), 55));
         }
         let v2635: f64 = (c * mass[91]).sqrt();
         let v2636: f64 = 1.0 / v2635;
         st[81] = v2636;
-        if !((c * mass[92]) > 0.0) || !(c * mass[92]).is_finite() {
+        if !((c * mass[92]) > 0.0 && (c * mass[92]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[92]), 56));
         }
         let v2637: f64 = (c * mass[92]).sqrt();
         let v2638: f64 = 1.0 / v2637;
         st[82] = v2638;
-        if !((c * mass[93]) > 0.0) || !(c * mass[93]).is_finite() {
+        if !((c * mass[93]) > 0.0 && (c * mass[93]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[93]), 57));
         }
         let v2639: f64 = (c * mass[93]).sqrt();
@@ -25045,7 +25045,7 @@ pub mod exact {
         st[83] = v2640;
         let v2641: f64 = (c * mass[97]) * v2640;
         st[18] = v2641;
-        if !((c * mass[95]) > 0.0) || !(c * mass[95]).is_finite() {
+        if !((c * mass[95]) > 0.0 && (c * mass[95]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[95]), 58));
         }
         let v2642: f64 = (c * mass[95]).sqrt();
@@ -25055,7 +25055,7 @@ pub mod exact {
         st[19] = v2644;
         let v2645: f64 = (c * mass[99]) - v2641 * v2641;
         let v2646: f64 = v2645 - v2644 * v2644;
-        if !(v2646 > 0.0) || !v2646.is_finite() {
+        if !(v2646 > 0.0 && v2646 <= f64::MAX) {
             return Err(mass_pivot_error(v2646, 59));
         }
         let v2647: f64 = v2646.sqrt();
@@ -25357,25 +25357,25 @@ pub mod exact {
         let v2908: f64 = v2695 * v2695;
         let v2909: f64 = v2907 + v2908;
         let v2910: f64 = v1491 + v2909;
-        if !((c * mass[100]) > 0.0) || !(c * mass[100]).is_finite() {
+        if !((c * mass[100]) > 0.0 && (c * mass[100]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[100]), 60));
         }
         let v2911: f64 = (c * mass[100]).sqrt();
         let v2912: f64 = 1.0 / v2911;
         st[86] = v2912;
-        if !((c * mass[101]) > 0.0) || !(c * mass[101]).is_finite() {
+        if !((c * mass[101]) > 0.0 && (c * mass[101]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[101]), 61));
         }
         let v2913: f64 = (c * mass[101]).sqrt();
         let v2914: f64 = 1.0 / v2913;
         st[87] = v2914;
-        if !((c * mass[102]) > 0.0) || !(c * mass[102]).is_finite() {
+        if !((c * mass[102]) > 0.0 && (c * mass[102]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[102]), 62));
         }
         let v2915: f64 = (c * mass[102]).sqrt();
         let v2916: f64 = 1.0 / v2915;
         st[88] = v2916;
-        if !((c * mass[103]) > 0.0) || !(c * mass[103]).is_finite() {
+        if !((c * mass[103]) > 0.0 && (c * mass[103]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[103]), 63));
         }
         let v2917: f64 = (c * mass[103]).sqrt();
@@ -25383,7 +25383,7 @@ pub mod exact {
         st[89] = v2918;
         let v2919: f64 = (c * mass[107]) * v2918;
         st[20] = v2919;
-        if !((c * mass[105]) > 0.0) || !(c * mass[105]).is_finite() {
+        if !((c * mass[105]) > 0.0 && (c * mass[105]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[105]), 64));
         }
         let v2920: f64 = (c * mass[105]).sqrt();
@@ -25393,7 +25393,7 @@ pub mod exact {
         st[21] = v2922;
         let v2923: f64 = (c * mass[109]) - v2919 * v2919;
         let v2924: f64 = v2923 - v2922 * v2922;
-        if !(v2924 > 0.0) || !v2924.is_finite() {
+        if !(v2924 > 0.0 && v2924 <= f64::MAX) {
             return Err(mass_pivot_error(v2924, 65));
         }
         let v2925: f64 = v2924.sqrt();
@@ -25695,25 +25695,25 @@ pub mod exact {
         let v3186: f64 = v2973 * v2973;
         let v3187: f64 = v3185 + v3186;
         let v3188: f64 = v1653 + v3187;
-        if !((c * mass[110]) > 0.0) || !(c * mass[110]).is_finite() {
+        if !((c * mass[110]) > 0.0 && (c * mass[110]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[110]), 66));
         }
         let v3189: f64 = (c * mass[110]).sqrt();
         let v3190: f64 = 1.0 / v3189;
         st[92] = v3190;
-        if !((c * mass[111]) > 0.0) || !(c * mass[111]).is_finite() {
+        if !((c * mass[111]) > 0.0 && (c * mass[111]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[111]), 67));
         }
         let v3191: f64 = (c * mass[111]).sqrt();
         let v3192: f64 = 1.0 / v3191;
         st[93] = v3192;
-        if !((c * mass[112]) > 0.0) || !(c * mass[112]).is_finite() {
+        if !((c * mass[112]) > 0.0 && (c * mass[112]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[112]), 68));
         }
         let v3193: f64 = (c * mass[112]).sqrt();
         let v3194: f64 = 1.0 / v3193;
         st[94] = v3194;
-        if !((c * mass[113]) > 0.0) || !(c * mass[113]).is_finite() {
+        if !((c * mass[113]) > 0.0 && (c * mass[113]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[113]), 69));
         }
         let v3195: f64 = (c * mass[113]).sqrt();
@@ -25721,7 +25721,7 @@ pub mod exact {
         st[95] = v3196;
         let v3197: f64 = (c * mass[117]) * v3196;
         st[22] = v3197;
-        if !((c * mass[115]) > 0.0) || !(c * mass[115]).is_finite() {
+        if !((c * mass[115]) > 0.0 && (c * mass[115]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[115]), 70));
         }
         let v3198: f64 = (c * mass[115]).sqrt();
@@ -25731,7 +25731,7 @@ pub mod exact {
         st[23] = v3200;
         let v3201: f64 = (c * mass[119]) - v3197 * v3197;
         let v3202: f64 = v3201 - v3200 * v3200;
-        if !(v3202 > 0.0) || !v3202.is_finite() {
+        if !(v3202 > 0.0 && v3202 <= f64::MAX) {
             return Err(mass_pivot_error(v3202, 71));
         }
         let v3203: f64 = v3202.sqrt();
@@ -26033,25 +26033,25 @@ pub mod exact {
         let v3464: f64 = v3251 * v3251;
         let v3465: f64 = v3463 + v3464;
         let v3466: f64 = v1815 + v3465;
-        if !((c * mass[120]) > 0.0) || !(c * mass[120]).is_finite() {
+        if !((c * mass[120]) > 0.0 && (c * mass[120]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[120]), 72));
         }
         let v3467: f64 = (c * mass[120]).sqrt();
         let v3468: f64 = 1.0 / v3467;
         st[98] = v3468;
-        if !((c * mass[121]) > 0.0) || !(c * mass[121]).is_finite() {
+        if !((c * mass[121]) > 0.0 && (c * mass[121]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[121]), 73));
         }
         let v3469: f64 = (c * mass[121]).sqrt();
         let v3470: f64 = 1.0 / v3469;
         st[99] = v3470;
-        if !((c * mass[122]) > 0.0) || !(c * mass[122]).is_finite() {
+        if !((c * mass[122]) > 0.0 && (c * mass[122]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[122]), 74));
         }
         let v3471: f64 = (c * mass[122]).sqrt();
         let v3472: f64 = 1.0 / v3471;
         st[100] = v3472;
-        if !((c * mass[123]) > 0.0) || !(c * mass[123]).is_finite() {
+        if !((c * mass[123]) > 0.0 && (c * mass[123]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[123]), 75));
         }
         let v3473: f64 = (c * mass[123]).sqrt();
@@ -26059,7 +26059,7 @@ pub mod exact {
         st[101] = v3474;
         let v3475: f64 = (c * mass[127]) * v3474;
         st[24] = v3475;
-        if !((c * mass[125]) > 0.0) || !(c * mass[125]).is_finite() {
+        if !((c * mass[125]) > 0.0 && (c * mass[125]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[125]), 76));
         }
         let v3476: f64 = (c * mass[125]).sqrt();
@@ -26069,7 +26069,7 @@ pub mod exact {
         st[25] = v3478;
         let v3479: f64 = (c * mass[129]) - v3475 * v3475;
         let v3480: f64 = v3479 - v3478 * v3478;
-        if !(v3480 > 0.0) || !v3480.is_finite() {
+        if !(v3480 > 0.0 && v3480 <= f64::MAX) {
             return Err(mass_pivot_error(v3480, 77));
         }
         let v3481: f64 = v3480.sqrt();
@@ -43711,37 +43711,37 @@ pub mod paper {
         let st: &mut [f64; 1017] = st
             .try_into()
             .map_err(|_| length_error(1017, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[0] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[1] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[2] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
         let v7: f64 = 1.0 / v6;
         st[3] = v7;
-        if !((c * mass[4]) > 0.0) || !(c * mass[4]).is_finite() {
+        if !((c * mass[4]) > 0.0 && (c * mass[4]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[4]), 4));
         }
         let v8: f64 = (c * mass[4]).sqrt();
         let v9: f64 = 1.0 / v8;
         st[4] = v9;
-        if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+        if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[5]), 5));
         }
         let v10: f64 = (c * mass[5]).sqrt();
@@ -44674,7 +44674,7 @@ pub mod paper {
         let v870: f64 = v868 + v869;
         let v871: f64 = v77 * v77;
         let v872: f64 = v870 + v871;
-        if !((c * mass[6]) > 0.0) || !(c * mass[6]).is_finite() {
+        if !((c * mass[6]) > 0.0 && (c * mass[6]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[6]), 6));
         }
         let v873: f64 = (c * mass[6]).sqrt();
@@ -44699,7 +44699,7 @@ pub mod paper {
         let v887: f64 = v878 * v876;
         let v888: f64 = v878 * v877;
         let v889: f64 = v878 * v878;
-        if !((c * mass[7]) > 0.0) || !(c * mass[7]).is_finite() {
+        if !((c * mass[7]) > 0.0 && (c * mass[7]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[7]), 7));
         }
         let v890: f64 = (c * mass[7]).sqrt();
@@ -44730,7 +44730,7 @@ pub mod paper {
         let v910: f64 = v888 + v909;
         let v911: f64 = v895 * v895;
         let v912: f64 = v889 + v911;
-        if !((c * mass[8]) > 0.0) || !(c * mass[8]).is_finite() {
+        if !((c * mass[8]) > 0.0 && (c * mass[8]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[8]), 8));
         }
         let v913: f64 = (c * mass[8]).sqrt();
@@ -44761,7 +44761,7 @@ pub mod paper {
         let v933: f64 = v910 + v932;
         let v934: f64 = v918 * v918;
         let v935: f64 = v912 + v934;
-        if !((c * mass[9]) > 0.0) || !(c * mass[9]).is_finite() {
+        if !((c * mass[9]) > 0.0 && (c * mass[9]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[9]), 9));
         }
         let v936: f64 = (c * mass[9]).sqrt();
@@ -44791,7 +44791,7 @@ pub mod paper {
         let v955: f64 = v941 * v939;
         let v956: f64 = v941 * v940;
         let v957: f64 = v941 * v941;
-        if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+        if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[10]), 10));
         }
         let v958: f64 = (c * mass[10]).sqrt();
@@ -44821,7 +44821,7 @@ pub mod paper {
         let v977: f64 = v963 * v961;
         let v978: f64 = v963 * v962;
         let v979: f64 = v963 * v963;
-        if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+        if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[11]), 11));
         }
         let v980: f64 = (c * mass[11]).sqrt();
@@ -44842,7 +44842,7 @@ pub mod paper {
         let v991: f64 = v984 * v982;
         let v992: f64 = v984 * v983;
         let v993: f64 = v984 * v984;
-        if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+        if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[12]), 12));
         }
         let v994: f64 = (c * mass[12]).sqrt();
@@ -44867,7 +44867,7 @@ pub mod paper {
         let v1008: f64 = v999 * v997;
         let v1009: f64 = v999 * v998;
         let v1010: f64 = v999 * v999;
-        if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+        if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[13]), 13));
         }
         let v1011: f64 = (c * mass[13]).sqrt();
@@ -44898,7 +44898,7 @@ pub mod paper {
         let v1031: f64 = v1009 + v1030;
         let v1032: f64 = v1016 * v1016;
         let v1033: f64 = v1010 + v1032;
-        if !((c * mass[14]) > 0.0) || !(c * mass[14]).is_finite() {
+        if !((c * mass[14]) > 0.0 && (c * mass[14]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[14]), 14));
         }
         let v1034: f64 = (c * mass[14]).sqrt();
@@ -44929,7 +44929,7 @@ pub mod paper {
         let v1054: f64 = v1031 + v1053;
         let v1055: f64 = v1039 * v1039;
         let v1056: f64 = v1033 + v1055;
-        if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+        if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[15]), 15));
         }
         let v1057: f64 = (c * mass[15]).sqrt();
@@ -44959,7 +44959,7 @@ pub mod paper {
         let v1076: f64 = v1062 * v1060;
         let v1077: f64 = v1062 * v1061;
         let v1078: f64 = v1062 * v1062;
-        if !((c * mass[16]) > 0.0) || !(c * mass[16]).is_finite() {
+        if !((c * mass[16]) > 0.0 && (c * mass[16]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[16]), 16));
         }
         let v1079: f64 = (c * mass[16]).sqrt();
@@ -44989,7 +44989,7 @@ pub mod paper {
         let v1098: f64 = v1084 * v1082;
         let v1099: f64 = v1084 * v1083;
         let v1100: f64 = v1084 * v1084;
-        if !((c * mass[17]) > 0.0) || !(c * mass[17]).is_finite() {
+        if !((c * mass[17]) > 0.0 && (c * mass[17]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[17]), 17));
         }
         let v1101: f64 = (c * mass[17]).sqrt();
@@ -45010,7 +45010,7 @@ pub mod paper {
         let v1112: f64 = v1105 * v1103;
         let v1113: f64 = v1105 * v1104;
         let v1114: f64 = v1105 * v1105;
-        if !((c * mass[18]) > 0.0) || !(c * mass[18]).is_finite() {
+        if !((c * mass[18]) > 0.0 && (c * mass[18]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[18]), 18));
         }
         let v1115: f64 = (c * mass[18]).sqrt();
@@ -45035,7 +45035,7 @@ pub mod paper {
         let v1129: f64 = v1120 * v1118;
         let v1130: f64 = v1120 * v1119;
         let v1131: f64 = v1120 * v1120;
-        if !((c * mass[19]) > 0.0) || !(c * mass[19]).is_finite() {
+        if !((c * mass[19]) > 0.0 && (c * mass[19]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[19]), 19));
         }
         let v1132: f64 = (c * mass[19]).sqrt();
@@ -45066,7 +45066,7 @@ pub mod paper {
         let v1152: f64 = v1130 + v1151;
         let v1153: f64 = v1137 * v1137;
         let v1154: f64 = v1131 + v1153;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 20));
         }
         let v1155: f64 = (c * mass[20]).sqrt();
@@ -45097,7 +45097,7 @@ pub mod paper {
         let v1175: f64 = v1152 + v1174;
         let v1176: f64 = v1160 * v1160;
         let v1177: f64 = v1154 + v1176;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 21));
         }
         let v1178: f64 = (c * mass[21]).sqrt();
@@ -45127,7 +45127,7 @@ pub mod paper {
         let v1197: f64 = v1183 * v1181;
         let v1198: f64 = v1183 * v1182;
         let v1199: f64 = v1183 * v1183;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 22));
         }
         let v1200: f64 = (c * mass[22]).sqrt();
@@ -45157,7 +45157,7 @@ pub mod paper {
         let v1219: f64 = v1205 * v1203;
         let v1220: f64 = v1205 * v1204;
         let v1221: f64 = v1205 * v1205;
-        if !((c * mass[23]) > 0.0) || !(c * mass[23]).is_finite() {
+        if !((c * mass[23]) > 0.0 && (c * mass[23]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[23]), 23));
         }
         let v1222: f64 = (c * mass[23]).sqrt();
@@ -45178,7 +45178,7 @@ pub mod paper {
         let v1233: f64 = v1226 * v1224;
         let v1234: f64 = v1226 * v1225;
         let v1235: f64 = v1226 * v1226;
-        if !((c * mass[24]) > 0.0) || !(c * mass[24]).is_finite() {
+        if !((c * mass[24]) > 0.0 && (c * mass[24]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[24]), 24));
         }
         let v1236: f64 = (c * mass[24]).sqrt();
@@ -45203,7 +45203,7 @@ pub mod paper {
         let v1250: f64 = v1241 * v1239;
         let v1251: f64 = v1241 * v1240;
         let v1252: f64 = v1241 * v1241;
-        if !((c * mass[25]) > 0.0) || !(c * mass[25]).is_finite() {
+        if !((c * mass[25]) > 0.0 && (c * mass[25]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[25]), 25));
         }
         let v1253: f64 = (c * mass[25]).sqrt();
@@ -45234,7 +45234,7 @@ pub mod paper {
         let v1273: f64 = v1251 + v1272;
         let v1274: f64 = v1258 * v1258;
         let v1275: f64 = v1252 + v1274;
-        if !((c * mass[26]) > 0.0) || !(c * mass[26]).is_finite() {
+        if !((c * mass[26]) > 0.0 && (c * mass[26]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[26]), 26));
         }
         let v1276: f64 = (c * mass[26]).sqrt();
@@ -45265,7 +45265,7 @@ pub mod paper {
         let v1296: f64 = v1273 + v1295;
         let v1297: f64 = v1281 * v1281;
         let v1298: f64 = v1275 + v1297;
-        if !((c * mass[27]) > 0.0) || !(c * mass[27]).is_finite() {
+        if !((c * mass[27]) > 0.0 && (c * mass[27]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[27]), 27));
         }
         let v1299: f64 = (c * mass[27]).sqrt();
@@ -45295,7 +45295,7 @@ pub mod paper {
         let v1318: f64 = v1304 * v1302;
         let v1319: f64 = v1304 * v1303;
         let v1320: f64 = v1304 * v1304;
-        if !((c * mass[28]) > 0.0) || !(c * mass[28]).is_finite() {
+        if !((c * mass[28]) > 0.0 && (c * mass[28]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[28]), 28));
         }
         let v1321: f64 = (c * mass[28]).sqrt();
@@ -45325,7 +45325,7 @@ pub mod paper {
         let v1340: f64 = v1326 * v1324;
         let v1341: f64 = v1326 * v1325;
         let v1342: f64 = v1326 * v1326;
-        if !((c * mass[29]) > 0.0) || !(c * mass[29]).is_finite() {
+        if !((c * mass[29]) > 0.0 && (c * mass[29]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[29]), 29));
         }
         let v1343: f64 = (c * mass[29]).sqrt();
@@ -45346,7 +45346,7 @@ pub mod paper {
         let v1354: f64 = v1347 * v1345;
         let v1355: f64 = v1347 * v1346;
         let v1356: f64 = v1347 * v1347;
-        if !((c * mass[30]) > 0.0) || !(c * mass[30]).is_finite() {
+        if !((c * mass[30]) > 0.0 && (c * mass[30]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[30]), 30));
         }
         let v1357: f64 = (c * mass[30]).sqrt();
@@ -45371,7 +45371,7 @@ pub mod paper {
         let v1371: f64 = v1362 * v1360;
         let v1372: f64 = v1362 * v1361;
         let v1373: f64 = v1362 * v1362;
-        if !((c * mass[31]) > 0.0) || !(c * mass[31]).is_finite() {
+        if !((c * mass[31]) > 0.0 && (c * mass[31]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[31]), 31));
         }
         let v1374: f64 = (c * mass[31]).sqrt();
@@ -45402,7 +45402,7 @@ pub mod paper {
         let v1394: f64 = v1372 + v1393;
         let v1395: f64 = v1379 * v1379;
         let v1396: f64 = v1373 + v1395;
-        if !((c * mass[32]) > 0.0) || !(c * mass[32]).is_finite() {
+        if !((c * mass[32]) > 0.0 && (c * mass[32]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[32]), 32));
         }
         let v1397: f64 = (c * mass[32]).sqrt();
@@ -45433,7 +45433,7 @@ pub mod paper {
         let v1417: f64 = v1394 + v1416;
         let v1418: f64 = v1402 * v1402;
         let v1419: f64 = v1396 + v1418;
-        if !((c * mass[33]) > 0.0) || !(c * mass[33]).is_finite() {
+        if !((c * mass[33]) > 0.0 && (c * mass[33]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[33]), 33));
         }
         let v1420: f64 = (c * mass[33]).sqrt();
@@ -45463,7 +45463,7 @@ pub mod paper {
         let v1439: f64 = v1425 * v1423;
         let v1440: f64 = v1425 * v1424;
         let v1441: f64 = v1425 * v1425;
-        if !((c * mass[34]) > 0.0) || !(c * mass[34]).is_finite() {
+        if !((c * mass[34]) > 0.0 && (c * mass[34]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[34]), 34));
         }
         let v1442: f64 = (c * mass[34]).sqrt();
@@ -45493,7 +45493,7 @@ pub mod paper {
         let v1461: f64 = v1447 * v1445;
         let v1462: f64 = v1447 * v1446;
         let v1463: f64 = v1447 * v1447;
-        if !((c * mass[35]) > 0.0) || !(c * mass[35]).is_finite() {
+        if !((c * mass[35]) > 0.0 && (c * mass[35]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[35]), 35));
         }
         let v1464: f64 = (c * mass[35]).sqrt();
@@ -45514,7 +45514,7 @@ pub mod paper {
         let v1475: f64 = v1468 * v1466;
         let v1476: f64 = v1468 * v1467;
         let v1477: f64 = v1468 * v1468;
-        if !((c * mass[36]) > 0.0) || !(c * mass[36]).is_finite() {
+        if !((c * mass[36]) > 0.0 && (c * mass[36]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[36]), 36));
         }
         let v1478: f64 = (c * mass[36]).sqrt();
@@ -45539,7 +45539,7 @@ pub mod paper {
         let v1492: f64 = v1483 * v1481;
         let v1493: f64 = v1483 * v1482;
         let v1494: f64 = v1483 * v1483;
-        if !((c * mass[37]) > 0.0) || !(c * mass[37]).is_finite() {
+        if !((c * mass[37]) > 0.0 && (c * mass[37]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[37]), 37));
         }
         let v1495: f64 = (c * mass[37]).sqrt();
@@ -45570,7 +45570,7 @@ pub mod paper {
         let v1515: f64 = v1493 + v1514;
         let v1516: f64 = v1500 * v1500;
         let v1517: f64 = v1494 + v1516;
-        if !((c * mass[38]) > 0.0) || !(c * mass[38]).is_finite() {
+        if !((c * mass[38]) > 0.0 && (c * mass[38]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[38]), 38));
         }
         let v1518: f64 = (c * mass[38]).sqrt();
@@ -45601,7 +45601,7 @@ pub mod paper {
         let v1538: f64 = v1515 + v1537;
         let v1539: f64 = v1523 * v1523;
         let v1540: f64 = v1517 + v1539;
-        if !((c * mass[39]) > 0.0) || !(c * mass[39]).is_finite() {
+        if !((c * mass[39]) > 0.0 && (c * mass[39]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[39]), 39));
         }
         let v1541: f64 = (c * mass[39]).sqrt();
@@ -45631,7 +45631,7 @@ pub mod paper {
         let v1560: f64 = v1546 * v1544;
         let v1561: f64 = v1546 * v1545;
         let v1562: f64 = v1546 * v1546;
-        if !((c * mass[40]) > 0.0) || !(c * mass[40]).is_finite() {
+        if !((c * mass[40]) > 0.0 && (c * mass[40]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[40]), 40));
         }
         let v1563: f64 = (c * mass[40]).sqrt();
@@ -45661,7 +45661,7 @@ pub mod paper {
         let v1582: f64 = v1568 * v1566;
         let v1583: f64 = v1568 * v1567;
         let v1584: f64 = v1568 * v1568;
-        if !((c * mass[41]) > 0.0) || !(c * mass[41]).is_finite() {
+        if !((c * mass[41]) > 0.0 && (c * mass[41]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[41]), 41));
         }
         let v1585: f64 = (c * mass[41]).sqrt();
@@ -45682,7 +45682,7 @@ pub mod paper {
         let v1596: f64 = v1589 * v1587;
         let v1597: f64 = v1589 * v1588;
         let v1598: f64 = v1589 * v1589;
-        if !((c * mass[42]) > 0.0) || !(c * mass[42]).is_finite() {
+        if !((c * mass[42]) > 0.0 && (c * mass[42]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[42]), 42));
         }
         let v1599: f64 = (c * mass[42]).sqrt();
@@ -45712,7 +45712,7 @@ pub mod paper {
         let v1618: f64 = v1604 * v1603;
         let v1619: f64 = v1604 * v1604;
         let v1620: f64 = v935 + v1619;
-        if !((c * mass[43]) > 0.0) || !(c * mass[43]).is_finite() {
+        if !((c * mass[43]) > 0.0 && (c * mass[43]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[43]), 43));
         }
         let v1621: f64 = (c * mass[43]).sqrt();
@@ -45742,7 +45742,7 @@ pub mod paper {
         let v1640: f64 = v1626 * v1625;
         let v1641: f64 = v1626 * v1626;
         let v1642: f64 = v1620 + v1641;
-        if !((c * mass[44]) > 0.0) || !(c * mass[44]).is_finite() {
+        if !((c * mass[44]) > 0.0 && (c * mass[44]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[44]), 44));
         }
         let v1643: f64 = (c * mass[44]).sqrt();
@@ -45772,7 +45772,7 @@ pub mod paper {
         let v1662: f64 = v1648 * v1647;
         let v1663: f64 = v1648 * v1648;
         let v1664: f64 = v1642 + v1663;
-        if !((c * mass[45]) > 0.0) || !(c * mass[45]).is_finite() {
+        if !((c * mass[45]) > 0.0 && (c * mass[45]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[45]), 45));
         }
         let v1665: f64 = (c * mass[45]).sqrt();
@@ -45824,7 +45824,7 @@ pub mod paper {
         let v1704: f64 = v1662 + v1703;
         let v1705: f64 = v1672 * v1672;
         let v1706: f64 = v1664 + v1705;
-        if !((c * mass[46]) > 0.0) || !(c * mass[46]).is_finite() {
+        if !((c * mass[46]) > 0.0 && (c * mass[46]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[46]), 46));
         }
         let v1707: f64 = (c * mass[46]).sqrt();
@@ -45894,7 +45894,7 @@ pub mod paper {
         let v1763: f64 = v1704 + v1762;
         let v1764: f64 = v1715 * v1715;
         let v1765: f64 = v1706 + v1764;
-        if !((c * mass[47]) > 0.0) || !(c * mass[47]).is_finite() {
+        if !((c * mass[47]) > 0.0 && (c * mass[47]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[47]), 47));
         }
         let v1766: f64 = (c * mass[47]).sqrt();
@@ -45949,7 +45949,7 @@ pub mod paper {
         let v1808: f64 = v1761 + v1807;
         let v1809: f64 = v1773 * v1773;
         let v1810: f64 = v1765 + v1809;
-        if !((c * mass[48]) > 0.0) || !(c * mass[48]).is_finite() {
+        if !((c * mass[48]) > 0.0 && (c * mass[48]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[48]), 48));
         }
         let v1811: f64 = (c * mass[48]).sqrt();
@@ -45979,7 +45979,7 @@ pub mod paper {
         let v1830: f64 = v1816 * v1815;
         let v1831: f64 = v1816 * v1816;
         let v1832: f64 = v1056 + v1831;
-        if !((c * mass[49]) > 0.0) || !(c * mass[49]).is_finite() {
+        if !((c * mass[49]) > 0.0 && (c * mass[49]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[49]), 49));
         }
         let v1833: f64 = (c * mass[49]).sqrt();
@@ -46009,7 +46009,7 @@ pub mod paper {
         let v1852: f64 = v1838 * v1837;
         let v1853: f64 = v1838 * v1838;
         let v1854: f64 = v1832 + v1853;
-        if !((c * mass[50]) > 0.0) || !(c * mass[50]).is_finite() {
+        if !((c * mass[50]) > 0.0 && (c * mass[50]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[50]), 50));
         }
         let v1855: f64 = (c * mass[50]).sqrt();
@@ -46039,7 +46039,7 @@ pub mod paper {
         let v1874: f64 = v1860 * v1859;
         let v1875: f64 = v1860 * v1860;
         let v1876: f64 = v1854 + v1875;
-        if !((c * mass[51]) > 0.0) || !(c * mass[51]).is_finite() {
+        if !((c * mass[51]) > 0.0 && (c * mass[51]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[51]), 51));
         }
         let v1877: f64 = (c * mass[51]).sqrt();
@@ -46091,7 +46091,7 @@ pub mod paper {
         let v1916: f64 = v1874 + v1915;
         let v1917: f64 = v1884 * v1884;
         let v1918: f64 = v1876 + v1917;
-        if !((c * mass[52]) > 0.0) || !(c * mass[52]).is_finite() {
+        if !((c * mass[52]) > 0.0 && (c * mass[52]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[52]), 52));
         }
         let v1919: f64 = (c * mass[52]).sqrt();
@@ -46161,7 +46161,7 @@ pub mod paper {
         let v1975: f64 = v1916 + v1974;
         let v1976: f64 = v1927 * v1927;
         let v1977: f64 = v1918 + v1976;
-        if !((c * mass[53]) > 0.0) || !(c * mass[53]).is_finite() {
+        if !((c * mass[53]) > 0.0 && (c * mass[53]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[53]), 53));
         }
         let v1978: f64 = (c * mass[53]).sqrt();
@@ -46216,7 +46216,7 @@ pub mod paper {
         let v2020: f64 = v1973 + v2019;
         let v2021: f64 = v1985 * v1985;
         let v2022: f64 = v1977 + v2021;
-        if !((c * mass[54]) > 0.0) || !(c * mass[54]).is_finite() {
+        if !((c * mass[54]) > 0.0 && (c * mass[54]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[54]), 54));
         }
         let v2023: f64 = (c * mass[54]).sqrt();
@@ -46246,7 +46246,7 @@ pub mod paper {
         let v2042: f64 = v2028 * v2027;
         let v2043: f64 = v2028 * v2028;
         let v2044: f64 = v1177 + v2043;
-        if !((c * mass[55]) > 0.0) || !(c * mass[55]).is_finite() {
+        if !((c * mass[55]) > 0.0 && (c * mass[55]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[55]), 55));
         }
         let v2045: f64 = (c * mass[55]).sqrt();
@@ -46276,7 +46276,7 @@ pub mod paper {
         let v2064: f64 = v2050 * v2049;
         let v2065: f64 = v2050 * v2050;
         let v2066: f64 = v2044 + v2065;
-        if !((c * mass[56]) > 0.0) || !(c * mass[56]).is_finite() {
+        if !((c * mass[56]) > 0.0 && (c * mass[56]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[56]), 56));
         }
         let v2067: f64 = (c * mass[56]).sqrt();
@@ -46306,7 +46306,7 @@ pub mod paper {
         let v2086: f64 = v2072 * v2071;
         let v2087: f64 = v2072 * v2072;
         let v2088: f64 = v2066 + v2087;
-        if !((c * mass[57]) > 0.0) || !(c * mass[57]).is_finite() {
+        if !((c * mass[57]) > 0.0 && (c * mass[57]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[57]), 57));
         }
         let v2089: f64 = (c * mass[57]).sqrt();
@@ -46358,7 +46358,7 @@ pub mod paper {
         let v2128: f64 = v2086 + v2127;
         let v2129: f64 = v2096 * v2096;
         let v2130: f64 = v2088 + v2129;
-        if !((c * mass[58]) > 0.0) || !(c * mass[58]).is_finite() {
+        if !((c * mass[58]) > 0.0 && (c * mass[58]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[58]), 58));
         }
         let v2131: f64 = (c * mass[58]).sqrt();
@@ -46428,7 +46428,7 @@ pub mod paper {
         let v2187: f64 = v2128 + v2186;
         let v2188: f64 = v2139 * v2139;
         let v2189: f64 = v2130 + v2188;
-        if !((c * mass[59]) > 0.0) || !(c * mass[59]).is_finite() {
+        if !((c * mass[59]) > 0.0 && (c * mass[59]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[59]), 59));
         }
         let v2190: f64 = (c * mass[59]).sqrt();
@@ -46483,7 +46483,7 @@ pub mod paper {
         let v2232: f64 = v2185 + v2231;
         let v2233: f64 = v2197 * v2197;
         let v2234: f64 = v2189 + v2233;
-        if !((c * mass[60]) > 0.0) || !(c * mass[60]).is_finite() {
+        if !((c * mass[60]) > 0.0 && (c * mass[60]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[60]), 60));
         }
         let v2235: f64 = (c * mass[60]).sqrt();
@@ -46513,7 +46513,7 @@ pub mod paper {
         let v2254: f64 = v2240 * v2239;
         let v2255: f64 = v2240 * v2240;
         let v2256: f64 = v1298 + v2255;
-        if !((c * mass[61]) > 0.0) || !(c * mass[61]).is_finite() {
+        if !((c * mass[61]) > 0.0 && (c * mass[61]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[61]), 61));
         }
         let v2257: f64 = (c * mass[61]).sqrt();
@@ -46543,7 +46543,7 @@ pub mod paper {
         let v2276: f64 = v2262 * v2261;
         let v2277: f64 = v2262 * v2262;
         let v2278: f64 = v2256 + v2277;
-        if !((c * mass[62]) > 0.0) || !(c * mass[62]).is_finite() {
+        if !((c * mass[62]) > 0.0 && (c * mass[62]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[62]), 62));
         }
         let v2279: f64 = (c * mass[62]).sqrt();
@@ -46573,7 +46573,7 @@ pub mod paper {
         let v2298: f64 = v2284 * v2283;
         let v2299: f64 = v2284 * v2284;
         let v2300: f64 = v2278 + v2299;
-        if !((c * mass[63]) > 0.0) || !(c * mass[63]).is_finite() {
+        if !((c * mass[63]) > 0.0 && (c * mass[63]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[63]), 63));
         }
         let v2301: f64 = (c * mass[63]).sqrt();
@@ -46625,7 +46625,7 @@ pub mod paper {
         let v2340: f64 = v2298 + v2339;
         let v2341: f64 = v2308 * v2308;
         let v2342: f64 = v2300 + v2341;
-        if !((c * mass[64]) > 0.0) || !(c * mass[64]).is_finite() {
+        if !((c * mass[64]) > 0.0 && (c * mass[64]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[64]), 64));
         }
         let v2343: f64 = (c * mass[64]).sqrt();
@@ -46695,7 +46695,7 @@ pub mod paper {
         let v2399: f64 = v2340 + v2398;
         let v2400: f64 = v2351 * v2351;
         let v2401: f64 = v2342 + v2400;
-        if !((c * mass[65]) > 0.0) || !(c * mass[65]).is_finite() {
+        if !((c * mass[65]) > 0.0 && (c * mass[65]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[65]), 65));
         }
         let v2402: f64 = (c * mass[65]).sqrt();
@@ -46750,7 +46750,7 @@ pub mod paper {
         let v2444: f64 = v2397 + v2443;
         let v2445: f64 = v2409 * v2409;
         let v2446: f64 = v2401 + v2445;
-        if !((c * mass[66]) > 0.0) || !(c * mass[66]).is_finite() {
+        if !((c * mass[66]) > 0.0 && (c * mass[66]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[66]), 66));
         }
         let v2447: f64 = (c * mass[66]).sqrt();
@@ -46780,7 +46780,7 @@ pub mod paper {
         let v2466: f64 = v2452 * v2451;
         let v2467: f64 = v2452 * v2452;
         let v2468: f64 = v1419 + v2467;
-        if !((c * mass[67]) > 0.0) || !(c * mass[67]).is_finite() {
+        if !((c * mass[67]) > 0.0 && (c * mass[67]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[67]), 67));
         }
         let v2469: f64 = (c * mass[67]).sqrt();
@@ -46810,7 +46810,7 @@ pub mod paper {
         let v2488: f64 = v2474 * v2473;
         let v2489: f64 = v2474 * v2474;
         let v2490: f64 = v2468 + v2489;
-        if !((c * mass[68]) > 0.0) || !(c * mass[68]).is_finite() {
+        if !((c * mass[68]) > 0.0 && (c * mass[68]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[68]), 68));
         }
         let v2491: f64 = (c * mass[68]).sqrt();
@@ -46840,7 +46840,7 @@ pub mod paper {
         let v2510: f64 = v2496 * v2495;
         let v2511: f64 = v2496 * v2496;
         let v2512: f64 = v2490 + v2511;
-        if !((c * mass[69]) > 0.0) || !(c * mass[69]).is_finite() {
+        if !((c * mass[69]) > 0.0 && (c * mass[69]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[69]), 69));
         }
         let v2513: f64 = (c * mass[69]).sqrt();
@@ -46892,7 +46892,7 @@ pub mod paper {
         let v2552: f64 = v2510 + v2551;
         let v2553: f64 = v2520 * v2520;
         let v2554: f64 = v2512 + v2553;
-        if !((c * mass[70]) > 0.0) || !(c * mass[70]).is_finite() {
+        if !((c * mass[70]) > 0.0 && (c * mass[70]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[70]), 70));
         }
         let v2555: f64 = (c * mass[70]).sqrt();
@@ -46962,7 +46962,7 @@ pub mod paper {
         let v2611: f64 = v2552 + v2610;
         let v2612: f64 = v2563 * v2563;
         let v2613: f64 = v2554 + v2612;
-        if !((c * mass[71]) > 0.0) || !(c * mass[71]).is_finite() {
+        if !((c * mass[71]) > 0.0 && (c * mass[71]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[71]), 71));
         }
         let v2614: f64 = (c * mass[71]).sqrt();
@@ -47017,7 +47017,7 @@ pub mod paper {
         let v2656: f64 = v2609 + v2655;
         let v2657: f64 = v2621 * v2621;
         let v2658: f64 = v2613 + v2657;
-        if !((c * mass[72]) > 0.0) || !(c * mass[72]).is_finite() {
+        if !((c * mass[72]) > 0.0 && (c * mass[72]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[72]), 72));
         }
         let v2659: f64 = (c * mass[72]).sqrt();
@@ -47047,7 +47047,7 @@ pub mod paper {
         let v2678: f64 = v2664 * v2663;
         let v2679: f64 = v2664 * v2664;
         let v2680: f64 = v1540 + v2679;
-        if !((c * mass[73]) > 0.0) || !(c * mass[73]).is_finite() {
+        if !((c * mass[73]) > 0.0 && (c * mass[73]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[73]), 73));
         }
         let v2681: f64 = (c * mass[73]).sqrt();
@@ -47077,7 +47077,7 @@ pub mod paper {
         let v2700: f64 = v2686 * v2685;
         let v2701: f64 = v2686 * v2686;
         let v2702: f64 = v2680 + v2701;
-        if !((c * mass[74]) > 0.0) || !(c * mass[74]).is_finite() {
+        if !((c * mass[74]) > 0.0 && (c * mass[74]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[74]), 74));
         }
         let v2703: f64 = (c * mass[74]).sqrt();
@@ -47107,7 +47107,7 @@ pub mod paper {
         let v2722: f64 = v2708 * v2707;
         let v2723: f64 = v2708 * v2708;
         let v2724: f64 = v2702 + v2723;
-        if !((c * mass[75]) > 0.0) || !(c * mass[75]).is_finite() {
+        if !((c * mass[75]) > 0.0 && (c * mass[75]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[75]), 75));
         }
         let v2725: f64 = (c * mass[75]).sqrt();
@@ -47159,7 +47159,7 @@ pub mod paper {
         let v2764: f64 = v2722 + v2763;
         let v2765: f64 = v2732 * v2732;
         let v2766: f64 = v2724 + v2765;
-        if !((c * mass[76]) > 0.0) || !(c * mass[76]).is_finite() {
+        if !((c * mass[76]) > 0.0 && (c * mass[76]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[76]), 76));
         }
         let v2767: f64 = (c * mass[76]).sqrt();
@@ -47229,7 +47229,7 @@ pub mod paper {
         let v2823: f64 = v2764 + v2822;
         let v2824: f64 = v2775 * v2775;
         let v2825: f64 = v2766 + v2824;
-        if !((c * mass[77]) > 0.0) || !(c * mass[77]).is_finite() {
+        if !((c * mass[77]) > 0.0 && (c * mass[77]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[77]), 77));
         }
         let v2826: f64 = (c * mass[77]).sqrt();
@@ -64388,25 +64388,25 @@ pub mod reduced {
             let st: &mut [f64; 851] = st
                 .try_into()
                 .map_err(|_| length_error(851, st_len))?;
-            if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+            if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[0]), 0));
             }
             let v0: f64 = (c * mass[0]).sqrt();
             let v1: f64 = 1.0 / v0;
             st[14] = v1;
-            if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+            if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[1]), 1));
             }
             let v2: f64 = (c * mass[1]).sqrt();
             let v3: f64 = 1.0 / v2;
             st[15] = v3;
-            if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+            if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[2]), 2));
             }
             let v4: f64 = (c * mass[2]).sqrt();
             let v5: f64 = 1.0 / v4;
             st[16] = v5;
-            if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+            if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[3]), 3));
             }
             let v6: f64 = (c * mass[3]).sqrt();
@@ -64414,7 +64414,7 @@ pub mod reduced {
             st[17] = v7;
             let v8: f64 = (c * mass[7]) * v7;
             st[0] = v8;
-            if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+            if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[5]), 4));
             }
             let v9: f64 = (c * mass[5]).sqrt();
@@ -64424,7 +64424,7 @@ pub mod reduced {
             st[1] = v11;
             let v12: f64 = (c * mass[9]) - v8 * v8;
             let v13: f64 = v12 - v11 * v11;
-            if !(v13 > 0.0) || !v13.is_finite() {
+            if !(v13 > 0.0 && v13 <= f64::MAX) {
                 return Err(mass_pivot_error(v13, 5));
             }
             let v14: f64 = v13.sqrt();
@@ -65591,25 +65591,25 @@ pub mod reduced {
             let v1102: f64 = v1100 + v1101;
             let v1103: f64 = v123 * v123;
             let v1104: f64 = v1102 + v1103;
-            if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+            if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[10]), 6));
             }
             let v1105: f64 = (c * mass[10]).sqrt();
             let v1106: f64 = 1.0 / v1105;
             st[20] = v1106;
-            if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+            if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[11]), 7));
             }
             let v1107: f64 = (c * mass[11]).sqrt();
             let v1108: f64 = 1.0 / v1107;
             st[21] = v1108;
-            if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+            if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[12]), 8));
             }
             let v1109: f64 = (c * mass[12]).sqrt();
             let v1110: f64 = 1.0 / v1109;
             st[22] = v1110;
-            if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+            if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[13]), 9));
             }
             let v1111: f64 = (c * mass[13]).sqrt();
@@ -65617,7 +65617,7 @@ pub mod reduced {
             st[23] = v1112;
             let v1113: f64 = (c * mass[17]) * v1112;
             st[2] = v1113;
-            if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+            if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[15]), 10));
             }
             let v1114: f64 = (c * mass[15]).sqrt();
@@ -65627,7 +65627,7 @@ pub mod reduced {
             st[3] = v1116;
             let v1117: f64 = (c * mass[19]) - v1113 * v1113;
             let v1118: f64 = v1117 - v1116 * v1116;
-            if !(v1118 > 0.0) || !v1118.is_finite() {
+            if !(v1118 > 0.0 && v1118 <= f64::MAX) {
                 return Err(mass_pivot_error(v1118, 11));
             }
             let v1119: f64 = v1118.sqrt();
@@ -65999,25 +65999,25 @@ pub mod reduced {
             let v1446: f64 = v1444 + v1445;
             let v1447: f64 = v1175 * v1175;
             let v1448: f64 = v1446 + v1447;
-            if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+            if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[20]), 12));
             }
             let v1449: f64 = (c * mass[20]).sqrt();
             let v1450: f64 = 1.0 / v1449;
             st[26] = v1450;
-            if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+            if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[21]), 13));
             }
             let v1451: f64 = (c * mass[21]).sqrt();
             let v1452: f64 = 1.0 / v1451;
             st[27] = v1452;
-            if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+            if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[22]), 14));
             }
             let v1453: f64 = (c * mass[22]).sqrt();
             let v1454: f64 = 1.0 / v1453;
             st[28] = v1454;
-            if !((c * mass[23]) > 0.0) || !(c * mass[23]).is_finite() {
+            if !((c * mass[23]) > 0.0 && (c * mass[23]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[23]), 15));
             }
             let v1455: f64 = (c * mass[23]).sqrt();
@@ -66025,7 +66025,7 @@ pub mod reduced {
             st[29] = v1456;
             let v1457: f64 = (c * mass[27]) * v1456;
             st[4] = v1457;
-            if !((c * mass[25]) > 0.0) || !(c * mass[25]).is_finite() {
+            if !((c * mass[25]) > 0.0 && (c * mass[25]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[25]), 16));
             }
             let v1458: f64 = (c * mass[25]).sqrt();
@@ -66035,7 +66035,7 @@ pub mod reduced {
             st[5] = v1460;
             let v1461: f64 = (c * mass[29]) - v1457 * v1457;
             let v1462: f64 = v1461 - v1460 * v1460;
-            if !(v1462 > 0.0) || !v1462.is_finite() {
+            if !(v1462 > 0.0 && v1462 <= f64::MAX) {
                 return Err(mass_pivot_error(v1462, 17));
             }
             let v1463: f64 = v1462.sqrt();
@@ -66407,25 +66407,25 @@ pub mod reduced {
             let v1790: f64 = v1788 + v1789;
             let v1791: f64 = v1519 * v1519;
             let v1792: f64 = v1790 + v1791;
-            if !((c * mass[30]) > 0.0) || !(c * mass[30]).is_finite() {
+            if !((c * mass[30]) > 0.0 && (c * mass[30]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[30]), 18));
             }
             let v1793: f64 = (c * mass[30]).sqrt();
             let v1794: f64 = 1.0 / v1793;
             st[32] = v1794;
-            if !((c * mass[31]) > 0.0) || !(c * mass[31]).is_finite() {
+            if !((c * mass[31]) > 0.0 && (c * mass[31]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[31]), 19));
             }
             let v1795: f64 = (c * mass[31]).sqrt();
             let v1796: f64 = 1.0 / v1795;
             st[33] = v1796;
-            if !((c * mass[32]) > 0.0) || !(c * mass[32]).is_finite() {
+            if !((c * mass[32]) > 0.0 && (c * mass[32]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[32]), 20));
             }
             let v1797: f64 = (c * mass[32]).sqrt();
             let v1798: f64 = 1.0 / v1797;
             st[34] = v1798;
-            if !((c * mass[33]) > 0.0) || !(c * mass[33]).is_finite() {
+            if !((c * mass[33]) > 0.0 && (c * mass[33]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[33]), 21));
             }
             let v1799: f64 = (c * mass[33]).sqrt();
@@ -66433,7 +66433,7 @@ pub mod reduced {
             st[35] = v1800;
             let v1801: f64 = (c * mass[37]) * v1800;
             st[6] = v1801;
-            if !((c * mass[35]) > 0.0) || !(c * mass[35]).is_finite() {
+            if !((c * mass[35]) > 0.0 && (c * mass[35]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[35]), 22));
             }
             let v1802: f64 = (c * mass[35]).sqrt();
@@ -66443,7 +66443,7 @@ pub mod reduced {
             st[7] = v1804;
             let v1805: f64 = (c * mass[39]) - v1801 * v1801;
             let v1806: f64 = v1805 - v1804 * v1804;
-            if !(v1806 > 0.0) || !v1806.is_finite() {
+            if !(v1806 > 0.0 && v1806 <= f64::MAX) {
                 return Err(mass_pivot_error(v1806, 23));
             }
             let v1807: f64 = v1806.sqrt();
@@ -66815,25 +66815,25 @@ pub mod reduced {
             let v2134: f64 = v2132 + v2133;
             let v2135: f64 = v1863 * v1863;
             let v2136: f64 = v2134 + v2135;
-            if !((c * mass[40]) > 0.0) || !(c * mass[40]).is_finite() {
+            if !((c * mass[40]) > 0.0 && (c * mass[40]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[40]), 24));
             }
             let v2137: f64 = (c * mass[40]).sqrt();
             let v2138: f64 = 1.0 / v2137;
             st[38] = v2138;
-            if !((c * mass[41]) > 0.0) || !(c * mass[41]).is_finite() {
+            if !((c * mass[41]) > 0.0 && (c * mass[41]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[41]), 25));
             }
             let v2139: f64 = (c * mass[41]).sqrt();
             let v2140: f64 = 1.0 / v2139;
             st[39] = v2140;
-            if !((c * mass[42]) > 0.0) || !(c * mass[42]).is_finite() {
+            if !((c * mass[42]) > 0.0 && (c * mass[42]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[42]), 26));
             }
             let v2141: f64 = (c * mass[42]).sqrt();
             let v2142: f64 = 1.0 / v2141;
             st[40] = v2142;
-            if !((c * mass[43]) > 0.0) || !(c * mass[43]).is_finite() {
+            if !((c * mass[43]) > 0.0 && (c * mass[43]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[43]), 27));
             }
             let v2143: f64 = (c * mass[43]).sqrt();
@@ -66841,7 +66841,7 @@ pub mod reduced {
             st[41] = v2144;
             let v2145: f64 = (c * mass[47]) * v2144;
             st[8] = v2145;
-            if !((c * mass[45]) > 0.0) || !(c * mass[45]).is_finite() {
+            if !((c * mass[45]) > 0.0 && (c * mass[45]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[45]), 28));
             }
             let v2146: f64 = (c * mass[45]).sqrt();
@@ -66851,7 +66851,7 @@ pub mod reduced {
             st[9] = v2148;
             let v2149: f64 = (c * mass[49]) - v2145 * v2145;
             let v2150: f64 = v2149 - v2148 * v2148;
-            if !(v2150 > 0.0) || !v2150.is_finite() {
+            if !(v2150 > 0.0 && v2150 <= f64::MAX) {
                 return Err(mass_pivot_error(v2150, 29));
             }
             let v2151: f64 = v2150.sqrt();
@@ -67223,25 +67223,25 @@ pub mod reduced {
             let v2478: f64 = v2476 + v2477;
             let v2479: f64 = v2207 * v2207;
             let v2480: f64 = v2478 + v2479;
-            if !((c * mass[50]) > 0.0) || !(c * mass[50]).is_finite() {
+            if !((c * mass[50]) > 0.0 && (c * mass[50]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[50]), 30));
             }
             let v2481: f64 = (c * mass[50]).sqrt();
             let v2482: f64 = 1.0 / v2481;
             st[44] = v2482;
-            if !((c * mass[51]) > 0.0) || !(c * mass[51]).is_finite() {
+            if !((c * mass[51]) > 0.0 && (c * mass[51]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[51]), 31));
             }
             let v2483: f64 = (c * mass[51]).sqrt();
             let v2484: f64 = 1.0 / v2483;
             st[45] = v2484;
-            if !((c * mass[52]) > 0.0) || !(c * mass[52]).is_finite() {
+            if !((c * mass[52]) > 0.0 && (c * mass[52]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[52]), 32));
             }
             let v2485: f64 = (c * mass[52]).sqrt();
             let v2486: f64 = 1.0 / v2485;
             st[46] = v2486;
-            if !((c * mass[53]) > 0.0) || !(c * mass[53]).is_finite() {
+            if !((c * mass[53]) > 0.0 && (c * mass[53]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[53]), 33));
             }
             let v2487: f64 = (c * mass[53]).sqrt();
@@ -67249,7 +67249,7 @@ pub mod reduced {
             st[47] = v2488;
             let v2489: f64 = (c * mass[57]) * v2488;
             st[10] = v2489;
-            if !((c * mass[55]) > 0.0) || !(c * mass[55]).is_finite() {
+            if !((c * mass[55]) > 0.0 && (c * mass[55]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[55]), 34));
             }
             let v2490: f64 = (c * mass[55]).sqrt();
@@ -67259,7 +67259,7 @@ pub mod reduced {
             st[11] = v2492;
             let v2493: f64 = (c * mass[59]) - v2489 * v2489;
             let v2494: f64 = v2493 - v2492 * v2492;
-            if !(v2494 > 0.0) || !v2494.is_finite() {
+            if !(v2494 > 0.0 && v2494 <= f64::MAX) {
                 return Err(mass_pivot_error(v2494, 35));
             }
             let v2495: f64 = v2494.sqrt();
@@ -67631,25 +67631,25 @@ pub mod reduced {
             let v2822: f64 = v2820 + v2821;
             let v2823: f64 = v2551 * v2551;
             let v2824: f64 = v2822 + v2823;
-            if !((c * mass[60]) > 0.0) || !(c * mass[60]).is_finite() {
+            if !((c * mass[60]) > 0.0 && (c * mass[60]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[60]), 36));
             }
             let v2825: f64 = (c * mass[60]).sqrt();
             let v2826: f64 = 1.0 / v2825;
             st[50] = v2826;
-            if !((c * mass[61]) > 0.0) || !(c * mass[61]).is_finite() {
+            if !((c * mass[61]) > 0.0 && (c * mass[61]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[61]), 37));
             }
             let v2827: f64 = (c * mass[61]).sqrt();
             let v2828: f64 = 1.0 / v2827;
             st[51] = v2828;
-            if !((c * mass[62]) > 0.0) || !(c * mass[62]).is_finite() {
+            if !((c * mass[62]) > 0.0 && (c * mass[62]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[62]), 38));
             }
             let v2829: f64 = (c * mass[62]).sqrt();
             let v2830: f64 = 1.0 / v2829;
             st[52] = v2830;
-            if !((c * mass[63]) > 0.0) || !(c * mass[63]).is_finite() {
+            if !((c * mass[63]) > 0.0 && (c * mass[63]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[63]), 39));
             }
             let v2831: f64 = (c * mass[63]).sqrt();
@@ -67657,7 +67657,7 @@ pub mod reduced {
             st[53] = v2832;
             let v2833: f64 = (c * mass[67]) * v2832;
             st[12] = v2833;
-            if !((c * mass[65]) > 0.0) || !(c * mass[65]).is_finite() {
+            if !((c * mass[65]) > 0.0 && (c * mass[65]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[65]), 40));
             }
             let v2834: f64 = (c * mass[65]).sqrt();
@@ -67667,7 +67667,7 @@ pub mod reduced {
             st[13] = v2836;
             let v2837: f64 = (c * mass[69]) - v2833 * v2833;
             let v2838: f64 = v2837 - v2836 * v2836;
-            if !(v2838 > 0.0) || !v2838.is_finite() {
+            if !(v2838 > 0.0 && v2838 <= f64::MAX) {
                 return Err(mass_pivot_error(v2838, 41));
             }
             let v2839: f64 = v2838.sqrt();
@@ -68039,7 +68039,7 @@ pub mod reduced {
             let v3166: f64 = v3164 + v3165;
             let v3167: f64 = v2895 * v2895;
             let v3168: f64 = v3166 + v3167;
-            if !((c * mass[70]) > 0.0) || !(c * mass[70]).is_finite() {
+            if !((c * mass[70]) > 0.0 && (c * mass[70]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[70]), 42));
             }
             let v3169: f64 = (c * mass[70]).sqrt();
@@ -68073,7 +68073,7 @@ pub mod reduced {
             let v3192: f64 = v1427 + v3191;
             let v3193: f64 = v3174 * v3174;
             let v3194: f64 = v1448 + v3193;
-            if !((c * mass[71]) > 0.0) || !(c * mass[71]).is_finite() {
+            if !((c * mass[71]) > 0.0 && (c * mass[71]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[71]), 43));
             }
             let v3195: f64 = (c * mass[71]).sqrt();
@@ -68107,7 +68107,7 @@ pub mod reduced {
             let v3218: f64 = v1432 + v3217;
             let v3219: f64 = v3200 * v3200;
             let v3220: f64 = v3194 + v3219;
-            if !((c * mass[72]) > 0.0) || !(c * mass[72]).is_finite() {
+            if !((c * mass[72]) > 0.0 && (c * mass[72]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[72]), 44));
             }
             let v3221: f64 = (c * mass[72]).sqrt();
@@ -68141,7 +68141,7 @@ pub mod reduced {
             let v3244: f64 = v1437 + v3243;
             let v3245: f64 = v3226 * v3226;
             let v3246: f64 = v3220 + v3245;
-            if !((c * mass[73]) > 0.0) || !(c * mass[73]).is_finite() {
+            if !((c * mass[73]) > 0.0 && (c * mass[73]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[73]), 45));
             }
             let v3247: f64 = (c * mass[73]).sqrt();
@@ -68175,7 +68175,7 @@ pub mod reduced {
             let v3270: f64 = v1771 + v3269;
             let v3271: f64 = v3252 * v3252;
             let v3272: f64 = v1792 + v3271;
-            if !((c * mass[74]) > 0.0) || !(c * mass[74]).is_finite() {
+            if !((c * mass[74]) > 0.0 && (c * mass[74]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[74]), 46));
             }
             let v3273: f64 = (c * mass[74]).sqrt();
@@ -68209,7 +68209,7 @@ pub mod reduced {
             let v3296: f64 = v1776 + v3295;
             let v3297: f64 = v3278 * v3278;
             let v3298: f64 = v3272 + v3297;
-            if !((c * mass[75]) > 0.0) || !(c * mass[75]).is_finite() {
+            if !((c * mass[75]) > 0.0 && (c * mass[75]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[75]), 47));
             }
             let v3299: f64 = (c * mass[75]).sqrt();
@@ -68243,7 +68243,7 @@ pub mod reduced {
             let v3322: f64 = v1781 + v3321;
             let v3323: f64 = v3304 * v3304;
             let v3324: f64 = v3298 + v3323;
-            if !((c * mass[76]) > 0.0) || !(c * mass[76]).is_finite() {
+            if !((c * mass[76]) > 0.0 && (c * mass[76]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[76]), 48));
             }
             let v3325: f64 = (c * mass[76]).sqrt();
@@ -68277,7 +68277,7 @@ pub mod reduced {
             let v3348: f64 = v2115 + v3347;
             let v3349: f64 = v3330 * v3330;
             let v3350: f64 = v2136 + v3349;
-            if !((c * mass[77]) > 0.0) || !(c * mass[77]).is_finite() {
+            if !((c * mass[77]) > 0.0 && (c * mass[77]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[77]), 49));
             }
             let v3351: f64 = (c * mass[77]).sqrt();
@@ -68311,7 +68311,7 @@ pub mod reduced {
             let v3374: f64 = v2120 + v3373;
             let v3375: f64 = v3356 * v3356;
             let v3376: f64 = v3350 + v3375;
-            if !((c * mass[78]) > 0.0) || !(c * mass[78]).is_finite() {
+            if !((c * mass[78]) > 0.0 && (c * mass[78]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[78]), 50));
             }
             let v3377: f64 = (c * mass[78]).sqrt();
@@ -68345,7 +68345,7 @@ pub mod reduced {
             let v3400: f64 = v2125 + v3399;
             let v3401: f64 = v3382 * v3382;
             let v3402: f64 = v3376 + v3401;
-            if !((c * mass[79]) > 0.0) || !(c * mass[79]).is_finite() {
+            if !((c * mass[79]) > 0.0 && (c * mass[79]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[79]), 51));
             }
             let v3403: f64 = (c * mass[79]).sqrt();
@@ -68379,7 +68379,7 @@ pub mod reduced {
             let v3426: f64 = v2459 + v3425;
             let v3427: f64 = v3408 * v3408;
             let v3428: f64 = v2480 + v3427;
-            if !((c * mass[80]) > 0.0) || !(c * mass[80]).is_finite() {
+            if !((c * mass[80]) > 0.0 && (c * mass[80]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[80]), 52));
             }
             let v3429: f64 = (c * mass[80]).sqrt();
@@ -68413,7 +68413,7 @@ pub mod reduced {
             let v3452: f64 = v2464 + v3451;
             let v3453: f64 = v3434 * v3434;
             let v3454: f64 = v3428 + v3453;
-            if !((c * mass[81]) > 0.0) || !(c * mass[81]).is_finite() {
+            if !((c * mass[81]) > 0.0 && (c * mass[81]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[81]), 53));
             }
             let v3455: f64 = (c * mass[81]).sqrt();
@@ -68447,7 +68447,7 @@ pub mod reduced {
             let v3478: f64 = v2469 + v3477;
             let v3479: f64 = v3460 * v3460;
             let v3480: f64 = v3454 + v3479;
-            if !((c * mass[82]) > 0.0) || !(c * mass[82]).is_finite() {
+            if !((c * mass[82]) > 0.0 && (c * mass[82]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[82]), 54));
             }
             let v3481: f64 = (c * mass[82]).sqrt();
@@ -68481,7 +68481,7 @@ pub mod reduced {
             let v3504: f64 = v2803 + v3503;
             let v3505: f64 = v3486 * v3486;
             let v3506: f64 = v2824 + v3505;
-            if !((c * mass[83]) > 0.0) || !(c * mass[83]).is_finite() {
+            if !((c * mass[83]) > 0.0 && (c * mass[83]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[83]), 55));
             }
             let v3507: f64 = (c * mass[83]).sqrt();
@@ -68515,7 +68515,7 @@ pub mod reduced {
             let v3530: f64 = v2808 + v3529;
             let v3531: f64 = v3512 * v3512;
             let v3532: f64 = v3506 + v3531;
-            if !((c * mass[84]) > 0.0) || !(c * mass[84]).is_finite() {
+            if !((c * mass[84]) > 0.0 && (c * mass[84]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[84]), 56));
             }
             let v3533: f64 = (c * mass[84]).sqrt();
@@ -68549,7 +68549,7 @@ pub mod reduced {
             let v3556: f64 = v2813 + v3555;
             let v3557: f64 = v3538 * v3538;
             let v3558: f64 = v3532 + v3557;
-            if !((c * mass[85]) > 0.0) || !(c * mass[85]).is_finite() {
+            if !((c * mass[85]) > 0.0 && (c * mass[85]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[85]), 57));
             }
             let v3559: f64 = (c * mass[85]).sqrt();
@@ -68583,7 +68583,7 @@ pub mod reduced {
             let v3582: f64 = v3147 + v3581;
             let v3583: f64 = v3564 * v3564;
             let v3584: f64 = v3168 + v3583;
-            if !((c * mass[86]) > 0.0) || !(c * mass[86]).is_finite() {
+            if !((c * mass[86]) > 0.0 && (c * mass[86]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[86]), 58));
             }
             let v3585: f64 = (c * mass[86]).sqrt();
@@ -68617,7 +68617,7 @@ pub mod reduced {
             let v3608: f64 = v3152 + v3607;
             let v3609: f64 = v3590 * v3590;
             let v3610: f64 = v3584 + v3609;
-            if !((c * mass[87]) > 0.0) || !(c * mass[87]).is_finite() {
+            if !((c * mass[87]) > 0.0 && (c * mass[87]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[87]), 59));
             }
             let v3611: f64 = (c * mass[87]).sqrt();
@@ -78348,37 +78348,37 @@ pub mod reduced {
             let st: &mut [f64; 819] = st
                 .try_into()
                 .map_err(|_| length_error(819, st_len))?;
-            if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+            if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[0]), 0));
             }
             let v0: f64 = (c * mass[0]).sqrt();
             let v1: f64 = 1.0 / v0;
             st[0] = v1;
-            if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+            if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[1]), 1));
             }
             let v2: f64 = (c * mass[1]).sqrt();
             let v3: f64 = 1.0 / v2;
             st[1] = v3;
-            if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+            if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[2]), 2));
             }
             let v4: f64 = (c * mass[2]).sqrt();
             let v5: f64 = 1.0 / v4;
             st[2] = v5;
-            if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+            if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[3]), 3));
             }
             let v6: f64 = (c * mass[3]).sqrt();
             let v7: f64 = 1.0 / v6;
             st[3] = v7;
-            if !((c * mass[4]) > 0.0) || !(c * mass[4]).is_finite() {
+            if !((c * mass[4]) > 0.0 && (c * mass[4]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[4]), 4));
             }
             let v8: f64 = (c * mass[4]).sqrt();
             let v9: f64 = 1.0 / v8;
             st[4] = v9;
-            if !((c * mass[5]) > 0.0) || !(c * mass[5]).is_finite() {
+            if !((c * mass[5]) > 0.0 && (c * mass[5]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[5]), 5));
             }
             let v10: f64 = (c * mass[5]).sqrt();
@@ -79311,37 +79311,37 @@ pub mod reduced {
             let v870: f64 = v868 + v869;
             let v871: f64 = v77 * v77;
             let v872: f64 = v870 + v871;
-            if !((c * mass[6]) > 0.0) || !(c * mass[6]).is_finite() {
+            if !((c * mass[6]) > 0.0 && (c * mass[6]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[6]), 6));
             }
             let v873: f64 = (c * mass[6]).sqrt();
             let v874: f64 = 1.0 / v873;
             st[6] = v874;
-            if !((c * mass[7]) > 0.0) || !(c * mass[7]).is_finite() {
+            if !((c * mass[7]) > 0.0 && (c * mass[7]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[7]), 7));
             }
             let v875: f64 = (c * mass[7]).sqrt();
             let v876: f64 = 1.0 / v875;
             st[7] = v876;
-            if !((c * mass[8]) > 0.0) || !(c * mass[8]).is_finite() {
+            if !((c * mass[8]) > 0.0 && (c * mass[8]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[8]), 8));
             }
             let v877: f64 = (c * mass[8]).sqrt();
             let v878: f64 = 1.0 / v877;
             st[8] = v878;
-            if !((c * mass[9]) > 0.0) || !(c * mass[9]).is_finite() {
+            if !((c * mass[9]) > 0.0 && (c * mass[9]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[9]), 9));
             }
             let v879: f64 = (c * mass[9]).sqrt();
             let v880: f64 = 1.0 / v879;
             st[9] = v880;
-            if !((c * mass[10]) > 0.0) || !(c * mass[10]).is_finite() {
+            if !((c * mass[10]) > 0.0 && (c * mass[10]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[10]), 10));
             }
             let v881: f64 = (c * mass[10]).sqrt();
             let v882: f64 = 1.0 / v881;
             st[10] = v882;
-            if !((c * mass[11]) > 0.0) || !(c * mass[11]).is_finite() {
+            if !((c * mass[11]) > 0.0 && (c * mass[11]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[11]), 11));
             }
             let v883: f64 = (c * mass[11]).sqrt();
@@ -79658,37 +79658,37 @@ pub mod reduced {
             let v1157: f64 = v1155 + v1156;
             let v1158: f64 = v920 * v920;
             let v1159: f64 = v1157 + v1158;
-            if !((c * mass[12]) > 0.0) || !(c * mass[12]).is_finite() {
+            if !((c * mass[12]) > 0.0 && (c * mass[12]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[12]), 12));
             }
             let v1160: f64 = (c * mass[12]).sqrt();
             let v1161: f64 = 1.0 / v1160;
             st[12] = v1161;
-            if !((c * mass[13]) > 0.0) || !(c * mass[13]).is_finite() {
+            if !((c * mass[13]) > 0.0 && (c * mass[13]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[13]), 13));
             }
             let v1162: f64 = (c * mass[13]).sqrt();
             let v1163: f64 = 1.0 / v1162;
             st[13] = v1163;
-            if !((c * mass[14]) > 0.0) || !(c * mass[14]).is_finite() {
+            if !((c * mass[14]) > 0.0 && (c * mass[14]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[14]), 14));
             }
             let v1164: f64 = (c * mass[14]).sqrt();
             let v1165: f64 = 1.0 / v1164;
             st[14] = v1165;
-            if !((c * mass[15]) > 0.0) || !(c * mass[15]).is_finite() {
+            if !((c * mass[15]) > 0.0 && (c * mass[15]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[15]), 15));
             }
             let v1166: f64 = (c * mass[15]).sqrt();
             let v1167: f64 = 1.0 / v1166;
             st[15] = v1167;
-            if !((c * mass[16]) > 0.0) || !(c * mass[16]).is_finite() {
+            if !((c * mass[16]) > 0.0 && (c * mass[16]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[16]), 16));
             }
             let v1168: f64 = (c * mass[16]).sqrt();
             let v1169: f64 = 1.0 / v1168;
             st[16] = v1169;
-            if !((c * mass[17]) > 0.0) || !(c * mass[17]).is_finite() {
+            if !((c * mass[17]) > 0.0 && (c * mass[17]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[17]), 17));
             }
             let v1170: f64 = (c * mass[17]).sqrt();
@@ -80005,37 +80005,37 @@ pub mod reduced {
             let v1444: f64 = v1442 + v1443;
             let v1445: f64 = v1207 * v1207;
             let v1446: f64 = v1444 + v1445;
-            if !((c * mass[18]) > 0.0) || !(c * mass[18]).is_finite() {
+            if !((c * mass[18]) > 0.0 && (c * mass[18]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[18]), 18));
             }
             let v1447: f64 = (c * mass[18]).sqrt();
             let v1448: f64 = 1.0 / v1447;
             st[18] = v1448;
-            if !((c * mass[19]) > 0.0) || !(c * mass[19]).is_finite() {
+            if !((c * mass[19]) > 0.0 && (c * mass[19]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[19]), 19));
             }
             let v1449: f64 = (c * mass[19]).sqrt();
             let v1450: f64 = 1.0 / v1449;
             st[19] = v1450;
-            if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+            if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[20]), 20));
             }
             let v1451: f64 = (c * mass[20]).sqrt();
             let v1452: f64 = 1.0 / v1451;
             st[20] = v1452;
-            if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+            if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[21]), 21));
             }
             let v1453: f64 = (c * mass[21]).sqrt();
             let v1454: f64 = 1.0 / v1453;
             st[21] = v1454;
-            if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+            if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[22]), 22));
             }
             let v1455: f64 = (c * mass[22]).sqrt();
             let v1456: f64 = 1.0 / v1455;
             st[22] = v1456;
-            if !((c * mass[23]) > 0.0) || !(c * mass[23]).is_finite() {
+            if !((c * mass[23]) > 0.0 && (c * mass[23]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[23]), 23));
             }
             let v1457: f64 = (c * mass[23]).sqrt();
@@ -80352,37 +80352,37 @@ pub mod reduced {
             let v1731: f64 = v1729 + v1730;
             let v1732: f64 = v1494 * v1494;
             let v1733: f64 = v1731 + v1732;
-            if !((c * mass[24]) > 0.0) || !(c * mass[24]).is_finite() {
+            if !((c * mass[24]) > 0.0 && (c * mass[24]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[24]), 24));
             }
             let v1734: f64 = (c * mass[24]).sqrt();
             let v1735: f64 = 1.0 / v1734;
             st[24] = v1735;
-            if !((c * mass[25]) > 0.0) || !(c * mass[25]).is_finite() {
+            if !((c * mass[25]) > 0.0 && (c * mass[25]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[25]), 25));
             }
             let v1736: f64 = (c * mass[25]).sqrt();
             let v1737: f64 = 1.0 / v1736;
             st[25] = v1737;
-            if !((c * mass[26]) > 0.0) || !(c * mass[26]).is_finite() {
+            if !((c * mass[26]) > 0.0 && (c * mass[26]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[26]), 26));
             }
             let v1738: f64 = (c * mass[26]).sqrt();
             let v1739: f64 = 1.0 / v1738;
             st[26] = v1739;
-            if !((c * mass[27]) > 0.0) || !(c * mass[27]).is_finite() {
+            if !((c * mass[27]) > 0.0 && (c * mass[27]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[27]), 27));
             }
             let v1740: f64 = (c * mass[27]).sqrt();
             let v1741: f64 = 1.0 / v1740;
             st[27] = v1741;
-            if !((c * mass[28]) > 0.0) || !(c * mass[28]).is_finite() {
+            if !((c * mass[28]) > 0.0 && (c * mass[28]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[28]), 28));
             }
             let v1742: f64 = (c * mass[28]).sqrt();
             let v1743: f64 = 1.0 / v1742;
             st[28] = v1743;
-            if !((c * mass[29]) > 0.0) || !(c * mass[29]).is_finite() {
+            if !((c * mass[29]) > 0.0 && (c * mass[29]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[29]), 29));
             }
             let v1744: f64 = (c * mass[29]).sqrt();
@@ -80699,37 +80699,37 @@ pub mod reduced {
             let v2018: f64 = v2016 + v2017;
             let v2019: f64 = v1781 * v1781;
             let v2020: f64 = v2018 + v2019;
-            if !((c * mass[30]) > 0.0) || !(c * mass[30]).is_finite() {
+            if !((c * mass[30]) > 0.0 && (c * mass[30]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[30]), 30));
             }
             let v2021: f64 = (c * mass[30]).sqrt();
             let v2022: f64 = 1.0 / v2021;
             st[30] = v2022;
-            if !((c * mass[31]) > 0.0) || !(c * mass[31]).is_finite() {
+            if !((c * mass[31]) > 0.0 && (c * mass[31]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[31]), 31));
             }
             let v2023: f64 = (c * mass[31]).sqrt();
             let v2024: f64 = 1.0 / v2023;
             st[31] = v2024;
-            if !((c * mass[32]) > 0.0) || !(c * mass[32]).is_finite() {
+            if !((c * mass[32]) > 0.0 && (c * mass[32]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[32]), 32));
             }
             let v2025: f64 = (c * mass[32]).sqrt();
             let v2026: f64 = 1.0 / v2025;
             st[32] = v2026;
-            if !((c * mass[33]) > 0.0) || !(c * mass[33]).is_finite() {
+            if !((c * mass[33]) > 0.0 && (c * mass[33]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[33]), 33));
             }
             let v2027: f64 = (c * mass[33]).sqrt();
             let v2028: f64 = 1.0 / v2027;
             st[33] = v2028;
-            if !((c * mass[34]) > 0.0) || !(c * mass[34]).is_finite() {
+            if !((c * mass[34]) > 0.0 && (c * mass[34]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[34]), 34));
             }
             let v2029: f64 = (c * mass[34]).sqrt();
             let v2030: f64 = 1.0 / v2029;
             st[34] = v2030;
-            if !((c * mass[35]) > 0.0) || !(c * mass[35]).is_finite() {
+            if !((c * mass[35]) > 0.0 && (c * mass[35]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[35]), 35));
             }
             let v2031: f64 = (c * mass[35]).sqrt();
@@ -81046,37 +81046,37 @@ pub mod reduced {
             let v2305: f64 = v2303 + v2304;
             let v2306: f64 = v2068 * v2068;
             let v2307: f64 = v2305 + v2306;
-            if !((c * mass[36]) > 0.0) || !(c * mass[36]).is_finite() {
+            if !((c * mass[36]) > 0.0 && (c * mass[36]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[36]), 36));
             }
             let v2308: f64 = (c * mass[36]).sqrt();
             let v2309: f64 = 1.0 / v2308;
             st[36] = v2309;
-            if !((c * mass[37]) > 0.0) || !(c * mass[37]).is_finite() {
+            if !((c * mass[37]) > 0.0 && (c * mass[37]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[37]), 37));
             }
             let v2310: f64 = (c * mass[37]).sqrt();
             let v2311: f64 = 1.0 / v2310;
             st[37] = v2311;
-            if !((c * mass[38]) > 0.0) || !(c * mass[38]).is_finite() {
+            if !((c * mass[38]) > 0.0 && (c * mass[38]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[38]), 38));
             }
             let v2312: f64 = (c * mass[38]).sqrt();
             let v2313: f64 = 1.0 / v2312;
             st[38] = v2313;
-            if !((c * mass[39]) > 0.0) || !(c * mass[39]).is_finite() {
+            if !((c * mass[39]) > 0.0 && (c * mass[39]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[39]), 39));
             }
             let v2314: f64 = (c * mass[39]).sqrt();
             let v2315: f64 = 1.0 / v2314;
             st[39] = v2315;
-            if !((c * mass[40]) > 0.0) || !(c * mass[40]).is_finite() {
+            if !((c * mass[40]) > 0.0 && (c * mass[40]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[40]), 40));
             }
             let v2316: f64 = (c * mass[40]).sqrt();
             let v2317: f64 = 1.0 / v2316;
             st[40] = v2317;
-            if !((c * mass[41]) > 0.0) || !(c * mass[41]).is_finite() {
+            if !((c * mass[41]) > 0.0 && (c * mass[41]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[41]), 41));
             }
             let v2318: f64 = (c * mass[41]).sqrt();
@@ -81393,7 +81393,7 @@ pub mod reduced {
             let v2592: f64 = v2590 + v2591;
             let v2593: f64 = v2355 * v2355;
             let v2594: f64 = v2592 + v2593;
-            if !((c * mass[42]) > 0.0) || !(c * mass[42]).is_finite() {
+            if !((c * mass[42]) > 0.0 && (c * mass[42]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[42]), 42));
             }
             let v2595: f64 = (c * mass[42]).sqrt();
@@ -81427,7 +81427,7 @@ pub mod reduced {
             let v2618: f64 = v1140 + v2617;
             let v2619: f64 = v2600 * v2600;
             let v2620: f64 = v1159 + v2619;
-            if !((c * mass[43]) > 0.0) || !(c * mass[43]).is_finite() {
+            if !((c * mass[43]) > 0.0 && (c * mass[43]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[43]), 43));
             }
             let v2621: f64 = (c * mass[43]).sqrt();
@@ -81461,7 +81461,7 @@ pub mod reduced {
             let v2644: f64 = v1145 + v2643;
             let v2645: f64 = v2626 * v2626;
             let v2646: f64 = v2620 + v2645;
-            if !((c * mass[44]) > 0.0) || !(c * mass[44]).is_finite() {
+            if !((c * mass[44]) > 0.0 && (c * mass[44]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[44]), 44));
             }
             let v2647: f64 = (c * mass[44]).sqrt();
@@ -81495,7 +81495,7 @@ pub mod reduced {
             let v2670: f64 = v1148 + v2669;
             let v2671: f64 = v2652 * v2652;
             let v2672: f64 = v2646 + v2671;
-            if !((c * mass[45]) > 0.0) || !(c * mass[45]).is_finite() {
+            if !((c * mass[45]) > 0.0 && (c * mass[45]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[45]), 45));
             }
             let v2673: f64 = (c * mass[45]).sqrt();
@@ -81529,7 +81529,7 @@ pub mod reduced {
             let v2696: f64 = v1427 + v2695;
             let v2697: f64 = v2678 * v2678;
             let v2698: f64 = v1446 + v2697;
-            if !((c * mass[46]) > 0.0) || !(c * mass[46]).is_finite() {
+            if !((c * mass[46]) > 0.0 && (c * mass[46]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[46]), 46));
             }
             let v2699: f64 = (c * mass[46]).sqrt();
@@ -81563,7 +81563,7 @@ pub mod reduced {
             let v2722: f64 = v1432 + v2721;
             let v2723: f64 = v2704 * v2704;
             let v2724: f64 = v2698 + v2723;
-            if !((c * mass[47]) > 0.0) || !(c * mass[47]).is_finite() {
+            if !((c * mass[47]) > 0.0 && (c * mass[47]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[47]), 47));
             }
             let v2725: f64 = (c * mass[47]).sqrt();
@@ -81597,7 +81597,7 @@ pub mod reduced {
             let v2748: f64 = v1435 + v2747;
             let v2749: f64 = v2730 * v2730;
             let v2750: f64 = v2724 + v2749;
-            if !((c * mass[48]) > 0.0) || !(c * mass[48]).is_finite() {
+            if !((c * mass[48]) > 0.0 && (c * mass[48]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[48]), 48));
             }
             let v2751: f64 = (c * mass[48]).sqrt();
@@ -81631,7 +81631,7 @@ pub mod reduced {
             let v2774: f64 = v1714 + v2773;
             let v2775: f64 = v2756 * v2756;
             let v2776: f64 = v1733 + v2775;
-            if !((c * mass[49]) > 0.0) || !(c * mass[49]).is_finite() {
+            if !((c * mass[49]) > 0.0 && (c * mass[49]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[49]), 49));
             }
             let v2777: f64 = (c * mass[49]).sqrt();
@@ -81665,7 +81665,7 @@ pub mod reduced {
             let v2800: f64 = v1719 + v2799;
             let v2801: f64 = v2782 * v2782;
             let v2802: f64 = v2776 + v2801;
-            if !((c * mass[50]) > 0.0) || !(c * mass[50]).is_finite() {
+            if !((c * mass[50]) > 0.0 && (c * mass[50]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[50]), 50));
             }
             let v2803: f64 = (c * mass[50]).sqrt();
@@ -81699,7 +81699,7 @@ pub mod reduced {
             let v2826: f64 = v1722 + v2825;
             let v2827: f64 = v2808 * v2808;
             let v2828: f64 = v2802 + v2827;
-            if !((c * mass[51]) > 0.0) || !(c * mass[51]).is_finite() {
+            if !((c * mass[51]) > 0.0 && (c * mass[51]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[51]), 51));
             }
             let v2829: f64 = (c * mass[51]).sqrt();
@@ -81733,7 +81733,7 @@ pub mod reduced {
             let v2852: f64 = v2001 + v2851;
             let v2853: f64 = v2834 * v2834;
             let v2854: f64 = v2020 + v2853;
-            if !((c * mass[52]) > 0.0) || !(c * mass[52]).is_finite() {
+            if !((c * mass[52]) > 0.0 && (c * mass[52]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[52]), 52));
             }
             let v2855: f64 = (c * mass[52]).sqrt();
@@ -81767,7 +81767,7 @@ pub mod reduced {
             let v2878: f64 = v2006 + v2877;
             let v2879: f64 = v2860 * v2860;
             let v2880: f64 = v2854 + v2879;
-            if !((c * mass[53]) > 0.0) || !(c * mass[53]).is_finite() {
+            if !((c * mass[53]) > 0.0 && (c * mass[53]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[53]), 53));
             }
             let v2881: f64 = (c * mass[53]).sqrt();
@@ -81801,7 +81801,7 @@ pub mod reduced {
             let v2904: f64 = v2009 + v2903;
             let v2905: f64 = v2886 * v2886;
             let v2906: f64 = v2880 + v2905;
-            if !((c * mass[54]) > 0.0) || !(c * mass[54]).is_finite() {
+            if !((c * mass[54]) > 0.0 && (c * mass[54]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[54]), 54));
             }
             let v2907: f64 = (c * mass[54]).sqrt();
@@ -81835,7 +81835,7 @@ pub mod reduced {
             let v2930: f64 = v2288 + v2929;
             let v2931: f64 = v2912 * v2912;
             let v2932: f64 = v2307 + v2931;
-            if !((c * mass[55]) > 0.0) || !(c * mass[55]).is_finite() {
+            if !((c * mass[55]) > 0.0 && (c * mass[55]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[55]), 55));
             }
             let v2933: f64 = (c * mass[55]).sqrt();
@@ -81869,7 +81869,7 @@ pub mod reduced {
             let v2956: f64 = v2293 + v2955;
             let v2957: f64 = v2938 * v2938;
             let v2958: f64 = v2932 + v2957;
-            if !((c * mass[56]) > 0.0) || !(c * mass[56]).is_finite() {
+            if !((c * mass[56]) > 0.0 && (c * mass[56]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[56]), 56));
             }
             let v2959: f64 = (c * mass[56]).sqrt();
@@ -81903,7 +81903,7 @@ pub mod reduced {
             let v2982: f64 = v2296 + v2981;
             let v2983: f64 = v2964 * v2964;
             let v2984: f64 = v2958 + v2983;
-            if !((c * mass[57]) > 0.0) || !(c * mass[57]).is_finite() {
+            if !((c * mass[57]) > 0.0 && (c * mass[57]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[57]), 57));
             }
             let v2985: f64 = (c * mass[57]).sqrt();
@@ -81937,7 +81937,7 @@ pub mod reduced {
             let v3008: f64 = v2575 + v3007;
             let v3009: f64 = v2990 * v2990;
             let v3010: f64 = v2594 + v3009;
-            if !((c * mass[58]) > 0.0) || !(c * mass[58]).is_finite() {
+            if !((c * mass[58]) > 0.0 && (c * mass[58]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[58]), 58));
             }
             let v3011: f64 = (c * mass[58]).sqrt();
@@ -81971,7 +81971,7 @@ pub mod reduced {
             let v3034: f64 = v2580 + v3033;
             let v3035: f64 = v3016 * v3016;
             let v3036: f64 = v3010 + v3035;
-            if !((c * mass[59]) > 0.0) || !(c * mass[59]).is_finite() {
+            if !((c * mass[59]) > 0.0 && (c * mass[59]) <= f64::MAX) {
                 return Err(mass_pivot_error((c * mass[59]), 59));
             }
             let v3037: f64 = (c * mass[59]).sqrt();

@@ -54901,25 +54901,25 @@ pub mod exact {
         let st: &mut [f64; 1575] = st
             .try_into()
             .map_err(|_| length_error(1575, st_len))?;
-        if !((c * mass[0]) > 0.0) || !(c * mass[0]).is_finite() {
+        if !((c * mass[0]) > 0.0 && (c * mass[0]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[0]), 0));
         }
         let v0: f64 = (c * mass[0]).sqrt();
         let v1: f64 = 1.0 / v0;
         st[78] = v1;
-        if !((c * mass[1]) > 0.0) || !(c * mass[1]).is_finite() {
+        if !((c * mass[1]) > 0.0 && (c * mass[1]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[1]), 1));
         }
         let v2: f64 = (c * mass[1]).sqrt();
         let v3: f64 = 1.0 / v2;
         st[79] = v3;
-        if !((c * mass[2]) > 0.0) || !(c * mass[2]).is_finite() {
+        if !((c * mass[2]) > 0.0 && (c * mass[2]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[2]), 2));
         }
         let v4: f64 = (c * mass[2]).sqrt();
         let v5: f64 = 1.0 / v4;
         st[80] = v5;
-        if !((c * mass[3]) > 0.0) || !(c * mass[3]).is_finite() {
+        if !((c * mass[3]) > 0.0 && (c * mass[3]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[3]), 3));
         }
         let v6: f64 = (c * mass[3]).sqrt();
@@ -54932,7 +54932,7 @@ pub mod exact {
         let v10: f64 = (c * mass[15]) * v7;
         st[3] = v10;
         let v11: f64 = (c * mass[8]) - v8 * v8;
-        if !(v11 > 0.0) || !v11.is_finite() {
+        if !(v11 > 0.0 && v11 <= f64::MAX) {
             return Err(mass_pivot_error(v11, 4));
         }
         let v12: f64 = v11.sqrt();
@@ -54946,7 +54946,7 @@ pub mod exact {
         st[4] = v17;
         let v18: f64 = (c * mass[13]) - v9 * v9;
         let v19: f64 = v18 - v15 * v15;
-        if !(v19 > 0.0) || !v19.is_finite() {
+        if !(v19 > 0.0 && v19 <= f64::MAX) {
             return Err(mass_pivot_error(v19, 5));
         }
         let v20: f64 = v19.sqrt();
@@ -54959,7 +54959,7 @@ pub mod exact {
         let v25: f64 = (c * mass[18]) - v10 * v10;
         let v26: f64 = v25 - v17 * v17;
         let v27: f64 = v26 - v24 * v24;
-        if !(v27 > 0.0) || !v27.is_finite() {
+        if !(v27 > 0.0 && v27 <= f64::MAX) {
             return Err(mass_pivot_error(v27, 6));
         }
         let v28: f64 = v27.sqrt();
@@ -56723,7 +56723,7 @@ pub mod exact {
         let v1691: f64 = v1689 + v1690;
         let v1692: f64 = v237 * v237;
         let v1693: f64 = v1691 + v1692;
-        if !((c * mass[19]) > 0.0) || !(c * mass[19]).is_finite() {
+        if !((c * mass[19]) > 0.0 && (c * mass[19]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[19]), 7));
         }
         let v1694: f64 = (c * mass[19]).sqrt();
@@ -56748,7 +56748,7 @@ pub mod exact {
         let v1708: f64 = v1699 * v1697;
         let v1709: f64 = v1699 * v1698;
         let v1710: f64 = v1699 * v1699;
-        if !((c * mass[20]) > 0.0) || !(c * mass[20]).is_finite() {
+        if !((c * mass[20]) > 0.0 && (c * mass[20]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[20]), 8));
         }
         let v1711: f64 = (c * mass[20]).sqrt();
@@ -56779,7 +56779,7 @@ pub mod exact {
         let v1731: f64 = v1709 + v1730;
         let v1732: f64 = v1716 * v1716;
         let v1733: f64 = v1710 + v1732;
-        if !((c * mass[21]) > 0.0) || !(c * mass[21]).is_finite() {
+        if !((c * mass[21]) > 0.0 && (c * mass[21]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[21]), 9));
         }
         let v1734: f64 = (c * mass[21]).sqrt();
@@ -56810,7 +56810,7 @@ pub mod exact {
         let v1754: f64 = v1731 + v1753;
         let v1755: f64 = v1739 * v1739;
         let v1756: f64 = v1733 + v1755;
-        if !((c * mass[22]) > 0.0) || !(c * mass[22]).is_finite() {
+        if !((c * mass[22]) > 0.0 && (c * mass[22]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[22]), 10));
         }
         let v1757: f64 = (c * mass[22]).sqrt();
@@ -56823,7 +56823,7 @@ pub mod exact {
         let v1761: f64 = (c * mass[34]) * v1758;
         st[9] = v1761;
         let v1762: f64 = (c * mass[27]) - v1759 * v1759;
-        if !(v1762 > 0.0) || !v1762.is_finite() {
+        if !(v1762 > 0.0 && v1762 <= f64::MAX) {
             return Err(mass_pivot_error(v1762, 11));
         }
         let v1763: f64 = v1762.sqrt();
@@ -56837,7 +56837,7 @@ pub mod exact {
         st[10] = v1768;
         let v1769: f64 = (c * mass[32]) - v1760 * v1760;
         let v1770: f64 = v1769 - v1766 * v1766;
-        if !(v1770 > 0.0) || !v1770.is_finite() {
+        if !(v1770 > 0.0 && v1770 <= f64::MAX) {
             return Err(mass_pivot_error(v1770, 12));
         }
         let v1771: f64 = v1770.sqrt();
@@ -56850,7 +56850,7 @@ pub mod exact {
         let v1776: f64 = (c * mass[37]) - v1761 * v1761;
         let v1777: f64 = v1776 - v1768 * v1768;
         let v1778: f64 = v1777 - v1775 * v1775;
-        if !(v1778 > 0.0) || !v1778.is_finite() {
+        if !(v1778 > 0.0 && v1778 <= f64::MAX) {
             return Err(mass_pivot_error(v1778, 13));
         }
         let v1779: f64 = v1778.sqrt();
@@ -57156,7 +57156,7 @@ pub mod exact {
         let v2050: f64 = v2048 + v2049;
         let v2051: f64 = v1850 * v1850;
         let v2052: f64 = v2050 + v2051;
-        if !((c * mass[38]) > 0.0) || !(c * mass[38]).is_finite() {
+        if !((c * mass[38]) > 0.0 && (c * mass[38]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[38]), 14));
         }
         let v2053: f64 = (c * mass[38]).sqrt();
@@ -57181,7 +57181,7 @@ pub mod exact {
         let v2067: f64 = v2058 * v2056;
         let v2068: f64 = v2058 * v2057;
         let v2069: f64 = v2058 * v2058;
-        if !((c * mass[39]) > 0.0) || !(c * mass[39]).is_finite() {
+        if !((c * mass[39]) > 0.0 && (c * mass[39]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[39]), 15));
         }
         let v2070: f64 = (c * mass[39]).sqrt();
@@ -57212,7 +57212,7 @@ pub mod exact {
         let v2090: f64 = v2068 + v2089;
         let v2091: f64 = v2075 * v2075;
         let v2092: f64 = v2069 + v2091;
-        if !((c * mass[40]) > 0.0) || !(c * mass[40]).is_finite() {
+        if !((c * mass[40]) > 0.0 && (c * mass[40]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[40]), 16));
         }
         let v2093: f64 = (c * mass[40]).sqrt();
@@ -57243,7 +57243,7 @@ pub mod exact {
         let v2113: f64 = v2090 + v2112;
         let v2114: f64 = v2098 * v2098;
         let v2115: f64 = v2092 + v2114;
-        if !((c * mass[41]) > 0.0) || !(c * mass[41]).is_finite() {
+        if !((c * mass[41]) > 0.0 && (c * mass[41]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[41]), 17));
         }
         let v2116: f64 = (c * mass[41]).sqrt();
@@ -57256,7 +57256,7 @@ pub mod exact {
         let v2120: f64 = (c * mass[53]) * v2117;
         st[15] = v2120;
         let v2121: f64 = (c * mass[46]) - v2118 * v2118;
-        if !(v2121 > 0.0) || !v2121.is_finite() {
+        if !(v2121 > 0.0 && v2121 <= f64::MAX) {
             return Err(mass_pivot_error(v2121, 18));
         }
         let v2122: f64 = v2121.sqrt();
@@ -57270,7 +57270,7 @@ pub mod exact {
         st[16] = v2127;
         let v2128: f64 = (c * mass[51]) - v2119 * v2119;
         let v2129: f64 = v2128 - v2125 * v2125;
-        if !(v2129 > 0.0) || !v2129.is_finite() {
+        if !(v2129 > 0.0 && v2129 <= f64::MAX) {
             return Err(mass_pivot_error(v2129, 19));
         }
         let v2130: f64 = v2129.sqrt();
@@ -57283,7 +57283,7 @@ pub mod exact {
         let v2135: f64 = (c * mass[56]) - v2120 * v2120;
         let v2136: f64 = v2135 - v2127 * v2127;
         let v2137: f64 = v2136 - v2134 * v2134;
-        if !(v2137 > 0.0) || !v2137.is_finite() {
+        if !(v2137 > 0.0 && v2137 <= f64::MAX) {
             return Err(mass_pivot_error(v2137, 20));
         }
         let v2138: f64 = v2137.sqrt();
@@ -57589,7 +57589,7 @@ pub mod exact {
         let v2409: f64 = v2407 + v2408;
         let v2410: f64 = v2209 * v2209;
         let v2411: f64 = v2409 + v2410;
-        if !((c * mass[57]) > 0.0) || !(c * mass[57]).is_finite() {
+        if !((c * mass[57]) > 0.0 && (c * mass[57]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[57]), 21));
         }
         let v2412: f64 = (c * mass[57]).sqrt();
@@ -57614,7 +57614,7 @@ pub mod exact {
         let v2426: f64 = v2417 * v2415;
         let v2427: f64 = v2417 * v2416;
         let v2428: f64 = v2417 * v2417;
-        if !((c * mass[58]) > 0.0) || !(c * mass[58]).is_finite() {
+        if !((c * mass[58]) > 0.0 && (c * mass[58]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[58]), 22));
         }
         let v2429: f64 = (c * mass[58]).sqrt();
@@ -57645,7 +57645,7 @@ pub mod exact {
         let v2449: f64 = v2427 + v2448;
         let v2450: f64 = v2434 * v2434;
         let v2451: f64 = v2428 + v2450;
-        if !((c * mass[59]) > 0.0) || !(c * mass[59]).is_finite() {
+        if !((c * mass[59]) > 0.0 && (c * mass[59]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[59]), 23));
         }
         let v2452: f64 = (c * mass[59]).sqrt();
@@ -57676,7 +57676,7 @@ pub mod exact {
         let v2472: f64 = v2449 + v2471;
         let v2473: f64 = v2457 * v2457;
         let v2474: f64 = v2451 + v2473;
-        if !((c * mass[60]) > 0.0) || !(c * mass[60]).is_finite() {
+        if !((c * mass[60]) > 0.0 && (c * mass[60]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[60]), 24));
         }
         let v2475: f64 = (c * mass[60]).sqrt();
@@ -57689,7 +57689,7 @@ pub mod exact {
         let v2479: f64 = (c * mass[72]) * v2476;
         st[21] = v2479;
         let v2480: f64 = (c * mass[65]) - v2477 * v2477;
-        if !(v2480 > 0.0) || !v2480.is_finite() {
+        if !(v2480 > 0.0 && v2480 <= f64::MAX) {
             return Err(mass_pivot_error(v2480, 25));
         }
         let v2481: f64 = v2480.sqrt();
@@ -57703,7 +57703,7 @@ pub mod exact {
         st[22] = v2486;
         let v2487: f64 = (c * mass[70]) - v2478 * v2478;
         let v2488: f64 = v2487 - v2484 * v2484;
-        if !(v2488 > 0.0) || !v2488.is_finite() {
+        if !(v2488 > 0.0 && v2488 <= f64::MAX) {
             return Err(mass_pivot_error(v2488, 26));
         }
         let v2489: f64 = v2488.sqrt();
@@ -57716,7 +57716,7 @@ pub mod exact {
         let v2494: f64 = (c * mass[75]) - v2479 * v2479;
         let v2495: f64 = v2494 - v2486 * v2486;
         let v2496: f64 = v2495 - v2493 * v2493;
-        if !(v2496 > 0.0) || !v2496.is_finite() {
+        if !(v2496 > 0.0 && v2496 <= f64::MAX) {
             return Err(mass_pivot_error(v2496, 27));
         }
         let v2497: f64 = v2496.sqrt();
@@ -58022,7 +58022,7 @@ pub mod exact {
         let v2768: f64 = v2766 + v2767;
         let v2769: f64 = v2568 * v2568;
         let v2770: f64 = v2768 + v2769;
-        if !((c * mass[76]) > 0.0) || !(c * mass[76]).is_finite() {
+        if !((c * mass[76]) > 0.0 && (c * mass[76]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[76]), 28));
         }
         let v2771: f64 = (c * mass[76]).sqrt();
@@ -58047,7 +58047,7 @@ pub mod exact {
         let v2785: f64 = v2776 * v2774;
         let v2786: f64 = v2776 * v2775;
         let v2787: f64 = v2776 * v2776;
-        if !((c * mass[77]) > 0.0) || !(c * mass[77]).is_finite() {
+        if !((c * mass[77]) > 0.0 && (c * mass[77]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[77]), 29));
         }
         let v2788: f64 = (c * mass[77]).sqrt();
@@ -58078,7 +58078,7 @@ pub mod exact {
         let v2808: f64 = v2786 + v2807;
         let v2809: f64 = v2793 * v2793;
         let v2810: f64 = v2787 + v2809;
-        if !((c * mass[78]) > 0.0) || !(c * mass[78]).is_finite() {
+        if !((c * mass[78]) > 0.0 && (c * mass[78]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[78]), 30));
         }
         let v2811: f64 = (c * mass[78]).sqrt();
@@ -58109,7 +58109,7 @@ pub mod exact {
         let v2831: f64 = v2808 + v2830;
         let v2832: f64 = v2816 * v2816;
         let v2833: f64 = v2810 + v2832;
-        if !((c * mass[79]) > 0.0) || !(c * mass[79]).is_finite() {
+        if !((c * mass[79]) > 0.0 && (c * mass[79]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[79]), 31));
         }
         let v2834: f64 = (c * mass[79]).sqrt();
@@ -58122,7 +58122,7 @@ pub mod exact {
         let v2838: f64 = (c * mass[91]) * v2835;
         st[27] = v2838;
         let v2839: f64 = (c * mass[84]) - v2836 * v2836;
-        if !(v2839 > 0.0) || !v2839.is_finite() {
+        if !(v2839 > 0.0 && v2839 <= f64::MAX) {
             return Err(mass_pivot_error(v2839, 32));
         }
         let v2840: f64 = v2839.sqrt();
@@ -58136,7 +58136,7 @@ pub mod exact {
         st[28] = v2845;
         let v2846: f64 = (c * mass[89]) - v2837 * v2837;
         let v2847: f64 = v2846 - v2843 * v2843;
-        if !(v2847 > 0.0) || !v2847.is_finite() {
+        if !(v2847 > 0.0 && v2847 <= f64::MAX) {
             return Err(mass_pivot_error(v2847, 33));
         }
         let v2848: f64 = v2847.sqrt();
@@ -58149,7 +58149,7 @@ pub mod exact {
         let v2853: f64 = (c * mass[94]) - v2838 * v2838;
         let v2854: f64 = v2853 - v2845 * v2845;
         let v2855: f64 = v2854 - v2852 * v2852;
-        if !(v2855 > 0.0) || !v2855.is_finite() {
+        if !(v2855 > 0.0 && v2855 <= f64::MAX) {
             return Err(mass_pivot_error(v2855, 34));
         }
         let v2856: f64 = v2855.sqrt();
@@ -58455,7 +58455,7 @@ pub mod exact {
         let v3127: f64 = v3125 + v3126;
         let v3128: f64 = v2927 * v2927;
         let v3129: f64 = v3127 + v3128;
-        if !((c * mass[95]) > 0.0) || !(c * mass[95]).is_finite() {
+        if !((c * mass[95]) > 0.0 && (c * mass[95]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[95]), 35));
         }
         let v3130: f64 = (c * mass[95]).sqrt();
@@ -58480,7 +58480,7 @@ pub mod exact {
         let v3144: f64 = v3135 * v3133;
         let v3145: f64 = v3135 * v3134;
         let v3146: f64 = v3135 * v3135;
-        if !((c * mass[96]) > 0.0) || !(c * mass[96]).is_finite() {
+        if !((c * mass[96]) > 0.0 && (c * mass[96]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[96]), 36));
         }
         let v3147: f64 = (c * mass[96]).sqrt();
@@ -58511,7 +58511,7 @@ pub mod exact {
         let v3167: f64 = v3145 + v3166;
         let v3168: f64 = v3152 * v3152;
         let v3169: f64 = v3146 + v3168;
-        if !((c * mass[97]) > 0.0) || !(c * mass[97]).is_finite() {
+        if !((c * mass[97]) > 0.0 && (c * mass[97]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[97]), 37));
         }
         let v3170: f64 = (c * mass[97]).sqrt();
@@ -58542,7 +58542,7 @@ pub mod exact {
         let v3190: f64 = v3167 + v3189;
         let v3191: f64 = v3175 * v3175;
         let v3192: f64 = v3169 + v3191;
-        if !((c * mass[98]) > 0.0) || !(c * mass[98]).is_finite() {
+        if !((c * mass[98]) > 0.0 && (c * mass[98]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[98]), 38));
         }
         let v3193: f64 = (c * mass[98]).sqrt();
@@ -58555,7 +58555,7 @@ pub mod exact {
         let v3197: f64 = (c * mass[110]) * v3194;
         st[33] = v3197;
         let v3198: f64 = (c * mass[103]) - v3195 * v3195;
-        if !(v3198 > 0.0) || !v3198.is_finite() {
+        if !(v3198 > 0.0 && v3198 <= f64::MAX) {
             return Err(mass_pivot_error(v3198, 39));
         }
         let v3199: f64 = v3198.sqrt();
@@ -58569,7 +58569,7 @@ pub mod exact {
         st[34] = v3204;
         let v3205: f64 = (c * mass[108]) - v3196 * v3196;
         let v3206: f64 = v3205 - v3202 * v3202;
-        if !(v3206 > 0.0) || !v3206.is_finite() {
+        if !(v3206 > 0.0 && v3206 <= f64::MAX) {
             return Err(mass_pivot_error(v3206, 40));
         }
         let v3207: f64 = v3206.sqrt();
@@ -58582,7 +58582,7 @@ pub mod exact {
         let v3212: f64 = (c * mass[113]) - v3197 * v3197;
         let v3213: f64 = v3212 - v3204 * v3204;
         let v3214: f64 = v3213 - v3211 * v3211;
-        if !(v3214 > 0.0) || !v3214.is_finite() {
+        if !(v3214 > 0.0 && v3214 <= f64::MAX) {
             return Err(mass_pivot_error(v3214, 41));
         }
         let v3215: f64 = v3214.sqrt();
@@ -58888,7 +58888,7 @@ pub mod exact {
         let v3486: f64 = v3484 + v3485;
         let v3487: f64 = v3286 * v3286;
         let v3488: f64 = v3486 + v3487;
-        if !((c * mass[114]) > 0.0) || !(c * mass[114]).is_finite() {
+        if !((c * mass[114]) > 0.0 && (c * mass[114]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[114]), 42));
         }
         let v3489: f64 = (c * mass[114]).sqrt();
@@ -58913,7 +58913,7 @@ pub mod exact {
         let v3503: f64 = v3494 * v3492;
         let v3504: f64 = v3494 * v3493;
         let v3505: f64 = v3494 * v3494;
-        if !((c * mass[115]) > 0.0) || !(c * mass[115]).is_finite() {
+        if !((c * mass[115]) > 0.0 && (c * mass[115]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[115]), 43));
         }
         let v3506: f64 = (c * mass[115]).sqrt();
@@ -58944,7 +58944,7 @@ pub mod exact {
         let v3526: f64 = v3504 + v3525;
         let v3527: f64 = v3511 * v3511;
         let v3528: f64 = v3505 + v3527;
-        if !((c * mass[116]) > 0.0) || !(c * mass[116]).is_finite() {
+        if !((c * mass[116]) > 0.0 && (c * mass[116]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[116]), 44));
         }
         let v3529: f64 = (c * mass[116]).sqrt();
@@ -58975,7 +58975,7 @@ pub mod exact {
         let v3549: f64 = v3526 + v3548;
         let v3550: f64 = v3534 * v3534;
         let v3551: f64 = v3528 + v3550;
-        if !((c * mass[117]) > 0.0) || !(c * mass[117]).is_finite() {
+        if !((c * mass[117]) > 0.0 && (c * mass[117]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[117]), 45));
         }
         let v3552: f64 = (c * mass[117]).sqrt();
@@ -58988,7 +58988,7 @@ pub mod exact {
         let v3556: f64 = (c * mass[129]) * v3553;
         st[39] = v3556;
         let v3557: f64 = (c * mass[122]) - v3554 * v3554;
-        if !(v3557 > 0.0) || !v3557.is_finite() {
+        if !(v3557 > 0.0 && v3557 <= f64::MAX) {
             return Err(mass_pivot_error(v3557, 46));
         }
         let v3558: f64 = v3557.sqrt();
@@ -59002,7 +59002,7 @@ pub mod exact {
         st[40] = v3563;
         let v3564: f64 = (c * mass[127]) - v3555 * v3555;
         let v3565: f64 = v3564 - v3561 * v3561;
-        if !(v3565 > 0.0) || !v3565.is_finite() {
+        if !(v3565 > 0.0 && v3565 <= f64::MAX) {
             return Err(mass_pivot_error(v3565, 47));
         }
         let v3566: f64 = v3565.sqrt();
@@ -59015,7 +59015,7 @@ pub mod exact {
         let v3571: f64 = (c * mass[132]) - v3556 * v3556;
         let v3572: f64 = v3571 - v3563 * v3563;
         let v3573: f64 = v3572 - v3570 * v3570;
-        if !(v3573 > 0.0) || !v3573.is_finite() {
+        if !(v3573 > 0.0 && v3573 <= f64::MAX) {
             return Err(mass_pivot_error(v3573, 48));
         }
         let v3574: f64 = v3573.sqrt();
@@ -59321,25 +59321,25 @@ pub mod exact {
         let v3845: f64 = v3843 + v3844;
         let v3846: f64 = v3645 * v3645;
         let v3847: f64 = v3845 + v3846;
-        if !((c * mass[133]) > 0.0) || !(c * mass[133]).is_finite() {
+        if !((c * mass[133]) > 0.0 && (c * mass[133]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[133]), 49));
         }
         let v3848: f64 = (c * mass[133]).sqrt();
         let v3849: f64 = 1.0 / v3848;
         st[127] = v3849;
-        if !((c * mass[134]) > 0.0) || !(c * mass[134]).is_finite() {
+        if !((c * mass[134]) > 0.0 && (c * mass[134]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[134]), 50));
         }
         let v3850: f64 = (c * mass[134]).sqrt();
         let v3851: f64 = 1.0 / v3850;
         st[128] = v3851;
-        if !((c * mass[135]) > 0.0) || !(c * mass[135]).is_finite() {
+        if !((c * mass[135]) > 0.0 && (c * mass[135]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[135]), 51));
         }
         let v3852: f64 = (c * mass[135]).sqrt();
         let v3853: f64 = 1.0 / v3852;
         st[129] = v3853;
-        if !((c * mass[136]) > 0.0) || !(c * mass[136]).is_finite() {
+        if !((c * mass[136]) > 0.0 && (c * mass[136]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[136]), 52));
         }
         let v3854: f64 = (c * mass[136]).sqrt();
@@ -59352,7 +59352,7 @@ pub mod exact {
         let v3858: f64 = (c * mass[148]) * v3855;
         st[45] = v3858;
         let v3859: f64 = (c * mass[141]) - v3856 * v3856;
-        if !(v3859 > 0.0) || !v3859.is_finite() {
+        if !(v3859 > 0.0 && v3859 <= f64::MAX) {
             return Err(mass_pivot_error(v3859, 53));
         }
         let v3860: f64 = v3859.sqrt();
@@ -59366,7 +59366,7 @@ pub mod exact {
         st[46] = v3865;
         let v3866: f64 = (c * mass[146]) - v3857 * v3857;
         let v3867: f64 = v3866 - v3863 * v3863;
-        if !(v3867 > 0.0) || !v3867.is_finite() {
+        if !(v3867 > 0.0 && v3867 <= f64::MAX) {
             return Err(mass_pivot_error(v3867, 54));
         }
         let v3868: f64 = v3867.sqrt();
@@ -59379,7 +59379,7 @@ pub mod exact {
         let v3873: f64 = (c * mass[151]) - v3858 * v3858;
         let v3874: f64 = v3873 - v3865 * v3865;
         let v3875: f64 = v3874 - v3872 * v3872;
-        if !(v3875 > 0.0) || !v3875.is_finite() {
+        if !(v3875 > 0.0 && v3875 <= f64::MAX) {
             return Err(mass_pivot_error(v3875, 55));
         }
         let v3876: f64 = v3875.sqrt();
@@ -60097,25 +60097,25 @@ pub mod exact {
         let v4531: f64 = v4529 + v4530;
         let v4532: f64 = v3999 * v3999;
         let v4533: f64 = v4531 + v4532;
-        if !((c * mass[152]) > 0.0) || !(c * mass[152]).is_finite() {
+        if !((c * mass[152]) > 0.0 && (c * mass[152]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[152]), 56));
         }
         let v4534: f64 = (c * mass[152]).sqrt();
         let v4535: f64 = 1.0 / v4534;
         st[134] = v4535;
-        if !((c * mass[153]) > 0.0) || !(c * mass[153]).is_finite() {
+        if !((c * mass[153]) > 0.0 && (c * mass[153]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[153]), 57));
         }
         let v4536: f64 = (c * mass[153]).sqrt();
         let v4537: f64 = 1.0 / v4536;
         st[135] = v4537;
-        if !((c * mass[154]) > 0.0) || !(c * mass[154]).is_finite() {
+        if !((c * mass[154]) > 0.0 && (c * mass[154]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[154]), 58));
         }
         let v4538: f64 = (c * mass[154]).sqrt();
         let v4539: f64 = 1.0 / v4538;
         st[136] = v4539;
-        if !((c * mass[155]) > 0.0) || !(c * mass[155]).is_finite() {
+        if !((c * mass[155]) > 0.0 && (c * mass[155]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[155]), 59));
         }
         let v4540: f64 = (c * mass[155]).sqrt();
@@ -60128,7 +60128,7 @@ pub mod exact {
         let v4544: f64 = (c * mass[167]) * v4541;
         st[51] = v4544;
         let v4545: f64 = (c * mass[160]) - v4542 * v4542;
-        if !(v4545 > 0.0) || !v4545.is_finite() {
+        if !(v4545 > 0.0 && v4545 <= f64::MAX) {
             return Err(mass_pivot_error(v4545, 60));
         }
         let v4546: f64 = v4545.sqrt();
@@ -60142,7 +60142,7 @@ pub mod exact {
         st[52] = v4551;
         let v4552: f64 = (c * mass[165]) - v4543 * v4543;
         let v4553: f64 = v4552 - v4549 * v4549;
-        if !(v4553 > 0.0) || !v4553.is_finite() {
+        if !(v4553 > 0.0 && v4553 <= f64::MAX) {
             return Err(mass_pivot_error(v4553, 61));
         }
         let v4554: f64 = v4553.sqrt();
@@ -60155,7 +60155,7 @@ pub mod exact {
         let v4559: f64 = (c * mass[170]) - v4544 * v4544;
         let v4560: f64 = v4559 - v4551 * v4551;
         let v4561: f64 = v4560 - v4558 * v4558;
-        if !(v4561 > 0.0) || !v4561.is_finite() {
+        if !(v4561 > 0.0 && v4561 <= f64::MAX) {
             return Err(mass_pivot_error(v4561, 62));
         }
         let v4562: f64 = v4561.sqrt();
@@ -60873,25 +60873,25 @@ pub mod exact {
         let v5217: f64 = v5215 + v5216;
         let v5218: f64 = v4685 * v4685;
         let v5219: f64 = v5217 + v5218;
-        if !((c * mass[171]) > 0.0) || !(c * mass[171]).is_finite() {
+        if !((c * mass[171]) > 0.0 && (c * mass[171]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[171]), 63));
         }
         let v5220: f64 = (c * mass[171]).sqrt();
         let v5221: f64 = 1.0 / v5220;
         st[141] = v5221;
-        if !((c * mass[172]) > 0.0) || !(c * mass[172]).is_finite() {
+        if !((c * mass[172]) > 0.0 && (c * mass[172]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[172]), 64));
         }
         let v5222: f64 = (c * mass[172]).sqrt();
         let v5223: f64 = 1.0 / v5222;
         st[142] = v5223;
-        if !((c * mass[173]) > 0.0) || !(c * mass[173]).is_finite() {
+        if !((c * mass[173]) > 0.0 && (c * mass[173]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[173]), 65));
         }
         let v5224: f64 = (c * mass[173]).sqrt();
         let v5225: f64 = 1.0 / v5224;
         st[143] = v5225;
-        if !((c * mass[174]) > 0.0) || !(c * mass[174]).is_finite() {
+        if !((c * mass[174]) > 0.0 && (c * mass[174]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[174]), 66));
         }
         let v5226: f64 = (c * mass[174]).sqrt();
@@ -60904,7 +60904,7 @@ pub mod exact {
         let v5230: f64 = (c * mass[186]) * v5227;
         st[57] = v5230;
         let v5231: f64 = (c * mass[179]) - v5228 * v5228;
-        if !(v5231 > 0.0) || !v5231.is_finite() {
+        if !(v5231 > 0.0 && v5231 <= f64::MAX) {
             return Err(mass_pivot_error(v5231, 67));
         }
         let v5232: f64 = v5231.sqrt();
@@ -60918,7 +60918,7 @@ pub mod exact {
         st[58] = v5237;
         let v5238: f64 = (c * mass[184]) - v5229 * v5229;
         let v5239: f64 = v5238 - v5235 * v5235;
-        if !(v5239 > 0.0) || !v5239.is_finite() {
+        if !(v5239 > 0.0 && v5239 <= f64::MAX) {
             return Err(mass_pivot_error(v5239, 68));
         }
         let v5240: f64 = v5239.sqrt();
@@ -60931,7 +60931,7 @@ pub mod exact {
         let v5245: f64 = (c * mass[189]) - v5230 * v5230;
         let v5246: f64 = v5245 - v5237 * v5237;
         let v5247: f64 = v5246 - v5244 * v5244;
-        if !(v5247 > 0.0) || !v5247.is_finite() {
+        if !(v5247 > 0.0 && v5247 <= f64::MAX) {
             return Err(mass_pivot_error(v5247, 69));
         }
         let v5248: f64 = v5247.sqrt();
@@ -61649,25 +61649,25 @@ pub mod exact {
         let v5903: f64 = v5901 + v5902;
         let v5904: f64 = v5371 * v5371;
         let v5905: f64 = v5903 + v5904;
-        if !((c * mass[190]) > 0.0) || !(c * mass[190]).is_finite() {
+        if !((c * mass[190]) > 0.0 && (c * mass[190]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[190]), 70));
         }
         let v5906: f64 = (c * mass[190]).sqrt();
         let v5907: f64 = 1.0 / v5906;
         st[148] = v5907;
-        if !((c * mass[191]) > 0.0) || !(c * mass[191]).is_finite() {
+        if !((c * mass[191]) > 0.0 && (c * mass[191]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[191]), 71));
         }
         let v5908: f64 = (c * mass[191]).sqrt();
         let v5909: f64 = 1.0 / v5908;
         st[149] = v5909;
-        if !((c * mass[192]) > 0.0) || !(c * mass[192]).is_finite() {
+        if !((c * mass[192]) > 0.0 && (c * mass[192]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[192]), 72));
         }
         let v5910: f64 = (c * mass[192]).sqrt();
         let v5911: f64 = 1.0 / v5910;
         st[150] = v5911;
-        if !((c * mass[193]) > 0.0) || !(c * mass[193]).is_finite() {
+        if !((c * mass[193]) > 0.0 && (c * mass[193]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[193]), 73));
         }
         let v5912: f64 = (c * mass[193]).sqrt();
@@ -61680,7 +61680,7 @@ pub mod exact {
         let v5916: f64 = (c * mass[205]) * v5913;
         st[63] = v5916;
         let v5917: f64 = (c * mass[198]) - v5914 * v5914;
-        if !(v5917 > 0.0) || !v5917.is_finite() {
+        if !(v5917 > 0.0 && v5917 <= f64::MAX) {
             return Err(mass_pivot_error(v5917, 74));
         }
         let v5918: f64 = v5917.sqrt();
@@ -61694,7 +61694,7 @@ pub mod exact {
         st[64] = v5923;
         let v5924: f64 = (c * mass[203]) - v5915 * v5915;
         let v5925: f64 = v5924 - v5921 * v5921;
-        if !(v5925 > 0.0) || !v5925.is_finite() {
+        if !(v5925 > 0.0 && v5925 <= f64::MAX) {
             return Err(mass_pivot_error(v5925, 75));
         }
         let v5926: f64 = v5925.sqrt();
@@ -61707,7 +61707,7 @@ pub mod exact {
         let v5931: f64 = (c * mass[208]) - v5916 * v5916;
         let v5932: f64 = v5931 - v5923 * v5923;
         let v5933: f64 = v5932 - v5930 * v5930;
-        if !(v5933 > 0.0) || !v5933.is_finite() {
+        if !(v5933 > 0.0 && v5933 <= f64::MAX) {
             return Err(mass_pivot_error(v5933, 76));
         }
         let v5934: f64 = v5933.sqrt();
@@ -62425,25 +62425,25 @@ pub mod exact {
         let v6589: f64 = v6587 + v6588;
         let v6590: f64 = v6057 * v6057;
         let v6591: f64 = v6589 + v6590;
-        if !((c * mass[209]) > 0.0) || !(c * mass[209]).is_finite() {
+        if !((c * mass[209]) > 0.0 && (c * mass[209]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[209]), 77));
         }
         let v6592: f64 = (c * mass[209]).sqrt();
         let v6593: f64 = 1.0 / v6592;
         st[155] = v6593;
-        if !((c * mass[210]) > 0.0) || !(c * mass[210]).is_finite() {
+        if !((c * mass[210]) > 0.0 && (c * mass[210]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[210]), 78));
         }
         let v6594: f64 = (c * mass[210]).sqrt();
         let v6595: f64 = 1.0 / v6594;
         st[156] = v6595;
-        if !((c * mass[211]) > 0.0) || !(c * mass[211]).is_finite() {
+        if !((c * mass[211]) > 0.0 && (c * mass[211]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[211]), 79));
         }
         let v6596: f64 = (c * mass[211]).sqrt();
         let v6597: f64 = 1.0 / v6596;
         st[157] = v6597;
-        if !((c * mass[212]) > 0.0) || !(c * mass[212]).is_finite() {
+        if !((c * mass[212]) > 0.0 && (c * mass[212]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[212]), 80));
         }
         let v6598: f64 = (c * mass[212]).sqrt();
@@ -62456,7 +62456,7 @@ pub mod exact {
         let v6602: f64 = (c * mass[224]) * v6599;
         st[69] = v6602;
         let v6603: f64 = (c * mass[217]) - v6600 * v6600;
-        if !(v6603 > 0.0) || !v6603.is_finite() {
+        if !(v6603 > 0.0 && v6603 <= f64::MAX) {
             return Err(mass_pivot_error(v6603, 81));
         }
         let v6604: f64 = v6603.sqrt();
@@ -62470,7 +62470,7 @@ pub mod exact {
         st[70] = v6609;
         let v6610: f64 = (c * mass[222]) - v6601 * v6601;
         let v6611: f64 = v6610 - v6607 * v6607;
-        if !(v6611 > 0.0) || !v6611.is_finite() {
+        if !(v6611 > 0.0 && v6611 <= f64::MAX) {
             return Err(mass_pivot_error(v6611, 82));
         }
         let v6612: f64 = v6611.sqrt();
@@ -62483,7 +62483,7 @@ pub mod exact {
         let v6617: f64 = (c * mass[227]) - v6602 * v6602;
         let v6618: f64 = v6617 - v6609 * v6609;
         let v6619: f64 = v6618 - v6616 * v6616;
-        if !(v6619 > 0.0) || !v6619.is_finite() {
+        if !(v6619 > 0.0 && v6619 <= f64::MAX) {
             return Err(mass_pivot_error(v6619, 83));
         }
         let v6620: f64 = v6619.sqrt();
@@ -63201,25 +63201,25 @@ pub mod exact {
         let v7275: f64 = v7273 + v7274;
         let v7276: f64 = v6743 * v6743;
         let v7277: f64 = v7275 + v7276;
-        if !((c * mass[228]) > 0.0) || !(c * mass[228]).is_finite() {
+        if !((c * mass[228]) > 0.0 && (c * mass[228]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[228]), 84));
         }
         let v7278: f64 = (c * mass[228]).sqrt();
         let v7279: f64 = 1.0 / v7278;
         st[162] = v7279;
-        if !((c * mass[229]) > 0.0) || !(c * mass[229]).is_finite() {
+        if !((c * mass[229]) > 0.0 && (c * mass[229]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[229]), 85));
         }
         let v7280: f64 = (c * mass[229]).sqrt();
         let v7281: f64 = 1.0 / v7280;
         st[163] = v7281;
-        if !((c * mass[230]) > 0.0) || !(c * mass[230]).is_finite() {
+        if !((c * mass[230]) > 0.0 && (c * mass[230]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[230]), 86));
         }
         let v7282: f64 = (c * mass[230]).sqrt();
         let v7283: f64 = 1.0 / v7282;
         st[164] = v7283;
-        if !((c * mass[231]) > 0.0) || !(c * mass[231]).is_finite() {
+        if !((c * mass[231]) > 0.0 && (c * mass[231]) <= f64::MAX) {
             return Err(mass_pivot_error((c * mass[231]), 87));
         }
         let v7284: f64 = (c * mass[231]).sqrt();
@@ -63232,7 +63232,7 @@ pub mod exact {
         let v7288: f64 = (c * mass[243]) * v7285;
         st[75] = v7288;
         let v7289: f64 = (c * mass[236]) - v7286 * v7286;
-        if !(v7289 > 0.0) || !v7289.is_finite() {
+        if !(v7289 > 0.0 && v7289 <= f64::MAX) {
             return Err(mass_pivot_error(v7289, 88));
         }
         let v7290: f64 = v7289.sqrt();
@@ -63246,7 +63246,7 @@ pub mod exact {
         st[76] = v7295;
         let v7296: f64 = (c * mass[241]) - v7287 * v7287;
         let v7297: f64 = v7296 - v7293 * v7293;
-        if !(v7297 > 0.0) || !v7297.is_finite() {
+        if !(v7297 > 0.0 && v7297 <= f64::MAX) {
             return Err(mass_pivot_error(v7297, 89));
         }
         let v7298: f64 = v7297.sqrt();
@@ -63259,7 +63259,7 @@ pub mod exact {
         let v7303: f64 = (c * mass[246]) - v7288 * v7288;
         let v7304: f64 = v7303 - v7295 * v7295;
         let v7305: f64 = v7304 - v7302 * v7302;
-        if !(v7305 > 0.0) || !v7305.is_finite() {
+        if !(v7305 > 0.0 && v7305 <= f64::MAX) {
             return Err(mass_pivot_error(v7305, 90));
         }
         let v7306: f64 = v7305.sqrt();

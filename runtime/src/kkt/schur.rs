@@ -350,7 +350,8 @@ fn cholesky(a: &mut [f64], inv: &mut [f64], s: usize) -> Result<(), (usize, bool
         for k in 0..j {
             d -= a[j * s + k] * a[j * s + k];
         }
-        if !(d > 0.0) || !d.is_finite() {
+        // Positive and finite, tested as the generated kernels do (`codegen/src/kkt.rs`).
+        if !(d > 0.0 && d <= f64::MAX) {
             return Err((j, d.is_nan()));
         }
         let d = d.sqrt();
