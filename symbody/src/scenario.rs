@@ -331,9 +331,6 @@ fn kinematic_run<M: Mechanism + Sync>(
     beside: &mut (dyn FnMut() + Send),
 ) -> Result<Run, ScenarioError> {
     let info = mech.info();
-    let flt = || { let st = std::fs::read_to_string("/proc/thread-self/stat").unwrap(); let f: Vec<&str> = st.rsplit(')').next().unwrap().split_whitespace().collect(); f[7].parse::<u64>().unwrap() };
-    let trace = std::env::var_os("SYMBODY_TRACE").is_some();
-    let f0 = if trace { flt() } else { 0 };
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
@@ -409,7 +406,6 @@ fn kinematic_run<M: Mechanism + Sync>(
             let _ = to_recorder.send(batch);
         }
         drop(to_recorder);
-        if trace { eprintln!("FAULTS main {} at {:.3}", flt() - f0, start.elapsed().as_secs_f64()*1e3); }
         let run = recording
             .join()
             .unwrap_or_else(|panic| std::panic::resume_unwind(panic))?;
