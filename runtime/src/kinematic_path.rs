@@ -264,6 +264,14 @@ impl<M: Mechanism, K: KktSolver> KinematicPath<M, K> {
     pub fn phi_t(&self) -> &[f64] {
         self.kin.phi_t()
     }
+    /// M nonzeros at the current state (the ones `q̈` and λ were solved with).
+    pub fn mass(&self) -> &[f64] {
+        self.kin.mass()
+    }
+    /// How well the constraint rows determined λ at the current state.
+    pub fn pivots(&self) -> Option<crate::kkt::Pivots> {
+        self.kin.pivots()
+    }
     pub fn stats(&self) -> PathStats {
         self.stats
     }

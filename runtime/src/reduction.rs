@@ -179,6 +179,11 @@ impl FullState {
         }
     }
 
+    /// The full model's M nonzeros at the last state read.
+    pub fn mass(&self) -> &[f64] {
+        &self.mass
+    }
+
     /// Kinetic plus potential energy of `full`, the full model, at the last state read (J).
     pub fn energy<M: Mechanism + ?Sized>(&self, full: &M) -> f64 {
         kinetic_energy(full.info(), &self.mass, &self.qd) + full.potential(&self.q)

@@ -8,6 +8,7 @@ use crate::scenario::{output_count, Reduced, ScenarioError};
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
+use symbody_runtime::kinematics::kinetic_energy;
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
     body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, Entry, EulerWarning,
@@ -15,6 +16,7 @@ use symbody_runtime::{
     Mechanism, MechanismInfo, PathStats, Pivots, Registry, ResidualWatch, Residuals, Rotation,
     Stats, Wrench,
 };
+use symbody_runtime::{energy, quadrature};
 
 /// Why a run could not be made: an option out of range or not available for the mechanism
 /// (naming it), or a solver failure (with time and residual). The paper scenario's error
@@ -478,7 +480,13 @@ fn integrate(
         }
         let sample = meter.sample(&mech, &q, &qd)?;
         let residuals = watch.check(&mech, it.t(), &q, &qd)?;
-        record(rec, &meter, residuals, (it.t(), &q, &qd), sample)?;
+        record(
+            rec,
+            Solution::of(&meter),
+            residuals,
+            (it.t(), &q, &qd),
+            sample,
+        )?;
         obs.output(rec)?;
     }
     Ok(())
@@ -592,6 +600,55 @@ impl Followed {
             .map_or(self.path.lambda(), |(_, f)| &f.lambda)
     }
 
+    /// What the path solved at the state, in the full model's terms: its reactions, without
+    /// solving again (the pivots are those of the followed model's factorization).
+    fn solution(&self) -> Solution<'_> {
+        let p = &self.path;
+        match &self.full {
+            None => Solution {
+                qdd: p.qdd(),
+                lambda: p.lambda(),
+                phi_q: p.phi_q(),
+                pivots: p.pivots(),
+            },
+            Some((_, f)) => Solution {
+                qdd: &f.qdd,
+                lambda: &f.lambda,
+                phi_q: &f.phi_q,
+                pivots: p.pivots(),
+            },
+        }
+    }
+
+    /// The energies at the state, `work` done so far: what an [`EnergyMeter`] would record,
+    /// from the M and λ the path solved with.
+    fn energy(
+        &self,
+        mech: &dyn Mechanism,
+        work: f64,
+        phi_t: &mut [f64],
+    ) -> Result<EnergySample, Error> {
+        let (t, q, qd) = (self.t(), self.q(), self.qd());
+        let mass = self
+            .full
+            .as_ref()
+            .map_or(self.path.mass(), |(_, f)| f.mass());
+        let sample = EnergySample {
+            kinetic: kinetic_energy(mech.info(), mass, qd),
+            potential: mech.potential(q),
+            work,
+            power: energy::power(&mech, t, q, qd, self.lambda(), phi_t),
+        };
+        if !(sample.kinetic.is_finite() && sample.potential.is_finite() && sample.power.is_finite())
+        {
+            return Err(ScenarioError::Runtime(symbody_runtime::Error::NotFinite {
+                time: t,
+                what: "energy or power",
+            }));
+        }
+        Ok(sample)
+    }
+
     /// The full model's drift at the state (on the reduced model, at the state read back).
     fn residuals(&mut self) -> Residuals {
         match &mut self.full {
@@ -609,10 +666,8 @@ fn follow_path(
     rec: &mut Recording,
     obs: &mut dyn Observer,
 ) -> Result<(), Error> {
-    use symbody_runtime::{energy, quadrature};
     let info = mech.info();
     let mut path = Followed::new(mech, reduced)?;
-    let mut meter: EnergyMeter = EnergyMeter::new(info)?;
     let modes = mode_watch(mech, path.q())?;
     let mut phi_t = vec![0.0; info.n_constraints];
     let (mut work, mut power_before, mut t_before) = (0.0, 0.0, 0.0);
@@ -636,7 +691,9 @@ fn follow_path(
         if let Some(w) = &modes {
             w.check(path.q(), path.t())?;
         }
-        let mut sample = meter.record(&mech, path.t(), path.q(), path.qd())?;
+        // The path solved q̈ and λ at this state: the energies and reactions are read from
+        // its solution (an energy meter would solve the same system again).
+        let mut sample = path.energy(mech, 0.0, &mut phi_t)?;
         if k > 0 {
             work += quadrature::lobatto4(
                 path.t() - t_before,
@@ -648,7 +705,7 @@ fn follow_path(
         let residuals = path.residuals();
         record(
             rec,
-            &meter,
+            path.solution(),
             residuals,
             (path.t(), path.q(), path.qd()),
             sample,
@@ -775,17 +832,38 @@ pub(crate) fn solve_settings(cross_singular: bool) -> KinematicSettings {
     }
 }
 
-/// Appends the output `(t, q, q̇)`; the meter has just recorded this state.
+/// The solution of `[M Φqᵀ; Φq 0][q̈; λ] = [Q; γ]` at an output's state, and the Φq it was
+/// solved with: what the output's reactions are read from.
+struct Solution<'a> {
+    qdd: &'a [f64],
+    lambda: &'a [f64],
+    phi_q: &'a [f64],
+    pivots: Option<Pivots>,
+}
+
+impl<'a> Solution<'a> {
+    /// What `meter` solved at the state it has just recorded.
+    fn of(meter: &'a EnergyMeter) -> Self {
+        Solution {
+            qdd: meter.qdd(),
+            lambda: meter.lambda(),
+            phi_q: meter.phi_q(),
+            pivots: meter.pivots(),
+        }
+    }
+}
+
+/// Appends the output `(t, q, q̇)` with its solution `s`.
 fn record(
     rec: &mut Recording,
-    meter: &EnergyMeter,
+    s: Solution<'_>,
     r: Residuals,
     (t, q, qd): (f64, &[f64], &[f64]),
     sample: EnergySample,
 ) -> Result<(), Error> {
     let info = rec.info;
-    let (lambda, phi_q) = (meter.lambda(), meter.phi_q());
-    rec.pivots.push(meter.pivots().unwrap_or_default());
+    let (lambda, phi_q) = (s.lambda, s.phi_q);
+    rec.pivots.push(s.pivots.unwrap_or_default());
     rec.max_phi = rec.max_phi.max(r.position);
     rec.max_velocity_residual = rec.max_velocity_residual.max(r.velocity);
     for b in info
@@ -823,7 +901,7 @@ fn record(
     rec.q.push(q.to_vec());
     rec.qd.push(qd.to_vec());
     if rec.accelerations {
-        rec.qdd.push(meter.qdd().to_vec());
+        rec.qdd.push(s.qdd.to_vec());
     }
     rec.energy.push(sample);
     Ok(())
