@@ -33,7 +33,7 @@ fn body(rec: &Recording, name: &str) -> usize {
 
 /// Largest |ΔT + ΔV − W| over the run, relative to the energy scale max(|T| + |V|).
 fn relative_energy_error(rec: &Recording) -> f64 {
-    let (d, scale) = rec.energy_balance();
+    let (d, scale) = rec.energy_balance().expect("the work is integrated");
     d / scale
 }
 
@@ -90,7 +90,7 @@ fn driven_energy(rec: &Recording, rate: f64) -> DrivenEnergy {
         work[k] = work[k - 4]
             + 2.0 * dt / 45.0 * (7.0 * p[0] + 32.0 * p[1] + 12.0 * p[2] + 32.0 * p[3] + 7.0 * p[4]);
     }
-    let (_, scale) = rec.energy_balance();
+    let (_, scale) = rec.energy_balance().expect("the work is integrated");
     let e0 = rec.energy[0];
     let (mut independent, mut recorded) = (0.0f64, 0.0f64);
     for k in (4..n).step_by(4) {

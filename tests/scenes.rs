@@ -298,3 +298,63 @@ fn tolerances_in_a_scene_or_on_the_command_line_control_the_step() {
     assert!(ok && !stdout.contains("step sizes"), "{stdout}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A kinematic scene reads each output's reactions and efforts from the path's own solution
+/// of the saddle-point system: they must be what that system, solved afresh at the recorded
+/// `(q, q̇)` by an energy meter, gives. A scene without energy solves only at its outputs
+/// (one factorization each, plus any full Newton iterations) and reports no energy balance;
+/// with energy, the path also solves at the quadrature's two interior times and the balance
+/// is integrated.
+#[test]
+fn kinematic_scenes_record_their_states_reactions_and_solve_only_what_they_write() {
+    use symbody_runtime::{driver_effort, joint_wrench, EnergyMeter};
+    for (file, energy) in [
+        ("scenes/four_bar.toml", true),
+        ("scenes/slider_crank.toml", false),
+    ] {
+        let s = load(&root().join(file));
+        assert_eq!(s.energy, energy, "{file}");
+        let entry = symbody_benchmark_mechanisms::find(s.mechanism).unwrap();
+        let (choice, outcome) = scene::run(&s, entry).unwrap();
+        assert!(matches!(choice, PathChoice::Kinematic { .. }), "{file}");
+        let Outcome::Tables(rec) = outcome else {
+            panic!("{file} writes tables")
+        };
+        let stats = rec.kinematic.unwrap();
+        let outputs = rec.t.len();
+        let interior = if energy { 2 * (outputs - 1) } else { 0 };
+        assert_eq!(
+            stats.factorizations,
+            outputs + interior + stats.newton_iterations,
+            "{file}: {stats:?}"
+        );
+        assert_eq!(rec.energy_balance().is_some(), energy, "{file}");
+
+        let mech = symbody::generic::mechanism(entry, Some(s.formulation)).unwrap();
+        let info = mech.info();
+        let mut meter: EnergyMeter = EnergyMeter::new(info).unwrap();
+        let mut worst = 0.0f64;
+        let mut scale = 0.0f64;
+        for k in 0..outputs {
+            meter
+                .record(&mech, rec.t[k], &rec.q[k], &rec.qd[k])
+                .unwrap();
+            for (i, &j) in rec.joints.iter().enumerate() {
+                let fresh =
+                    joint_wrench(info, &rec.q[k], meter.phi_q(), meter.lambda(), j).unwrap();
+                let recorded = rec.wrenches[k][i];
+                for (a, b) in fresh.force.iter().zip(&recorded.force) {
+                    worst = worst.max((a - b).abs());
+                    scale = scale.max(a.abs());
+                }
+            }
+            for (i, &j) in rec.drivers.iter().enumerate() {
+                let fresh = driver_effort(info, meter.lambda(), j).unwrap();
+                worst = worst.max((fresh - rec.efforts[k][i]).abs());
+                scale = scale.max(fresh.abs());
+            }
+        }
+        assert!(scale > 0.0, "{file}: nothing to compare");
+        assert!(worst <= 1e-12 * scale, "{file}: {worst:e} of {scale:e}");
+    }
+}

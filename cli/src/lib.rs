@@ -753,16 +753,17 @@ fn report_named(
         rec.max_phi,
         rec.max_velocity_residual
     );
-    let (drift, scale) = rec.energy_balance();
-    if scale > 0.0 {
-        say!(
+    match rec.energy_balance() {
+        Some((drift, scale)) if scale > 0.0 => say!(
             "  energy balance   max |dT + dV - W| = {drift:.3e} J on a scale of {scale:.4} J ({:.1e})",
             drift / scale
-        );
-    } else {
-        say!(
+        ),
+        Some((drift, _)) => say!(
             "  energy balance   no energy anywhere in the run (max |dT + dV - W| = {drift:.1e} J)"
-        );
+        ),
+        None => say!(
+            "  energy balance   not computed: the scene asks for no energy (energy = false), and the kinematic path integrates the work only for it"
+        ),
     }
     if let Some(w) = rec.energy_warning("--step", "--rtol") {
         say!("  warning: {w}");

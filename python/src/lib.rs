@@ -317,9 +317,10 @@ fn recording_summary<'py>(
         rec.max_phi,
         rec.max_velocity_residual,
     )?;
-    let (drift, scale) = rec.energy_balance();
-    d.set_item("energy_drift", drift)?;
-    d.set_item("energy_scale", scale)?;
+    // None where the work was not integrated (a kinematic scene with energy = false).
+    let balance = rec.energy_balance();
+    d.set_item("energy_drift", balance.map(|b| b.0))?;
+    d.set_item("energy_scale", balance.map(|b| b.1))?;
     let windows = PyList::empty(py);
     for w in rec.ill_conditioned() {
         let item = PyDict::new(py);

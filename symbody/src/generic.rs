@@ -123,6 +123,10 @@ pub struct Recording {
     pub energy: Vec<EnergySample>,
     /// Whether `energy.csv` is written (the samples are kept for the summary either way).
     pub energy_table: bool,
+    /// Whether the samples' `work` was integrated (NaN where not), and so the energy
+    /// balance: always when the run integrates; on the kinematic path only with
+    /// `energy_table`, as its quadrature solves the path at two more times per output.
+    pub work_integrated: bool,
     /// The integrator's counters over the run (zero on the kinematic path).
     pub stats: Stats,
     /// The kinematic path's counters when the run was not integrated ([`run_kinematic`]).
@@ -216,7 +220,7 @@ impl Recording {
     /// [`ENERGY_WARNING`] of the energy scale (the steps were too long for the motion),
     /// naming the caller's settings for the step and for step-size control.
     pub fn energy_warning(&self, step: &str, rtol: &str) -> Option<String> {
-        let (drift, scale) = self.energy_balance();
+        let (drift, scale) = self.energy_balance()?;
         (scale > 0.0 && drift > ENERGY_WARNING * scale).then(|| {
             format!(
                 "the energy balance is off by {:.1}% of the energy scale: the steps are too long for this motion, and the results are not to be trusted; run again with a shorter {step}, or with {rtol} (step-size control)",
@@ -225,15 +229,19 @@ impl Recording {
         })
     }
 
-    /// Largest |ΔT + ΔV − W| since the start, and the energy scale max(|T| + |V|).
-    pub fn energy_balance(&self) -> (f64, f64) {
+    /// Largest |ΔT + ΔV − W| since the start, and the energy scale max(|T| + |V|); `None`
+    /// where the work was not integrated ([`Recording::work_integrated`]).
+    pub fn energy_balance(&self) -> Option<(f64, f64)> {
+        if !self.work_integrated {
+            return None;
+        }
         let b0 = self.energy.first().map_or(0.0, EnergySample::balance);
-        self.energy.iter().fold((0.0f64, 0.0f64), |(d, s), e| {
+        Some(self.energy.iter().fold((0.0f64, 0.0f64), |(d, s), e| {
             (
                 d.max((e.balance() - b0).abs()),
                 s.max(e.kinetic.abs() + e.potential.abs()),
             )
-        })
+        }))
     }
 }
 
@@ -457,6 +465,7 @@ fn integrate(
     let mut watch = ResidualWatch::new(info);
     let modes = mode_watch(mech, &q)?;
     meter.advance(&mech, it.t(), &q, &qd)?;
+    rec.work_integrated = true;
     for k in 0..=n_out {
         let t_out = (k as f64 * opts.output_step).min(t_end);
         // One accepted step per call, so the meter sees every step.
@@ -670,12 +679,18 @@ fn follow_path(
     let mut path = Followed::new(mech, reduced)?;
     let modes = mode_watch(mech, path.q())?;
     let mut phi_t = vec![0.0; info.n_constraints];
+    rec.work_integrated = rec.energy_table;
     let (mut work, mut power_before, mut t_before) = (0.0, 0.0, 0.0);
     for k in 0..=n_out {
         let mut inside = [0.0; 2];
         if k > 0 {
             let t = (k as f64 * opts.output_step).min(t_end);
-            for (p, node) in inside.iter_mut().zip(quadrature::LOBATTO4_NODES) {
+            let nodes = if rec.work_integrated {
+                quadrature::LOBATTO4_NODES.as_slice()
+            } else {
+                &[]
+            };
+            for (p, node) in inside.iter_mut().zip(nodes) {
                 advance(&mut path, t_before + node * (t - t_before), rec)?;
                 *p = energy::power(
                     &mech,
@@ -694,7 +709,9 @@ fn follow_path(
         // The path solved q̈ and λ at this state: the energies and reactions are read from
         // its solution (an energy meter would solve the same system again).
         let mut sample = path.energy(mech, 0.0, &mut phi_t)?;
-        if k > 0 {
+        if !rec.work_integrated {
+            work = f64::NAN;
+        } else if k > 0 {
             work += quadrature::lobatto4(
                 path.t() - t_before,
                 [power_before, inside[0], inside[1], sample.power],
@@ -756,6 +773,7 @@ impl Recording {
             drivers: of_kind(|k| k == JointKind::Driver),
             efforts: Vec::new(),
             energy_table: true,
+            work_integrated: false,
             energy: Vec::new(),
             stats: Stats::default(),
             kinematic: None,

@@ -448,7 +448,10 @@ fn metrics_of(rec: &Recording, metrics: &[Metric]) -> Result<Vec<f64>, String> {
                 max_abs(&mut rec.wrenches.iter().map(|w| norm(w[j].moment)))
             }
             Metric::EnergyBalance => {
-                let (drift, scale) = rec.energy_balance();
+                let (drift, scale) = rec.energy_balance().ok_or(
+                    "the energy balance is not computed when the scene sets energy = false \
+                     (the kinematic path then integrates no work): set energy = true",
+                )?;
                 if scale > 0.0 {
                     drift / scale
                 } else {

@@ -84,7 +84,8 @@ class Results(Dict[str, Table]):
     simplified-Newton corrections), ``factorizations``, ``wall_time`` (s), ``max_phi`` (the
     largest |Φ| at the outputs), ``max_velocity_residual``, the energy balance
     ``energy_drift`` (the largest |ΔT + ΔV − W| since the start, J) on a scale of
-    ``energy_scale`` (the largest |T| + |V|, J), and ``ill_conditioned``: the windows of
+    ``energy_scale`` (the largest |T| + |V|, J; both ``None`` for a kinematic scene with
+    ``energy = false``, which integrates no work), and ``ill_conditioned``: the windows of
     outputs near a singular position whose reactions amplify the motion's error, each a dict
     ``from``, ``to`` (s), ``outputs``, ``smallest`` (relative pivot), ``at`` (s),
     ``dropped`` (outputs at which dependent rows were dropped). The paper scenario's tables
