@@ -207,8 +207,8 @@ pub fn run_observed(
 /// [`run_observed`] for `files = "paper"` (the paper scenario, which takes no observer). The
 /// kinematic path starts while the recording thread makes the choice, which usually picks
 /// it, and is given up when the choice is integration (two threads, not three: on two
-/// cores a third took turns with the path); the wall time spans both. With `reduce`, the path follows the
-/// generated reduced model where there is one.
+/// cores a third took turns with the path); the wall time spans both. With `reduce`, the
+/// path follows the generated reduced model where there is one.
 fn run_paper(
     scene: &Scene,
     entry: &Entry,
