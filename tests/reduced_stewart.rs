@@ -172,6 +172,53 @@ fn the_kinematic_path_on_the_reduced_model_records_the_full_models_series() {
     );
 }
 
+/// Work given to `kinematic_beside` runs on the recording thread before it records, and its
+/// answer comes back: when it sets `stop` (a choice of integration), the path stops at its
+/// next output with `Interrupted`; when it does not, the run is the one `kinematic_until`
+/// makes, output for output.
+#[test]
+fn work_beside_the_path_runs_once_and_may_stop_it() {
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use symbody::scenario::{kinematic_beside, kinematic_until, Options, ScenarioError};
+    let opts = Options {
+        t_end: 0.5,
+        output_step: 0.01,
+        ..Options::default()
+    };
+    let reduced = Some((&reduced::Exact as _, &reduced::REDUCTION));
+    let stop = AtomicBool::new(false);
+    let mut calls = 0;
+    let (run, answer) = kinematic_beside(Exact, reduced, &opts, &stop, || {
+        calls += 1;
+        42
+    });
+    let (run, alone) = (
+        run.unwrap(),
+        kinematic_until(Exact, reduced, &opts, &stop).unwrap(),
+    );
+    assert_eq!((calls, answer), (1, 42));
+    assert_eq!(run.t, alone.t);
+    assert_eq!(run.platform, alone.platform);
+    assert_eq!(run.actuators, alone.actuators);
+
+    // More outputs than the recorder's queue holds (32 batches of 16): the path cannot finish
+    // before the recorder takes a batch, which it does only after `beside` has set `stop`,
+    // so the path sees it whatever the threads' order.
+    let long = Options {
+        t_end: 10.0,
+        ..opts
+    };
+    let (run, answer) = kinematic_beside(Exact, reduced, &long, &stop, || {
+        stop.store(true, Ordering::Relaxed);
+        "integrate"
+    });
+    assert_eq!(answer, "integrate");
+    match run {
+        Err(ScenarioError::Interrupted { time }) => assert!(time < long.t_end, "{time}"),
+        other => panic!("{:?}", other.map(|r| r.t.len())),
+    }
+}
+
 /// `Options::reduce` (scenes: `[solver] reduce = "auto"`): a generic run integrates the
 /// reduced model of every mechanism that has one, or follows it by the kinematic path, and
 /// records the same series as the full model's run with the same settings, read back at
