@@ -629,14 +629,9 @@ impl Followed {
         }
     }
 
-    /// The energies at the state, `work` done so far: what an [`EnergyMeter`] would record,
-    /// from the M and λ the path solved with.
-    fn energy(
-        &self,
-        mech: &dyn Mechanism,
-        work: f64,
-        phi_t: &mut [f64],
-    ) -> Result<EnergySample, Error> {
+    /// The energies and power at the state, what an [`EnergyMeter`] would record, from the M
+    /// and λ the path solved with; the work, integrated over the outputs, is the caller's.
+    fn energy(&self, mech: &dyn Mechanism, phi_t: &mut [f64]) -> Result<EnergySample, Error> {
         let (t, q, qd) = (self.t(), self.q(), self.qd());
         let mass = self
             .full
@@ -645,7 +640,7 @@ impl Followed {
         let sample = EnergySample {
             kinetic: kinetic_energy(mech.info(), mass, qd),
             potential: mech.potential(q),
-            work,
+            work: f64::NAN,
             power: energy::power(&mech, t, q, qd, self.lambda(), phi_t),
         };
         if !(sample.kinetic.is_finite() && sample.potential.is_finite() && sample.power.is_finite())
@@ -680,7 +675,9 @@ fn follow_path(
     let modes = mode_watch(mech, path.q())?;
     let mut phi_t = vec![0.0; info.n_constraints];
     rec.work_integrated = rec.energy_table;
-    let (mut work, mut power_before, mut t_before) = (0.0, 0.0, 0.0);
+    // Without the quadrature the work stays NaN: never integrated, never shown.
+    let mut work = if rec.work_integrated { 0.0 } else { f64::NAN };
+    let (mut power_before, mut t_before) = (0.0, 0.0);
     for k in 0..=n_out {
         let mut inside = [0.0; 2];
         if k > 0 {
@@ -708,10 +705,8 @@ fn follow_path(
         }
         // The path solved q̈ and λ at this state: the energies and reactions are read from
         // its solution (an energy meter would solve the same system again).
-        let mut sample = path.energy(mech, 0.0, &mut phi_t)?;
-        if !rec.work_integrated {
-            work = f64::NAN;
-        } else if k > 0 {
+        let mut sample = path.energy(mech, &mut phi_t)?;
+        if k > 0 {
             work += quadrature::lobatto4(
                 path.t() - t_before,
                 [power_before, inside[0], inside[1], sample.power],
