@@ -7,6 +7,7 @@ use plotters::prelude::*;
 use plotters::style::FontStyle;
 use plotters_backend::text_anchor::{HPos, VPos};
 use plotters_backend::{BackendColor, BackendCoord, BackendTextStyle, DrawingErrorKind};
+use std::borrow::Cow;
 use std::path::{Path, PathBuf};
 use std::sync::{Once, OnceLock};
 use symbody::fk::Sample;
@@ -26,7 +27,7 @@ pub fn register_font() {
 
 /// One panel: a y-axis label and named series over the common time axis.
 pub struct Panel<'a> {
-    pub y_label: &'a str,
+    pub y_label: Cow<'a, str>,
     pub series: Vec<(&'a str, Vec<f64>)>,
 }
 
@@ -283,7 +284,7 @@ pub fn draw_against(
             chart
                 .configure_mesh()
                 .x_desc(x_label)
-                .y_desc(panel.y_label)
+                .y_desc(&*panel.y_label)
                 .label_style(("sans-serif", 15))
                 .axis_desc_style(("sans-serif", 17))
                 .draw()
@@ -472,57 +473,96 @@ pub fn paper_figures(run: &Run, dir: &Path) -> Result<Vec<PathBuf>, String> {
     std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     let col = |k: usize| run.platform.iter().map(|p| p[k]).collect::<Vec<f64>>();
     let force = |c: usize| run.upper.iter().map(|f| f[0][c]).collect::<Vec<f64>>();
-    let mut files = Vec::new();
-    let mut out = |name: &str, title: &str, panels: Vec<Panel<'_>>| -> Result<(), String> {
-        let p = dir.join(name);
-        draw(&p, title, &run.t, &panels)?;
-        files.push(p);
-        Ok(())
-    };
-    out(
-        "fig2_platform_position.png",
-        "Fig. 2: platform centre of mass position",
-        vec![
-            Panel {
-                y_label: "X (m)",
-                series: vec![("X", col(0))],
-            },
-            Panel {
-                y_label: "Y (m)",
-                series: vec![("Y", col(1))],
-            },
-            Panel {
-                y_label: "Z (m)",
-                series: vec![("Z", col(2))],
-            },
-        ],
-    )?;
-    out(
-        "fig3_platform_orientation.png",
-        "Fig. 3: platform orientation (Rz·Ry·Rx Euler angles)",
-        vec![Panel {
-            y_label: "angle (rad)",
-            series: vec![
-                ("θ about X", col(3)),
-                ("β about Y", col(4)),
-                ("γ about Z", col(5)),
+    let mut figures = vec![
+        Figure {
+            path: dir.join("fig2_platform_position.png"),
+            title: "Fig. 2: platform centre of mass position".into(),
+            panels: vec![
+                Panel {
+                    y_label: "X (m)".into(),
+                    series: vec![("X", col(0))],
+                },
+                Panel {
+                    y_label: "Y (m)".into(),
+                    series: vec![("Y", col(1))],
+                },
+                Panel {
+                    y_label: "Z (m)".into(),
+                    series: vec![("Z", col(2))],
+                },
             ],
-        }],
-    )?;
+        },
+        Figure {
+            path: dir.join("fig3_platform_orientation.png"),
+            title: "Fig. 3: platform orientation (Rz·Ry·Rx Euler angles)".into(),
+            panels: vec![Panel {
+                y_label: "angle (rad)".into(),
+                series: vec![
+                    ("θ about X", col(3)),
+                    ("β about Y", col(4)),
+                    ("γ about Z", col(5)),
+                ],
+            }],
+        },
+    ];
     for (k, axis) in ["X", "Y", "Z"].iter().enumerate() {
-        out(
-            &format!("fig{}_upper1_force_{}.png", 4 + k, axis.to_lowercase()),
-            &format!(
+        figures.push(Figure {
+            path: dir.join(format!(
+                "fig{}_upper1_force_{}.png",
+                4 + k,
+                axis.to_lowercase()
+            )),
+            title: format!(
                 "Fig. {}: {axis} reaction force on the platform at leg 1's upper joint",
                 4 + k
             ),
-            vec![Panel {
-                y_label: &format!("F{} (N)", axis.to_lowercase()),
+            panels: vec![Panel {
+                y_label: format!("F{} (N)", axis.to_lowercase()).into(),
                 series: vec![(axis, force(k))],
             }],
-        )?;
+        });
     }
-    Ok(files)
+    draw_all(&run.t, figures)
+}
+
+/// One figure of [`draw_all`]: its file, title and panels.
+pub struct Figure<'a> {
+    pub path: PathBuf,
+    pub title: String,
+    pub panels: Vec<Panel<'a>>,
+}
+
+/// Draws each figure over the common time axis `t`, on as many threads as there are cores
+/// and figures: each figure is its own canvas and file, and rasterising and compressing
+/// them is most of a run command's time on scenes with many figures. The paths come back
+/// in the figures' order; on failure, the first failing figure's error in that order.
+pub fn draw_all(t: &[f64], figures: Vec<Figure<'_>>) -> Result<Vec<PathBuf>, String> {
+    register_font();
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(figures.len());
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let work = || {
+        let mut done = Vec::new();
+        loop {
+            let k = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+            let Some(f) = figures.get(k) else { break done };
+            done.push((k, draw(&f.path, &f.title, t, &f.panels)));
+        }
+    };
+    let mut drawn = std::thread::scope(|scope| {
+        let helpers: Vec<_> = (1..threads).map(|_| scope.spawn(work)).collect();
+        let mut drawn = work();
+        for h in helpers {
+            drawn.extend(h.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
+        }
+        drawn
+    });
+    drawn.sort_by_key(|&(k, _)| k);
+    for (_, r) in drawn {
+        r?;
+    }
+    Ok(figures.into_iter().map(|f| f.path).collect())
 }
 
 /// One line of a log-log chart: a name and its `(x, y)` points (non-positive points are
@@ -634,52 +674,41 @@ pub fn draw_log_log(
 /// panels of its centre of mass) for every recorded body.
 pub fn write_plots(rec: &Recording, dir: &Path) -> Result<Vec<PathBuf>, String> {
     let info = rec.info;
-    let mut files = Vec::new();
+    let mut figures = Vec::new();
     if !rec.drivers.is_empty() {
-        let labels: Vec<String> = rec
-            .drivers
-            .iter()
-            .map(|&j| format!("{} ({})", info.joints[j].name, info.joints[j].effort_unit))
-            .collect();
-        let panels: Vec<Panel> = labels
-            .iter()
-            .enumerate()
-            .map(|(d, label)| Panel {
-                y_label: label,
-                series: vec![("effort", rec.efforts.iter().map(|e| e[d]).collect())],
-            })
-            .collect();
-        let path = dir.join("drivers.png");
-        draw(
-            &path,
-            &format!("{}: driver efforts", info.name),
-            &rec.t,
-            &panels,
-        )?;
-        files.push(path);
+        figures.push(Figure {
+            path: dir.join("drivers.png"),
+            title: format!("{}: driver efforts", info.name),
+            panels: rec
+                .drivers
+                .iter()
+                .enumerate()
+                .map(|(d, &j)| Panel {
+                    y_label: format!("{} ({})", info.joints[j].name, info.joints[j].effort_unit)
+                        .into(),
+                    series: vec![("effort", rec.efforts.iter().map(|e| e[d]).collect())],
+                })
+                .collect(),
+        });
     }
     for &b in &rec.bodies {
         let body = &info.bodies[b];
         // One panel per axis: a coordinate that barely moves keeps its own scale instead
         // of being flattened by the others' range.
-        let panels: Vec<Panel> = ["X (m)", "Y (m)", "Z (m)"]
-            .into_iter()
-            .enumerate()
-            .map(|(c, label)| Panel {
-                y_label: label,
-                series: vec![(label, rec.poses.iter().map(|p| p[b].0[c]).collect())],
-            })
-            .collect();
-        let path = dir.join(format!("position_{}.png", body.name));
-        draw(
-            &path,
-            &format!("{}: centre of mass of {}", info.name, body.name),
-            &rec.t,
-            &panels,
-        )?;
-        files.push(path);
+        figures.push(Figure {
+            path: dir.join(format!("position_{}.png", body.name)),
+            title: format!("{}: centre of mass of {}", info.name, body.name),
+            panels: ["X (m)", "Y (m)", "Z (m)"]
+                .into_iter()
+                .enumerate()
+                .map(|(c, label)| Panel {
+                    y_label: label.into(),
+                    series: vec![(label, rec.poses.iter().map(|p| p[b].0[c]).collect())],
+                })
+                .collect(),
+        });
     }
-    Ok(files)
+    draw_all(&rec.t, figures)
 }
 
 /// `assembly_modes_over_time.png`: the number of real assembly modes, the distance to the
@@ -693,15 +722,15 @@ pub fn modes_over_time(dir: &Path, samples: &[Sample]) -> Result<String, String>
         &t,
         &[
             Panel {
-                y_label: "real modes",
+                y_label: "real modes".into(),
                 series: vec![("real assembly modes", col(|s| s.real as f64))],
             },
             Panel {
-                y_label: "distance (m)",
+                y_label: "distance (m)".into(),
                 series: vec![("to the nearest other mode", col(|s| s.nearest))],
             },
             Panel {
-                y_label: "log10 condition",
+                y_label: "log10 condition".into(),
                 series: vec![
                     ("current mode", col(|s| s.condition.log10())),
                     ("nearest mode", col(|s| s.nearest_condition.log10())),
@@ -715,6 +744,48 @@ pub fn modes_over_time(dir: &Path, samples: &[Sample]) -> Result<String, String>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Figures drawn on several threads come back in their own order, each file as the
+    /// same figure drawn alone makes it, and the error is the first failing figure's in
+    /// that order (two figures fail here, one on each side of a good one).
+    #[test]
+    fn figures_drawn_together_are_the_figures_drawn_alone_in_order() {
+        let dir = std::env::temp_dir().join(format!("symbody-draw-all-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let t: Vec<f64> = (0..50).map(|k| k as f64 * 0.1).collect();
+        let figure = |name: &str, k: f64| Figure {
+            path: dir.join(name),
+            title: format!("figure {name}"),
+            panels: vec![Panel {
+                y_label: format!("y{k}").into(),
+                series: vec![("y", t.iter().map(|x| (k * x).sin()).collect())],
+            }],
+        };
+        let names = ["a.png", "b.png", "c.png", "d.png", "e.png"];
+        let together = names.iter().zip(1..).map(|(n, k)| figure(n, k as f64));
+        let paths = draw_all(&t, together.collect()).unwrap();
+        assert_eq!(paths, names.map(|n| dir.join(n)));
+        for (n, k) in names.iter().zip(1..) {
+            let alone = dir.join(format!("alone_{n}"));
+            let f = figure(n, k as f64);
+            draw(&alone, &f.title, &t, &f.panels).unwrap();
+            assert_eq!(
+                std::fs::read(&alone).unwrap(),
+                std::fs::read(dir.join(n)).unwrap()
+            );
+        }
+        let missing = dir.join("no such directory");
+        let mut failing: Vec<Figure> = names
+            .iter()
+            .zip(1..)
+            .map(|(n, k)| figure(n, k as f64))
+            .collect();
+        failing[1].path = missing.join("first.png");
+        failing[3].path = missing.join("second.png");
+        let err = draw_all(&t, failing).unwrap_err();
+        assert!(err.contains("first.png"), "{err}");
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
 
     /// The widest run of blank pixel columns between the first and last inked column of
     /// `text` drawn at (10, 10) of a white canvas by `draw`.

@@ -172,7 +172,7 @@ fn plot(
             let mut panels = Vec::new();
             if !drivers.is_empty() {
                 panels.push(crate::plot::Panel {
-                    y_label: "largest |effort| over the run",
+                    y_label: "largest |effort| over the run".into(),
                     series: drivers
                         .iter()
                         .map(|d| (d.as_str(), series(&metric(d))))
@@ -181,7 +181,7 @@ fn plot(
             }
             for o in others {
                 panels.push(crate::plot::Panel {
-                    y_label: o,
+                    y_label: o.as_str().into(),
                     series: vec![(o.as_str(), series(&metric(o)))],
                 });
             }
