@@ -215,7 +215,9 @@ fn png(
     paint: impl FnOnce(&DrawingArea<Backend<'_>, Shift>) -> Result<(), String>,
 ) -> Result<(), String> {
     let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
-    let mut pixels = vec![0u8; size.0 as usize * size.1 as usize * 3];
+    // White from the start, the background of every figure: plotters' fill would blend
+    // each pixel of the canvas in turn.
+    let mut pixels = vec![255u8; size.0 as usize * size.1 as usize * 3];
     {
         let root = Backend(BitMapBackend::with_buffer(&mut pixels, size)).into_drawing_area();
         paint(&root)?;
@@ -247,7 +249,6 @@ pub fn draw_against(
     let height = 260 * panels.len() as u32 + 60;
     let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
     png(path, (900, height), |root| {
-        root.fill(&WHITE).map_err(|e| err(&e))?;
         let root = root
             .titled(title, ("sans-serif", 24))
             .map_err(|e| err(&e))?;
@@ -377,7 +378,6 @@ pub fn draw_heat_maps(
     let err = |e: &dyn std::fmt::Display| format!("cannot draw {}: {e}", path.display());
     let (xe, ye) = (cell_edges(xs), cell_edges(ys));
     png(path, size, |root| {
-        root.fill(&WHITE).map_err(|e| err(&e))?;
         let root = root
             .titled(title, ("sans-serif", 24))
             .map_err(|e| err(&e))?;
@@ -607,7 +607,6 @@ pub fn draw_log_log(
     let ((x0, x1), (y0, y1)) = (range(|p| p.0), range(|p| p.1));
     // The chart on the left, the legend in its own column so it never hides data.
     png(path, (1240, 640), |root| {
-        root.fill(&WHITE).map_err(|e| err(&e))?;
         let (plot_area, legend_area) = root.split_horizontally(900);
         let mut chart = ChartBuilder::on(&plot_area)
             .caption(title, ("sans-serif", 22))
