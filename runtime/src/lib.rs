@@ -71,7 +71,7 @@ pub use pose::{
     angular_velocity, angular_velocity_jacobian, body_pose, point_world, rotation_matrix,
 };
 pub use reactions::{
-    actuator_force, driver_effort, joint_force, joint_wrench, ForceOnBody, Wrench,
+    actuator_force, driver_effort, joint_force, joint_wrench, ForceOnBody, JointWrenches, Wrench,
 };
 pub use reduction::{FullState, Reduction, Substitution};
 pub use registry::{source_hash, Entry, Origin, Registry};

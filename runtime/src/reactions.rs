@@ -9,10 +9,10 @@
 //! component of `g_rot` along `e`, which the normalization row absorbs, is discarded since
 //! `E e = 0`).
 
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::{Matrix3, Matrix3x4, Vector3};
 
 use crate::error::{check_len, Error};
-use crate::mechanism::{JointInfo, JointKind, MechanismInfo, Rotation};
+use crate::mechanism::{BodyInfo, JointInfo, JointKind, MechanismInfo, Rotation};
 use crate::pose;
 
 /// A force and a moment, global frame.
@@ -57,81 +57,224 @@ pub fn joint_wrench(
     check_len("q", info.n_coords, q.len())?;
     check_len("Φq nonzeros", info.phi_q_nnz(), phi_q.len())?;
     check_len("lambda", info.n_constraints, lambda.len())?;
-    let j = joint_info(info, joint)?;
-    if j.kind == JointKind::Normalization {
-        return Err(Error::InvalidIndex {
-            what: "joint",
-            index: joint,
-            reason: "a normalization row exerts no wrench",
-        });
+    let end = JointEnd::new(info, joint)?;
+    // g = −(Φ^rows_{q_i})ᵀ λ^rows on the body's coordinates.
+    let mut g = [0.0; 7];
+    for k in rows_nonzeros(info, &end.rows) {
+        let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
+        if end.rows.contains(&r) && end.cols.contains(&c) {
+            g[c - end.cols.start] -= phi_q[k] * lambda[r];
+        }
     }
-    let (body, on_ground) = match (j.body1, j.body2) {
-        (Some(b), _) => (b, false),
-        (None, Some(b)) => (b, true),
-        (None, None) => {
+    end.wrench(&g, &Frame::new(end.body, q)?)
+}
+
+/// Every listed joint's wrench at a state, as [`joint_wrench`] gives each (the same
+/// operations in the same order, so the same bits), with each joint's Φq entries on its
+/// body found once and each body's frame computed once per state: for a recording that
+/// asks at every output (a Stewart platform's 18 joints share 13 bodies).
+#[derive(Debug, Clone)]
+pub struct JointWrenches {
+    info: &'static MechanismInfo,
+    joints: Vec<usize>,
+    /// Per joint: where its wrench acts, and `(nonzero, row, coordinate of the body)` of
+    /// its Φq entries on that body, in the pattern's order.
+    ends: Vec<(JointEnd<'static>, Vec<(usize, usize, usize)>)>,
+    /// Per body, its frame at the state of the current call, made on first use.
+    frames: Vec<Option<Result<Frame, Error>>>,
+}
+
+impl JointWrenches {
+    /// For `joints` (indices in `info.joints`), each refused as [`joint_wrench`] refuses it.
+    pub fn new(info: &'static MechanismInfo, joints: &[usize]) -> Result<Self, Error> {
+        let ends = joints
+            .iter()
+            .map(|&joint| {
+                let end = JointEnd::new(info, joint)?;
+                let terms = rows_nonzeros(info, &end.rows)
+                    .filter_map(|k| {
+                        let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
+                        (end.rows.contains(&r) && end.cols.contains(&c)).then_some((
+                            k,
+                            r,
+                            c - end.cols.start,
+                        ))
+                    })
+                    .collect();
+                Ok((end, terms))
+            })
+            .collect::<Result<_, Error>>()?;
+        Ok(JointWrenches {
+            info,
+            joints: joints.to_vec(),
+            ends,
+            frames: vec![None; info.bodies.len()],
+        })
+    }
+
+    /// The joints, in the order of the wrenches.
+    pub fn joints(&self) -> &[usize] {
+        &self.joints
+    }
+
+    /// The wrenches at the state whose `q`, Φq nonzeros and multipliers are given, one per
+    /// joint in order, written over `out`.
+    pub fn wrenches(
+        &mut self,
+        q: &[f64],
+        phi_q: &[f64],
+        lambda: &[f64],
+        out: &mut Vec<Wrench>,
+    ) -> Result<(), Error> {
+        let info = self.info;
+        check_len("q", info.n_coords, q.len())?;
+        check_len("Φq nonzeros", info.phi_q_nnz(), phi_q.len())?;
+        check_len("lambda", info.n_constraints, lambda.len())?;
+        self.frames.fill(None);
+        out.clear();
+        for (end, terms) in &self.ends {
+            let mut g = [0.0; 7];
+            for &(k, r, c) in terms {
+                g[c] -= phi_q[k] * lambda[r];
+            }
+            let frame = self.frames[end.index].get_or_insert_with(|| Frame::new(end.body, q));
+            out.push(end.wrench(&g, frame.as_ref().map_err(Clone::clone)?)?);
+        }
+        Ok(())
+    }
+}
+
+/// Where joint `joint`'s wrench acts: its body 1, or body 2 when body 1 is the ground (then
+/// the wrench is the one on the ground), with the joint's rows, the body's coordinates and
+/// the joint point on it.
+#[derive(Debug, Clone)]
+struct JointEnd<'a> {
+    body: &'a BodyInfo,
+    /// The body's index in `info.bodies`.
+    index: usize,
+    on_ground: bool,
+    rows: std::ops::Range<usize>,
+    cols: std::ops::Range<usize>,
+    point: &'a [f64; 3],
+}
+
+impl<'a> JointEnd<'a> {
+    fn new(info: &'a MechanismInfo, joint: usize) -> Result<Self, Error> {
+        let j = joint_info(info, joint)?;
+        if j.kind == JointKind::Normalization {
             return Err(Error::InvalidIndex {
                 what: "joint",
                 index: joint,
-                reason: "the joint connects no body",
-            })
+                reason: "a normalization row exerts no wrench",
+            });
         }
-    };
-    let b = info.bodies.get(body).ok_or(Error::InvalidIndex {
-        what: "body",
-        index: body,
-        reason: "the joint names a body that does not exist",
-    })?;
-    let rows = j.row_start..j.row_start + j.rows;
-    let cols = b.coord_offset..b.coord_offset + b.n_coords();
-    if cols.end > q.len() || rows.end > lambda.len() {
-        return Err(Error::InvalidIndex {
-            what: "joint",
-            index: joint,
-            reason: "its rows or its body's coordinates lie outside the mechanism",
-        });
-    }
-    // g = −(Φ^rows_{q_i})ᵀ λ^rows on the body's coordinates.
-    let mut g = [0.0; 7];
-    for k in rows_nonzeros(info, &rows) {
-        let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
-        if rows.contains(&r) && cols.contains(&c) {
-            g[c - cols.start] -= phi_q[k] * lambda[r];
-        }
-    }
-    let force = Vector3::new(g[0], g[1], g[2]);
-    let jw = pose::angular_velocity_jacobian(b, q)?;
-    let torque = match b.rotation {
-        Rotation::Euler => {
-            let h: Matrix3<f64> = jw.fixed_columns::<3>(0).into_owned();
-            let beta = q[b.coord_offset + 4];
-            let singular = Error::EulerSingularity {
-                time: f64::NAN,
-                body: b.name,
-                beta,
-            };
-            // det H = cos β: at the singularity the Euler-angle forces do not determine τ
-            // (one torque component does no work on any angle rate).
-            if !(beta.cos().abs() > SINGULAR_COS) {
-                return Err(singular);
+        let (index, on_ground) = match (j.body1, j.body2) {
+            (Some(b), _) => (b, false),
+            (None, Some(b)) => (b, true),
+            (None, None) => {
+                return Err(Error::InvalidIndex {
+                    what: "joint",
+                    index: joint,
+                    reason: "the joint connects no body",
+                })
             }
-            let ht_inv = h.transpose().try_inverse().ok_or(singular.clone())?;
-            ht_inv * Vector3::new(g[3], g[4], g[5])
+        };
+        let body = info.bodies.get(index).ok_or(Error::InvalidIndex {
+            what: "body",
+            index,
+            reason: "the joint names a body that does not exist",
+        })?;
+        let rows = j.row_start..j.row_start + j.rows;
+        let cols = body.coord_offset..body.coord_offset + body.n_coords();
+        if cols.end > info.n_coords || rows.end > info.n_constraints {
+            return Err(Error::InvalidIndex {
+                what: "joint",
+                index: joint,
+                reason: "its rows or its body's coordinates lie outside the mechanism",
+            });
         }
-        Rotation::Quaternion => {
-            // J_ω = 2E: τ = (2E)ᵀ⁺ g_rot = E g_rot / (2|e|²), since E Eᵀ = |e|² I.
-            let e = &q[b.coord_offset + 3..b.coord_offset + 7];
-            let e2: f64 = e.iter().map(|x| x * x).sum();
-            jw * nalgebra::Vector4::new(g[3], g[4], g[5], g[6]) / (4.0 * e2)
-        }
-    };
-    let r = Vector3::new(q[cols.start], q[cols.start + 1], q[cols.start + 2]);
-    let p = pose::point_world(Some(b), q, if on_ground { &j.point2 } else { &j.point1 })?;
-    let moment = torque - (p - r).cross(&force);
-    let sign = if on_ground { -1.0 } else { 1.0 };
-    Ok(Wrench {
-        force: (sign * force).into(),
-        moment: (sign * moment).into(),
-    })
+        let point = if on_ground { &j.point2 } else { &j.point1 };
+        Ok(JointEnd {
+            body,
+            index,
+            on_ground,
+            rows,
+            cols,
+            point,
+        })
+    }
+
+    /// The wrench from the generalized force `g` on the body's coordinates.
+    fn wrench(&self, g: &[f64; 7], frame: &Frame) -> Result<Wrench, Error> {
+        let force = Vector3::new(g[0], g[1], g[2]);
+        let torque = match &frame.torque {
+            Torque::Euler(ht_inv) => {
+                ht_inv.as_ref().map_err(Clone::clone)? * Vector3::new(g[3], g[4], g[5])
+            }
+            Torque::Quaternion(jw, e2) => {
+                jw * nalgebra::Vector4::new(g[3], g[4], g[5], g[6]) / (4.0 * e2)
+            }
+        };
+        let p = frame.r + frame.rotation * Vector3::from(*self.point);
+        let moment = torque - (p - frame.r).cross(&force);
+        let sign = if self.on_ground { -1.0 } else { 1.0 };
+        Ok(Wrench {
+            force: (sign * force).into(),
+            moment: (sign * moment).into(),
+        })
+    }
+}
+
+/// What a body's wrenches need of its pose: its reference point, its rotation and the map
+/// from the generalized force on its rotation coordinates to the torque.
+#[derive(Debug, Clone)]
+struct Frame {
+    r: Vector3<f64>,
+    rotation: Matrix3<f64>,
+    torque: Torque,
+}
+
+#[derive(Debug, Clone)]
+enum Torque {
+    /// `H⁻ᵀ`, or why the Euler angles do not determine the torque here.
+    Euler(Result<Matrix3<f64>, Error>),
+    /// `J_ω = 2E` and `|e|²`.
+    Quaternion(Matrix3x4<f64>, f64),
+}
+
+impl Frame {
+    fn new(b: &BodyInfo, q: &[f64]) -> Result<Self, Error> {
+        let o = b.coord_offset;
+        let jw = pose::angular_velocity_jacobian(b, q)?;
+        let torque = match b.rotation {
+            Rotation::Euler => {
+                let h: Matrix3<f64> = jw.fixed_columns::<3>(0).into_owned();
+                let beta = q[o + 4];
+                let singular = || Error::EulerSingularity {
+                    time: f64::NAN,
+                    body: b.name,
+                    beta,
+                };
+                // det H = cos β: at the singularity the Euler-angle forces do not determine
+                // τ (one torque component does no work on any angle rate).
+                Torque::Euler(if !(beta.cos().abs() > SINGULAR_COS) {
+                    Err(singular())
+                } else {
+                    h.transpose().try_inverse().ok_or_else(singular)
+                })
+            }
+            Rotation::Quaternion => {
+                // J_ω = 2E: τ = (2E)ᵀ⁺ g_rot = E g_rot / (2|e|²), since E Eᵀ = |e|² I.
+                let e2: f64 = q[o + 3..o + 7].iter().map(|x| x * x).sum();
+                Torque::Quaternion(jw, e2)
+            }
+        };
+        Ok(Frame {
+            r: Vector3::new(q[o], q[o + 1], q[o + 2]),
+            rotation: pose::rotation_matrix(b, q)?,
+            torque,
+        })
+    }
 }
 
 /// The effort of driver `joint` along its driven coordinate (force in N or torque in N·m,
@@ -631,6 +774,62 @@ mod tests {
             joint_wrench(&PROBE_EULER, &q, &[1.0; 6], &[1.0; 6], 0),
             Err(Error::EulerSingularity { .. })
         ));
+    }
+
+    /// Several joints' wrenches at once are each joint's own [`joint_wrench`], bit for bit:
+    /// bodies in Euler angles and in quaternions, seen from the body and from the ground,
+    /// two joints sharing one body (its frame made once per state), states that change
+    /// between calls; and what one refuses, the other refuses.
+    #[test]
+    fn joint_wrenches_are_each_joints_wrench() {
+        fn check(
+            all: &mut JointWrenches,
+            info: &MechanismInfo,
+            (q, pq, lam): (&[f64], &[f64], &[f64]),
+            out: &mut Vec<Wrench>,
+        ) {
+            all.wrenches(q, pq, lam, out).unwrap();
+            let each: Vec<Wrench> = all
+                .joints()
+                .iter()
+                .map(|&j| joint_wrench(info, q, pq, lam, j).unwrap())
+                .collect();
+            assert_eq!(*out, each);
+        }
+        let mut rng = Rng::new(7);
+        let mut out = Vec::new();
+        let mut euler = JointWrenches::new(&PROBE_EULER, &[0, 1]).unwrap();
+        let mut quat = JointWrenches::new(&PROBE_QUAT, &[1, 0]).unwrap();
+        let hinge = TwoBallHinge::new(0.0);
+        let mut balls = JointWrenches::new(hinge.info(), &[0, 1]).unwrap();
+        for _ in 0..5 {
+            for (all, info) in [(&mut euler, &PROBE_EULER), (&mut quat, &PROBE_QUAT)] {
+                let n = info.n_coords;
+                let mut random = || (0..n).map(|_| rng.uniform()).collect::<Vec<f64>>();
+                let (q, pq, lam) = (random(), random(), random());
+                check(all, info, (&q, &pq, &lam), &mut out);
+            }
+            let mut q = hinge.info().q0.to_vec();
+            q[5] = 2.0 * rng.uniform();
+            let (_, pq, lam) = moving_state(&hinge, &mut rng, &mut q);
+            check(&mut balls, hinge.info(), (&q, &pq, &lam), &mut out);
+        }
+        assert!(
+            JointWrenches::new(&PROBE_QUAT, &[0, 2]).is_err(),
+            "normalization row"
+        );
+        assert!(
+            JointWrenches::new(&PROBE_QUAT, &[3]).is_err(),
+            "no such joint"
+        );
+        let q = [0.0, 0.0, 0.0, 0.1, std::f64::consts::FRAC_PI_2, 0.2];
+        assert!(matches!(
+            euler.wrenches(&q, &[1.0; 6], &[1.0; 6], &mut out),
+            Err(Error::EulerSingularity { .. })
+        ));
+        assert!(euler
+            .wrenches(&q[..5], &[1.0; 6], &[1.0; 6], &mut out)
+            .is_err());
     }
 
     #[test]

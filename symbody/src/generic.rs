@@ -11,8 +11,8 @@ use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::kinematics::kinetic_energy;
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
-    body_pose, driver_effort, joint_wrench, EnergyMeter, EnergySample, Entry, EulerWarning,
-    Formulation, FullState, HhtBuilder, Integrator, JointKind, KinematicPath, KinematicSettings,
+    body_pose, driver_effort, EnergyMeter, EnergySample, Entry, EulerWarning, Formulation,
+    FullState, HhtBuilder, Integrator, JointKind, JointWrenches, KinematicPath, KinematicSettings,
     Mechanism, MechanismInfo, PathStats, Pivots, Registry, ResidualWatch, Residuals, Rotation,
     Stats, Wrench,
 };
@@ -107,10 +107,13 @@ pub struct Recording {
     /// except drivers and normalization rows.
     pub joints: Vec<usize>,
     /// Per output, per recorded joint (`joints` order): the wrench the joint exerts on its
-    /// first body, global frame, moment about the joint point ([`joint_wrench`]; on the
+    /// first body, global frame, moment about the joint point ([`symbody_runtime::joint_wrench`]; on the
     /// ground when body 1 is the ground), from the multipliers of the saddle-point solve at
     /// that output state.
     pub wrenches: Vec<Vec<Wrench>>,
+    /// The wrenches' work memory, made for `joints` at the first output (a scene may
+    /// narrow `joints` before).
+    reactions: Option<JointWrenches>,
     /// Indices (in `info.joints`) of the drivers.
     pub drivers: Vec<usize>,
     /// Per output, per driver (`drivers` order): its effort ([`driver_effort`]), the force
@@ -765,6 +768,7 @@ impl Recording {
             poses: Vec::new(),
             joints: of_kind(|k| !matches!(k, JointKind::Driver | JointKind::Normalization)),
             wrenches: Vec::new(),
+            reactions: None,
             drivers: of_kind(|k| k == JointKind::Driver),
             efforts: Vec::new(),
             energy_table: true,
@@ -896,13 +900,15 @@ fn record(
             .collect::<Result<_, _>>()
             .map_err(at)?,
     );
-    rec.wrenches.push(
-        rec.joints
-            .iter()
-            .map(|&j| joint_wrench(info, q, phi_q, lambda, j))
-            .collect::<Result<_, _>>()
-            .map_err(at)?,
-    );
+    let reactions = match &mut rec.reactions {
+        Some(r) if r.joints() == rec.joints.as_slice() => r,
+        stale => stale.insert(JointWrenches::new(info, &rec.joints).map_err(at)?),
+    };
+    let mut wrenches = Vec::with_capacity(rec.joints.len());
+    reactions
+        .wrenches(q, phi_q, lambda, &mut wrenches)
+        .map_err(at)?;
+    rec.wrenches.push(wrenches);
     rec.efforts.push(
         rec.drivers
             .iter()
