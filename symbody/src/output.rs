@@ -8,19 +8,12 @@ use std::path::Path;
 
 /// Writes a CSV: the header line, then one line per row (shortest round-trip numbers).
 pub fn write(path: &Path, header: &str, rows: impl Iterator<Item = Vec<f64>>) -> io::Result<()> {
-    let mut s = String::with_capacity(1 << 16);
+    let mut s = Vec::with_capacity(1 << 16);
     let mut num = Shortest::default();
-    s.push_str(header);
-    s.push('\n');
+    s.extend_from_slice(header.as_bytes());
+    s.push(b'\n');
     for row in rows {
-        for (i, &v) in row.iter().enumerate() {
-            if i > 0 {
-                s.push(',');
-            }
-            // Shortest representation that reads back to the same f64.
-            s.push_str(num.format(v));
-        }
-        s.push('\n');
+        crate::number::write_record(&mut s, row, &mut num)?;
     }
     std::fs::write(path, s)
 }

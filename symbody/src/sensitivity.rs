@@ -71,14 +71,14 @@ impl Sensitivities {
     /// tables; shortest round-trip numbers).
     pub fn write(&self, dir: &Path) -> std::io::Result<std::path::PathBuf> {
         let path = dir.join("sensitivities.csv");
-        let mut w = csv::Writer::from_path(&path)?;
+        let mut w = std::io::BufWriter::new(std::fs::File::create(&path)?);
         let table = self.table();
-        w.write_record(&table.columns)?;
+        crate::number::write_header(&mut w, &table.columns)?;
         let mut num = crate::number::Shortest::default();
         for row in &table.rows {
             crate::number::write_record(&mut w, row.iter().copied(), &mut num)?;
         }
-        w.flush()?;
+        std::io::Write::flush(&mut w)?;
         Ok(path)
     }
 }

@@ -5,7 +5,7 @@
 use crate::generic::Recording;
 use crate::number::{self, Shortest};
 use std::fs::File;
-use std::io::{self, BufWriter};
+use std::io::{self, BufWriter, Write as _};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -196,7 +196,7 @@ const FLUSH_EVERY: Duration = Duration::from_millis(200);
 /// before the first step (so an unwritable folder is reported before any work), and
 /// [`CsvTables::append`] each output as it is recorded.
 pub struct CsvTables {
-    files: Vec<(&'static str, PathBuf, csv::Writer<BufWriter<File>>)>,
+    files: Vec<(&'static str, PathBuf, BufWriter<File>)>,
     flushed: Instant,
     number: Shortest,
 }
@@ -210,8 +210,8 @@ impl CsvTables {
         let mut files = Vec::new();
         for (stem, columns) in columns(rec) {
             let path = dir.join(format!("{stem}.csv"));
-            let mut w = csv::Writer::from_writer(BufWriter::new(File::create(&path)?));
-            w.write_record(&columns)?;
+            let mut w = BufWriter::new(File::create(&path)?);
+            number::write_header(&mut w, &columns)?;
             files.push((stem, path, w));
         }
         let mut tables = CsvTables {
