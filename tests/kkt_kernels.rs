@@ -87,6 +87,39 @@ fn transpose_matches_dense(name: &str, info: &MechanismInfo, phi_q: &[f64], rng:
     assert!(t(&phi_q[1..], &y, &mut out).is_err());
 }
 
+/// The generated `out += Φq x` against the dense `Φq` (nalgebra) to roundoff, and bit for
+/// bit against the loop over the nonzeros it replaces (each row's products added to `out`
+/// in their order); offered only for the model's own pattern statics.
+fn times_add_matches(name: &str, info: &MechanismInfo, phi_q: &[f64], rng: &mut Rng) {
+    let kernels = &info.kkt[0];
+    let t = kernels
+        .times_add_for(info.phi_q_rows, info.phi_q_cols)
+        .unwrap_or_else(|| panic!("{name}: no Φq x for its own pattern"));
+    let copy = info.phi_q_cols.to_vec();
+    assert!(kernels.times_add_for(info.phi_q_rows, &copy).is_none());
+    let x: Vec<f64> = (0..info.n_coords).map(|_| rng.uniform(-1.0, 1.0)).collect();
+    let start: Vec<f64> = (0..info.n_constraints)
+        .map(|_| rng.uniform(-1.0, 1.0))
+        .collect();
+    let mut out = start.clone();
+    t(phi_q, &x, &mut out).unwrap();
+    let mut looped = start.clone();
+    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
+        looped[r as usize] += v * x[c as usize];
+    }
+    assert_eq!(out, looped, "{name}: Φq x against the loop");
+    let dense = DVector::from_column_slice(&start)
+        + dense_phi_q(info, phi_q) * DVector::from_column_slice(&x);
+    let scale = phi_q.iter().fold(1.0f64, |a, b| a.max(b.abs())) * x.len() as f64;
+    for (u, v) in out.iter().zip(dense.iter()) {
+        assert!(
+            (u - v).abs() <= 1e-14 * scale,
+            "{name}: Φq x {u:e} vs dense {v:e}"
+        );
+    }
+    assert!(t(phi_q, &x[1..], &mut out).is_err());
+}
+
 /// Factor with the kernels, the loops and the dense LU at `mass` (in `pattern`'s mass
 /// order), `phi_q`; solve for random `f, g` and for `f = 0`; compare.
 fn compare(what: &str, pattern: &KktPattern, mass: &[f64], phi_q: &[f64], rng: &mut Rng) {
@@ -179,6 +212,7 @@ fn every_model_small_enough_runs_its_kernels_and_they_equal_the_loops_and_the_de
             m.mass(&q, &mut mass);
             m.phi_q(&q, t, &mut phi_q);
             transpose_matches_dense(&name, info, &phi_q, &mut rng);
+            times_add_matches(&name, info, &phi_q, &mut rng);
             let what = format!("{name} trial {trial}");
             compare(&what, &pattern, &mass, &phi_q, &mut rng);
             if let Some(loads) = &loads {

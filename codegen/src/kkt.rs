@@ -153,7 +153,7 @@ impl Code {
 
 /// The emitted kernels: items for the model's module (`KKT`, one `KktKernels` per pattern
 /// in `patterns` that is not solved densely and not too long, with `kkt_factor_{i}`,
-/// `kkt_solve_{i}` and one `kkt_transpose_times`), or `None` when there is none. The
+/// `kkt_solve_{i}`, and one `kkt_transpose_times` and `kkt_times_add`), or `None` when there is none. The
 /// patterns share `Φq` (the model's and the one with its loads' stiffness).
 pub fn kernels(patterns: &[KktPattern]) -> Option<TokenStream> {
     let mut items = String::new();
@@ -183,9 +183,18 @@ let out: &mut [f64; {n}] = out.try_into().map_err(|_| length_error({n}, out_len)
 {}
 Ok(())
 }}
+fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {{
+let phi_q: &[f64; {np}] = phi_q.try_into().map_err(|_| length_error({np}, phi_q.len()))?;
+let x: &[f64; {n}] = x.try_into().map_err(|_| length_error({n}, x.len()))?;
+let out_len = out.len();
+let out: &mut [f64; {m}] = out.try_into().map_err(|_| length_error({m}, out_len))?;
+{}
+Ok(())
+}}
 ",
         entries.join(", "),
-        transpose(pattern)
+        transpose(pattern),
+        times_add(pattern)
     );
     Some(text.parse().expect("emitted kernels are Rust tokens"))
 }
@@ -210,7 +219,7 @@ fn one(pattern: &KktPattern, i: usize) -> Option<(String, String)> {
     let ns = stored.slots;
     let fingerprint = pattern.fingerprint();
     let entry = format!(
-        "KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor_{i}, solve: kkt_solve_{i}, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times }}"
+        "KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor_{i}, solve: kkt_solve_{i}, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times, times_add: kkt_times_add }}"
     );
     let text = format!(
         "{}
@@ -304,6 +313,27 @@ fn transpose(pattern: &KktPattern) -> String {
             t.join(" + ")
         };
         let _ = writeln!(text, "out[{c}] = {sum};");
+    }
+    text
+}
+
+/// `out[r] += Σ phi_q[k]·x[c]` over row `r`'s nonzeros in their order, as a loop over the
+/// nonzeros adds them to what `out` holds.
+fn times_add(pattern: &KktPattern) -> String {
+    let mut terms: Vec<Vec<String>> = vec![Vec::new(); pattern.m];
+    for (k, (&r, &c)) in pattern
+        .phi_q_rows
+        .iter()
+        .zip(&pattern.phi_q_cols)
+        .enumerate()
+    {
+        terms[r as usize].push(format!(" + phi_q[{k}] * x[{c}]"));
+    }
+    let mut text = String::new();
+    for (r, t) in terms.iter().enumerate() {
+        if !t.is_empty() {
+            let _ = writeln!(text, "out[{r}] = out[{r}]{};", t.concat());
+        }
     }
     text
 }

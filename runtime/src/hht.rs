@@ -36,8 +36,8 @@
 
 use crate::error::{check_len, ConstraintRow, Error, NewtonIncrement};
 use crate::kinematics::{
-    inf_norm, largest_row, mass_times, phi_q_transpose_times, InitialVelocity, KinematicSettings,
-    Kinematics,
+    inf_norm, largest_row, mass_times, phi_q_times_add, phi_q_transpose_times, InitialVelocity,
+    KinematicSettings, Kinematics,
 };
 use crate::kkt::{KktError, KktPattern, KktSolver, SchurKkt};
 use crate::load_stiffness::LoadStiffness;
@@ -752,15 +752,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     /// factorization (at, or one Newton iteration from, the accepted state).
     fn project_velocity(&mut self, t: f64) -> Result<(), Error> {
         self.mech.phi_t(&self.q, t, &mut self.res2);
-        for ((&row, &col), &v) in self
-            .info
-            .phi_q_rows
-            .iter()
-            .zip(self.info.phi_q_cols)
-            .zip(&self.phi_q)
-        {
-            self.res2[row as usize] += v * self.qd[col as usize];
-        }
+        phi_q_times_add(self.info, &self.phi_q, &self.qd, &mut self.res2);
         for r in self.res2.iter_mut() {
             *r = -*r;
         }

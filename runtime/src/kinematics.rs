@@ -143,6 +143,20 @@ pub(crate) fn phi_q_transpose_times(
     }
 }
 
+/// `out += Φq x` from the Jacobian nonzeros, each row's products added in their order.
+pub(crate) fn phi_q_times_add(info: &MechanismInfo, phi_q: &[f64], x: &[f64], out: &mut [f64]) {
+    let generated = info
+        .kkt
+        .first()
+        .and_then(|k| k.times_add_for(info.phi_q_rows, info.phi_q_cols));
+    if let Some(Ok(())) = generated.map(|t| t(phi_q, x, out)) {
+        return;
+    }
+    for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
+        out[r as usize] += v * x[c as usize];
+    }
+}
+
 /// `out = M v` from the mass nonzeros.
 pub(crate) fn mass_times(info: &MechanismInfo, mass: &[f64], v: &[f64], out: &mut [f64]) {
     out.fill(0.0);

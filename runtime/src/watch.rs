@@ -4,7 +4,7 @@
 //! and are not watched.
 
 use crate::error::{check_len, Error};
-use crate::kinematics::inf_norm;
+use crate::kinematics::{inf_norm, phi_q_times_add};
 use crate::mechanism::{BodyInfo, Mechanism, MechanismInfo, Rotation};
 
 /// Thresholds on |cos β|: below `warn_cos` a warning is reported, below `error_cos` an
@@ -134,20 +134,7 @@ pub fn velocity_residual(
     work: &mut [f64],
 ) -> f64 {
     work.copy_from_slice(phi_t);
-    // Each run of one row's nonzeros (a row-major pattern is one run per row) is summed in a
-    // register rather than through `work`, in the same order.
-    let (rows, cols) = (info.phi_q_rows, info.phi_q_cols);
-    let n = rows.len().min(cols.len()).min(phi_q.len());
-    let mut k = 0;
-    while k < n {
-        let r = rows[k];
-        let mut sum = work[r as usize];
-        while k < n && rows[k] == r {
-            sum += phi_q[k] * qd[cols[k] as usize];
-            k += 1;
-        }
-        work[r as usize] = sum;
-    }
+    phi_q_times_add(info, phi_q, qd, work);
     inf_norm(work)
 }
 

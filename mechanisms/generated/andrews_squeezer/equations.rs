@@ -21910,6 +21910,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
         KktKernels {
             pattern: 0x14550b40923d5b4e,
@@ -21919,6 +21920,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -37006,6 +37008,115 @@ pub mod exact {
             + phi_q[253] * y[48] + phi_q[259] * y[49];
         Ok(())
     }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 260] = phi_q
+            .try_into()
+            .map_err(|_| length_error(260, phi_q.len()))?;
+        let x: &[f64; 42] = x.try_into().map_err(|_| length_error(42, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 50] = out.try_into().map_err(|_| length_error(50, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+            + phi_q[3] * x[5];
+        out[1] = out[1] + phi_q[4] * x[1] + phi_q[5] * x[3] + phi_q[6] * x[4]
+            + phi_q[7] * x[5];
+        out[2] = out[2] + phi_q[8] * x[2] + phi_q[9] * x[3] + phi_q[10] * x[4];
+        out[3] = out[3] + phi_q[11] * x[3] + phi_q[12] * x[4] + phi_q[13] * x[5];
+        out[4] = out[4] + phi_q[14] * x[3] + phi_q[15] * x[4] + phi_q[16] * x[5];
+        out[5] = out[5] + phi_q[17] * x[0] + phi_q[18] * x[3] + phi_q[19] * x[4]
+            + phi_q[20] * x[5] + phi_q[21] * x[6] + phi_q[22] * x[10]
+            + phi_q[23] * x[11];
+        out[6] = out[6] + phi_q[24] * x[1] + phi_q[25] * x[3] + phi_q[26] * x[4]
+            + phi_q[27] * x[5] + phi_q[28] * x[7] + phi_q[29] * x[10]
+            + phi_q[30] * x[11];
+        out[7] = out[7] + phi_q[31] * x[2] + phi_q[32] * x[3] + phi_q[33] * x[4]
+            + phi_q[34] * x[8] + phi_q[35] * x[10];
+        out[8] = out[8] + phi_q[36] * x[3] + phi_q[37] * x[4] + phi_q[38] * x[5]
+            + phi_q[39] * x[9] + phi_q[40] * x[10] + phi_q[41] * x[11];
+        out[9] = out[9] + phi_q[42] * x[3] + phi_q[43] * x[4] + phi_q[44] * x[5]
+            + phi_q[45] * x[9] + phi_q[46] * x[10] + phi_q[47] * x[11];
+        out[10] = out[10] + phi_q[48] * x[6] + phi_q[49] * x[10] + phi_q[50] * x[11]
+            + phi_q[51] * x[12] + phi_q[52] * x[15] + phi_q[53] * x[16]
+            + phi_q[54] * x[17];
+        out[11] = out[11] + phi_q[55] * x[7] + phi_q[56] * x[10] + phi_q[57] * x[11]
+            + phi_q[58] * x[13] + phi_q[59] * x[15] + phi_q[60] * x[16]
+            + phi_q[61] * x[17];
+        out[12] = out[12] + phi_q[62] * x[8] + phi_q[63] * x[10] + phi_q[64] * x[14]
+            + phi_q[65] * x[15] + phi_q[66] * x[16];
+        out[13] = out[13] + phi_q[67] * x[9] + phi_q[68] * x[10] + phi_q[69] * x[11]
+            + phi_q[70] * x[15] + phi_q[71] * x[16] + phi_q[72] * x[17];
+        out[14] = out[14] + phi_q[73] * x[9] + phi_q[74] * x[10] + phi_q[75] * x[11]
+            + phi_q[76] * x[15] + phi_q[77] * x[16] + phi_q[78] * x[17];
+        out[15] = out[15] + phi_q[79] * x[6] + phi_q[80] * x[10] + phi_q[81] * x[11]
+            + phi_q[82] * x[18] + phi_q[83] * x[21] + phi_q[84] * x[22]
+            + phi_q[85] * x[23];
+        out[16] = out[16] + phi_q[86] * x[7] + phi_q[87] * x[10] + phi_q[88] * x[11]
+            + phi_q[89] * x[19] + phi_q[90] * x[21] + phi_q[91] * x[22]
+            + phi_q[92] * x[23];
+        out[17] = out[17] + phi_q[93] * x[8] + phi_q[94] * x[10] + phi_q[95] * x[20]
+            + phi_q[96] * x[21] + phi_q[97] * x[22];
+        out[18] = out[18] + phi_q[98] * x[9] + phi_q[99] * x[10] + phi_q[100] * x[11]
+            + phi_q[101] * x[21] + phi_q[102] * x[22] + phi_q[103] * x[23];
+        out[19] = out[19] + phi_q[104] * x[9] + phi_q[105] * x[10] + phi_q[106] * x[11]
+            + phi_q[107] * x[21] + phi_q[108] * x[22] + phi_q[109] * x[23];
+        out[20] = out[20] + phi_q[110] * x[6] + phi_q[111] * x[10] + phi_q[112] * x[11]
+            + phi_q[113] * x[30] + phi_q[114] * x[33] + phi_q[115] * x[34]
+            + phi_q[116] * x[35];
+        out[21] = out[21] + phi_q[117] * x[7] + phi_q[118] * x[10] + phi_q[119] * x[11]
+            + phi_q[120] * x[31] + phi_q[121] * x[33] + phi_q[122] * x[34]
+            + phi_q[123] * x[35];
+        out[22] = out[22] + phi_q[124] * x[8] + phi_q[125] * x[10] + phi_q[126] * x[32]
+            + phi_q[127] * x[33] + phi_q[128] * x[34];
+        out[23] = out[23] + phi_q[129] * x[9] + phi_q[130] * x[10] + phi_q[131] * x[11]
+            + phi_q[132] * x[33] + phi_q[133] * x[34] + phi_q[134] * x[35];
+        out[24] = out[24] + phi_q[135] * x[9] + phi_q[136] * x[10] + phi_q[137] * x[11]
+            + phi_q[138] * x[33] + phi_q[139] * x[34] + phi_q[140] * x[35];
+        out[25] = out[25] + phi_q[141] * x[12] + phi_q[142] * x[15] + phi_q[143] * x[16]
+            + phi_q[144] * x[17];
+        out[26] = out[26] + phi_q[145] * x[13] + phi_q[146] * x[15] + phi_q[147] * x[16]
+            + phi_q[148] * x[17];
+        out[27] = out[27] + phi_q[149] * x[14] + phi_q[150] * x[15] + phi_q[151] * x[16];
+        out[28] = out[28] + phi_q[152] * x[15] + phi_q[153] * x[16] + phi_q[154] * x[17];
+        out[29] = out[29] + phi_q[155] * x[15] + phi_q[156] * x[16] + phi_q[157] * x[17];
+        out[30] = out[30] + phi_q[158] * x[18] + phi_q[159] * x[21] + phi_q[160] * x[22]
+            + phi_q[161] * x[23] + phi_q[162] * x[24] + phi_q[163] * x[27]
+            + phi_q[164] * x[28] + phi_q[165] * x[29];
+        out[31] = out[31] + phi_q[166] * x[19] + phi_q[167] * x[21] + phi_q[168] * x[22]
+            + phi_q[169] * x[23] + phi_q[170] * x[25] + phi_q[171] * x[27]
+            + phi_q[172] * x[28] + phi_q[173] * x[29];
+        out[32] = out[32] + phi_q[174] * x[20] + phi_q[175] * x[21] + phi_q[176] * x[22]
+            + phi_q[177] * x[26] + phi_q[178] * x[27] + phi_q[179] * x[28];
+        out[33] = out[33] + phi_q[180] * x[21] + phi_q[181] * x[22] + phi_q[182] * x[23]
+            + phi_q[183] * x[27] + phi_q[184] * x[28] + phi_q[185] * x[29];
+        out[34] = out[34] + phi_q[186] * x[21] + phi_q[187] * x[22] + phi_q[188] * x[23]
+            + phi_q[189] * x[27] + phi_q[190] * x[28] + phi_q[191] * x[29];
+        out[35] = out[35] + phi_q[192] * x[24] + phi_q[193] * x[27] + phi_q[194] * x[28]
+            + phi_q[195] * x[29];
+        out[36] = out[36] + phi_q[196] * x[25] + phi_q[197] * x[27] + phi_q[198] * x[28]
+            + phi_q[199] * x[29];
+        out[37] = out[37] + phi_q[200] * x[26] + phi_q[201] * x[27] + phi_q[202] * x[28];
+        out[38] = out[38] + phi_q[203] * x[27] + phi_q[204] * x[28] + phi_q[205] * x[29];
+        out[39] = out[39] + phi_q[206] * x[27] + phi_q[207] * x[28] + phi_q[208] * x[29];
+        out[40] = out[40] + phi_q[209] * x[36] + phi_q[210] * x[39] + phi_q[211] * x[40]
+            + phi_q[212] * x[41];
+        out[41] = out[41] + phi_q[213] * x[37] + phi_q[214] * x[39] + phi_q[215] * x[40]
+            + phi_q[216] * x[41];
+        out[42] = out[42] + phi_q[217] * x[38] + phi_q[218] * x[39] + phi_q[219] * x[40];
+        out[43] = out[43] + phi_q[220] * x[39] + phi_q[221] * x[40] + phi_q[222] * x[41];
+        out[44] = out[44] + phi_q[223] * x[39] + phi_q[224] * x[40] + phi_q[225] * x[41];
+        out[45] = out[45] + phi_q[226] * x[30] + phi_q[227] * x[33] + phi_q[228] * x[34]
+            + phi_q[229] * x[35] + phi_q[230] * x[36] + phi_q[231] * x[39]
+            + phi_q[232] * x[40] + phi_q[233] * x[41];
+        out[46] = out[46] + phi_q[234] * x[31] + phi_q[235] * x[33] + phi_q[236] * x[34]
+            + phi_q[237] * x[35] + phi_q[238] * x[37] + phi_q[239] * x[39]
+            + phi_q[240] * x[40] + phi_q[241] * x[41];
+        out[47] = out[47] + phi_q[242] * x[32] + phi_q[243] * x[33] + phi_q[244] * x[34]
+            + phi_q[245] * x[38] + phi_q[246] * x[39] + phi_q[247] * x[40];
+        out[48] = out[48] + phi_q[248] * x[33] + phi_q[249] * x[34] + phi_q[250] * x[35]
+            + phi_q[251] * x[39] + phi_q[252] * x[40] + phi_q[253] * x[41];
+        out[49] = out[49] + phi_q[254] * x[33] + phi_q[255] * x[34] + phi_q[256] * x[35]
+            + phi_q[257] * x[39] + phi_q[258] * x[40] + phi_q[259] * x[41];
+        Ok(())
+    }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
         k: &[f64],
@@ -46482,6 +46593,7 @@ pub mod reduced {
                 phi_q_rows: &PHI_Q_ROWS,
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
+                times_add: kkt_times_add,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -47882,6 +47994,53 @@ pub mod reduced {
             out[19] = phi_q[54] * y[17] + phi_q[62] * y[19];
             out[20] = phi_q[53] * y[16] + phi_q[55] * y[17] + phi_q[59] * y[18]
                 + phi_q[63] * y[19];
+            Ok(())
+        }
+        fn kkt_times_add(
+            phi_q: &[f64],
+            x: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 64] = phi_q
+                .try_into()
+                .map_err(|_| length_error(64, phi_q.len()))?;
+            let x: &[f64; 21] = x.try_into().map_err(|_| length_error(21, x.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 20] = out
+                .try_into()
+                .map_err(|_| length_error(20, out_len))?;
+            out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[2];
+            out[1] = out[1] + phi_q[2] * x[1] + phi_q[3] * x[2];
+            out[2] = out[2] + phi_q[4] * x[0] + phi_q[5] * x[2] + phi_q[6] * x[3]
+                + phi_q[7] * x[5];
+            out[3] = out[3] + phi_q[8] * x[1] + phi_q[9] * x[2] + phi_q[10] * x[4]
+                + phi_q[11] * x[5];
+            out[4] = out[4] + phi_q[12] * x[3] + phi_q[13] * x[5] + phi_q[14] * x[6]
+                + phi_q[15] * x[8];
+            out[5] = out[5] + phi_q[16] * x[4] + phi_q[17] * x[5] + phi_q[18] * x[7]
+                + phi_q[19] * x[8];
+            out[6] = out[6] + phi_q[20] * x[3] + phi_q[21] * x[5] + phi_q[22] * x[9]
+                + phi_q[23] * x[11];
+            out[7] = out[7] + phi_q[24] * x[4] + phi_q[25] * x[5] + phi_q[26] * x[10]
+                + phi_q[27] * x[11];
+            out[8] = out[8] + phi_q[28] * x[3] + phi_q[29] * x[5] + phi_q[30] * x[15]
+                + phi_q[31] * x[17];
+            out[9] = out[9] + phi_q[32] * x[4] + phi_q[33] * x[5] + phi_q[34] * x[16]
+                + phi_q[35] * x[17];
+            out[10] = out[10] + phi_q[36] * x[6] + phi_q[37] * x[8];
+            out[11] = out[11] + phi_q[38] * x[7] + phi_q[39] * x[8];
+            out[12] = out[12] + phi_q[40] * x[9] + phi_q[41] * x[11] + phi_q[42] * x[12]
+                + phi_q[43] * x[14];
+            out[13] = out[13] + phi_q[44] * x[10] + phi_q[45] * x[11] + phi_q[46] * x[13]
+                + phi_q[47] * x[14];
+            out[14] = out[14] + phi_q[48] * x[12] + phi_q[49] * x[14];
+            out[15] = out[15] + phi_q[50] * x[13] + phi_q[51] * x[14];
+            out[16] = out[16] + phi_q[52] * x[18] + phi_q[53] * x[20];
+            out[17] = out[17] + phi_q[54] * x[19] + phi_q[55] * x[20];
+            out[18] = out[18] + phi_q[56] * x[15] + phi_q[57] * x[17] + phi_q[58] * x[18]
+                + phi_q[59] * x[20];
+            out[19] = out[19] + phi_q[60] * x[16] + phi_q[61] * x[17] + phi_q[62] * x[19]
+                + phi_q[63] * x[20];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

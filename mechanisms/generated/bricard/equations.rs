@@ -10584,6 +10584,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -17335,6 +17336,113 @@ pub mod exact {
             + phi_q[194] * y[23] + phi_q[202] * y[24] + phi_q[207] * y[25]
             + phi_q[212] * y[26] + phi_q[217] * y[27] + phi_q[221] * y[28]
             + phi_q[225] * y[29] + phi_q[245] * y[34];
+        Ok(())
+    }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 246] = phi_q
+            .try_into()
+            .map_err(|_| length_error(246, phi_q.len()))?;
+        let x: &[f64; 35] = x.try_into().map_err(|_| length_error(35, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 35] = out.try_into().map_err(|_| length_error(35, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4];
+        out[1] = out[1] + phi_q[3] * x[1] + phi_q[4] * x[3] + phi_q[5] * x[4]
+            + phi_q[6] * x[5] + phi_q[7] * x[6];
+        out[2] = out[2] + phi_q[8] * x[2] + phi_q[9] * x[3] + phi_q[10] * x[4]
+            + phi_q[11] * x[5] + phi_q[12] * x[6];
+        out[3] = out[3] + phi_q[13] * x[3] + phi_q[14] * x[4] + phi_q[15] * x[5]
+            + phi_q[16] * x[6];
+        out[4] = out[4] + phi_q[17] * x[3] + phi_q[18] * x[4] + phi_q[19] * x[5]
+            + phi_q[20] * x[6];
+        out[5] = out[5] + phi_q[21] * x[0] + phi_q[22] * x[3] + phi_q[23] * x[4]
+            + phi_q[24] * x[7] + phi_q[25] * x[10] + phi_q[26] * x[11]
+            + phi_q[27] * x[12] + phi_q[28] * x[13];
+        out[6] = out[6] + phi_q[29] * x[1] + phi_q[30] * x[3] + phi_q[31] * x[4]
+            + phi_q[32] * x[5] + phi_q[33] * x[6] + phi_q[34] * x[8] + phi_q[35] * x[10]
+            + phi_q[36] * x[11] + phi_q[37] * x[12] + phi_q[38] * x[13];
+        out[7] = out[7] + phi_q[39] * x[2] + phi_q[40] * x[3] + phi_q[41] * x[4]
+            + phi_q[42] * x[5] + phi_q[43] * x[6] + phi_q[44] * x[9] + phi_q[45] * x[10]
+            + phi_q[46] * x[11] + phi_q[47] * x[12] + phi_q[48] * x[13];
+        out[8] = out[8] + phi_q[49] * x[3] + phi_q[50] * x[4] + phi_q[51] * x[5]
+            + phi_q[52] * x[6] + phi_q[53] * x[10] + phi_q[54] * x[11]
+            + phi_q[55] * x[12] + phi_q[56] * x[13];
+        out[9] = out[9] + phi_q[57] * x[3] + phi_q[58] * x[4] + phi_q[59] * x[5]
+            + phi_q[60] * x[6] + phi_q[61] * x[10] + phi_q[62] * x[11]
+            + phi_q[63] * x[12] + phi_q[64] * x[13];
+        out[10] = out[10] + phi_q[65] * x[7] + phi_q[66] * x[10] + phi_q[67] * x[11]
+            + phi_q[68] * x[12] + phi_q[69] * x[13] + phi_q[70] * x[14]
+            + phi_q[71] * x[17] + phi_q[72] * x[18] + phi_q[73] * x[19]
+            + phi_q[74] * x[20];
+        out[11] = out[11] + phi_q[75] * x[8] + phi_q[76] * x[10] + phi_q[77] * x[11]
+            + phi_q[78] * x[12] + phi_q[79] * x[13] + phi_q[80] * x[15]
+            + phi_q[81] * x[17] + phi_q[82] * x[18] + phi_q[83] * x[19]
+            + phi_q[84] * x[20];
+        out[12] = out[12] + phi_q[85] * x[9] + phi_q[86] * x[10] + phi_q[87] * x[11]
+            + phi_q[88] * x[12] + phi_q[89] * x[13] + phi_q[90] * x[16]
+            + phi_q[91] * x[17] + phi_q[92] * x[18] + phi_q[93] * x[19]
+            + phi_q[94] * x[20];
+        out[13] = out[13] + phi_q[95] * x[10] + phi_q[96] * x[11] + phi_q[97] * x[12]
+            + phi_q[98] * x[13] + phi_q[99] * x[17] + phi_q[100] * x[18]
+            + phi_q[101] * x[19] + phi_q[102] * x[20];
+        out[14] = out[14] + phi_q[103] * x[10] + phi_q[104] * x[11] + phi_q[105] * x[12]
+            + phi_q[106] * x[13] + phi_q[107] * x[17] + phi_q[108] * x[18]
+            + phi_q[109] * x[19] + phi_q[110] * x[20];
+        out[15] = out[15] + phi_q[111] * x[14] + phi_q[112] * x[17] + phi_q[113] * x[18]
+            + phi_q[114] * x[19] + phi_q[115] * x[20] + phi_q[116] * x[21]
+            + phi_q[117] * x[24] + phi_q[118] * x[25] + phi_q[119] * x[26]
+            + phi_q[120] * x[27];
+        out[16] = out[16] + phi_q[121] * x[15] + phi_q[122] * x[17] + phi_q[123] * x[18]
+            + phi_q[124] * x[19] + phi_q[125] * x[20] + phi_q[126] * x[22]
+            + phi_q[127] * x[24] + phi_q[128] * x[25] + phi_q[129] * x[26]
+            + phi_q[130] * x[27];
+        out[17] = out[17] + phi_q[131] * x[16] + phi_q[132] * x[17] + phi_q[133] * x[18]
+            + phi_q[134] * x[19] + phi_q[135] * x[20] + phi_q[136] * x[23]
+            + phi_q[137] * x[24] + phi_q[138] * x[25] + phi_q[139] * x[26]
+            + phi_q[140] * x[27];
+        out[18] = out[18] + phi_q[141] * x[17] + phi_q[142] * x[18] + phi_q[143] * x[19]
+            + phi_q[144] * x[20] + phi_q[145] * x[24] + phi_q[146] * x[25]
+            + phi_q[147] * x[26] + phi_q[148] * x[27];
+        out[19] = out[19] + phi_q[149] * x[17] + phi_q[150] * x[18] + phi_q[151] * x[19]
+            + phi_q[152] * x[20] + phi_q[153] * x[24] + phi_q[154] * x[25]
+            + phi_q[155] * x[26] + phi_q[156] * x[27];
+        out[20] = out[20] + phi_q[157] * x[21] + phi_q[158] * x[24] + phi_q[159] * x[25]
+            + phi_q[160] * x[26] + phi_q[161] * x[27] + phi_q[162] * x[28]
+            + phi_q[163] * x[31] + phi_q[164] * x[32] + phi_q[165] * x[33]
+            + phi_q[166] * x[34];
+        out[21] = out[21] + phi_q[167] * x[22] + phi_q[168] * x[24] + phi_q[169] * x[25]
+            + phi_q[170] * x[26] + phi_q[171] * x[27] + phi_q[172] * x[29]
+            + phi_q[173] * x[31] + phi_q[174] * x[32] + phi_q[175] * x[33]
+            + phi_q[176] * x[34];
+        out[22] = out[22] + phi_q[177] * x[23] + phi_q[178] * x[24] + phi_q[179] * x[25]
+            + phi_q[180] * x[26] + phi_q[181] * x[27] + phi_q[182] * x[30]
+            + phi_q[183] * x[31] + phi_q[184] * x[32] + phi_q[185] * x[33]
+            + phi_q[186] * x[34];
+        out[23] = out[23] + phi_q[187] * x[24] + phi_q[188] * x[25] + phi_q[189] * x[26]
+            + phi_q[190] * x[27] + phi_q[191] * x[31] + phi_q[192] * x[32]
+            + phi_q[193] * x[33] + phi_q[194] * x[34];
+        out[24] = out[24] + phi_q[195] * x[24] + phi_q[196] * x[25] + phi_q[197] * x[26]
+            + phi_q[198] * x[27] + phi_q[199] * x[31] + phi_q[200] * x[32]
+            + phi_q[201] * x[33] + phi_q[202] * x[34];
+        out[25] = out[25] + phi_q[203] * x[28] + phi_q[204] * x[31] + phi_q[205] * x[32]
+            + phi_q[206] * x[33] + phi_q[207] * x[34];
+        out[26] = out[26] + phi_q[208] * x[29] + phi_q[209] * x[31] + phi_q[210] * x[32]
+            + phi_q[211] * x[33] + phi_q[212] * x[34];
+        out[27] = out[27] + phi_q[213] * x[30] + phi_q[214] * x[31] + phi_q[215] * x[32]
+            + phi_q[216] * x[33] + phi_q[217] * x[34];
+        out[28] = out[28] + phi_q[218] * x[31] + phi_q[219] * x[32] + phi_q[220] * x[33]
+            + phi_q[221] * x[34];
+        out[29] = out[29] + phi_q[222] * x[31] + phi_q[223] * x[32] + phi_q[224] * x[33]
+            + phi_q[225] * x[34];
+        out[30] = out[30] + phi_q[226] * x[3] + phi_q[227] * x[4] + phi_q[228] * x[5]
+            + phi_q[229] * x[6];
+        out[31] = out[31] + phi_q[230] * x[10] + phi_q[231] * x[11] + phi_q[232] * x[12]
+            + phi_q[233] * x[13];
+        out[32] = out[32] + phi_q[234] * x[17] + phi_q[235] * x[18] + phi_q[236] * x[19]
+            + phi_q[237] * x[20];
+        out[33] = out[33] + phi_q[238] * x[24] + phi_q[239] * x[25] + phi_q[240] * x[26]
+            + phi_q[241] * x[27];
+        out[34] = out[34] + phi_q[242] * x[31] + phi_q[243] * x[32] + phi_q[244] * x[33]
+            + phi_q[245] * x[34];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

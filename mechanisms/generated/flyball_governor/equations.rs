@@ -10314,6 +10314,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
         KktKernels {
             pattern: 0x711ddc89d0e6a0b2,
@@ -10323,6 +10324,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -23618,6 +23620,58 @@ pub mod exact {
             + phi_q[109] * y[18] + phi_q[115] * y[19];
         out[23] = phi_q[91] * y[15] + phi_q[99] * y[16] + phi_q[110] * y[18]
             + phi_q[116] * y[19];
+        Ok(())
+    }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 117] = phi_q
+            .try_into()
+            .map_err(|_| length_error(117, phi_q.len()))?;
+        let x: &[f64; 24] = x.try_into().map_err(|_| length_error(24, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 20] = out.try_into().map_err(|_| length_error(20, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+            + phi_q[3] * x[5];
+        out[1] = out[1] + phi_q[4] * x[1] + phi_q[5] * x[3] + phi_q[6] * x[4]
+            + phi_q[7] * x[5];
+        out[2] = out[2] + phi_q[8] * x[2] + phi_q[9] * x[3] + phi_q[10] * x[4];
+        out[3] = out[3] + phi_q[11] * x[3] + phi_q[12] * x[4] + phi_q[13] * x[5];
+        out[4] = out[4] + phi_q[14] * x[3] + phi_q[15] * x[4] + phi_q[16] * x[5];
+        out[5] = out[5] + phi_q[17] * x[4] + phi_q[18] * x[5] + phi_q[19] * x[9]
+            + phi_q[20] * x[10] + phi_q[21] * x[11];
+        out[6] = out[6] + phi_q[22] * x[3] + phi_q[23] * x[4] + phi_q[24] * x[5]
+            + phi_q[25] * x[9] + phi_q[26] * x[10] + phi_q[27] * x[11];
+        out[7] = out[7] + phi_q[28] * x[0] + phi_q[29] * x[1] + phi_q[30] * x[2]
+            + phi_q[31] * x[3] + phi_q[32] * x[4] + phi_q[33] * x[5] + phi_q[34] * x[6]
+            + phi_q[35] * x[7] + phi_q[36] * x[8];
+        out[8] = out[8] + phi_q[37] * x[0] + phi_q[38] * x[1] + phi_q[39] * x[2]
+            + phi_q[40] * x[3] + phi_q[41] * x[4] + phi_q[42] * x[5] + phi_q[43] * x[6]
+            + phi_q[44] * x[7] + phi_q[45] * x[8];
+        out[9] = out[9] + phi_q[46] * x[3] + phi_q[47] * x[4] + phi_q[48] * x[5]
+            + phi_q[49] * x[10] + phi_q[50] * x[11];
+        out[10] = out[10] + phi_q[51] * x[0] + phi_q[52] * x[3] + phi_q[53] * x[4]
+            + phi_q[54] * x[5] + phi_q[55] * x[12] + phi_q[56] * x[15]
+            + phi_q[57] * x[16] + phi_q[58] * x[17];
+        out[11] = out[11] + phi_q[59] * x[1] + phi_q[60] * x[3] + phi_q[61] * x[4]
+            + phi_q[62] * x[5] + phi_q[63] * x[13] + phi_q[64] * x[15]
+            + phi_q[65] * x[16] + phi_q[66] * x[17];
+        out[12] = out[12] + phi_q[67] * x[2] + phi_q[68] * x[3] + phi_q[69] * x[4]
+            + phi_q[70] * x[14] + phi_q[71] * x[15] + phi_q[72] * x[16];
+        out[13] = out[13] + phi_q[73] * x[4] + phi_q[74] * x[5] + phi_q[75] * x[15]
+            + phi_q[76] * x[16] + phi_q[77] * x[17];
+        out[14] = out[14] + phi_q[78] * x[3] + phi_q[79] * x[4] + phi_q[80] * x[5]
+            + phi_q[81] * x[15] + phi_q[82] * x[16] + phi_q[83] * x[17];
+        out[15] = out[15] + phi_q[84] * x[0] + phi_q[85] * x[3] + phi_q[86] * x[4]
+            + phi_q[87] * x[5] + phi_q[88] * x[18] + phi_q[89] * x[21]
+            + phi_q[90] * x[22] + phi_q[91] * x[23];
+        out[16] = out[16] + phi_q[92] * x[1] + phi_q[93] * x[3] + phi_q[94] * x[4]
+            + phi_q[95] * x[5] + phi_q[96] * x[19] + phi_q[97] * x[21]
+            + phi_q[98] * x[22] + phi_q[99] * x[23];
+        out[17] = out[17] + phi_q[100] * x[2] + phi_q[101] * x[3] + phi_q[102] * x[4]
+            + phi_q[103] * x[20] + phi_q[104] * x[21] + phi_q[105] * x[22];
+        out[18] = out[18] + phi_q[106] * x[4] + phi_q[107] * x[5] + phi_q[108] * x[21]
+            + phi_q[109] * x[22] + phi_q[110] * x[23];
+        out[19] = out[19] + phi_q[111] * x[3] + phi_q[112] * x[4] + phi_q[113] * x[5]
+            + phi_q[114] * x[21] + phi_q[115] * x[22] + phi_q[116] * x[23];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

@@ -7313,6 +7313,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -8323,6 +8324,29 @@ pub mod exact {
             + phi_q[33] * y[4] + phi_q[40] * y[5] + phi_q[44] * y[6];
         out[6] = phi_q[6] * y[0] + phi_q[13] * y[1] + phi_q[20] * y[2] + phi_q[27] * y[3]
             + phi_q[34] * y[4] + phi_q[41] * y[5] + phi_q[45] * y[6];
+        Ok(())
+    }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 46] = phi_q
+            .try_into()
+            .map_err(|_| length_error(46, phi_q.len()))?;
+        let x: &[f64; 7] = x.try_into().map_err(|_| length_error(7, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 7] = out.try_into().map_err(|_| length_error(7, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[1] + phi_q[2] * x[2]
+            + phi_q[3] * x[3] + phi_q[4] * x[4] + phi_q[5] * x[5] + phi_q[6] * x[6];
+        out[1] = out[1] + phi_q[7] * x[0] + phi_q[8] * x[1] + phi_q[9] * x[2]
+            + phi_q[10] * x[3] + phi_q[11] * x[4] + phi_q[12] * x[5] + phi_q[13] * x[6];
+        out[2] = out[2] + phi_q[14] * x[0] + phi_q[15] * x[1] + phi_q[16] * x[2]
+            + phi_q[17] * x[3] + phi_q[18] * x[4] + phi_q[19] * x[5] + phi_q[20] * x[6];
+        out[3] = out[3] + phi_q[21] * x[0] + phi_q[22] * x[1] + phi_q[23] * x[2]
+            + phi_q[24] * x[3] + phi_q[25] * x[4] + phi_q[26] * x[5] + phi_q[27] * x[6];
+        out[4] = out[4] + phi_q[28] * x[0] + phi_q[29] * x[1] + phi_q[30] * x[2]
+            + phi_q[31] * x[3] + phi_q[32] * x[4] + phi_q[33] * x[5] + phi_q[34] * x[6];
+        out[5] = out[5] + phi_q[35] * x[0] + phi_q[36] * x[1] + phi_q[37] * x[2]
+            + phi_q[38] * x[3] + phi_q[39] * x[4] + phi_q[40] * x[5] + phi_q[41] * x[6];
+        out[6] = out[6] + phi_q[42] * x[3] + phi_q[43] * x[4] + phi_q[44] * x[5]
+            + phi_q[45] * x[6];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

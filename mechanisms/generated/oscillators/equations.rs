@@ -1416,6 +1416,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
         KktKernels {
             pattern: 0xc64715c39133be24,
@@ -1425,6 +1426,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -3004,6 +3006,34 @@ pub mod exact {
         out[11] = phi_q[18] * y[8] + phi_q[22] * y[9] + phi_q[30] * y[11];
         out[12] = phi_q[19] * y[8] + phi_q[23] * y[9] + phi_q[31] * y[11];
         out[13] = phi_q[20] * y[8] + phi_q[24] * y[9] + phi_q[32] * y[11];
+        Ok(())
+    }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 33] = phi_q
+            .try_into()
+            .map_err(|_| length_error(33, phi_q.len()))?;
+        let x: &[f64; 14] = x.try_into().map_err(|_| length_error(14, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 12] = out.try_into().map_err(|_| length_error(12, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[3] + phi_q[1] * x[4] + phi_q[2] * x[5]
+            + phi_q[3] * x[6];
+        out[1] = out[1] + phi_q[4] * x[3] + phi_q[5] * x[4] + phi_q[6] * x[5]
+            + phi_q[7] * x[6];
+        out[2] = out[2] + phi_q[8] * x[1];
+        out[3] = out[3] + phi_q[9] * x[2];
+        out[4] = out[4] + phi_q[10] * x[3] + phi_q[11] * x[4] + phi_q[12] * x[5]
+            + phi_q[13] * x[6];
+        out[5] = out[5] + phi_q[14] * x[7];
+        out[6] = out[6] + phi_q[15] * x[8];
+        out[7] = out[7] + phi_q[16] * x[9];
+        out[8] = out[8] + phi_q[17] * x[10] + phi_q[18] * x[11] + phi_q[19] * x[12]
+            + phi_q[20] * x[13];
+        out[9] = out[9] + phi_q[21] * x[10] + phi_q[22] * x[11] + phi_q[23] * x[12]
+            + phi_q[24] * x[13];
+        out[10] = out[10] + phi_q[25] * x[3] + phi_q[26] * x[4] + phi_q[27] * x[5]
+            + phi_q[28] * x[6];
+        out[11] = out[11] + phi_q[29] * x[10] + phi_q[30] * x[11] + phi_q[31] * x[12]
+            + phi_q[32] * x[13];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -7631,6 +7661,7 @@ pub mod reduced {
                 phi_q_rows: &PHI_Q_ROWS,
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
+                times_add: kkt_times_add,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -8310,6 +8341,35 @@ pub mod reduced {
             out[6] = phi_q[13] * y[3] + phi_q[17] * y[4] + phi_q[25] * y[6];
             out[7] = phi_q[14] * y[3] + phi_q[18] * y[4] + phi_q[26] * y[6];
             out[8] = phi_q[15] * y[3] + phi_q[19] * y[4] + phi_q[27] * y[6];
+            Ok(())
+        }
+        fn kkt_times_add(
+            phi_q: &[f64],
+            x: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 28] = phi_q
+                .try_into()
+                .map_err(|_| length_error(28, phi_q.len()))?;
+            let x: &[f64; 9] = x.try_into().map_err(|_| length_error(9, x.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 7] = out
+                .try_into()
+                .map_err(|_| length_error(7, out_len))?;
+            out[0] = out[0] + phi_q[0] * x[1] + phi_q[1] * x[2] + phi_q[2] * x[3]
+                + phi_q[3] * x[4];
+            out[1] = out[1] + phi_q[4] * x[1] + phi_q[5] * x[2] + phi_q[6] * x[3]
+                + phi_q[7] * x[4];
+            out[2] = out[2] + phi_q[8] * x[1] + phi_q[9] * x[2] + phi_q[10] * x[3]
+                + phi_q[11] * x[4];
+            out[3] = out[3] + phi_q[12] * x[5] + phi_q[13] * x[6] + phi_q[14] * x[7]
+                + phi_q[15] * x[8];
+            out[4] = out[4] + phi_q[16] * x[5] + phi_q[17] * x[6] + phi_q[18] * x[7]
+                + phi_q[19] * x[8];
+            out[5] = out[5] + phi_q[20] * x[1] + phi_q[21] * x[2] + phi_q[22] * x[3]
+                + phi_q[23] * x[4];
+            out[6] = out[6] + phi_q[24] * x[5] + phi_q[25] * x[6] + phi_q[26] * x[7]
+                + phi_q[27] * x[8];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

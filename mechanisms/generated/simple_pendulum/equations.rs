@@ -669,6 +669,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -892,6 +893,16 @@ pub mod exact {
         out[3] = 0.0;
         out[4] = 0.0;
         out[5] = 0.0;
+        Ok(())
+    }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 3] = phi_q
+            .try_into()
+            .map_err(|_| length_error(3, phi_q.len()))?;
+        let x: &[f64; 6] = x.try_into().map_err(|_| length_error(6, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 1] = out.try_into().map_err(|_| length_error(1, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[1] + phi_q[2] * x[2];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -2032,6 +2043,7 @@ pub mod reduced {
                 phi_q_rows: &PHI_Q_ROWS,
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
+                times_add: kkt_times_add,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -2204,6 +2216,22 @@ pub mod reduced {
             out[0] = phi_q[0] * y[0];
             out[1] = phi_q[1] * y[0];
             out[2] = 0.0;
+            Ok(())
+        }
+        fn kkt_times_add(
+            phi_q: &[f64],
+            x: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 2] = phi_q
+                .try_into()
+                .map_err(|_| length_error(2, phi_q.len()))?;
+            let x: &[f64; 3] = x.try_into().map_err(|_| length_error(3, x.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 1] = out
+                .try_into()
+                .map_err(|_| length_error(1, out_len))?;
+            out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[1];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

@@ -5365,6 +5365,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -8033,6 +8034,59 @@ pub mod exact {
             + phi_q[91] * y[16] + phi_q[107] * y[20];
         out[20] = phi_q[78] * y[11] + phi_q[82] * y[12] + phi_q[86] * y[13]
             + phi_q[92] * y[16] + phi_q[108] * y[20];
+        Ok(())
+    }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 109] = phi_q
+            .try_into()
+            .map_err(|_| length_error(109, phi_q.len()))?;
+        let x: &[f64; 21] = x.try_into().map_err(|_| length_error(21, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 21] = out.try_into().map_err(|_| length_error(21, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+            + phi_q[3] * x[5] + phi_q[4] * x[6];
+        out[1] = out[1] + phi_q[5] * x[1] + phi_q[6] * x[3] + phi_q[7] * x[4]
+            + phi_q[8] * x[5] + phi_q[9] * x[6];
+        out[2] = out[2] + phi_q[10] * x[2] + phi_q[11] * x[3] + phi_q[12] * x[4]
+            + phi_q[13] * x[5] + phi_q[14] * x[6];
+        out[3] = out[3] + phi_q[15] * x[3] + phi_q[16] * x[4] + phi_q[17] * x[5]
+            + phi_q[18] * x[6];
+        out[4] = out[4] + phi_q[19] * x[3] + phi_q[20] * x[4] + phi_q[21] * x[5]
+            + phi_q[22] * x[6];
+        out[5] = out[5] + phi_q[23] * x[0] + phi_q[24] * x[3] + phi_q[25] * x[4]
+            + phi_q[26] * x[5] + phi_q[27] * x[6] + phi_q[28] * x[7] + phi_q[29] * x[10]
+            + phi_q[30] * x[11] + phi_q[31] * x[12] + phi_q[32] * x[13];
+        out[6] = out[6] + phi_q[33] * x[1] + phi_q[34] * x[3] + phi_q[35] * x[4]
+            + phi_q[36] * x[5] + phi_q[37] * x[6] + phi_q[38] * x[8] + phi_q[39] * x[10]
+            + phi_q[40] * x[11] + phi_q[41] * x[12] + phi_q[42] * x[13];
+        out[7] = out[7] + phi_q[43] * x[2] + phi_q[44] * x[3] + phi_q[45] * x[4]
+            + phi_q[46] * x[5] + phi_q[47] * x[6] + phi_q[48] * x[9] + phi_q[49] * x[10]
+            + phi_q[50] * x[11] + phi_q[51] * x[12] + phi_q[52] * x[13];
+        out[8] = out[8] + phi_q[53] * x[7] + phi_q[54] * x[10] + phi_q[55] * x[11]
+            + phi_q[56] * x[12] + phi_q[57] * x[13] + phi_q[58] * x[14];
+        out[9] = out[9] + phi_q[59] * x[8] + phi_q[60] * x[10] + phi_q[61] * x[11]
+            + phi_q[62] * x[12] + phi_q[63] * x[13] + phi_q[64] * x[15];
+        out[10] = out[10] + phi_q[65] * x[9] + phi_q[66] * x[10] + phi_q[67] * x[11]
+            + phi_q[68] * x[12] + phi_q[69] * x[13] + phi_q[70] * x[16];
+        out[11] = out[11] + phi_q[71] * x[10] + phi_q[72] * x[11] + phi_q[73] * x[12]
+            + phi_q[74] * x[13] + phi_q[75] * x[17] + phi_q[76] * x[18]
+            + phi_q[77] * x[19] + phi_q[78] * x[20];
+        out[12] = out[12] + phi_q[79] * x[17] + phi_q[80] * x[18] + phi_q[81] * x[19]
+            + phi_q[82] * x[20];
+        out[13] = out[13] + phi_q[83] * x[17] + phi_q[84] * x[18] + phi_q[85] * x[19]
+            + phi_q[86] * x[20];
+        out[14] = out[14] + phi_q[87] * x[15];
+        out[15] = out[15] + phi_q[88] * x[16];
+        out[16] = out[16] + phi_q[89] * x[17] + phi_q[90] * x[18] + phi_q[91] * x[19]
+            + phi_q[92] * x[20];
+        out[17] = out[17] + phi_q[93] * x[3] + phi_q[94] * x[4] + phi_q[95] * x[5]
+            + phi_q[96] * x[6];
+        out[18] = out[18] + phi_q[97] * x[3] + phi_q[98] * x[4] + phi_q[99] * x[5]
+            + phi_q[100] * x[6];
+        out[19] = out[19] + phi_q[101] * x[10] + phi_q[102] * x[11] + phi_q[103] * x[12]
+            + phi_q[104] * x[13];
+        out[20] = out[20] + phi_q[105] * x[17] + phi_q[106] * x[18] + phi_q[107] * x[19]
+            + phi_q[108] * x[20];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -15468,6 +15522,7 @@ pub mod reduced {
                 phi_q_rows: &PHI_Q_ROWS,
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
+                times_add: kkt_times_add,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -18074,6 +18129,66 @@ pub mod reduced {
                 + phi_q[87] * y[14] + phi_q[103] * y[18];
             out[18] = phi_q[76] * y[11] + phi_q[80] * y[12] + phi_q[84] * y[13]
                 + phi_q[88] * y[14] + phi_q[104] * y[18];
+            Ok(())
+        }
+        fn kkt_times_add(
+            phi_q: &[f64],
+            x: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 105] = phi_q
+                .try_into()
+                .map_err(|_| length_error(105, phi_q.len()))?;
+            let x: &[f64; 19] = x.try_into().map_err(|_| length_error(19, x.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 19] = out
+                .try_into()
+                .map_err(|_| length_error(19, out_len))?;
+            out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+                + phi_q[3] * x[5] + phi_q[4] * x[6];
+            out[1] = out[1] + phi_q[5] * x[1] + phi_q[6] * x[3] + phi_q[7] * x[4]
+                + phi_q[8] * x[5] + phi_q[9] * x[6];
+            out[2] = out[2] + phi_q[10] * x[2] + phi_q[11] * x[3] + phi_q[12] * x[4]
+                + phi_q[13] * x[5] + phi_q[14] * x[6];
+            out[3] = out[3] + phi_q[15] * x[3] + phi_q[16] * x[4] + phi_q[17] * x[5]
+                + phi_q[18] * x[6];
+            out[4] = out[4] + phi_q[19] * x[3] + phi_q[20] * x[4] + phi_q[21] * x[5]
+                + phi_q[22] * x[6];
+            out[5] = out[5] + phi_q[23] * x[0] + phi_q[24] * x[3] + phi_q[25] * x[4]
+                + phi_q[26] * x[5] + phi_q[27] * x[6] + phi_q[28] * x[7]
+                + phi_q[29] * x[10] + phi_q[30] * x[11] + phi_q[31] * x[12]
+                + phi_q[32] * x[13];
+            out[6] = out[6] + phi_q[33] * x[1] + phi_q[34] * x[3] + phi_q[35] * x[4]
+                + phi_q[36] * x[5] + phi_q[37] * x[6] + phi_q[38] * x[8]
+                + phi_q[39] * x[10] + phi_q[40] * x[11] + phi_q[41] * x[12]
+                + phi_q[42] * x[13];
+            out[7] = out[7] + phi_q[43] * x[2] + phi_q[44] * x[3] + phi_q[45] * x[4]
+                + phi_q[46] * x[5] + phi_q[47] * x[6] + phi_q[48] * x[9]
+                + phi_q[49] * x[10] + phi_q[50] * x[11] + phi_q[51] * x[12]
+                + phi_q[52] * x[13];
+            out[8] = out[8] + phi_q[53] * x[7] + phi_q[54] * x[10] + phi_q[55] * x[11]
+                + phi_q[56] * x[12] + phi_q[57] * x[13] + phi_q[58] * x[14];
+            out[9] = out[9] + phi_q[59] * x[8] + phi_q[60] * x[10] + phi_q[61] * x[11]
+                + phi_q[62] * x[12] + phi_q[63] * x[13];
+            out[10] = out[10] + phi_q[64] * x[9] + phi_q[65] * x[10] + phi_q[66] * x[11]
+                + phi_q[67] * x[12] + phi_q[68] * x[13];
+            out[11] = out[11] + phi_q[69] * x[10] + phi_q[70] * x[11] + phi_q[71] * x[12]
+                + phi_q[72] * x[13] + phi_q[73] * x[15] + phi_q[74] * x[16]
+                + phi_q[75] * x[17] + phi_q[76] * x[18];
+            out[12] = out[12] + phi_q[77] * x[15] + phi_q[78] * x[16] + phi_q[79] * x[17]
+                + phi_q[80] * x[18];
+            out[13] = out[13] + phi_q[81] * x[15] + phi_q[82] * x[16] + phi_q[83] * x[17]
+                + phi_q[84] * x[18];
+            out[14] = out[14] + phi_q[85] * x[15] + phi_q[86] * x[16] + phi_q[87] * x[17]
+                + phi_q[88] * x[18];
+            out[15] = out[15] + phi_q[89] * x[3] + phi_q[90] * x[4] + phi_q[91] * x[5]
+                + phi_q[92] * x[6];
+            out[16] = out[16] + phi_q[93] * x[3] + phi_q[94] * x[4] + phi_q[95] * x[5]
+                + phi_q[96] * x[6];
+            out[17] = out[17] + phi_q[97] * x[10] + phi_q[98] * x[11] + phi_q[99] * x[12]
+                + phi_q[100] * x[13];
+            out[18] = out[18] + phi_q[101] * x[15] + phi_q[102] * x[16]
+                + phi_q[103] * x[17] + phi_q[104] * x[18];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

@@ -1121,6 +1121,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -1604,6 +1605,23 @@ pub mod exact {
         out[4] = phi_q[2] * y[0] + phi_q[7] * y[1] + phi_q[12] * y[2] + phi_q[16] * y[3];
         out[5] = phi_q[3] * y[0] + phi_q[8] * y[1] + phi_q[13] * y[2] + phi_q[17] * y[3];
         out[6] = phi_q[4] * y[0] + phi_q[9] * y[1] + phi_q[14] * y[2] + phi_q[18] * y[3];
+        Ok(())
+    }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 19] = phi_q
+            .try_into()
+            .map_err(|_| length_error(19, phi_q.len()))?;
+        let x: &[f64; 7] = x.try_into().map_err(|_| length_error(7, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 4] = out.try_into().map_err(|_| length_error(4, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+            + phi_q[3] * x[5] + phi_q[4] * x[6];
+        out[1] = out[1] + phi_q[5] * x[1] + phi_q[6] * x[3] + phi_q[7] * x[4]
+            + phi_q[8] * x[5] + phi_q[9] * x[6];
+        out[2] = out[2] + phi_q[10] * x[2] + phi_q[11] * x[3] + phi_q[12] * x[4]
+            + phi_q[13] * x[5] + phi_q[14] * x[6];
+        out[3] = out[3] + phi_q[15] * x[3] + phi_q[16] * x[4] + phi_q[17] * x[5]
+            + phi_q[18] * x[6];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

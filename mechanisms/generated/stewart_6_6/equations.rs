@@ -21803,6 +21803,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -32783,6 +32784,165 @@ pub mod exact {
             + phi_q[328] * y[63] + phi_q[332] * y[64] + phi_q[389] * y[71];
         Ok(())
     }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 390] = phi_q
+            .try_into()
+            .map_err(|_| length_error(390, phi_q.len()))?;
+        let x: &[f64; 78] = x.try_into().map_err(|_| length_error(78, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 72] = out.try_into().map_err(|_| length_error(72, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+            + phi_q[3] * x[5] + phi_q[4] * x[6] + phi_q[5] * x[9] + phi_q[6] * x[10]
+            + phi_q[7] * x[11];
+        out[1] = out[1] + phi_q[8] * x[1] + phi_q[9] * x[3] + phi_q[10] * x[4]
+            + phi_q[11] * x[5] + phi_q[12] * x[7] + phi_q[13] * x[9] + phi_q[14] * x[10]
+            + phi_q[15] * x[11];
+        out[2] = out[2] + phi_q[16] * x[2] + phi_q[17] * x[3] + phi_q[18] * x[4]
+            + phi_q[19] * x[8] + phi_q[20] * x[9] + phi_q[21] * x[10];
+        out[3] = out[3] + phi_q[22] * x[0] + phi_q[23] * x[3] + phi_q[24] * x[4]
+            + phi_q[25] * x[5] + phi_q[26] * x[12] + phi_q[27] * x[15]
+            + phi_q[28] * x[16] + phi_q[29] * x[17];
+        out[4] = out[4] + phi_q[30] * x[1] + phi_q[31] * x[3] + phi_q[32] * x[4]
+            + phi_q[33] * x[5] + phi_q[34] * x[13] + phi_q[35] * x[15]
+            + phi_q[36] * x[16] + phi_q[37] * x[17];
+        out[5] = out[5] + phi_q[38] * x[2] + phi_q[39] * x[3] + phi_q[40] * x[4]
+            + phi_q[41] * x[14] + phi_q[42] * x[15] + phi_q[43] * x[16];
+        out[6] = out[6] + phi_q[44] * x[0] + phi_q[45] * x[3] + phi_q[46] * x[4]
+            + phi_q[47] * x[5] + phi_q[48] * x[18] + phi_q[49] * x[21]
+            + phi_q[50] * x[22] + phi_q[51] * x[23];
+        out[7] = out[7] + phi_q[52] * x[1] + phi_q[53] * x[3] + phi_q[54] * x[4]
+            + phi_q[55] * x[5] + phi_q[56] * x[19] + phi_q[57] * x[21]
+            + phi_q[58] * x[22] + phi_q[59] * x[23];
+        out[8] = out[8] + phi_q[60] * x[2] + phi_q[61] * x[3] + phi_q[62] * x[4]
+            + phi_q[63] * x[20] + phi_q[64] * x[21] + phi_q[65] * x[22];
+        out[9] = out[9] + phi_q[66] * x[0] + phi_q[67] * x[3] + phi_q[68] * x[4]
+            + phi_q[69] * x[5] + phi_q[70] * x[24] + phi_q[71] * x[27]
+            + phi_q[72] * x[28] + phi_q[73] * x[29];
+        out[10] = out[10] + phi_q[74] * x[1] + phi_q[75] * x[3] + phi_q[76] * x[4]
+            + phi_q[77] * x[5] + phi_q[78] * x[25] + phi_q[79] * x[27]
+            + phi_q[80] * x[28] + phi_q[81] * x[29];
+        out[11] = out[11] + phi_q[82] * x[2] + phi_q[83] * x[3] + phi_q[84] * x[4]
+            + phi_q[85] * x[26] + phi_q[86] * x[27] + phi_q[87] * x[28];
+        out[12] = out[12] + phi_q[88] * x[0] + phi_q[89] * x[3] + phi_q[90] * x[4]
+            + phi_q[91] * x[5] + phi_q[92] * x[30] + phi_q[93] * x[33]
+            + phi_q[94] * x[34] + phi_q[95] * x[35];
+        out[13] = out[13] + phi_q[96] * x[1] + phi_q[97] * x[3] + phi_q[98] * x[4]
+            + phi_q[99] * x[5] + phi_q[100] * x[31] + phi_q[101] * x[33]
+            + phi_q[102] * x[34] + phi_q[103] * x[35];
+        out[14] = out[14] + phi_q[104] * x[2] + phi_q[105] * x[3] + phi_q[106] * x[4]
+            + phi_q[107] * x[32] + phi_q[108] * x[33] + phi_q[109] * x[34];
+        out[15] = out[15] + phi_q[110] * x[0] + phi_q[111] * x[3] + phi_q[112] * x[4]
+            + phi_q[113] * x[5] + phi_q[114] * x[36] + phi_q[115] * x[39]
+            + phi_q[116] * x[40] + phi_q[117] * x[41];
+        out[16] = out[16] + phi_q[118] * x[1] + phi_q[119] * x[3] + phi_q[120] * x[4]
+            + phi_q[121] * x[5] + phi_q[122] * x[37] + phi_q[123] * x[39]
+            + phi_q[124] * x[40] + phi_q[125] * x[41];
+        out[17] = out[17] + phi_q[126] * x[2] + phi_q[127] * x[3] + phi_q[128] * x[4]
+            + phi_q[129] * x[38] + phi_q[130] * x[39] + phi_q[131] * x[40];
+        out[18] = out[18] + phi_q[132] * x[9] + phi_q[133] * x[45];
+        out[19] = out[19] + phi_q[134] * x[10] + phi_q[135] * x[46];
+        out[20] = out[20] + phi_q[136] * x[11] + phi_q[137] * x[47];
+        out[21] = out[21] + phi_q[138] * x[6] + phi_q[139] * x[7] + phi_q[140] * x[8]
+            + phi_q[141] * x[42] + phi_q[142] * x[43] + phi_q[143] * x[44]
+            + phi_q[144] * x[46] + phi_q[145] * x[47];
+        out[22] = out[22] + phi_q[146] * x[6] + phi_q[147] * x[7] + phi_q[148] * x[8]
+            + phi_q[149] * x[42] + phi_q[150] * x[43] + phi_q[151] * x[44]
+            + phi_q[152] * x[45] + phi_q[153] * x[46] + phi_q[154] * x[47];
+        out[23] = out[23] + phi_q[155] * x[15] + phi_q[156] * x[51];
+        out[24] = out[24] + phi_q[157] * x[16] + phi_q[158] * x[52];
+        out[25] = out[25] + phi_q[159] * x[17] + phi_q[160] * x[53];
+        out[26] = out[26] + phi_q[161] * x[12] + phi_q[162] * x[13] + phi_q[163] * x[14]
+            + phi_q[164] * x[48] + phi_q[165] * x[49] + phi_q[166] * x[50]
+            + phi_q[167] * x[52] + phi_q[168] * x[53];
+        out[27] = out[27] + phi_q[169] * x[12] + phi_q[170] * x[13] + phi_q[171] * x[14]
+            + phi_q[172] * x[48] + phi_q[173] * x[49] + phi_q[174] * x[50]
+            + phi_q[175] * x[51] + phi_q[176] * x[52] + phi_q[177] * x[53];
+        out[28] = out[28] + phi_q[178] * x[21] + phi_q[179] * x[57];
+        out[29] = out[29] + phi_q[180] * x[22] + phi_q[181] * x[58];
+        out[30] = out[30] + phi_q[182] * x[23] + phi_q[183] * x[59];
+        out[31] = out[31] + phi_q[184] * x[18] + phi_q[185] * x[19] + phi_q[186] * x[20]
+            + phi_q[187] * x[54] + phi_q[188] * x[55] + phi_q[189] * x[56]
+            + phi_q[190] * x[58] + phi_q[191] * x[59];
+        out[32] = out[32] + phi_q[192] * x[18] + phi_q[193] * x[19] + phi_q[194] * x[20]
+            + phi_q[195] * x[54] + phi_q[196] * x[55] + phi_q[197] * x[56]
+            + phi_q[198] * x[57] + phi_q[199] * x[58] + phi_q[200] * x[59];
+        out[33] = out[33] + phi_q[201] * x[27] + phi_q[202] * x[63];
+        out[34] = out[34] + phi_q[203] * x[28] + phi_q[204] * x[64];
+        out[35] = out[35] + phi_q[205] * x[29] + phi_q[206] * x[65];
+        out[36] = out[36] + phi_q[207] * x[24] + phi_q[208] * x[25] + phi_q[209] * x[26]
+            + phi_q[210] * x[60] + phi_q[211] * x[61] + phi_q[212] * x[62]
+            + phi_q[213] * x[64] + phi_q[214] * x[65];
+        out[37] = out[37] + phi_q[215] * x[24] + phi_q[216] * x[25] + phi_q[217] * x[26]
+            + phi_q[218] * x[60] + phi_q[219] * x[61] + phi_q[220] * x[62]
+            + phi_q[221] * x[63] + phi_q[222] * x[64] + phi_q[223] * x[65];
+        out[38] = out[38] + phi_q[224] * x[33] + phi_q[225] * x[69];
+        out[39] = out[39] + phi_q[226] * x[34] + phi_q[227] * x[70];
+        out[40] = out[40] + phi_q[228] * x[35] + phi_q[229] * x[71];
+        out[41] = out[41] + phi_q[230] * x[30] + phi_q[231] * x[31] + phi_q[232] * x[32]
+            + phi_q[233] * x[66] + phi_q[234] * x[67] + phi_q[235] * x[68]
+            + phi_q[236] * x[70] + phi_q[237] * x[71];
+        out[42] = out[42] + phi_q[238] * x[30] + phi_q[239] * x[31] + phi_q[240] * x[32]
+            + phi_q[241] * x[66] + phi_q[242] * x[67] + phi_q[243] * x[68]
+            + phi_q[244] * x[69] + phi_q[245] * x[70] + phi_q[246] * x[71];
+        out[43] = out[43] + phi_q[247] * x[39] + phi_q[248] * x[75];
+        out[44] = out[44] + phi_q[249] * x[40] + phi_q[250] * x[76];
+        out[45] = out[45] + phi_q[251] * x[41] + phi_q[252] * x[77];
+        out[46] = out[46] + phi_q[253] * x[36] + phi_q[254] * x[37] + phi_q[255] * x[38]
+            + phi_q[256] * x[72] + phi_q[257] * x[73] + phi_q[258] * x[74]
+            + phi_q[259] * x[76] + phi_q[260] * x[77];
+        out[47] = out[47] + phi_q[261] * x[36] + phi_q[262] * x[37] + phi_q[263] * x[38]
+            + phi_q[264] * x[72] + phi_q[265] * x[73] + phi_q[266] * x[74]
+            + phi_q[267] * x[75] + phi_q[268] * x[76] + phi_q[269] * x[77];
+        out[48] = out[48] + phi_q[270] * x[42] + phi_q[271] * x[45] + phi_q[272] * x[46]
+            + phi_q[273] * x[47];
+        out[49] = out[49] + phi_q[274] * x[43] + phi_q[275] * x[45] + phi_q[276] * x[46]
+            + phi_q[277] * x[47];
+        out[50] = out[50] + phi_q[278] * x[44] + phi_q[279] * x[45] + phi_q[280] * x[46];
+        out[51] = out[51] + phi_q[281] * x[48] + phi_q[282] * x[51] + phi_q[283] * x[52]
+            + phi_q[284] * x[53];
+        out[52] = out[52] + phi_q[285] * x[49] + phi_q[286] * x[51] + phi_q[287] * x[52]
+            + phi_q[288] * x[53];
+        out[53] = out[53] + phi_q[289] * x[50] + phi_q[290] * x[51] + phi_q[291] * x[52];
+        out[54] = out[54] + phi_q[292] * x[54] + phi_q[293] * x[57] + phi_q[294] * x[58]
+            + phi_q[295] * x[59];
+        out[55] = out[55] + phi_q[296] * x[55] + phi_q[297] * x[57] + phi_q[298] * x[58]
+            + phi_q[299] * x[59];
+        out[56] = out[56] + phi_q[300] * x[56] + phi_q[301] * x[57] + phi_q[302] * x[58];
+        out[57] = out[57] + phi_q[303] * x[60] + phi_q[304] * x[63] + phi_q[305] * x[64]
+            + phi_q[306] * x[65];
+        out[58] = out[58] + phi_q[307] * x[61] + phi_q[308] * x[63] + phi_q[309] * x[64]
+            + phi_q[310] * x[65];
+        out[59] = out[59] + phi_q[311] * x[62] + phi_q[312] * x[63] + phi_q[313] * x[64];
+        out[60] = out[60] + phi_q[314] * x[66] + phi_q[315] * x[69] + phi_q[316] * x[70]
+            + phi_q[317] * x[71];
+        out[61] = out[61] + phi_q[318] * x[67] + phi_q[319] * x[69] + phi_q[320] * x[70]
+            + phi_q[321] * x[71];
+        out[62] = out[62] + phi_q[322] * x[68] + phi_q[323] * x[69] + phi_q[324] * x[70];
+        out[63] = out[63] + phi_q[325] * x[72] + phi_q[326] * x[75] + phi_q[327] * x[76]
+            + phi_q[328] * x[77];
+        out[64] = out[64] + phi_q[329] * x[73] + phi_q[330] * x[75] + phi_q[331] * x[76]
+            + phi_q[332] * x[77];
+        out[65] = out[65] + phi_q[333] * x[74] + phi_q[334] * x[75] + phi_q[335] * x[76];
+        out[66] = out[66] + phi_q[336] * x[6] + phi_q[337] * x[7] + phi_q[338] * x[8]
+            + phi_q[339] * x[42] + phi_q[340] * x[43] + phi_q[341] * x[44]
+            + phi_q[342] * x[45] + phi_q[343] * x[46] + phi_q[344] * x[47];
+        out[67] = out[67] + phi_q[345] * x[12] + phi_q[346] * x[13] + phi_q[347] * x[14]
+            + phi_q[348] * x[48] + phi_q[349] * x[49] + phi_q[350] * x[50]
+            + phi_q[351] * x[51] + phi_q[352] * x[52] + phi_q[353] * x[53];
+        out[68] = out[68] + phi_q[354] * x[18] + phi_q[355] * x[19] + phi_q[356] * x[20]
+            + phi_q[357] * x[54] + phi_q[358] * x[55] + phi_q[359] * x[56]
+            + phi_q[360] * x[57] + phi_q[361] * x[58] + phi_q[362] * x[59];
+        out[69] = out[69] + phi_q[363] * x[24] + phi_q[364] * x[25] + phi_q[365] * x[26]
+            + phi_q[366] * x[60] + phi_q[367] * x[61] + phi_q[368] * x[62]
+            + phi_q[369] * x[63] + phi_q[370] * x[64] + phi_q[371] * x[65];
+        out[70] = out[70] + phi_q[372] * x[30] + phi_q[373] * x[31] + phi_q[374] * x[32]
+            + phi_q[375] * x[66] + phi_q[376] * x[67] + phi_q[377] * x[68]
+            + phi_q[378] * x[69] + phi_q[379] * x[70] + phi_q[380] * x[71];
+        out[71] = out[71] + phi_q[381] * x[36] + phi_q[382] * x[37] + phi_q[383] * x[38]
+            + phi_q[384] * x[72] + phi_q[385] * x[73] + phi_q[386] * x[74]
+            + phi_q[387] * x[75] + phi_q[388] * x[76] + phi_q[389] * x[77];
+        Ok(())
+    }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
         k: &[f64],
@@ -43658,6 +43818,7 @@ pub mod paper {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -53510,6 +53671,165 @@ pub mod paper {
             + phi_q[388] * y[71];
         out[77] = phi_q[252] * y[45] + phi_q[260] * y[46] + phi_q[269] * y[47]
             + phi_q[328] * y[63] + phi_q[332] * y[64] + phi_q[389] * y[71];
+        Ok(())
+    }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 390] = phi_q
+            .try_into()
+            .map_err(|_| length_error(390, phi_q.len()))?;
+        let x: &[f64; 78] = x.try_into().map_err(|_| length_error(78, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 72] = out.try_into().map_err(|_| length_error(72, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+            + phi_q[3] * x[5] + phi_q[4] * x[6] + phi_q[5] * x[9] + phi_q[6] * x[10]
+            + phi_q[7] * x[11];
+        out[1] = out[1] + phi_q[8] * x[1] + phi_q[9] * x[3] + phi_q[10] * x[4]
+            + phi_q[11] * x[5] + phi_q[12] * x[7] + phi_q[13] * x[9] + phi_q[14] * x[10]
+            + phi_q[15] * x[11];
+        out[2] = out[2] + phi_q[16] * x[2] + phi_q[17] * x[3] + phi_q[18] * x[4]
+            + phi_q[19] * x[8] + phi_q[20] * x[9] + phi_q[21] * x[10];
+        out[3] = out[3] + phi_q[22] * x[0] + phi_q[23] * x[3] + phi_q[24] * x[4]
+            + phi_q[25] * x[5] + phi_q[26] * x[12] + phi_q[27] * x[15]
+            + phi_q[28] * x[16] + phi_q[29] * x[17];
+        out[4] = out[4] + phi_q[30] * x[1] + phi_q[31] * x[3] + phi_q[32] * x[4]
+            + phi_q[33] * x[5] + phi_q[34] * x[13] + phi_q[35] * x[15]
+            + phi_q[36] * x[16] + phi_q[37] * x[17];
+        out[5] = out[5] + phi_q[38] * x[2] + phi_q[39] * x[3] + phi_q[40] * x[4]
+            + phi_q[41] * x[14] + phi_q[42] * x[15] + phi_q[43] * x[16];
+        out[6] = out[6] + phi_q[44] * x[0] + phi_q[45] * x[3] + phi_q[46] * x[4]
+            + phi_q[47] * x[5] + phi_q[48] * x[18] + phi_q[49] * x[21]
+            + phi_q[50] * x[22] + phi_q[51] * x[23];
+        out[7] = out[7] + phi_q[52] * x[1] + phi_q[53] * x[3] + phi_q[54] * x[4]
+            + phi_q[55] * x[5] + phi_q[56] * x[19] + phi_q[57] * x[21]
+            + phi_q[58] * x[22] + phi_q[59] * x[23];
+        out[8] = out[8] + phi_q[60] * x[2] + phi_q[61] * x[3] + phi_q[62] * x[4]
+            + phi_q[63] * x[20] + phi_q[64] * x[21] + phi_q[65] * x[22];
+        out[9] = out[9] + phi_q[66] * x[0] + phi_q[67] * x[3] + phi_q[68] * x[4]
+            + phi_q[69] * x[5] + phi_q[70] * x[24] + phi_q[71] * x[27]
+            + phi_q[72] * x[28] + phi_q[73] * x[29];
+        out[10] = out[10] + phi_q[74] * x[1] + phi_q[75] * x[3] + phi_q[76] * x[4]
+            + phi_q[77] * x[5] + phi_q[78] * x[25] + phi_q[79] * x[27]
+            + phi_q[80] * x[28] + phi_q[81] * x[29];
+        out[11] = out[11] + phi_q[82] * x[2] + phi_q[83] * x[3] + phi_q[84] * x[4]
+            + phi_q[85] * x[26] + phi_q[86] * x[27] + phi_q[87] * x[28];
+        out[12] = out[12] + phi_q[88] * x[0] + phi_q[89] * x[3] + phi_q[90] * x[4]
+            + phi_q[91] * x[5] + phi_q[92] * x[30] + phi_q[93] * x[33]
+            + phi_q[94] * x[34] + phi_q[95] * x[35];
+        out[13] = out[13] + phi_q[96] * x[1] + phi_q[97] * x[3] + phi_q[98] * x[4]
+            + phi_q[99] * x[5] + phi_q[100] * x[31] + phi_q[101] * x[33]
+            + phi_q[102] * x[34] + phi_q[103] * x[35];
+        out[14] = out[14] + phi_q[104] * x[2] + phi_q[105] * x[3] + phi_q[106] * x[4]
+            + phi_q[107] * x[32] + phi_q[108] * x[33] + phi_q[109] * x[34];
+        out[15] = out[15] + phi_q[110] * x[0] + phi_q[111] * x[3] + phi_q[112] * x[4]
+            + phi_q[113] * x[5] + phi_q[114] * x[36] + phi_q[115] * x[39]
+            + phi_q[116] * x[40] + phi_q[117] * x[41];
+        out[16] = out[16] + phi_q[118] * x[1] + phi_q[119] * x[3] + phi_q[120] * x[4]
+            + phi_q[121] * x[5] + phi_q[122] * x[37] + phi_q[123] * x[39]
+            + phi_q[124] * x[40] + phi_q[125] * x[41];
+        out[17] = out[17] + phi_q[126] * x[2] + phi_q[127] * x[3] + phi_q[128] * x[4]
+            + phi_q[129] * x[38] + phi_q[130] * x[39] + phi_q[131] * x[40];
+        out[18] = out[18] + phi_q[132] * x[9] + phi_q[133] * x[45];
+        out[19] = out[19] + phi_q[134] * x[10] + phi_q[135] * x[46];
+        out[20] = out[20] + phi_q[136] * x[11] + phi_q[137] * x[47];
+        out[21] = out[21] + phi_q[138] * x[6] + phi_q[139] * x[7] + phi_q[140] * x[8]
+            + phi_q[141] * x[42] + phi_q[142] * x[43] + phi_q[143] * x[44]
+            + phi_q[144] * x[46] + phi_q[145] * x[47];
+        out[22] = out[22] + phi_q[146] * x[6] + phi_q[147] * x[7] + phi_q[148] * x[8]
+            + phi_q[149] * x[42] + phi_q[150] * x[43] + phi_q[151] * x[44]
+            + phi_q[152] * x[45] + phi_q[153] * x[46] + phi_q[154] * x[47];
+        out[23] = out[23] + phi_q[155] * x[15] + phi_q[156] * x[51];
+        out[24] = out[24] + phi_q[157] * x[16] + phi_q[158] * x[52];
+        out[25] = out[25] + phi_q[159] * x[17] + phi_q[160] * x[53];
+        out[26] = out[26] + phi_q[161] * x[12] + phi_q[162] * x[13] + phi_q[163] * x[14]
+            + phi_q[164] * x[48] + phi_q[165] * x[49] + phi_q[166] * x[50]
+            + phi_q[167] * x[52] + phi_q[168] * x[53];
+        out[27] = out[27] + phi_q[169] * x[12] + phi_q[170] * x[13] + phi_q[171] * x[14]
+            + phi_q[172] * x[48] + phi_q[173] * x[49] + phi_q[174] * x[50]
+            + phi_q[175] * x[51] + phi_q[176] * x[52] + phi_q[177] * x[53];
+        out[28] = out[28] + phi_q[178] * x[21] + phi_q[179] * x[57];
+        out[29] = out[29] + phi_q[180] * x[22] + phi_q[181] * x[58];
+        out[30] = out[30] + phi_q[182] * x[23] + phi_q[183] * x[59];
+        out[31] = out[31] + phi_q[184] * x[18] + phi_q[185] * x[19] + phi_q[186] * x[20]
+            + phi_q[187] * x[54] + phi_q[188] * x[55] + phi_q[189] * x[56]
+            + phi_q[190] * x[58] + phi_q[191] * x[59];
+        out[32] = out[32] + phi_q[192] * x[18] + phi_q[193] * x[19] + phi_q[194] * x[20]
+            + phi_q[195] * x[54] + phi_q[196] * x[55] + phi_q[197] * x[56]
+            + phi_q[198] * x[57] + phi_q[199] * x[58] + phi_q[200] * x[59];
+        out[33] = out[33] + phi_q[201] * x[27] + phi_q[202] * x[63];
+        out[34] = out[34] + phi_q[203] * x[28] + phi_q[204] * x[64];
+        out[35] = out[35] + phi_q[205] * x[29] + phi_q[206] * x[65];
+        out[36] = out[36] + phi_q[207] * x[24] + phi_q[208] * x[25] + phi_q[209] * x[26]
+            + phi_q[210] * x[60] + phi_q[211] * x[61] + phi_q[212] * x[62]
+            + phi_q[213] * x[64] + phi_q[214] * x[65];
+        out[37] = out[37] + phi_q[215] * x[24] + phi_q[216] * x[25] + phi_q[217] * x[26]
+            + phi_q[218] * x[60] + phi_q[219] * x[61] + phi_q[220] * x[62]
+            + phi_q[221] * x[63] + phi_q[222] * x[64] + phi_q[223] * x[65];
+        out[38] = out[38] + phi_q[224] * x[33] + phi_q[225] * x[69];
+        out[39] = out[39] + phi_q[226] * x[34] + phi_q[227] * x[70];
+        out[40] = out[40] + phi_q[228] * x[35] + phi_q[229] * x[71];
+        out[41] = out[41] + phi_q[230] * x[30] + phi_q[231] * x[31] + phi_q[232] * x[32]
+            + phi_q[233] * x[66] + phi_q[234] * x[67] + phi_q[235] * x[68]
+            + phi_q[236] * x[70] + phi_q[237] * x[71];
+        out[42] = out[42] + phi_q[238] * x[30] + phi_q[239] * x[31] + phi_q[240] * x[32]
+            + phi_q[241] * x[66] + phi_q[242] * x[67] + phi_q[243] * x[68]
+            + phi_q[244] * x[69] + phi_q[245] * x[70] + phi_q[246] * x[71];
+        out[43] = out[43] + phi_q[247] * x[39] + phi_q[248] * x[75];
+        out[44] = out[44] + phi_q[249] * x[40] + phi_q[250] * x[76];
+        out[45] = out[45] + phi_q[251] * x[41] + phi_q[252] * x[77];
+        out[46] = out[46] + phi_q[253] * x[36] + phi_q[254] * x[37] + phi_q[255] * x[38]
+            + phi_q[256] * x[72] + phi_q[257] * x[73] + phi_q[258] * x[74]
+            + phi_q[259] * x[76] + phi_q[260] * x[77];
+        out[47] = out[47] + phi_q[261] * x[36] + phi_q[262] * x[37] + phi_q[263] * x[38]
+            + phi_q[264] * x[72] + phi_q[265] * x[73] + phi_q[266] * x[74]
+            + phi_q[267] * x[75] + phi_q[268] * x[76] + phi_q[269] * x[77];
+        out[48] = out[48] + phi_q[270] * x[42] + phi_q[271] * x[45] + phi_q[272] * x[46]
+            + phi_q[273] * x[47];
+        out[49] = out[49] + phi_q[274] * x[43] + phi_q[275] * x[45] + phi_q[276] * x[46]
+            + phi_q[277] * x[47];
+        out[50] = out[50] + phi_q[278] * x[44] + phi_q[279] * x[45] + phi_q[280] * x[46];
+        out[51] = out[51] + phi_q[281] * x[48] + phi_q[282] * x[51] + phi_q[283] * x[52]
+            + phi_q[284] * x[53];
+        out[52] = out[52] + phi_q[285] * x[49] + phi_q[286] * x[51] + phi_q[287] * x[52]
+            + phi_q[288] * x[53];
+        out[53] = out[53] + phi_q[289] * x[50] + phi_q[290] * x[51] + phi_q[291] * x[52];
+        out[54] = out[54] + phi_q[292] * x[54] + phi_q[293] * x[57] + phi_q[294] * x[58]
+            + phi_q[295] * x[59];
+        out[55] = out[55] + phi_q[296] * x[55] + phi_q[297] * x[57] + phi_q[298] * x[58]
+            + phi_q[299] * x[59];
+        out[56] = out[56] + phi_q[300] * x[56] + phi_q[301] * x[57] + phi_q[302] * x[58];
+        out[57] = out[57] + phi_q[303] * x[60] + phi_q[304] * x[63] + phi_q[305] * x[64]
+            + phi_q[306] * x[65];
+        out[58] = out[58] + phi_q[307] * x[61] + phi_q[308] * x[63] + phi_q[309] * x[64]
+            + phi_q[310] * x[65];
+        out[59] = out[59] + phi_q[311] * x[62] + phi_q[312] * x[63] + phi_q[313] * x[64];
+        out[60] = out[60] + phi_q[314] * x[66] + phi_q[315] * x[69] + phi_q[316] * x[70]
+            + phi_q[317] * x[71];
+        out[61] = out[61] + phi_q[318] * x[67] + phi_q[319] * x[69] + phi_q[320] * x[70]
+            + phi_q[321] * x[71];
+        out[62] = out[62] + phi_q[322] * x[68] + phi_q[323] * x[69] + phi_q[324] * x[70];
+        out[63] = out[63] + phi_q[325] * x[72] + phi_q[326] * x[75] + phi_q[327] * x[76]
+            + phi_q[328] * x[77];
+        out[64] = out[64] + phi_q[329] * x[73] + phi_q[330] * x[75] + phi_q[331] * x[76]
+            + phi_q[332] * x[77];
+        out[65] = out[65] + phi_q[333] * x[74] + phi_q[334] * x[75] + phi_q[335] * x[76];
+        out[66] = out[66] + phi_q[336] * x[6] + phi_q[337] * x[7] + phi_q[338] * x[8]
+            + phi_q[339] * x[42] + phi_q[340] * x[43] + phi_q[341] * x[44]
+            + phi_q[342] * x[45] + phi_q[343] * x[46] + phi_q[344] * x[47];
+        out[67] = out[67] + phi_q[345] * x[12] + phi_q[346] * x[13] + phi_q[347] * x[14]
+            + phi_q[348] * x[48] + phi_q[349] * x[49] + phi_q[350] * x[50]
+            + phi_q[351] * x[51] + phi_q[352] * x[52] + phi_q[353] * x[53];
+        out[68] = out[68] + phi_q[354] * x[18] + phi_q[355] * x[19] + phi_q[356] * x[20]
+            + phi_q[357] * x[54] + phi_q[358] * x[55] + phi_q[359] * x[56]
+            + phi_q[360] * x[57] + phi_q[361] * x[58] + phi_q[362] * x[59];
+        out[69] = out[69] + phi_q[363] * x[24] + phi_q[364] * x[25] + phi_q[365] * x[26]
+            + phi_q[366] * x[60] + phi_q[367] * x[61] + phi_q[368] * x[62]
+            + phi_q[369] * x[63] + phi_q[370] * x[64] + phi_q[371] * x[65];
+        out[70] = out[70] + phi_q[372] * x[30] + phi_q[373] * x[31] + phi_q[374] * x[32]
+            + phi_q[375] * x[66] + phi_q[376] * x[67] + phi_q[377] * x[68]
+            + phi_q[378] * x[69] + phi_q[379] * x[70] + phi_q[380] * x[71];
+        out[71] = out[71] + phi_q[381] * x[36] + phi_q[382] * x[37] + phi_q[383] * x[38]
+            + phi_q[384] * x[72] + phi_q[385] * x[73] + phi_q[386] * x[74]
+            + phi_q[387] * x[75] + phi_q[388] * x[76] + phi_q[389] * x[77];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
@@ -64335,6 +64655,7 @@ pub mod reduced {
                 phi_q_rows: &PHI_Q_ROWS,
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
+                times_add: kkt_times_add,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -73653,6 +73974,169 @@ pub mod reduced {
                 + phi_q[353] * y[53];
             Ok(())
         }
+        fn kkt_times_add(
+            phi_q: &[f64],
+            x: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 354] = phi_q
+                .try_into()
+                .map_err(|_| length_error(354, phi_q.len()))?;
+            let x: &[f64; 60] = x.try_into().map_err(|_| length_error(60, x.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 54] = out
+                .try_into()
+                .map_err(|_| length_error(54, out_len))?;
+            out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+                + phi_q[3] * x[5] + phi_q[4] * x[6] + phi_q[5] * x[9] + phi_q[6] * x[10]
+                + phi_q[7] * x[11];
+            out[1] = out[1] + phi_q[8] * x[1] + phi_q[9] * x[3] + phi_q[10] * x[4]
+                + phi_q[11] * x[5] + phi_q[12] * x[7] + phi_q[13] * x[9]
+                + phi_q[14] * x[10] + phi_q[15] * x[11];
+            out[2] = out[2] + phi_q[16] * x[2] + phi_q[17] * x[3] + phi_q[18] * x[4]
+                + phi_q[19] * x[8] + phi_q[20] * x[9] + phi_q[21] * x[10];
+            out[3] = out[3] + phi_q[22] * x[0] + phi_q[23] * x[3] + phi_q[24] * x[4]
+                + phi_q[25] * x[5] + phi_q[26] * x[12] + phi_q[27] * x[15]
+                + phi_q[28] * x[16] + phi_q[29] * x[17];
+            out[4] = out[4] + phi_q[30] * x[1] + phi_q[31] * x[3] + phi_q[32] * x[4]
+                + phi_q[33] * x[5] + phi_q[34] * x[13] + phi_q[35] * x[15]
+                + phi_q[36] * x[16] + phi_q[37] * x[17];
+            out[5] = out[5] + phi_q[38] * x[2] + phi_q[39] * x[3] + phi_q[40] * x[4]
+                + phi_q[41] * x[14] + phi_q[42] * x[15] + phi_q[43] * x[16];
+            out[6] = out[6] + phi_q[44] * x[0] + phi_q[45] * x[3] + phi_q[46] * x[4]
+                + phi_q[47] * x[5] + phi_q[48] * x[18] + phi_q[49] * x[21]
+                + phi_q[50] * x[22] + phi_q[51] * x[23];
+            out[7] = out[7] + phi_q[52] * x[1] + phi_q[53] * x[3] + phi_q[54] * x[4]
+                + phi_q[55] * x[5] + phi_q[56] * x[19] + phi_q[57] * x[21]
+                + phi_q[58] * x[22] + phi_q[59] * x[23];
+            out[8] = out[8] + phi_q[60] * x[2] + phi_q[61] * x[3] + phi_q[62] * x[4]
+                + phi_q[63] * x[20] + phi_q[64] * x[21] + phi_q[65] * x[22];
+            out[9] = out[9] + phi_q[66] * x[0] + phi_q[67] * x[3] + phi_q[68] * x[4]
+                + phi_q[69] * x[5] + phi_q[70] * x[24] + phi_q[71] * x[27]
+                + phi_q[72] * x[28] + phi_q[73] * x[29];
+            out[10] = out[10] + phi_q[74] * x[1] + phi_q[75] * x[3] + phi_q[76] * x[4]
+                + phi_q[77] * x[5] + phi_q[78] * x[25] + phi_q[79] * x[27]
+                + phi_q[80] * x[28] + phi_q[81] * x[29];
+            out[11] = out[11] + phi_q[82] * x[2] + phi_q[83] * x[3] + phi_q[84] * x[4]
+                + phi_q[85] * x[26] + phi_q[86] * x[27] + phi_q[87] * x[28];
+            out[12] = out[12] + phi_q[88] * x[0] + phi_q[89] * x[3] + phi_q[90] * x[4]
+                + phi_q[91] * x[5] + phi_q[92] * x[30] + phi_q[93] * x[33]
+                + phi_q[94] * x[34] + phi_q[95] * x[35];
+            out[13] = out[13] + phi_q[96] * x[1] + phi_q[97] * x[3] + phi_q[98] * x[4]
+                + phi_q[99] * x[5] + phi_q[100] * x[31] + phi_q[101] * x[33]
+                + phi_q[102] * x[34] + phi_q[103] * x[35];
+            out[14] = out[14] + phi_q[104] * x[2] + phi_q[105] * x[3] + phi_q[106] * x[4]
+                + phi_q[107] * x[32] + phi_q[108] * x[33] + phi_q[109] * x[34];
+            out[15] = out[15] + phi_q[110] * x[0] + phi_q[111] * x[3] + phi_q[112] * x[4]
+                + phi_q[113] * x[5] + phi_q[114] * x[36] + phi_q[115] * x[39]
+                + phi_q[116] * x[40] + phi_q[117] * x[41];
+            out[16] = out[16] + phi_q[118] * x[1] + phi_q[119] * x[3] + phi_q[120] * x[4]
+                + phi_q[121] * x[5] + phi_q[122] * x[37] + phi_q[123] * x[39]
+                + phi_q[124] * x[40] + phi_q[125] * x[41];
+            out[17] = out[17] + phi_q[126] * x[2] + phi_q[127] * x[3] + phi_q[128] * x[4]
+                + phi_q[129] * x[38] + phi_q[130] * x[39] + phi_q[131] * x[40];
+            out[18] = out[18] + phi_q[132] * x[6] + phi_q[133] * x[7] + phi_q[134] * x[8]
+                + phi_q[135] * x[10] + phi_q[136] * x[11] + phi_q[137] * x[42]
+                + phi_q[138] * x[43] + phi_q[139] * x[44];
+            out[19] = out[19] + phi_q[140] * x[6] + phi_q[141] * x[7] + phi_q[142] * x[8]
+                + phi_q[143] * x[9] + phi_q[144] * x[10] + phi_q[145] * x[11]
+                + phi_q[146] * x[42] + phi_q[147] * x[43] + phi_q[148] * x[44];
+            out[20] = out[20] + phi_q[149] * x[12] + phi_q[150] * x[13]
+                + phi_q[151] * x[14] + phi_q[152] * x[16] + phi_q[153] * x[17]
+                + phi_q[154] * x[45] + phi_q[155] * x[46] + phi_q[156] * x[47];
+            out[21] = out[21] + phi_q[157] * x[12] + phi_q[158] * x[13]
+                + phi_q[159] * x[14] + phi_q[160] * x[15] + phi_q[161] * x[16]
+                + phi_q[162] * x[17] + phi_q[163] * x[45] + phi_q[164] * x[46]
+                + phi_q[165] * x[47];
+            out[22] = out[22] + phi_q[166] * x[18] + phi_q[167] * x[19]
+                + phi_q[168] * x[20] + phi_q[169] * x[22] + phi_q[170] * x[23]
+                + phi_q[171] * x[48] + phi_q[172] * x[49] + phi_q[173] * x[50];
+            out[23] = out[23] + phi_q[174] * x[18] + phi_q[175] * x[19]
+                + phi_q[176] * x[20] + phi_q[177] * x[21] + phi_q[178] * x[22]
+                + phi_q[179] * x[23] + phi_q[180] * x[48] + phi_q[181] * x[49]
+                + phi_q[182] * x[50];
+            out[24] = out[24] + phi_q[183] * x[24] + phi_q[184] * x[25]
+                + phi_q[185] * x[26] + phi_q[186] * x[28] + phi_q[187] * x[29]
+                + phi_q[188] * x[51] + phi_q[189] * x[52] + phi_q[190] * x[53];
+            out[25] = out[25] + phi_q[191] * x[24] + phi_q[192] * x[25]
+                + phi_q[193] * x[26] + phi_q[194] * x[27] + phi_q[195] * x[28]
+                + phi_q[196] * x[29] + phi_q[197] * x[51] + phi_q[198] * x[52]
+                + phi_q[199] * x[53];
+            out[26] = out[26] + phi_q[200] * x[30] + phi_q[201] * x[31]
+                + phi_q[202] * x[32] + phi_q[203] * x[34] + phi_q[204] * x[35]
+                + phi_q[205] * x[54] + phi_q[206] * x[55] + phi_q[207] * x[56];
+            out[27] = out[27] + phi_q[208] * x[30] + phi_q[209] * x[31]
+                + phi_q[210] * x[32] + phi_q[211] * x[33] + phi_q[212] * x[34]
+                + phi_q[213] * x[35] + phi_q[214] * x[54] + phi_q[215] * x[55]
+                + phi_q[216] * x[56];
+            out[28] = out[28] + phi_q[217] * x[36] + phi_q[218] * x[37]
+                + phi_q[219] * x[38] + phi_q[220] * x[40] + phi_q[221] * x[41]
+                + phi_q[222] * x[57] + phi_q[223] * x[58] + phi_q[224] * x[59];
+            out[29] = out[29] + phi_q[225] * x[36] + phi_q[226] * x[37]
+                + phi_q[227] * x[38] + phi_q[228] * x[39] + phi_q[229] * x[40]
+                + phi_q[230] * x[41] + phi_q[231] * x[57] + phi_q[232] * x[58]
+                + phi_q[233] * x[59];
+            out[30] = out[30] + phi_q[234] * x[9] + phi_q[235] * x[10]
+                + phi_q[236] * x[11] + phi_q[237] * x[42];
+            out[31] = out[31] + phi_q[238] * x[9] + phi_q[239] * x[10]
+                + phi_q[240] * x[11] + phi_q[241] * x[43];
+            out[32] = out[32] + phi_q[242] * x[9] + phi_q[243] * x[10]
+                + phi_q[244] * x[44];
+            out[33] = out[33] + phi_q[245] * x[15] + phi_q[246] * x[16]
+                + phi_q[247] * x[17] + phi_q[248] * x[45];
+            out[34] = out[34] + phi_q[249] * x[15] + phi_q[250] * x[16]
+                + phi_q[251] * x[17] + phi_q[252] * x[46];
+            out[35] = out[35] + phi_q[253] * x[15] + phi_q[254] * x[16]
+                + phi_q[255] * x[47];
+            out[36] = out[36] + phi_q[256] * x[21] + phi_q[257] * x[22]
+                + phi_q[258] * x[23] + phi_q[259] * x[48];
+            out[37] = out[37] + phi_q[260] * x[21] + phi_q[261] * x[22]
+                + phi_q[262] * x[23] + phi_q[263] * x[49];
+            out[38] = out[38] + phi_q[264] * x[21] + phi_q[265] * x[22]
+                + phi_q[266] * x[50];
+            out[39] = out[39] + phi_q[267] * x[27] + phi_q[268] * x[28]
+                + phi_q[269] * x[29] + phi_q[270] * x[51];
+            out[40] = out[40] + phi_q[271] * x[27] + phi_q[272] * x[28]
+                + phi_q[273] * x[29] + phi_q[274] * x[52];
+            out[41] = out[41] + phi_q[275] * x[27] + phi_q[276] * x[28]
+                + phi_q[277] * x[53];
+            out[42] = out[42] + phi_q[278] * x[33] + phi_q[279] * x[34]
+                + phi_q[280] * x[35] + phi_q[281] * x[54];
+            out[43] = out[43] + phi_q[282] * x[33] + phi_q[283] * x[34]
+                + phi_q[284] * x[35] + phi_q[285] * x[55];
+            out[44] = out[44] + phi_q[286] * x[33] + phi_q[287] * x[34]
+                + phi_q[288] * x[56];
+            out[45] = out[45] + phi_q[289] * x[39] + phi_q[290] * x[40]
+                + phi_q[291] * x[41] + phi_q[292] * x[57];
+            out[46] = out[46] + phi_q[293] * x[39] + phi_q[294] * x[40]
+                + phi_q[295] * x[41] + phi_q[296] * x[58];
+            out[47] = out[47] + phi_q[297] * x[39] + phi_q[298] * x[40]
+                + phi_q[299] * x[59];
+            out[48] = out[48] + phi_q[300] * x[6] + phi_q[301] * x[7] + phi_q[302] * x[8]
+                + phi_q[303] * x[9] + phi_q[304] * x[10] + phi_q[305] * x[11]
+                + phi_q[306] * x[42] + phi_q[307] * x[43] + phi_q[308] * x[44];
+            out[49] = out[49] + phi_q[309] * x[12] + phi_q[310] * x[13]
+                + phi_q[311] * x[14] + phi_q[312] * x[15] + phi_q[313] * x[16]
+                + phi_q[314] * x[17] + phi_q[315] * x[45] + phi_q[316] * x[46]
+                + phi_q[317] * x[47];
+            out[50] = out[50] + phi_q[318] * x[18] + phi_q[319] * x[19]
+                + phi_q[320] * x[20] + phi_q[321] * x[21] + phi_q[322] * x[22]
+                + phi_q[323] * x[23] + phi_q[324] * x[48] + phi_q[325] * x[49]
+                + phi_q[326] * x[50];
+            out[51] = out[51] + phi_q[327] * x[24] + phi_q[328] * x[25]
+                + phi_q[329] * x[26] + phi_q[330] * x[27] + phi_q[331] * x[28]
+                + phi_q[332] * x[29] + phi_q[333] * x[51] + phi_q[334] * x[52]
+                + phi_q[335] * x[53];
+            out[52] = out[52] + phi_q[336] * x[30] + phi_q[337] * x[31]
+                + phi_q[338] * x[32] + phi_q[339] * x[33] + phi_q[340] * x[34]
+                + phi_q[341] * x[35] + phi_q[342] * x[54] + phi_q[343] * x[55]
+                + phi_q[344] * x[56];
+            out[53] = out[53] + phi_q[345] * x[36] + phi_q[346] * x[37]
+                + phi_q[347] * x[38] + phi_q[348] * x[39] + phi_q[349] * x[40]
+                + phi_q[350] * x[41] + phi_q[351] * x[57] + phi_q[352] * x[58]
+                + phi_q[353] * x[59];
+            Ok(())
+        }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(
             k: &[f64],
@@ -78295,6 +78779,7 @@ pub mod reduced {
                 phi_q_rows: &PHI_Q_ROWS,
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
+                times_add: kkt_times_add,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -86923,6 +87408,169 @@ pub mod reduced {
                 + phi_q[352] * y[53];
             out[59] = phi_q[224] * y[28] + phi_q[233] * y[29] + phi_q[299] * y[47]
                 + phi_q[353] * y[53];
+            Ok(())
+        }
+        fn kkt_times_add(
+            phi_q: &[f64],
+            x: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let phi_q: &[f64; 354] = phi_q
+                .try_into()
+                .map_err(|_| length_error(354, phi_q.len()))?;
+            let x: &[f64; 60] = x.try_into().map_err(|_| length_error(60, x.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 54] = out
+                .try_into()
+                .map_err(|_| length_error(54, out_len))?;
+            out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+                + phi_q[3] * x[5] + phi_q[4] * x[6] + phi_q[5] * x[9] + phi_q[6] * x[10]
+                + phi_q[7] * x[11];
+            out[1] = out[1] + phi_q[8] * x[1] + phi_q[9] * x[3] + phi_q[10] * x[4]
+                + phi_q[11] * x[5] + phi_q[12] * x[7] + phi_q[13] * x[9]
+                + phi_q[14] * x[10] + phi_q[15] * x[11];
+            out[2] = out[2] + phi_q[16] * x[2] + phi_q[17] * x[3] + phi_q[18] * x[4]
+                + phi_q[19] * x[8] + phi_q[20] * x[9] + phi_q[21] * x[10];
+            out[3] = out[3] + phi_q[22] * x[0] + phi_q[23] * x[3] + phi_q[24] * x[4]
+                + phi_q[25] * x[5] + phi_q[26] * x[12] + phi_q[27] * x[15]
+                + phi_q[28] * x[16] + phi_q[29] * x[17];
+            out[4] = out[4] + phi_q[30] * x[1] + phi_q[31] * x[3] + phi_q[32] * x[4]
+                + phi_q[33] * x[5] + phi_q[34] * x[13] + phi_q[35] * x[15]
+                + phi_q[36] * x[16] + phi_q[37] * x[17];
+            out[5] = out[5] + phi_q[38] * x[2] + phi_q[39] * x[3] + phi_q[40] * x[4]
+                + phi_q[41] * x[14] + phi_q[42] * x[15] + phi_q[43] * x[16];
+            out[6] = out[6] + phi_q[44] * x[0] + phi_q[45] * x[3] + phi_q[46] * x[4]
+                + phi_q[47] * x[5] + phi_q[48] * x[18] + phi_q[49] * x[21]
+                + phi_q[50] * x[22] + phi_q[51] * x[23];
+            out[7] = out[7] + phi_q[52] * x[1] + phi_q[53] * x[3] + phi_q[54] * x[4]
+                + phi_q[55] * x[5] + phi_q[56] * x[19] + phi_q[57] * x[21]
+                + phi_q[58] * x[22] + phi_q[59] * x[23];
+            out[8] = out[8] + phi_q[60] * x[2] + phi_q[61] * x[3] + phi_q[62] * x[4]
+                + phi_q[63] * x[20] + phi_q[64] * x[21] + phi_q[65] * x[22];
+            out[9] = out[9] + phi_q[66] * x[0] + phi_q[67] * x[3] + phi_q[68] * x[4]
+                + phi_q[69] * x[5] + phi_q[70] * x[24] + phi_q[71] * x[27]
+                + phi_q[72] * x[28] + phi_q[73] * x[29];
+            out[10] = out[10] + phi_q[74] * x[1] + phi_q[75] * x[3] + phi_q[76] * x[4]
+                + phi_q[77] * x[5] + phi_q[78] * x[25] + phi_q[79] * x[27]
+                + phi_q[80] * x[28] + phi_q[81] * x[29];
+            out[11] = out[11] + phi_q[82] * x[2] + phi_q[83] * x[3] + phi_q[84] * x[4]
+                + phi_q[85] * x[26] + phi_q[86] * x[27] + phi_q[87] * x[28];
+            out[12] = out[12] + phi_q[88] * x[0] + phi_q[89] * x[3] + phi_q[90] * x[4]
+                + phi_q[91] * x[5] + phi_q[92] * x[30] + phi_q[93] * x[33]
+                + phi_q[94] * x[34] + phi_q[95] * x[35];
+            out[13] = out[13] + phi_q[96] * x[1] + phi_q[97] * x[3] + phi_q[98] * x[4]
+                + phi_q[99] * x[5] + phi_q[100] * x[31] + phi_q[101] * x[33]
+                + phi_q[102] * x[34] + phi_q[103] * x[35];
+            out[14] = out[14] + phi_q[104] * x[2] + phi_q[105] * x[3] + phi_q[106] * x[4]
+                + phi_q[107] * x[32] + phi_q[108] * x[33] + phi_q[109] * x[34];
+            out[15] = out[15] + phi_q[110] * x[0] + phi_q[111] * x[3] + phi_q[112] * x[4]
+                + phi_q[113] * x[5] + phi_q[114] * x[36] + phi_q[115] * x[39]
+                + phi_q[116] * x[40] + phi_q[117] * x[41];
+            out[16] = out[16] + phi_q[118] * x[1] + phi_q[119] * x[3] + phi_q[120] * x[4]
+                + phi_q[121] * x[5] + phi_q[122] * x[37] + phi_q[123] * x[39]
+                + phi_q[124] * x[40] + phi_q[125] * x[41];
+            out[17] = out[17] + phi_q[126] * x[2] + phi_q[127] * x[3] + phi_q[128] * x[4]
+                + phi_q[129] * x[38] + phi_q[130] * x[39] + phi_q[131] * x[40];
+            out[18] = out[18] + phi_q[132] * x[6] + phi_q[133] * x[7] + phi_q[134] * x[8]
+                + phi_q[135] * x[10] + phi_q[136] * x[11] + phi_q[137] * x[42]
+                + phi_q[138] * x[43] + phi_q[139] * x[44];
+            out[19] = out[19] + phi_q[140] * x[6] + phi_q[141] * x[7] + phi_q[142] * x[8]
+                + phi_q[143] * x[9] + phi_q[144] * x[10] + phi_q[145] * x[11]
+                + phi_q[146] * x[42] + phi_q[147] * x[43] + phi_q[148] * x[44];
+            out[20] = out[20] + phi_q[149] * x[12] + phi_q[150] * x[13]
+                + phi_q[151] * x[14] + phi_q[152] * x[16] + phi_q[153] * x[17]
+                + phi_q[154] * x[45] + phi_q[155] * x[46] + phi_q[156] * x[47];
+            out[21] = out[21] + phi_q[157] * x[12] + phi_q[158] * x[13]
+                + phi_q[159] * x[14] + phi_q[160] * x[15] + phi_q[161] * x[16]
+                + phi_q[162] * x[17] + phi_q[163] * x[45] + phi_q[164] * x[46]
+                + phi_q[165] * x[47];
+            out[22] = out[22] + phi_q[166] * x[18] + phi_q[167] * x[19]
+                + phi_q[168] * x[20] + phi_q[169] * x[22] + phi_q[170] * x[23]
+                + phi_q[171] * x[48] + phi_q[172] * x[49] + phi_q[173] * x[50];
+            out[23] = out[23] + phi_q[174] * x[18] + phi_q[175] * x[19]
+                + phi_q[176] * x[20] + phi_q[177] * x[21] + phi_q[178] * x[22]
+                + phi_q[179] * x[23] + phi_q[180] * x[48] + phi_q[181] * x[49]
+                + phi_q[182] * x[50];
+            out[24] = out[24] + phi_q[183] * x[24] + phi_q[184] * x[25]
+                + phi_q[185] * x[26] + phi_q[186] * x[28] + phi_q[187] * x[29]
+                + phi_q[188] * x[51] + phi_q[189] * x[52] + phi_q[190] * x[53];
+            out[25] = out[25] + phi_q[191] * x[24] + phi_q[192] * x[25]
+                + phi_q[193] * x[26] + phi_q[194] * x[27] + phi_q[195] * x[28]
+                + phi_q[196] * x[29] + phi_q[197] * x[51] + phi_q[198] * x[52]
+                + phi_q[199] * x[53];
+            out[26] = out[26] + phi_q[200] * x[30] + phi_q[201] * x[31]
+                + phi_q[202] * x[32] + phi_q[203] * x[34] + phi_q[204] * x[35]
+                + phi_q[205] * x[54] + phi_q[206] * x[55] + phi_q[207] * x[56];
+            out[27] = out[27] + phi_q[208] * x[30] + phi_q[209] * x[31]
+                + phi_q[210] * x[32] + phi_q[211] * x[33] + phi_q[212] * x[34]
+                + phi_q[213] * x[35] + phi_q[214] * x[54] + phi_q[215] * x[55]
+                + phi_q[216] * x[56];
+            out[28] = out[28] + phi_q[217] * x[36] + phi_q[218] * x[37]
+                + phi_q[219] * x[38] + phi_q[220] * x[40] + phi_q[221] * x[41]
+                + phi_q[222] * x[57] + phi_q[223] * x[58] + phi_q[224] * x[59];
+            out[29] = out[29] + phi_q[225] * x[36] + phi_q[226] * x[37]
+                + phi_q[227] * x[38] + phi_q[228] * x[39] + phi_q[229] * x[40]
+                + phi_q[230] * x[41] + phi_q[231] * x[57] + phi_q[232] * x[58]
+                + phi_q[233] * x[59];
+            out[30] = out[30] + phi_q[234] * x[9] + phi_q[235] * x[10]
+                + phi_q[236] * x[11] + phi_q[237] * x[42];
+            out[31] = out[31] + phi_q[238] * x[9] + phi_q[239] * x[10]
+                + phi_q[240] * x[11] + phi_q[241] * x[43];
+            out[32] = out[32] + phi_q[242] * x[9] + phi_q[243] * x[10]
+                + phi_q[244] * x[44];
+            out[33] = out[33] + phi_q[245] * x[15] + phi_q[246] * x[16]
+                + phi_q[247] * x[17] + phi_q[248] * x[45];
+            out[34] = out[34] + phi_q[249] * x[15] + phi_q[250] * x[16]
+                + phi_q[251] * x[17] + phi_q[252] * x[46];
+            out[35] = out[35] + phi_q[253] * x[15] + phi_q[254] * x[16]
+                + phi_q[255] * x[47];
+            out[36] = out[36] + phi_q[256] * x[21] + phi_q[257] * x[22]
+                + phi_q[258] * x[23] + phi_q[259] * x[48];
+            out[37] = out[37] + phi_q[260] * x[21] + phi_q[261] * x[22]
+                + phi_q[262] * x[23] + phi_q[263] * x[49];
+            out[38] = out[38] + phi_q[264] * x[21] + phi_q[265] * x[22]
+                + phi_q[266] * x[50];
+            out[39] = out[39] + phi_q[267] * x[27] + phi_q[268] * x[28]
+                + phi_q[269] * x[29] + phi_q[270] * x[51];
+            out[40] = out[40] + phi_q[271] * x[27] + phi_q[272] * x[28]
+                + phi_q[273] * x[29] + phi_q[274] * x[52];
+            out[41] = out[41] + phi_q[275] * x[27] + phi_q[276] * x[28]
+                + phi_q[277] * x[53];
+            out[42] = out[42] + phi_q[278] * x[33] + phi_q[279] * x[34]
+                + phi_q[280] * x[35] + phi_q[281] * x[54];
+            out[43] = out[43] + phi_q[282] * x[33] + phi_q[283] * x[34]
+                + phi_q[284] * x[35] + phi_q[285] * x[55];
+            out[44] = out[44] + phi_q[286] * x[33] + phi_q[287] * x[34]
+                + phi_q[288] * x[56];
+            out[45] = out[45] + phi_q[289] * x[39] + phi_q[290] * x[40]
+                + phi_q[291] * x[41] + phi_q[292] * x[57];
+            out[46] = out[46] + phi_q[293] * x[39] + phi_q[294] * x[40]
+                + phi_q[295] * x[41] + phi_q[296] * x[58];
+            out[47] = out[47] + phi_q[297] * x[39] + phi_q[298] * x[40]
+                + phi_q[299] * x[59];
+            out[48] = out[48] + phi_q[300] * x[6] + phi_q[301] * x[7] + phi_q[302] * x[8]
+                + phi_q[303] * x[9] + phi_q[304] * x[10] + phi_q[305] * x[11]
+                + phi_q[306] * x[42] + phi_q[307] * x[43] + phi_q[308] * x[44];
+            out[49] = out[49] + phi_q[309] * x[12] + phi_q[310] * x[13]
+                + phi_q[311] * x[14] + phi_q[312] * x[15] + phi_q[313] * x[16]
+                + phi_q[314] * x[17] + phi_q[315] * x[45] + phi_q[316] * x[46]
+                + phi_q[317] * x[47];
+            out[50] = out[50] + phi_q[318] * x[18] + phi_q[319] * x[19]
+                + phi_q[320] * x[20] + phi_q[321] * x[21] + phi_q[322] * x[22]
+                + phi_q[323] * x[23] + phi_q[324] * x[48] + phi_q[325] * x[49]
+                + phi_q[326] * x[50];
+            out[51] = out[51] + phi_q[327] * x[24] + phi_q[328] * x[25]
+                + phi_q[329] * x[26] + phi_q[330] * x[27] + phi_q[331] * x[28]
+                + phi_q[332] * x[29] + phi_q[333] * x[51] + phi_q[334] * x[52]
+                + phi_q[335] * x[53];
+            out[52] = out[52] + phi_q[336] * x[30] + phi_q[337] * x[31]
+                + phi_q[338] * x[32] + phi_q[339] * x[33] + phi_q[340] * x[34]
+                + phi_q[341] * x[35] + phi_q[342] * x[54] + phi_q[343] * x[55]
+                + phi_q[344] * x[56];
+            out[53] = out[53] + phi_q[345] * x[36] + phi_q[346] * x[37]
+                + phi_q[347] * x[38] + phi_q[348] * x[39] + phi_q[349] * x[40]
+                + phi_q[350] * x[41] + phi_q[351] * x[57] + phi_q[352] * x[58]
+                + phi_q[353] * x[59];
             Ok(())
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

@@ -54848,6 +54848,7 @@ pub mod exact {
             phi_q_rows: &PHI_Q_ROWS,
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
+            times_add: kkt_times_add,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -73028,6 +73029,274 @@ pub mod exact {
             + phi_q[423] * y[46] + phi_q[431] * y[47] + phi_q[531] * y[68]
             + phi_q[536] * y[69] + phi_q[541] * y[70] + phi_q[545] * y[71]
             + phi_q[605] * y[77] + phi_q[657] * y[90];
+        Ok(())
+    }
+    fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let phi_q: &[f64; 658] = phi_q
+            .try_into()
+            .map_err(|_| length_error(658, phi_q.len()))?;
+        let x: &[f64; 91] = x.try_into().map_err(|_| length_error(91, x.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 91] = out.try_into().map_err(|_| length_error(91, out_len))?;
+        out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[3] + phi_q[2] * x[4]
+            + phi_q[3] * x[5] + phi_q[4] * x[6] + phi_q[5] * x[7] + phi_q[6] * x[10]
+            + phi_q[7] * x[11] + phi_q[8] * x[12] + phi_q[9] * x[13];
+        out[1] = out[1] + phi_q[10] * x[1] + phi_q[11] * x[3] + phi_q[12] * x[4]
+            + phi_q[13] * x[5] + phi_q[14] * x[6] + phi_q[15] * x[8] + phi_q[16] * x[10]
+            + phi_q[17] * x[12];
+        out[2] = out[2] + phi_q[18] * x[2] + phi_q[19] * x[3] + phi_q[20] * x[4]
+            + phi_q[21] * x[5] + phi_q[22] * x[6] + phi_q[23] * x[9] + phi_q[24] * x[10]
+            + phi_q[25] * x[11] + phi_q[26] * x[12] + phi_q[27] * x[13];
+        out[3] = out[3] + phi_q[28] * x[0] + phi_q[29] * x[3] + phi_q[30] * x[4]
+            + phi_q[31] * x[5] + phi_q[32] * x[6] + phi_q[33] * x[14] + phi_q[34] * x[17]
+            + phi_q[35] * x[18] + phi_q[36] * x[19] + phi_q[37] * x[20];
+        out[4] = out[4] + phi_q[38] * x[1] + phi_q[39] * x[3] + phi_q[40] * x[4]
+            + phi_q[41] * x[5] + phi_q[42] * x[6] + phi_q[43] * x[15] + phi_q[44] * x[17]
+            + phi_q[45] * x[19];
+        out[5] = out[5] + phi_q[46] * x[2] + phi_q[47] * x[3] + phi_q[48] * x[4]
+            + phi_q[49] * x[5] + phi_q[50] * x[6] + phi_q[51] * x[16] + phi_q[52] * x[17]
+            + phi_q[53] * x[18] + phi_q[54] * x[19] + phi_q[55] * x[20];
+        out[6] = out[6] + phi_q[56] * x[0] + phi_q[57] * x[3] + phi_q[58] * x[4]
+            + phi_q[59] * x[5] + phi_q[60] * x[6] + phi_q[61] * x[21] + phi_q[62] * x[24]
+            + phi_q[63] * x[25] + phi_q[64] * x[26] + phi_q[65] * x[27];
+        out[7] = out[7] + phi_q[66] * x[1] + phi_q[67] * x[3] + phi_q[68] * x[4]
+            + phi_q[69] * x[5] + phi_q[70] * x[6] + phi_q[71] * x[22] + phi_q[72] * x[24]
+            + phi_q[73] * x[26];
+        out[8] = out[8] + phi_q[74] * x[2] + phi_q[75] * x[3] + phi_q[76] * x[4]
+            + phi_q[77] * x[5] + phi_q[78] * x[6] + phi_q[79] * x[23] + phi_q[80] * x[24]
+            + phi_q[81] * x[25] + phi_q[82] * x[26] + phi_q[83] * x[27];
+        out[9] = out[9] + phi_q[84] * x[0] + phi_q[85] * x[3] + phi_q[86] * x[4]
+            + phi_q[87] * x[5] + phi_q[88] * x[6] + phi_q[89] * x[28] + phi_q[90] * x[31]
+            + phi_q[91] * x[32] + phi_q[92] * x[33] + phi_q[93] * x[34];
+        out[10] = out[10] + phi_q[94] * x[1] + phi_q[95] * x[3] + phi_q[96] * x[4]
+            + phi_q[97] * x[5] + phi_q[98] * x[6] + phi_q[99] * x[29]
+            + phi_q[100] * x[31] + phi_q[101] * x[33];
+        out[11] = out[11] + phi_q[102] * x[2] + phi_q[103] * x[3] + phi_q[104] * x[4]
+            + phi_q[105] * x[5] + phi_q[106] * x[6] + phi_q[107] * x[30]
+            + phi_q[108] * x[31] + phi_q[109] * x[32] + phi_q[110] * x[33]
+            + phi_q[111] * x[34];
+        out[12] = out[12] + phi_q[112] * x[0] + phi_q[113] * x[3] + phi_q[114] * x[4]
+            + phi_q[115] * x[5] + phi_q[116] * x[6] + phi_q[117] * x[35]
+            + phi_q[118] * x[38] + phi_q[119] * x[39] + phi_q[120] * x[40]
+            + phi_q[121] * x[41];
+        out[13] = out[13] + phi_q[122] * x[1] + phi_q[123] * x[3] + phi_q[124] * x[4]
+            + phi_q[125] * x[5] + phi_q[126] * x[6] + phi_q[127] * x[36]
+            + phi_q[128] * x[38] + phi_q[129] * x[40];
+        out[14] = out[14] + phi_q[130] * x[2] + phi_q[131] * x[3] + phi_q[132] * x[4]
+            + phi_q[133] * x[5] + phi_q[134] * x[6] + phi_q[135] * x[37]
+            + phi_q[136] * x[38] + phi_q[137] * x[39] + phi_q[138] * x[40]
+            + phi_q[139] * x[41];
+        out[15] = out[15] + phi_q[140] * x[0] + phi_q[141] * x[3] + phi_q[142] * x[4]
+            + phi_q[143] * x[5] + phi_q[144] * x[6] + phi_q[145] * x[42]
+            + phi_q[146] * x[45] + phi_q[147] * x[46] + phi_q[148] * x[47]
+            + phi_q[149] * x[48];
+        out[16] = out[16] + phi_q[150] * x[1] + phi_q[151] * x[3] + phi_q[152] * x[4]
+            + phi_q[153] * x[5] + phi_q[154] * x[6] + phi_q[155] * x[43]
+            + phi_q[156] * x[45] + phi_q[157] * x[47];
+        out[17] = out[17] + phi_q[158] * x[2] + phi_q[159] * x[3] + phi_q[160] * x[4]
+            + phi_q[161] * x[5] + phi_q[162] * x[6] + phi_q[163] * x[44]
+            + phi_q[164] * x[45] + phi_q[165] * x[46] + phi_q[166] * x[47]
+            + phi_q[167] * x[48];
+        out[18] = out[18] + phi_q[168] * x[10] + phi_q[169] * x[11] + phi_q[170] * x[12]
+            + phi_q[171] * x[13] + phi_q[172] * x[52] + phi_q[173] * x[53]
+            + phi_q[174] * x[54] + phi_q[175] * x[55];
+        out[19] = out[19] + phi_q[176] * x[10] + phi_q[177] * x[11] + phi_q[178] * x[12]
+            + phi_q[179] * x[13] + phi_q[180] * x[52] + phi_q[181] * x[53]
+            + phi_q[182] * x[54] + phi_q[183] * x[55];
+        out[20] = out[20] + phi_q[184] * x[7] + phi_q[185] * x[8] + phi_q[186] * x[9]
+            + phi_q[187] * x[49] + phi_q[188] * x[50] + phi_q[189] * x[51]
+            + phi_q[190] * x[52] + phi_q[191] * x[53] + phi_q[192] * x[54]
+            + phi_q[193] * x[55];
+        out[21] = out[21] + phi_q[194] * x[7] + phi_q[195] * x[8] + phi_q[196] * x[9]
+            + phi_q[197] * x[49] + phi_q[198] * x[50] + phi_q[199] * x[51]
+            + phi_q[200] * x[52] + phi_q[201] * x[53] + phi_q[202] * x[54]
+            + phi_q[203] * x[55];
+        out[22] = out[22] + phi_q[204] * x[10] + phi_q[205] * x[11] + phi_q[206] * x[12]
+            + phi_q[207] * x[13] + phi_q[208] * x[52] + phi_q[209] * x[53]
+            + phi_q[210] * x[54] + phi_q[211] * x[55];
+        out[23] = out[23] + phi_q[212] * x[17] + phi_q[213] * x[18] + phi_q[214] * x[19]
+            + phi_q[215] * x[20] + phi_q[216] * x[59] + phi_q[217] * x[60]
+            + phi_q[218] * x[61] + phi_q[219] * x[62];
+        out[24] = out[24] + phi_q[220] * x[17] + phi_q[221] * x[18] + phi_q[222] * x[19]
+            + phi_q[223] * x[20] + phi_q[224] * x[59] + phi_q[225] * x[60]
+            + phi_q[226] * x[61] + phi_q[227] * x[62];
+        out[25] = out[25] + phi_q[228] * x[14] + phi_q[229] * x[15] + phi_q[230] * x[16]
+            + phi_q[231] * x[56] + phi_q[232] * x[57] + phi_q[233] * x[58]
+            + phi_q[234] * x[59] + phi_q[235] * x[60] + phi_q[236] * x[61]
+            + phi_q[237] * x[62];
+        out[26] = out[26] + phi_q[238] * x[14] + phi_q[239] * x[15] + phi_q[240] * x[16]
+            + phi_q[241] * x[56] + phi_q[242] * x[57] + phi_q[243] * x[58]
+            + phi_q[244] * x[59] + phi_q[245] * x[60] + phi_q[246] * x[61]
+            + phi_q[247] * x[62];
+        out[27] = out[27] + phi_q[248] * x[17] + phi_q[249] * x[18] + phi_q[250] * x[19]
+            + phi_q[251] * x[20] + phi_q[252] * x[59] + phi_q[253] * x[60]
+            + phi_q[254] * x[61] + phi_q[255] * x[62];
+        out[28] = out[28] + phi_q[256] * x[24] + phi_q[257] * x[25] + phi_q[258] * x[26]
+            + phi_q[259] * x[27] + phi_q[260] * x[66] + phi_q[261] * x[67]
+            + phi_q[262] * x[68] + phi_q[263] * x[69];
+        out[29] = out[29] + phi_q[264] * x[24] + phi_q[265] * x[25] + phi_q[266] * x[26]
+            + phi_q[267] * x[27] + phi_q[268] * x[66] + phi_q[269] * x[67]
+            + phi_q[270] * x[68] + phi_q[271] * x[69];
+        out[30] = out[30] + phi_q[272] * x[21] + phi_q[273] * x[22] + phi_q[274] * x[23]
+            + phi_q[275] * x[63] + phi_q[276] * x[64] + phi_q[277] * x[65]
+            + phi_q[278] * x[66] + phi_q[279] * x[67] + phi_q[280] * x[68]
+            + phi_q[281] * x[69];
+        out[31] = out[31] + phi_q[282] * x[21] + phi_q[283] * x[22] + phi_q[284] * x[23]
+            + phi_q[285] * x[63] + phi_q[286] * x[64] + phi_q[287] * x[65]
+            + phi_q[288] * x[66] + phi_q[289] * x[67] + phi_q[290] * x[68]
+            + phi_q[291] * x[69];
+        out[32] = out[32] + phi_q[292] * x[24] + phi_q[293] * x[25] + phi_q[294] * x[26]
+            + phi_q[295] * x[27] + phi_q[296] * x[66] + phi_q[297] * x[67]
+            + phi_q[298] * x[68] + phi_q[299] * x[69];
+        out[33] = out[33] + phi_q[300] * x[31] + phi_q[301] * x[32] + phi_q[302] * x[33]
+            + phi_q[303] * x[34] + phi_q[304] * x[73] + phi_q[305] * x[74]
+            + phi_q[306] * x[75] + phi_q[307] * x[76];
+        out[34] = out[34] + phi_q[308] * x[31] + phi_q[309] * x[32] + phi_q[310] * x[33]
+            + phi_q[311] * x[34] + phi_q[312] * x[73] + phi_q[313] * x[74]
+            + phi_q[314] * x[75] + phi_q[315] * x[76];
+        out[35] = out[35] + phi_q[316] * x[28] + phi_q[317] * x[29] + phi_q[318] * x[30]
+            + phi_q[319] * x[70] + phi_q[320] * x[71] + phi_q[321] * x[72]
+            + phi_q[322] * x[73] + phi_q[323] * x[74] + phi_q[324] * x[75]
+            + phi_q[325] * x[76];
+        out[36] = out[36] + phi_q[326] * x[28] + phi_q[327] * x[29] + phi_q[328] * x[30]
+            + phi_q[329] * x[70] + phi_q[330] * x[71] + phi_q[331] * x[72]
+            + phi_q[332] * x[73] + phi_q[333] * x[74] + phi_q[334] * x[75]
+            + phi_q[335] * x[76];
+        out[37] = out[37] + phi_q[336] * x[31] + phi_q[337] * x[32] + phi_q[338] * x[33]
+            + phi_q[339] * x[34] + phi_q[340] * x[73] + phi_q[341] * x[74]
+            + phi_q[342] * x[75] + phi_q[343] * x[76];
+        out[38] = out[38] + phi_q[344] * x[38] + phi_q[345] * x[39] + phi_q[346] * x[40]
+            + phi_q[347] * x[41] + phi_q[348] * x[80] + phi_q[349] * x[81]
+            + phi_q[350] * x[82] + phi_q[351] * x[83];
+        out[39] = out[39] + phi_q[352] * x[38] + phi_q[353] * x[39] + phi_q[354] * x[40]
+            + phi_q[355] * x[41] + phi_q[356] * x[80] + phi_q[357] * x[81]
+            + phi_q[358] * x[82] + phi_q[359] * x[83];
+        out[40] = out[40] + phi_q[360] * x[35] + phi_q[361] * x[36] + phi_q[362] * x[37]
+            + phi_q[363] * x[77] + phi_q[364] * x[78] + phi_q[365] * x[79]
+            + phi_q[366] * x[80] + phi_q[367] * x[81] + phi_q[368] * x[82]
+            + phi_q[369] * x[83];
+        out[41] = out[41] + phi_q[370] * x[35] + phi_q[371] * x[36] + phi_q[372] * x[37]
+            + phi_q[373] * x[77] + phi_q[374] * x[78] + phi_q[375] * x[79]
+            + phi_q[376] * x[80] + phi_q[377] * x[81] + phi_q[378] * x[82]
+            + phi_q[379] * x[83];
+        out[42] = out[42] + phi_q[380] * x[38] + phi_q[381] * x[39] + phi_q[382] * x[40]
+            + phi_q[383] * x[41] + phi_q[384] * x[80] + phi_q[385] * x[81]
+            + phi_q[386] * x[82] + phi_q[387] * x[83];
+        out[43] = out[43] + phi_q[388] * x[45] + phi_q[389] * x[46] + phi_q[390] * x[47]
+            + phi_q[391] * x[48] + phi_q[392] * x[87] + phi_q[393] * x[88]
+            + phi_q[394] * x[89] + phi_q[395] * x[90];
+        out[44] = out[44] + phi_q[396] * x[45] + phi_q[397] * x[46] + phi_q[398] * x[47]
+            + phi_q[399] * x[48] + phi_q[400] * x[87] + phi_q[401] * x[88]
+            + phi_q[402] * x[89] + phi_q[403] * x[90];
+        out[45] = out[45] + phi_q[404] * x[42] + phi_q[405] * x[43] + phi_q[406] * x[44]
+            + phi_q[407] * x[84] + phi_q[408] * x[85] + phi_q[409] * x[86]
+            + phi_q[410] * x[87] + phi_q[411] * x[88] + phi_q[412] * x[89]
+            + phi_q[413] * x[90];
+        out[46] = out[46] + phi_q[414] * x[42] + phi_q[415] * x[43] + phi_q[416] * x[44]
+            + phi_q[417] * x[84] + phi_q[418] * x[85] + phi_q[419] * x[86]
+            + phi_q[420] * x[87] + phi_q[421] * x[88] + phi_q[422] * x[89]
+            + phi_q[423] * x[90];
+        out[47] = out[47] + phi_q[424] * x[45] + phi_q[425] * x[46] + phi_q[426] * x[47]
+            + phi_q[427] * x[48] + phi_q[428] * x[87] + phi_q[429] * x[88]
+            + phi_q[430] * x[89] + phi_q[431] * x[90];
+        out[48] = out[48] + phi_q[432] * x[49] + phi_q[433] * x[52] + phi_q[434] * x[53]
+            + phi_q[435] * x[54] + phi_q[436] * x[55];
+        out[49] = out[49] + phi_q[437] * x[50] + phi_q[438] * x[52] + phi_q[439] * x[53]
+            + phi_q[440] * x[54] + phi_q[441] * x[55];
+        out[50] = out[50] + phi_q[442] * x[51] + phi_q[443] * x[52] + phi_q[444] * x[53]
+            + phi_q[445] * x[54] + phi_q[446] * x[55];
+        out[51] = out[51] + phi_q[447] * x[52] + phi_q[448] * x[53] + phi_q[449] * x[54]
+            + phi_q[450] * x[55];
+        out[52] = out[52] + phi_q[451] * x[56] + phi_q[452] * x[59] + phi_q[453] * x[60]
+            + phi_q[454] * x[61] + phi_q[455] * x[62];
+        out[53] = out[53] + phi_q[456] * x[57] + phi_q[457] * x[59] + phi_q[458] * x[60]
+            + phi_q[459] * x[61] + phi_q[460] * x[62];
+        out[54] = out[54] + phi_q[461] * x[58] + phi_q[462] * x[59] + phi_q[463] * x[60]
+            + phi_q[464] * x[61] + phi_q[465] * x[62];
+        out[55] = out[55] + phi_q[466] * x[59] + phi_q[467] * x[60] + phi_q[468] * x[61]
+            + phi_q[469] * x[62];
+        out[56] = out[56] + phi_q[470] * x[63] + phi_q[471] * x[66] + phi_q[472] * x[67]
+            + phi_q[473] * x[68] + phi_q[474] * x[69];
+        out[57] = out[57] + phi_q[475] * x[64] + phi_q[476] * x[66] + phi_q[477] * x[67]
+            + phi_q[478] * x[68] + phi_q[479] * x[69];
+        out[58] = out[58] + phi_q[480] * x[65] + phi_q[481] * x[66] + phi_q[482] * x[67]
+            + phi_q[483] * x[68] + phi_q[484] * x[69];
+        out[59] = out[59] + phi_q[485] * x[66] + phi_q[486] * x[67] + phi_q[487] * x[68]
+            + phi_q[488] * x[69];
+        out[60] = out[60] + phi_q[489] * x[70] + phi_q[490] * x[73] + phi_q[491] * x[74]
+            + phi_q[492] * x[75] + phi_q[493] * x[76];
+        out[61] = out[61] + phi_q[494] * x[71] + phi_q[495] * x[73] + phi_q[496] * x[74]
+            + phi_q[497] * x[75] + phi_q[498] * x[76];
+        out[62] = out[62] + phi_q[499] * x[72] + phi_q[500] * x[73] + phi_q[501] * x[74]
+            + phi_q[502] * x[75] + phi_q[503] * x[76];
+        out[63] = out[63] + phi_q[504] * x[73] + phi_q[505] * x[74] + phi_q[506] * x[75]
+            + phi_q[507] * x[76];
+        out[64] = out[64] + phi_q[508] * x[77] + phi_q[509] * x[80] + phi_q[510] * x[81]
+            + phi_q[511] * x[82] + phi_q[512] * x[83];
+        out[65] = out[65] + phi_q[513] * x[78] + phi_q[514] * x[80] + phi_q[515] * x[81]
+            + phi_q[516] * x[82] + phi_q[517] * x[83];
+        out[66] = out[66] + phi_q[518] * x[79] + phi_q[519] * x[80] + phi_q[520] * x[81]
+            + phi_q[521] * x[82] + phi_q[522] * x[83];
+        out[67] = out[67] + phi_q[523] * x[80] + phi_q[524] * x[81] + phi_q[525] * x[82]
+            + phi_q[526] * x[83];
+        out[68] = out[68] + phi_q[527] * x[84] + phi_q[528] * x[87] + phi_q[529] * x[88]
+            + phi_q[530] * x[89] + phi_q[531] * x[90];
+        out[69] = out[69] + phi_q[532] * x[85] + phi_q[533] * x[87] + phi_q[534] * x[88]
+            + phi_q[535] * x[89] + phi_q[536] * x[90];
+        out[70] = out[70] + phi_q[537] * x[86] + phi_q[538] * x[87] + phi_q[539] * x[88]
+            + phi_q[540] * x[89] + phi_q[541] * x[90];
+        out[71] = out[71] + phi_q[542] * x[87] + phi_q[543] * x[88] + phi_q[544] * x[89]
+            + phi_q[545] * x[90];
+        out[72] = out[72] + phi_q[546] * x[7] + phi_q[547] * x[8] + phi_q[548] * x[9]
+            + phi_q[549] * x[49] + phi_q[550] * x[50] + phi_q[551] * x[51]
+            + phi_q[552] * x[52] + phi_q[553] * x[53] + phi_q[554] * x[54]
+            + phi_q[555] * x[55];
+        out[73] = out[73] + phi_q[556] * x[14] + phi_q[557] * x[15] + phi_q[558] * x[16]
+            + phi_q[559] * x[56] + phi_q[560] * x[57] + phi_q[561] * x[58]
+            + phi_q[562] * x[59] + phi_q[563] * x[60] + phi_q[564] * x[61]
+            + phi_q[565] * x[62];
+        out[74] = out[74] + phi_q[566] * x[21] + phi_q[567] * x[22] + phi_q[568] * x[23]
+            + phi_q[569] * x[63] + phi_q[570] * x[64] + phi_q[571] * x[65]
+            + phi_q[572] * x[66] + phi_q[573] * x[67] + phi_q[574] * x[68]
+            + phi_q[575] * x[69];
+        out[75] = out[75] + phi_q[576] * x[28] + phi_q[577] * x[29] + phi_q[578] * x[30]
+            + phi_q[579] * x[70] + phi_q[580] * x[71] + phi_q[581] * x[72]
+            + phi_q[582] * x[73] + phi_q[583] * x[74] + phi_q[584] * x[75]
+            + phi_q[585] * x[76];
+        out[76] = out[76] + phi_q[586] * x[35] + phi_q[587] * x[36] + phi_q[588] * x[37]
+            + phi_q[589] * x[77] + phi_q[590] * x[78] + phi_q[591] * x[79]
+            + phi_q[592] * x[80] + phi_q[593] * x[81] + phi_q[594] * x[82]
+            + phi_q[595] * x[83];
+        out[77] = out[77] + phi_q[596] * x[42] + phi_q[597] * x[43] + phi_q[598] * x[44]
+            + phi_q[599] * x[84] + phi_q[600] * x[85] + phi_q[601] * x[86]
+            + phi_q[602] * x[87] + phi_q[603] * x[88] + phi_q[604] * x[89]
+            + phi_q[605] * x[90];
+        out[78] = out[78] + phi_q[606] * x[3] + phi_q[607] * x[4] + phi_q[608] * x[5]
+            + phi_q[609] * x[6];
+        out[79] = out[79] + phi_q[610] * x[10] + phi_q[611] * x[11] + phi_q[612] * x[12]
+            + phi_q[613] * x[13];
+        out[80] = out[80] + phi_q[614] * x[17] + phi_q[615] * x[18] + phi_q[616] * x[19]
+            + phi_q[617] * x[20];
+        out[81] = out[81] + phi_q[618] * x[24] + phi_q[619] * x[25] + phi_q[620] * x[26]
+            + phi_q[621] * x[27];
+        out[82] = out[82] + phi_q[622] * x[31] + phi_q[623] * x[32] + phi_q[624] * x[33]
+            + phi_q[625] * x[34];
+        out[83] = out[83] + phi_q[626] * x[38] + phi_q[627] * x[39] + phi_q[628] * x[40]
+            + phi_q[629] * x[41];
+        out[84] = out[84] + phi_q[630] * x[45] + phi_q[631] * x[46] + phi_q[632] * x[47]
+            + phi_q[633] * x[48];
+        out[85] = out[85] + phi_q[634] * x[52] + phi_q[635] * x[53] + phi_q[636] * x[54]
+            + phi_q[637] * x[55];
+        out[86] = out[86] + phi_q[638] * x[59] + phi_q[639] * x[60] + phi_q[640] * x[61]
+            + phi_q[641] * x[62];
+        out[87] = out[87] + phi_q[642] * x[66] + phi_q[643] * x[67] + phi_q[644] * x[68]
+            + phi_q[645] * x[69];
+        out[88] = out[88] + phi_q[646] * x[73] + phi_q[647] * x[74] + phi_q[648] * x[75]
+            + phi_q[649] * x[76];
+        out[89] = out[89] + phi_q[650] * x[80] + phi_q[651] * x[81] + phi_q[652] * x[82]
+            + phi_q[653] * x[83];
+        out[90] = out[90] + phi_q[654] * x[87] + phi_q[655] * x[88] + phi_q[656] * x[89]
+            + phi_q[657] * x[90];
         Ok(())
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.

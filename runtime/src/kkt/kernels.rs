@@ -34,6 +34,9 @@ pub type SolveKernel = fn(&[f64], &[f64], &mut [f64], &mut [f64], &[f64]) -> Res
 /// A generated `out = Φqᵀ y` from Φq's nonzeros: `(phi_q, y, out)`.
 pub type TransposeKernel = fn(&[f64], &[f64], &mut [f64]) -> Result<(), KktError>;
 
+/// A generated `out += Φq x`: `(phi_q, x, out)`.
+pub type TimesKernel = fn(&[f64], &[f64], &mut [f64]) -> Result<(), KktError>;
+
 /// Factor and solve for one pattern, as the generator emits them. Not built by hand: the
 /// generated module of a mechanism fills [`MechanismInfo::kkt`](crate::MechanismInfo::kkt).
 #[derive(Clone, Copy)]
@@ -51,6 +54,9 @@ pub struct KktKernels {
     /// `Φqᵀ y`, summed column by column in the order of the nonzeros (as
     /// `phi_q_transpose_times`'s loop does).
     pub transpose_times: TransposeKernel,
+    /// `out += Φq x`, each row's products added to `out` in the order of the nonzeros (as
+    /// a loop over them does).
+    pub times_add: TimesKernel,
 }
 
 impl KktKernels {
@@ -58,6 +64,12 @@ impl KktKernels {
     /// (the same statics, compared by address: no scan).
     pub fn transpose_for(&self, rows: &[u32], cols: &[u32]) -> Option<TransposeKernel> {
         self.emitted_for(rows, cols).then_some(self.transpose_times)
+    }
+
+    /// The generated `out += Φq x` when `rows` and `cols` are the pattern it was emitted
+    /// for (by address, as [`Self::transpose_for`]).
+    pub fn times_add_for(&self, rows: &[u32], cols: &[u32]) -> Option<TimesKernel> {
+        self.emitted_for(rows, cols).then_some(self.times_add)
     }
 
     /// Whether `rows` and `cols` are the Φq pattern statics the kernels were emitted with

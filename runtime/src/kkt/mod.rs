@@ -26,7 +26,7 @@ mod schur;
 pub use dense::DenseKkt;
 pub use kernels::{
     kernels_run_here, length_error, mass_pivot_error, FactorKernel, KktKernels, Pivoting,
-    SolveKernel, TransposeKernel,
+    SolveKernel, TimesKernel, TransposeKernel,
 };
 pub use schur::{SchurKkt, SchurPlan};
 
