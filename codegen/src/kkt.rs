@@ -296,17 +296,8 @@ unsafe {{ {name}_avx({args}) }}
 /// `out[c] = Σ phi_q[k]·y[row k]` over column `c`'s nonzeros in their order, as
 /// `phi_q_transpose_times`'s loop adds them (from zero).
 fn transpose(pattern: &KktPattern) -> String {
-    let mut terms: Vec<Vec<String>> = vec![Vec::new(); pattern.n];
-    for (k, (&r, &c)) in pattern
-        .phi_q_rows
-        .iter()
-        .zip(&pattern.phi_q_cols)
-        .enumerate()
-    {
-        terms[c as usize].push(format!("phi_q[{k}] * y[{r}]"));
-    }
     let mut text = String::new();
-    for (c, t) in terms.iter().enumerate() {
+    for (c, t) in products(pattern, false).iter().enumerate() {
         let sum = if t.is_empty() {
             "0.0".to_string()
         } else {
@@ -320,22 +311,32 @@ fn transpose(pattern: &KktPattern) -> String {
 /// `out[r] += Σ phi_q[k]·x[c]` over row `r`'s nonzeros in their order, as a loop over the
 /// nonzeros adds them to what `out` holds.
 fn times_add(pattern: &KktPattern) -> String {
-    let mut terms: Vec<Vec<String>> = vec![Vec::new(); pattern.m];
+    let mut text = String::new();
+    for (r, t) in products(pattern, true).iter().enumerate() {
+        if !t.is_empty() {
+            let _ = writeln!(text, "out[{r}] = out[{r}] + {};", t.join(" + "));
+        }
+    }
+    text
+}
+
+/// The products of Φq's nonzeros, in their order, grouped by row (`phi_q[k] * x[col]`) or
+/// by column (`phi_q[k] * y[row]`).
+fn products(pattern: &KktPattern, by_row: bool) -> Vec<Vec<String>> {
+    let mut terms = vec![Vec::new(); if by_row { pattern.m } else { pattern.n }];
     for (k, (&r, &c)) in pattern
         .phi_q_rows
         .iter()
         .zip(&pattern.phi_q_cols)
         .enumerate()
     {
-        terms[r as usize].push(format!(" + phi_q[{k}] * x[{c}]"));
+        let (at, term) = match by_row {
+            true => (r, format!("phi_q[{k}] * x[{c}]")),
+            false => (c, format!("phi_q[{k}] * y[{r}]")),
+        };
+        terms[at as usize].push(term);
     }
-    let mut text = String::new();
-    for (r, t) in terms.iter().enumerate() {
-        if !t.is_empty() {
-            let _ = writeln!(text, "out[{r}] = out[{r}]{};", t.concat());
-        }
-    }
-    text
+    terms
 }
 
 /// What the factorization stores for the solves: the value of each block-factor entry

@@ -7,7 +7,7 @@
 //! corrections and get no velocity of their own unless asked for.
 
 use crate::error::{check_len, ConstraintRow, Error};
-use crate::kkt::{KktPattern, KktSolver, SchurKkt};
+use crate::kkt::{KktKernels, KktPattern, KktSolver, SchurKkt, TimesKernel};
 use crate::mechanism::{Mechanism, MechanismInfo};
 
 /// Settings of the position Newton iteration.
@@ -130,11 +130,7 @@ pub(crate) fn phi_q_transpose_times(
     y: &[f64],
     out: &mut [f64],
 ) {
-    let generated = info
-        .kkt
-        .first()
-        .and_then(|k| k.transpose_for(info.phi_q_rows, info.phi_q_cols));
-    if let Some(Ok(())) = generated.map(|t| t(phi_q, y, out)) {
+    if let Some(Ok(())) = phi_q_kernel(info, |k| k.transpose_times).map(|t| t(phi_q, y, out)) {
         return;
     }
     out.fill(0.0);
@@ -145,16 +141,21 @@ pub(crate) fn phi_q_transpose_times(
 
 /// `out += Φq x` from the Jacobian nonzeros, each row's products added in their order.
 pub(crate) fn phi_q_times_add(info: &MechanismInfo, phi_q: &[f64], x: &[f64], out: &mut [f64]) {
-    let generated = info
-        .kkt
-        .first()
-        .and_then(|k| k.times_add_for(info.phi_q_rows, info.phi_q_cols));
-    if let Some(Ok(())) = generated.map(|t| t(phi_q, x, out)) {
+    if let Some(Ok(())) = phi_q_kernel(info, |k| k.times_add).map(|t| t(phi_q, x, out)) {
         return;
     }
     for ((&r, &c), &v) in info.phi_q_rows.iter().zip(info.phi_q_cols).zip(phi_q) {
         out[r as usize] += v * x[c as usize];
     }
+}
+
+/// The model's generated Φq kernel `pick` chooses, where `info`'s pattern is the one it was
+/// emitted for.
+fn phi_q_kernel(info: &MechanismInfo, pick: fn(&KktKernels) -> TimesKernel) -> Option<TimesKernel> {
+    let kernels = info.kkt.first()?;
+    kernels
+        .emitted_for(info.phi_q_rows, info.phi_q_cols)
+        .then(|| pick(kernels))
 }
 
 /// `out = M v` from the mass nonzeros.
