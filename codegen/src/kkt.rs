@@ -183,6 +183,7 @@ let out: &mut [f64; {n}] = out.try_into().map_err(|_| length_error({n}, out_len)
 {}
 Ok(())
 }}
+#[allow(clippy::assign_op_pattern)]
 fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {{
 let phi_q: &[f64; {np}] = phi_q.try_into().map_err(|_| length_error({np}, phi_q.len()))?;
 let x: &[f64; {n}] = x.try_into().map_err(|_| length_error({n}, x.len()))?;
@@ -309,7 +310,8 @@ fn transpose(pattern: &KktPattern) -> String {
 }
 
 /// `out[r] += Σ phi_q[k]·x[c]` over row `r`'s nonzeros in their order, as a loop over the
-/// nonzeros adds them to what `out` holds.
+/// nonzeros adds them to what `out` holds: written `out[r] = out[r] + a + b`, since
+/// `out[r] += a + b` would add the products to each other first.
 fn times_add(pattern: &KktPattern) -> String {
     let mut text = String::new();
     for (r, t) in products(pattern, true).iter().enumerate() {

@@ -77,12 +77,15 @@ pub fn joint_wrench(
 pub struct JointWrenches {
     info: &'static MechanismInfo,
     joints: Vec<usize>,
-    /// Per joint: where its wrench acts, and `(nonzero, row, coordinate of the body)` of
-    /// its Φq entries on that body, in the pattern's order.
-    ends: Vec<(JointEnd<'static>, Vec<(usize, usize, usize)>)>,
+    /// Per joint: where its wrench acts, and its Φq entries on that body.
+    ends: Vec<(JointEnd<'static>, Entries)>,
     /// Per body, its frame at the state of the current call, made on first use.
     frames: Vec<Option<Result<Frame, Error>>>,
 }
+
+/// `(nonzero, row, coordinate of the body)` of a joint's Φq entries on its body, in the
+/// pattern's order.
+type Entries = Vec<(usize, usize, usize)>;
 
 impl JointWrenches {
     /// For `joints` (indices in `info.joints`), each refused as [`joint_wrench`] refuses it.

@@ -37008,6 +37008,7 @@ pub mod exact {
             + phi_q[253] * y[48] + phi_q[259] * y[49];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 260] = phi_q
             .try_into()
@@ -47996,6 +47997,7 @@ pub mod reduced {
                 + phi_q[63] * y[19];
             Ok(())
         }
+        #[allow(clippy::assign_op_pattern)]
         fn kkt_times_add(
             phi_q: &[f64],
             x: &[f64],

@@ -17338,6 +17338,7 @@ pub mod exact {
             + phi_q[225] * y[29] + phi_q[245] * y[34];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 246] = phi_q
             .try_into()

@@ -6511,6 +6511,7 @@ pub mod exact {
             + phi_q[37] * y[5] + phi_q[41] * y[6];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 42] = phi_q
             .try_into()

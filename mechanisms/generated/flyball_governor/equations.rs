@@ -23622,6 +23622,7 @@ pub mod exact {
             + phi_q[116] * y[19];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 117] = phi_q
             .try_into()

@@ -10976,6 +10976,7 @@ pub mod exact {
             + phi_q[89] * y[18] + phi_q[92] * y[19];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 96] = phi_q
             .try_into()
@@ -15196,6 +15197,7 @@ pub mod reduced {
                 + phi_q[23] * y[7];
             Ok(())
         }
+        #[allow(clippy::assign_op_pattern)]
         fn kkt_times_add(
             phi_q: &[f64],
             x: &[f64],

@@ -16687,6 +16687,7 @@ pub mod exact {
             + phi_q[168] * y[33] + phi_q[174] * y[34];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 175] = phi_q
             .try_into()
@@ -23521,6 +23522,7 @@ pub mod reduced {
                 + phi_q[43] * y[13];
             Ok(())
         }
+        #[allow(clippy::assign_op_pattern)]
         fn kkt_times_add(
             phi_q: &[f64],
             x: &[f64],

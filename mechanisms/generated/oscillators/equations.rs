@@ -3008,6 +3008,7 @@ pub mod exact {
         out[13] = phi_q[20] * y[8] + phi_q[24] * y[9] + phi_q[32] * y[11];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 33] = phi_q
             .try_into()
@@ -8343,6 +8344,7 @@ pub mod reduced {
             out[8] = phi_q[15] * y[3] + phi_q[19] * y[4] + phi_q[27] * y[6];
             Ok(())
         }
+        #[allow(clippy::assign_op_pattern)]
         fn kkt_times_add(
             phi_q: &[f64],
             x: &[f64],

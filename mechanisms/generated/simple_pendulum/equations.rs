@@ -895,6 +895,7 @@ pub mod exact {
         out[5] = 0.0;
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 3] = phi_q
             .try_into()
@@ -2218,6 +2219,7 @@ pub mod reduced {
             out[2] = 0.0;
             Ok(())
         }
+        #[allow(clippy::assign_op_pattern)]
         fn kkt_times_add(
             phi_q: &[f64],
             x: &[f64],

@@ -8036,6 +8036,7 @@ pub mod exact {
             + phi_q[92] * y[16] + phi_q[108] * y[20];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 109] = phi_q
             .try_into()
@@ -18131,6 +18132,7 @@ pub mod reduced {
                 + phi_q[88] * y[14] + phi_q[104] * y[18];
             Ok(())
         }
+        #[allow(clippy::assign_op_pattern)]
         fn kkt_times_add(
             phi_q: &[f64],
             x: &[f64],

@@ -1607,6 +1607,7 @@ pub mod exact {
         out[6] = phi_q[4] * y[0] + phi_q[9] * y[1] + phi_q[14] * y[2] + phi_q[18] * y[3];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 19] = phi_q
             .try_into()

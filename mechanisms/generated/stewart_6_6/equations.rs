@@ -32784,6 +32784,7 @@ pub mod exact {
             + phi_q[328] * y[63] + phi_q[332] * y[64] + phi_q[389] * y[71];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 390] = phi_q
             .try_into()
@@ -53673,6 +53674,7 @@ pub mod paper {
             + phi_q[328] * y[63] + phi_q[332] * y[64] + phi_q[389] * y[71];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 390] = phi_q
             .try_into()
@@ -73974,6 +73976,7 @@ pub mod reduced {
                 + phi_q[353] * y[53];
             Ok(())
         }
+        #[allow(clippy::assign_op_pattern)]
         fn kkt_times_add(
             phi_q: &[f64],
             x: &[f64],
@@ -87410,6 +87413,7 @@ pub mod reduced {
                 + phi_q[353] * y[53];
             Ok(())
         }
+        #[allow(clippy::assign_op_pattern)]
         fn kkt_times_add(
             phi_q: &[f64],
             x: &[f64],

@@ -73031,6 +73031,7 @@ pub mod exact {
             + phi_q[605] * y[77] + phi_q[657] * y[90];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
     fn kkt_times_add(phi_q: &[f64], x: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let phi_q: &[f64; 658] = phi_q
             .try_into()
