@@ -60,11 +60,8 @@ pub fn joint_wrench(
     let end = JointEnd::new(info, joint)?;
     // g = −(Φ^rows_{q_i})ᵀ λ^rows on the body's coordinates.
     let mut g = [0.0; 7];
-    for k in rows_nonzeros(info, &end.rows) {
-        let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
-        if end.rows.contains(&r) && end.cols.contains(&c) {
-            g[c - end.cols.start] -= phi_q[k] * lambda[r];
-        }
+    for (k, r, c) in end.entries(info) {
+        g[c] -= phi_q[k] * lambda[r];
     }
     end.wrench(&g, &Frame::new(end.body, q)?)
 }
@@ -94,16 +91,7 @@ impl JointWrenches {
             .iter()
             .map(|&joint| {
                 let end = JointEnd::new(info, joint)?;
-                let terms = rows_nonzeros(info, &end.rows)
-                    .filter_map(|k| {
-                        let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
-                        (end.rows.contains(&r) && end.cols.contains(&c)).then_some((
-                            k,
-                            r,
-                            c - end.cols.start,
-                        ))
-                    })
-                    .collect();
+                let terms = end.entries(info).collect();
                 Ok((end, terms))
             })
             .collect::<Result<_, Error>>()?;
@@ -204,6 +192,22 @@ impl<'a> JointEnd<'a> {
             rows,
             cols,
             point,
+        })
+    }
+
+    /// `(nonzero, row, coordinate of the body)` of the joint's Φq entries on its body, in
+    /// the pattern's order.
+    fn entries<'i>(
+        &'i self,
+        info: &'i MechanismInfo,
+    ) -> impl Iterator<Item = (usize, usize, usize)> + 'i {
+        rows_nonzeros(info, &self.rows).filter_map(move |k| {
+            let (r, c) = (info.phi_q_rows[k] as usize, info.phi_q_cols[k] as usize);
+            (self.rows.contains(&r) && self.cols.contains(&c)).then_some((
+                k,
+                r,
+                c - self.cols.start,
+            ))
         })
     }
 
