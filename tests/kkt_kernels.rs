@@ -92,11 +92,13 @@ fn transpose_matches_dense(name: &str, info: &MechanismInfo, phi_q: &[f64], rng:
 /// in their order); offered only for the model's own pattern statics.
 fn times_add_matches(name: &str, info: &MechanismInfo, phi_q: &[f64], rng: &mut Rng) {
     let kernels = &info.kkt[0];
-    let t = kernels
-        .times_add_for(info.phi_q_rows, info.phi_q_cols)
-        .unwrap_or_else(|| panic!("{name}: no Φq x for its own pattern"));
+    assert!(
+        kernels.emitted_for(info.phi_q_rows, info.phi_q_cols),
+        "{name}: no Φq x for its own pattern"
+    );
     let copy = info.phi_q_cols.to_vec();
-    assert!(kernels.times_add_for(info.phi_q_rows, &copy).is_none());
+    assert!(!kernels.emitted_for(info.phi_q_rows, &copy));
+    let t = kernels.times_add;
     let x: Vec<f64> = (0..info.n_coords).map(|_| rng.uniform(-1.0, 1.0)).collect();
     let start: Vec<f64> = (0..info.n_constraints)
         .map(|_| rng.uniform(-1.0, 1.0))

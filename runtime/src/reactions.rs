@@ -58,11 +58,7 @@ pub fn joint_wrench(
     check_len("Φq nonzeros", info.phi_q_nnz(), phi_q.len())?;
     check_len("lambda", info.n_constraints, lambda.len())?;
     let end = JointEnd::new(info, joint)?;
-    // g = −(Φ^rows_{q_i})ᵀ λ^rows on the body's coordinates.
-    let mut g = [0.0; 7];
-    for (k, r, c) in end.entries(info) {
-        g[c] -= phi_q[k] * lambda[r];
-    }
+    let g = generalized_force(end.entries(info), phi_q, lambda);
     end.wrench(&g, &Frame::new(end.body, q)?)
 }
 
@@ -124,15 +120,26 @@ impl JointWrenches {
         self.frames.fill(None);
         out.clear();
         for (end, terms) in &self.ends {
-            let mut g = [0.0; 7];
-            for &(k, r, c) in terms {
-                g[c] -= phi_q[k] * lambda[r];
-            }
+            let g = generalized_force(terms.iter().copied(), phi_q, lambda);
             let frame = self.frames[end.index].get_or_insert_with(|| Frame::new(end.body, q));
             out.push(end.wrench(&g, frame.as_ref().map_err(Clone::clone)?)?);
         }
         Ok(())
     }
+}
+
+/// `g = −(Φ^rows_{q_i})ᵀ λ^rows` on a body's coordinates from a joint's Φq `entries`
+/// (`(nonzero, row, coordinate of the body)`, summed in their order).
+fn generalized_force(
+    entries: impl Iterator<Item = (usize, usize, usize)>,
+    phi_q: &[f64],
+    lambda: &[f64],
+) -> [f64; 7] {
+    let mut g = [0.0; 7];
+    for (k, r, c) in entries {
+        g[c] -= phi_q[k] * lambda[r];
+    }
+    g
 }
 
 /// Where joint `joint`'s wrench acts: its body 1, or body 2 when body 1 is the ground (then

@@ -107,9 +107,9 @@ pub struct Recording {
     /// except drivers and normalization rows.
     pub joints: Vec<usize>,
     /// Per output, per recorded joint (`joints` order): the wrench the joint exerts on its
-    /// first body, global frame, moment about the joint point ([`symbody_runtime::joint_wrench`]; on the
-    /// ground when body 1 is the ground), from the multipliers of the saddle-point solve at
-    /// that output state.
+    /// first body, global frame, moment about the joint point
+    /// ([`symbody_runtime::joint_wrench`]; on the ground when body 1 is the ground), from the
+    /// multipliers of the saddle-point solve at that output state.
     pub wrenches: Vec<Vec<Wrench>>,
     /// The wrenches' work memory, made for `joints` at the first output (a scene may
     /// narrow `joints` before).

@@ -66,12 +66,6 @@ impl KktKernels {
         self.emitted_for(rows, cols).then_some(self.transpose_times)
     }
 
-    /// The generated `out += Φq x` when `rows` and `cols` are the pattern it was emitted
-    /// for (by address, as [`Self::transpose_for`]).
-    pub fn times_add_for(&self, rows: &[u32], cols: &[u32]) -> Option<TimesKernel> {
-        self.emitted_for(rows, cols).then_some(self.times_add)
-    }
-
     /// Whether `rows` and `cols` are the Φq pattern statics the kernels were emitted with
     /// (by address): then the pattern is the generator's, row-major as it always emits it.
     pub fn emitted_for(&self, rows: &[u32], cols: &[u32]) -> bool {
