@@ -153,8 +153,9 @@ impl Code {
 
 /// The emitted kernels: items for the model's module (`KKT`, one `KktKernels` per pattern
 /// in `patterns` that is not solved densely and not too long, with `kkt_factor_{i}`,
-/// `kkt_solve_{i}`, and one `kkt_transpose_times` and `kkt_times_add`), or `None` when there is none. The
-/// patterns share `Φq` (the model's and the one with its loads' stiffness).
+/// `kkt_solve_{i}`, and one each of `kkt_transpose_times`, `kkt_times_add`, `kkt_mass_times`
+/// and `kkt_kinetic_energy`), or `None` when there is none. The patterns (the model's, then
+/// the one with its loads' stiffness) share `Φq`; the first's mass pattern is `INFO`'s.
 pub fn kernels(patterns: &[KktPattern]) -> Option<TokenStream> {
     let mut items = String::new();
     let mut entries = Vec::new();
@@ -169,6 +170,7 @@ pub fn kernels(patterns: &[KktPattern]) -> Option<TokenStream> {
         return None;
     }
     let (n, m, np) = (pattern.n, pattern.m, pattern.phi_q_rows.len());
+    let nm = pattern.mass_rows.len();
     let k = entries.len();
     let text = format!(
         "use symbody_runtime::kkt::{{length_error, mass_pivot_error, KktError, KktKernels, Pivoting}};
@@ -192,10 +194,28 @@ let out: &mut [f64; {m}] = out.try_into().map_err(|_| length_error({m}, out_len)
 {}
 Ok(())
 }}
+#[allow(clippy::assign_op_pattern)]
+fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {{
+let mass: &[f64; {nm}] = mass.try_into().map_err(|_| length_error({nm}, mass.len()))?;
+let v: &[f64; {n}] = v.try_into().map_err(|_| length_error({n}, v.len()))?;
+let out_len = out.len();
+let out: &mut [f64; {n}] = out.try_into().map_err(|_| length_error({n}, out_len))?;
+{}
+Ok(())
+}}
+fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {{
+let mass: &[f64; {nm}] = mass.try_into().map_err(|_| length_error({nm}, mass.len()))?;
+let qd: &[f64; {n}] = qd.try_into().map_err(|_| length_error({n}, qd.len()))?;
+let mut t = 0.0;
+{}
+Ok(0.5 * t)
+}}
 ",
         entries.join(", "),
         transpose(pattern),
-        times_add(pattern)
+        times_add(pattern),
+        mass_times(pattern),
+        kinetic_energy(pattern)
     );
     Some(text.parse().expect("emitted kernels are Rust tokens"))
 }
@@ -220,7 +240,7 @@ fn one(pattern: &KktPattern, i: usize) -> Option<(String, String)> {
     let ns = stored.slots;
     let fingerprint = pattern.fingerprint();
     let entry = format!(
-        "KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor_{i}, solve: kkt_solve_{i}, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times, times_add: kkt_times_add }}"
+        "KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor_{i}, solve: kkt_solve_{i}, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times, times_add: kkt_times_add, mass_rows: &MASS_ROWS, mass_cols: &MASS_COLS, mass_times: kkt_mass_times, kinetic_energy: kkt_kinetic_energy }}"
     );
     let text = format!(
         "{}
@@ -318,6 +338,32 @@ fn times_add(pattern: &KktPattern) -> String {
         if !t.is_empty() {
             let _ = writeln!(text, "out[{r}] = out[{r}] + {};", t.join(" + "));
         }
+    }
+    text
+}
+
+/// `out[r] = Σ mass[k]·v[c]` over row `r`'s nonzeros in their order, as `mass_times`'s loop
+/// adds them from zero (the leading `0.0 +` keeps the sign of a zero sum the loop's).
+fn mass_times(pattern: &KktPattern) -> String {
+    let mut terms = vec![Vec::new(); pattern.n];
+    for (k, (&r, &c)) in pattern.mass_rows.iter().zip(&pattern.mass_cols).enumerate() {
+        terms[r as usize].push(format!("mass[{k}] * v[{c}]"));
+    }
+    let mut text = String::new();
+    for (r, t) in terms.iter().enumerate() {
+        let sum: String = t.iter().map(|p| format!(" + {p}")).collect();
+        let _ = writeln!(text, "out[{r}] = 0.0{sum};");
+    }
+    text
+}
+
+/// `t += qd[r]·mass[k]·qd[c]` over M's nonzeros in their order, as `kinetic_energy`'s loop
+/// sums them: one statement each (a sum of hundreds of terms in one expression nests as
+/// deep).
+fn kinetic_energy(pattern: &KktPattern) -> String {
+    let mut text = String::new();
+    for (k, (&r, &c)) in pattern.mass_rows.iter().zip(&pattern.mass_cols).enumerate() {
+        let _ = writeln!(text, "t += qd[{r}] * mass[{k}] * qd[{c}];");
     }
     text
 }

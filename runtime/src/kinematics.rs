@@ -116,6 +116,9 @@ pub(crate) fn largest_row(v: &[f64]) -> usize {
 
 /// `½ q̇ᵀ M q̇` from the mass nonzeros.
 pub fn kinetic_energy(info: &MechanismInfo, mass: &[f64], qd: &[f64]) -> f64 {
+    if let Some(Ok(t)) = mass_kernels(info).map(|k| (k.kinetic_energy)(mass, qd)) {
+        return t;
+    }
     let mut t = 0.0;
     for ((&r, &c), &m) in info.mass_rows.iter().zip(info.mass_cols).zip(mass) {
         t += qd[r as usize] * m * qd[c as usize];
@@ -158,8 +161,20 @@ fn phi_q_kernel(info: &MechanismInfo, pick: fn(&KktKernels) -> TimesKernel) -> O
         .then(|| pick(kernels))
 }
 
+/// The model's generated kernels, where `info`'s mass pattern is the one they were emitted
+/// for.
+fn mass_kernels(info: &MechanismInfo) -> Option<&KktKernels> {
+    let kernels = info.kkt.first()?;
+    kernels
+        .mass_emitted_for(info.mass_rows, info.mass_cols)
+        .then_some(kernels)
+}
+
 /// `out = M v` from the mass nonzeros.
 pub(crate) fn mass_times(info: &MechanismInfo, mass: &[f64], v: &[f64], out: &mut [f64]) {
+    if let Some(Ok(())) = mass_kernels(info).map(|k| (k.mass_times)(mass, v, out)) {
+        return;
+    }
     out.fill(0.0);
     for ((&r, &c), &m) in info.mass_rows.iter().zip(info.mass_cols).zip(mass) {
         out[r as usize] += m * v[c as usize];

@@ -21911,6 +21911,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
         KktKernels {
             pattern: 0x14550b40923d5b4e,
@@ -21921,6 +21925,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -37118,6 +37126,136 @@ pub mod exact {
             + phi_q[257] * x[39] + phi_q[258] * x[40] + phi_q[259] * x[41];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
+    fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let mass: &[f64; 70] = mass
+            .try_into()
+            .map_err(|_| length_error(70, mass.len()))?;
+        let v: &[f64; 42] = v.try_into().map_err(|_| length_error(42, v.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 42] = out.try_into().map_err(|_| length_error(42, out_len))?;
+        out[0] = 0.0 + mass[0] * v[0];
+        out[1] = 0.0 + mass[1] * v[1];
+        out[2] = 0.0 + mass[2] * v[2];
+        out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[5];
+        out[4] = 0.0 + mass[5] * v[4] + mass[6] * v[5];
+        out[5] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5];
+        out[6] = 0.0 + mass[10] * v[6];
+        out[7] = 0.0 + mass[11] * v[7];
+        out[8] = 0.0 + mass[12] * v[8];
+        out[9] = 0.0 + mass[13] * v[9] + mass[14] * v[11];
+        out[10] = 0.0 + mass[15] * v[10] + mass[16] * v[11];
+        out[11] = 0.0 + mass[17] * v[9] + mass[18] * v[10] + mass[19] * v[11];
+        out[12] = 0.0 + mass[20] * v[12];
+        out[13] = 0.0 + mass[21] * v[13];
+        out[14] = 0.0 + mass[22] * v[14];
+        out[15] = 0.0 + mass[23] * v[15] + mass[24] * v[17];
+        out[16] = 0.0 + mass[25] * v[16] + mass[26] * v[17];
+        out[17] = 0.0 + mass[27] * v[15] + mass[28] * v[16] + mass[29] * v[17];
+        out[18] = 0.0 + mass[30] * v[18];
+        out[19] = 0.0 + mass[31] * v[19];
+        out[20] = 0.0 + mass[32] * v[20];
+        out[21] = 0.0 + mass[33] * v[21] + mass[34] * v[23];
+        out[22] = 0.0 + mass[35] * v[22] + mass[36] * v[23];
+        out[23] = 0.0 + mass[37] * v[21] + mass[38] * v[22] + mass[39] * v[23];
+        out[24] = 0.0 + mass[40] * v[24];
+        out[25] = 0.0 + mass[41] * v[25];
+        out[26] = 0.0 + mass[42] * v[26];
+        out[27] = 0.0 + mass[43] * v[27] + mass[44] * v[29];
+        out[28] = 0.0 + mass[45] * v[28] + mass[46] * v[29];
+        out[29] = 0.0 + mass[47] * v[27] + mass[48] * v[28] + mass[49] * v[29];
+        out[30] = 0.0 + mass[50] * v[30];
+        out[31] = 0.0 + mass[51] * v[31];
+        out[32] = 0.0 + mass[52] * v[32];
+        out[33] = 0.0 + mass[53] * v[33] + mass[54] * v[35];
+        out[34] = 0.0 + mass[55] * v[34] + mass[56] * v[35];
+        out[35] = 0.0 + mass[57] * v[33] + mass[58] * v[34] + mass[59] * v[35];
+        out[36] = 0.0 + mass[60] * v[36];
+        out[37] = 0.0 + mass[61] * v[37];
+        out[38] = 0.0 + mass[62] * v[38];
+        out[39] = 0.0 + mass[63] * v[39] + mass[64] * v[41];
+        out[40] = 0.0 + mass[65] * v[40] + mass[66] * v[41];
+        out[41] = 0.0 + mass[67] * v[39] + mass[68] * v[40] + mass[69] * v[41];
+        Ok(())
+    }
+    fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+        let mass: &[f64; 70] = mass
+            .try_into()
+            .map_err(|_| length_error(70, mass.len()))?;
+        let qd: &[f64; 42] = qd.try_into().map_err(|_| length_error(42, qd.len()))?;
+        let mut t = 0.0;
+        t += qd[0] * mass[0] * qd[0];
+        t += qd[1] * mass[1] * qd[1];
+        t += qd[2] * mass[2] * qd[2];
+        t += qd[3] * mass[3] * qd[3];
+        t += qd[3] * mass[4] * qd[5];
+        t += qd[4] * mass[5] * qd[4];
+        t += qd[4] * mass[6] * qd[5];
+        t += qd[5] * mass[7] * qd[3];
+        t += qd[5] * mass[8] * qd[4];
+        t += qd[5] * mass[9] * qd[5];
+        t += qd[6] * mass[10] * qd[6];
+        t += qd[7] * mass[11] * qd[7];
+        t += qd[8] * mass[12] * qd[8];
+        t += qd[9] * mass[13] * qd[9];
+        t += qd[9] * mass[14] * qd[11];
+        t += qd[10] * mass[15] * qd[10];
+        t += qd[10] * mass[16] * qd[11];
+        t += qd[11] * mass[17] * qd[9];
+        t += qd[11] * mass[18] * qd[10];
+        t += qd[11] * mass[19] * qd[11];
+        t += qd[12] * mass[20] * qd[12];
+        t += qd[13] * mass[21] * qd[13];
+        t += qd[14] * mass[22] * qd[14];
+        t += qd[15] * mass[23] * qd[15];
+        t += qd[15] * mass[24] * qd[17];
+        t += qd[16] * mass[25] * qd[16];
+        t += qd[16] * mass[26] * qd[17];
+        t += qd[17] * mass[27] * qd[15];
+        t += qd[17] * mass[28] * qd[16];
+        t += qd[17] * mass[29] * qd[17];
+        t += qd[18] * mass[30] * qd[18];
+        t += qd[19] * mass[31] * qd[19];
+        t += qd[20] * mass[32] * qd[20];
+        t += qd[21] * mass[33] * qd[21];
+        t += qd[21] * mass[34] * qd[23];
+        t += qd[22] * mass[35] * qd[22];
+        t += qd[22] * mass[36] * qd[23];
+        t += qd[23] * mass[37] * qd[21];
+        t += qd[23] * mass[38] * qd[22];
+        t += qd[23] * mass[39] * qd[23];
+        t += qd[24] * mass[40] * qd[24];
+        t += qd[25] * mass[41] * qd[25];
+        t += qd[26] * mass[42] * qd[26];
+        t += qd[27] * mass[43] * qd[27];
+        t += qd[27] * mass[44] * qd[29];
+        t += qd[28] * mass[45] * qd[28];
+        t += qd[28] * mass[46] * qd[29];
+        t += qd[29] * mass[47] * qd[27];
+        t += qd[29] * mass[48] * qd[28];
+        t += qd[29] * mass[49] * qd[29];
+        t += qd[30] * mass[50] * qd[30];
+        t += qd[31] * mass[51] * qd[31];
+        t += qd[32] * mass[52] * qd[32];
+        t += qd[33] * mass[53] * qd[33];
+        t += qd[33] * mass[54] * qd[35];
+        t += qd[34] * mass[55] * qd[34];
+        t += qd[34] * mass[56] * qd[35];
+        t += qd[35] * mass[57] * qd[33];
+        t += qd[35] * mass[58] * qd[34];
+        t += qd[35] * mass[59] * qd[35];
+        t += qd[36] * mass[60] * qd[36];
+        t += qd[37] * mass[61] * qd[37];
+        t += qd[38] * mass[62] * qd[38];
+        t += qd[39] * mass[63] * qd[39];
+        t += qd[39] * mass[64] * qd[41];
+        t += qd[40] * mass[65] * qd[40];
+        t += qd[40] * mass[66] * qd[41];
+        t += qd[41] * mass[67] * qd[39];
+        t += qd[41] * mass[68] * qd[40];
+        t += qd[41] * mass[69] * qd[41];
+        Ok(0.5 * t)
+    }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
         k: &[f64],
@@ -46595,6 +46733,10 @@ pub mod reduced {
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
                 times_add: kkt_times_add,
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                mass_times: kkt_mass_times,
+                kinetic_energy: kkt_kinetic_energy,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -48044,6 +48186,72 @@ pub mod reduced {
             out[19] = out[19] + phi_q[60] * x[16] + phi_q[61] * x[17] + phi_q[62] * x[19]
                 + phi_q[63] * x[20];
             Ok(())
+        }
+        #[allow(clippy::assign_op_pattern)]
+        fn kkt_mass_times(
+            mass: &[f64],
+            v: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let mass: &[f64; 21] = mass
+                .try_into()
+                .map_err(|_| length_error(21, mass.len()))?;
+            let v: &[f64; 21] = v.try_into().map_err(|_| length_error(21, v.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 21] = out
+                .try_into()
+                .map_err(|_| length_error(21, out_len))?;
+            out[0] = 0.0 + mass[0] * v[0];
+            out[1] = 0.0 + mass[1] * v[1];
+            out[2] = 0.0 + mass[2] * v[2];
+            out[3] = 0.0 + mass[3] * v[3];
+            out[4] = 0.0 + mass[4] * v[4];
+            out[5] = 0.0 + mass[5] * v[5];
+            out[6] = 0.0 + mass[6] * v[6];
+            out[7] = 0.0 + mass[7] * v[7];
+            out[8] = 0.0 + mass[8] * v[8];
+            out[9] = 0.0 + mass[9] * v[9];
+            out[10] = 0.0 + mass[10] * v[10];
+            out[11] = 0.0 + mass[11] * v[11];
+            out[12] = 0.0 + mass[12] * v[12];
+            out[13] = 0.0 + mass[13] * v[13];
+            out[14] = 0.0 + mass[14] * v[14];
+            out[15] = 0.0 + mass[15] * v[15];
+            out[16] = 0.0 + mass[16] * v[16];
+            out[17] = 0.0 + mass[17] * v[17];
+            out[18] = 0.0 + mass[18] * v[18];
+            out[19] = 0.0 + mass[19] * v[19];
+            out[20] = 0.0 + mass[20] * v[20];
+            Ok(())
+        }
+        fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+            let mass: &[f64; 21] = mass
+                .try_into()
+                .map_err(|_| length_error(21, mass.len()))?;
+            let qd: &[f64; 21] = qd.try_into().map_err(|_| length_error(21, qd.len()))?;
+            let mut t = 0.0;
+            t += qd[0] * mass[0] * qd[0];
+            t += qd[1] * mass[1] * qd[1];
+            t += qd[2] * mass[2] * qd[2];
+            t += qd[3] * mass[3] * qd[3];
+            t += qd[4] * mass[4] * qd[4];
+            t += qd[5] * mass[5] * qd[5];
+            t += qd[6] * mass[6] * qd[6];
+            t += qd[7] * mass[7] * qd[7];
+            t += qd[8] * mass[8] * qd[8];
+            t += qd[9] * mass[9] * qd[9];
+            t += qd[10] * mass[10] * qd[10];
+            t += qd[11] * mass[11] * qd[11];
+            t += qd[12] * mass[12] * qd[12];
+            t += qd[13] * mass[13] * qd[13];
+            t += qd[14] * mass[14] * qd[14];
+            t += qd[15] * mass[15] * qd[15];
+            t += qd[16] * mass[16] * qd[16];
+            t += qd[17] * mass[17] * qd[17];
+            t += qd[18] * mass[18] * qd[18];
+            t += qd[19] * mass[19] * qd[19];
+            t += qd[20] * mass[20] * qd[20];
+            Ok(0.5 * t)
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(

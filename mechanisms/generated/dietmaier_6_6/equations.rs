@@ -5590,6 +5590,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -6533,6 +6537,53 @@ pub mod exact {
         out[6] = out[6] + phi_q[38] * x[3] + phi_q[39] * x[4] + phi_q[40] * x[5]
             + phi_q[41] * x[6];
         Ok(())
+    }
+    #[allow(clippy::assign_op_pattern)]
+    fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let mass: &[f64; 19] = mass
+            .try_into()
+            .map_err(|_| length_error(19, mass.len()))?;
+        let v: &[f64; 7] = v.try_into().map_err(|_| length_error(7, v.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 7] = out.try_into().map_err(|_| length_error(7, out_len))?;
+        out[0] = 0.0 + mass[0] * v[0];
+        out[1] = 0.0 + mass[1] * v[1];
+        out[2] = 0.0 + mass[2] * v[2];
+        out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[4] + mass[5] * v[5] + mass[6] * v[6];
+        out[4] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5]
+            + mass[10] * v[6];
+        out[5] = 0.0 + mass[11] * v[3] + mass[12] * v[4] + mass[13] * v[5]
+            + mass[14] * v[6];
+        out[6] = 0.0 + mass[15] * v[3] + mass[16] * v[4] + mass[17] * v[5]
+            + mass[18] * v[6];
+        Ok(())
+    }
+    fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+        let mass: &[f64; 19] = mass
+            .try_into()
+            .map_err(|_| length_error(19, mass.len()))?;
+        let qd: &[f64; 7] = qd.try_into().map_err(|_| length_error(7, qd.len()))?;
+        let mut t = 0.0;
+        t += qd[0] * mass[0] * qd[0];
+        t += qd[1] * mass[1] * qd[1];
+        t += qd[2] * mass[2] * qd[2];
+        t += qd[3] * mass[3] * qd[3];
+        t += qd[3] * mass[4] * qd[4];
+        t += qd[3] * mass[5] * qd[5];
+        t += qd[3] * mass[6] * qd[6];
+        t += qd[4] * mass[7] * qd[3];
+        t += qd[4] * mass[8] * qd[4];
+        t += qd[4] * mass[9] * qd[5];
+        t += qd[4] * mass[10] * qd[6];
+        t += qd[5] * mass[11] * qd[3];
+        t += qd[5] * mass[12] * qd[4];
+        t += qd[5] * mass[13] * qd[5];
+        t += qd[5] * mass[14] * qd[6];
+        t += qd[6] * mass[15] * qd[3];
+        t += qd[6] * mass[16] * qd[4];
+        t += qd[6] * mass[17] * qd[5];
+        t += qd[6] * mass[18] * qd[6];
+        Ok(0.5 * t)
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(

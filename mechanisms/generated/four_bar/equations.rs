@@ -8480,6 +8480,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -11020,6 +11024,72 @@ pub mod exact {
         out[19] = out[19] + phi_q[90] * x[15] + phi_q[91] * x[16] + phi_q[92] * x[17];
         out[20] = out[20] + phi_q[93] * x[3] + phi_q[94] * x[4] + phi_q[95] * x[5];
         Ok(())
+    }
+    #[allow(clippy::assign_op_pattern)]
+    fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let mass: &[f64; 30] = mass
+            .try_into()
+            .map_err(|_| length_error(30, mass.len()))?;
+        let v: &[f64; 18] = v.try_into().map_err(|_| length_error(18, v.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 18] = out.try_into().map_err(|_| length_error(18, out_len))?;
+        out[0] = 0.0 + mass[0] * v[0];
+        out[1] = 0.0 + mass[1] * v[1];
+        out[2] = 0.0 + mass[2] * v[2];
+        out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[5];
+        out[4] = 0.0 + mass[5] * v[4] + mass[6] * v[5];
+        out[5] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5];
+        out[6] = 0.0 + mass[10] * v[6];
+        out[7] = 0.0 + mass[11] * v[7];
+        out[8] = 0.0 + mass[12] * v[8];
+        out[9] = 0.0 + mass[13] * v[9] + mass[14] * v[11];
+        out[10] = 0.0 + mass[15] * v[10] + mass[16] * v[11];
+        out[11] = 0.0 + mass[17] * v[9] + mass[18] * v[10] + mass[19] * v[11];
+        out[12] = 0.0 + mass[20] * v[12];
+        out[13] = 0.0 + mass[21] * v[13];
+        out[14] = 0.0 + mass[22] * v[14];
+        out[15] = 0.0 + mass[23] * v[15] + mass[24] * v[17];
+        out[16] = 0.0 + mass[25] * v[16] + mass[26] * v[17];
+        out[17] = 0.0 + mass[27] * v[15] + mass[28] * v[16] + mass[29] * v[17];
+        Ok(())
+    }
+    fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+        let mass: &[f64; 30] = mass
+            .try_into()
+            .map_err(|_| length_error(30, mass.len()))?;
+        let qd: &[f64; 18] = qd.try_into().map_err(|_| length_error(18, qd.len()))?;
+        let mut t = 0.0;
+        t += qd[0] * mass[0] * qd[0];
+        t += qd[1] * mass[1] * qd[1];
+        t += qd[2] * mass[2] * qd[2];
+        t += qd[3] * mass[3] * qd[3];
+        t += qd[3] * mass[4] * qd[5];
+        t += qd[4] * mass[5] * qd[4];
+        t += qd[4] * mass[6] * qd[5];
+        t += qd[5] * mass[7] * qd[3];
+        t += qd[5] * mass[8] * qd[4];
+        t += qd[5] * mass[9] * qd[5];
+        t += qd[6] * mass[10] * qd[6];
+        t += qd[7] * mass[11] * qd[7];
+        t += qd[8] * mass[12] * qd[8];
+        t += qd[9] * mass[13] * qd[9];
+        t += qd[9] * mass[14] * qd[11];
+        t += qd[10] * mass[15] * qd[10];
+        t += qd[10] * mass[16] * qd[11];
+        t += qd[11] * mass[17] * qd[9];
+        t += qd[11] * mass[18] * qd[10];
+        t += qd[11] * mass[19] * qd[11];
+        t += qd[12] * mass[20] * qd[12];
+        t += qd[13] * mass[21] * qd[13];
+        t += qd[14] * mass[22] * qd[14];
+        t += qd[15] * mass[23] * qd[15];
+        t += qd[15] * mass[24] * qd[17];
+        t += qd[16] * mass[25] * qd[16];
+        t += qd[16] * mass[26] * qd[17];
+        t += qd[17] * mass[27] * qd[15];
+        t += qd[17] * mass[28] * qd[16];
+        t += qd[17] * mass[29] * qd[17];
+        Ok(0.5 * t)
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
@@ -14599,6 +14669,10 @@ pub mod reduced {
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
                 times_add: kkt_times_add,
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                mass_times: kkt_mass_times,
+                kinetic_energy: kkt_kinetic_energy,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -15225,6 +15299,48 @@ pub mod reduced {
             out[7] = out[7] + phi_q[22] * x[7] + phi_q[23] * x[8];
             out[8] = out[8] + phi_q[24] * x[2];
             Ok(())
+        }
+        #[allow(clippy::assign_op_pattern)]
+        fn kkt_mass_times(
+            mass: &[f64],
+            v: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let mass: &[f64; 9] = mass
+                .try_into()
+                .map_err(|_| length_error(9, mass.len()))?;
+            let v: &[f64; 9] = v.try_into().map_err(|_| length_error(9, v.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 9] = out
+                .try_into()
+                .map_err(|_| length_error(9, out_len))?;
+            out[0] = 0.0 + mass[0] * v[0];
+            out[1] = 0.0 + mass[1] * v[1];
+            out[2] = 0.0 + mass[2] * v[2];
+            out[3] = 0.0 + mass[3] * v[3];
+            out[4] = 0.0 + mass[4] * v[4];
+            out[5] = 0.0 + mass[5] * v[5];
+            out[6] = 0.0 + mass[6] * v[6];
+            out[7] = 0.0 + mass[7] * v[7];
+            out[8] = 0.0 + mass[8] * v[8];
+            Ok(())
+        }
+        fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+            let mass: &[f64; 9] = mass
+                .try_into()
+                .map_err(|_| length_error(9, mass.len()))?;
+            let qd: &[f64; 9] = qd.try_into().map_err(|_| length_error(9, qd.len()))?;
+            let mut t = 0.0;
+            t += qd[0] * mass[0] * qd[0];
+            t += qd[1] * mass[1] * qd[1];
+            t += qd[2] * mass[2] * qd[2];
+            t += qd[3] * mass[3] * qd[3];
+            t += qd[4] * mass[4] * qd[4];
+            t += qd[5] * mass[5] * qd[5];
+            t += qd[6] * mass[6] * qd[6];
+            t += qd[7] * mass[7] * qd[7];
+            t += qd[8] * mass[8] * qd[8];
+            Ok(0.5 * t)
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(

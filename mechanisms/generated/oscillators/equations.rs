@@ -1417,6 +1417,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
         KktKernels {
             pattern: 0xc64715c39133be24,
@@ -1427,6 +1431,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -3036,6 +3044,83 @@ pub mod exact {
         out[11] = out[11] + phi_q[29] * x[10] + phi_q[30] * x[11] + phi_q[31] * x[12]
             + phi_q[32] * x[13];
         Ok(())
+    }
+    #[allow(clippy::assign_op_pattern)]
+    fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let mass: &[f64; 38] = mass
+            .try_into()
+            .map_err(|_| length_error(38, mass.len()))?;
+        let v: &[f64; 14] = v.try_into().map_err(|_| length_error(14, v.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 14] = out.try_into().map_err(|_| length_error(14, out_len))?;
+        out[0] = 0.0 + mass[0] * v[0];
+        out[1] = 0.0 + mass[1] * v[1];
+        out[2] = 0.0 + mass[2] * v[2];
+        out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[4] + mass[5] * v[5] + mass[6] * v[6];
+        out[4] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5]
+            + mass[10] * v[6];
+        out[5] = 0.0 + mass[11] * v[3] + mass[12] * v[4] + mass[13] * v[5]
+            + mass[14] * v[6];
+        out[6] = 0.0 + mass[15] * v[3] + mass[16] * v[4] + mass[17] * v[5]
+            + mass[18] * v[6];
+        out[7] = 0.0 + mass[19] * v[7];
+        out[8] = 0.0 + mass[20] * v[8];
+        out[9] = 0.0 + mass[21] * v[9];
+        out[10] = 0.0 + mass[22] * v[10] + mass[23] * v[11] + mass[24] * v[12]
+            + mass[25] * v[13];
+        out[11] = 0.0 + mass[26] * v[10] + mass[27] * v[11] + mass[28] * v[12]
+            + mass[29] * v[13];
+        out[12] = 0.0 + mass[30] * v[10] + mass[31] * v[11] + mass[32] * v[12]
+            + mass[33] * v[13];
+        out[13] = 0.0 + mass[34] * v[10] + mass[35] * v[11] + mass[36] * v[12]
+            + mass[37] * v[13];
+        Ok(())
+    }
+    fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+        let mass: &[f64; 38] = mass
+            .try_into()
+            .map_err(|_| length_error(38, mass.len()))?;
+        let qd: &[f64; 14] = qd.try_into().map_err(|_| length_error(14, qd.len()))?;
+        let mut t = 0.0;
+        t += qd[0] * mass[0] * qd[0];
+        t += qd[1] * mass[1] * qd[1];
+        t += qd[2] * mass[2] * qd[2];
+        t += qd[3] * mass[3] * qd[3];
+        t += qd[3] * mass[4] * qd[4];
+        t += qd[3] * mass[5] * qd[5];
+        t += qd[3] * mass[6] * qd[6];
+        t += qd[4] * mass[7] * qd[3];
+        t += qd[4] * mass[8] * qd[4];
+        t += qd[4] * mass[9] * qd[5];
+        t += qd[4] * mass[10] * qd[6];
+        t += qd[5] * mass[11] * qd[3];
+        t += qd[5] * mass[12] * qd[4];
+        t += qd[5] * mass[13] * qd[5];
+        t += qd[5] * mass[14] * qd[6];
+        t += qd[6] * mass[15] * qd[3];
+        t += qd[6] * mass[16] * qd[4];
+        t += qd[6] * mass[17] * qd[5];
+        t += qd[6] * mass[18] * qd[6];
+        t += qd[7] * mass[19] * qd[7];
+        t += qd[8] * mass[20] * qd[8];
+        t += qd[9] * mass[21] * qd[9];
+        t += qd[10] * mass[22] * qd[10];
+        t += qd[10] * mass[23] * qd[11];
+        t += qd[10] * mass[24] * qd[12];
+        t += qd[10] * mass[25] * qd[13];
+        t += qd[11] * mass[26] * qd[10];
+        t += qd[11] * mass[27] * qd[11];
+        t += qd[11] * mass[28] * qd[12];
+        t += qd[11] * mass[29] * qd[13];
+        t += qd[12] * mass[30] * qd[10];
+        t += qd[12] * mass[31] * qd[11];
+        t += qd[12] * mass[32] * qd[12];
+        t += qd[12] * mass[33] * qd[13];
+        t += qd[13] * mass[34] * qd[10];
+        t += qd[13] * mass[35] * qd[11];
+        t += qd[13] * mass[36] * qd[12];
+        t += qd[13] * mass[37] * qd[13];
+        Ok(0.5 * t)
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
@@ -7663,6 +7748,10 @@ pub mod reduced {
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
                 times_add: kkt_times_add,
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                mass_times: kkt_mass_times,
+                kinetic_energy: kkt_kinetic_energy,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -8373,6 +8462,80 @@ pub mod reduced {
             out[6] = out[6] + phi_q[24] * x[5] + phi_q[25] * x[6] + phi_q[26] * x[7]
                 + phi_q[27] * x[8];
             Ok(())
+        }
+        #[allow(clippy::assign_op_pattern)]
+        fn kkt_mass_times(
+            mass: &[f64],
+            v: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let mass: &[f64; 33] = mass
+                .try_into()
+                .map_err(|_| length_error(33, mass.len()))?;
+            let v: &[f64; 9] = v.try_into().map_err(|_| length_error(9, v.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 9] = out
+                .try_into()
+                .map_err(|_| length_error(9, out_len))?;
+            out[0] = 0.0 + mass[0] * v[0];
+            out[1] = 0.0 + mass[1] * v[1] + mass[2] * v[2] + mass[3] * v[3]
+                + mass[4] * v[4];
+            out[2] = 0.0 + mass[5] * v[1] + mass[6] * v[2] + mass[7] * v[3]
+                + mass[8] * v[4];
+            out[3] = 0.0 + mass[9] * v[1] + mass[10] * v[2] + mass[11] * v[3]
+                + mass[12] * v[4];
+            out[4] = 0.0 + mass[13] * v[1] + mass[14] * v[2] + mass[15] * v[3]
+                + mass[16] * v[4];
+            out[5] = 0.0 + mass[17] * v[5] + mass[18] * v[6] + mass[19] * v[7]
+                + mass[20] * v[8];
+            out[6] = 0.0 + mass[21] * v[5] + mass[22] * v[6] + mass[23] * v[7]
+                + mass[24] * v[8];
+            out[7] = 0.0 + mass[25] * v[5] + mass[26] * v[6] + mass[27] * v[7]
+                + mass[28] * v[8];
+            out[8] = 0.0 + mass[29] * v[5] + mass[30] * v[6] + mass[31] * v[7]
+                + mass[32] * v[8];
+            Ok(())
+        }
+        fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+            let mass: &[f64; 33] = mass
+                .try_into()
+                .map_err(|_| length_error(33, mass.len()))?;
+            let qd: &[f64; 9] = qd.try_into().map_err(|_| length_error(9, qd.len()))?;
+            let mut t = 0.0;
+            t += qd[0] * mass[0] * qd[0];
+            t += qd[1] * mass[1] * qd[1];
+            t += qd[1] * mass[2] * qd[2];
+            t += qd[1] * mass[3] * qd[3];
+            t += qd[1] * mass[4] * qd[4];
+            t += qd[2] * mass[5] * qd[1];
+            t += qd[2] * mass[6] * qd[2];
+            t += qd[2] * mass[7] * qd[3];
+            t += qd[2] * mass[8] * qd[4];
+            t += qd[3] * mass[9] * qd[1];
+            t += qd[3] * mass[10] * qd[2];
+            t += qd[3] * mass[11] * qd[3];
+            t += qd[3] * mass[12] * qd[4];
+            t += qd[4] * mass[13] * qd[1];
+            t += qd[4] * mass[14] * qd[2];
+            t += qd[4] * mass[15] * qd[3];
+            t += qd[4] * mass[16] * qd[4];
+            t += qd[5] * mass[17] * qd[5];
+            t += qd[5] * mass[18] * qd[6];
+            t += qd[5] * mass[19] * qd[7];
+            t += qd[5] * mass[20] * qd[8];
+            t += qd[6] * mass[21] * qd[5];
+            t += qd[6] * mass[22] * qd[6];
+            t += qd[6] * mass[23] * qd[7];
+            t += qd[6] * mass[24] * qd[8];
+            t += qd[7] * mass[25] * qd[5];
+            t += qd[7] * mass[26] * qd[6];
+            t += qd[7] * mass[27] * qd[7];
+            t += qd[7] * mass[28] * qd[8];
+            t += qd[8] * mass[29] * qd[5];
+            t += qd[8] * mass[30] * qd[6];
+            t += qd[8] * mass[31] * qd[7];
+            t += qd[8] * mass[32] * qd[8];
+            Ok(0.5 * t)
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(

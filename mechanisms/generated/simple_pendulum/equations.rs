@@ -670,6 +670,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -905,6 +909,40 @@ pub mod exact {
         let out: &mut [f64; 1] = out.try_into().map_err(|_| length_error(1, out_len))?;
         out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[1] + phi_q[2] * x[2];
         Ok(())
+    }
+    #[allow(clippy::assign_op_pattern)]
+    fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let mass: &[f64; 10] = mass
+            .try_into()
+            .map_err(|_| length_error(10, mass.len()))?;
+        let v: &[f64; 6] = v.try_into().map_err(|_| length_error(6, v.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 6] = out.try_into().map_err(|_| length_error(6, out_len))?;
+        out[0] = 0.0 + mass[0] * v[0];
+        out[1] = 0.0 + mass[1] * v[1];
+        out[2] = 0.0 + mass[2] * v[2];
+        out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[5];
+        out[4] = 0.0 + mass[5] * v[4] + mass[6] * v[5];
+        out[5] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5];
+        Ok(())
+    }
+    fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+        let mass: &[f64; 10] = mass
+            .try_into()
+            .map_err(|_| length_error(10, mass.len()))?;
+        let qd: &[f64; 6] = qd.try_into().map_err(|_| length_error(6, qd.len()))?;
+        let mut t = 0.0;
+        t += qd[0] * mass[0] * qd[0];
+        t += qd[1] * mass[1] * qd[1];
+        t += qd[2] * mass[2] * qd[2];
+        t += qd[3] * mass[3] * qd[3];
+        t += qd[3] * mass[4] * qd[5];
+        t += qd[4] * mass[5] * qd[4];
+        t += qd[4] * mass[6] * qd[5];
+        t += qd[5] * mass[7] * qd[3];
+        t += qd[5] * mass[8] * qd[4];
+        t += qd[5] * mass[9] * qd[5];
+        Ok(0.5 * t)
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
@@ -2045,6 +2083,10 @@ pub mod reduced {
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
                 times_add: kkt_times_add,
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                mass_times: kkt_mass_times,
+                kinetic_energy: kkt_kinetic_energy,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -2235,6 +2277,36 @@ pub mod reduced {
                 .map_err(|_| length_error(1, out_len))?;
             out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[1];
             Ok(())
+        }
+        #[allow(clippy::assign_op_pattern)]
+        fn kkt_mass_times(
+            mass: &[f64],
+            v: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let mass: &[f64; 3] = mass
+                .try_into()
+                .map_err(|_| length_error(3, mass.len()))?;
+            let v: &[f64; 3] = v.try_into().map_err(|_| length_error(3, v.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 3] = out
+                .try_into()
+                .map_err(|_| length_error(3, out_len))?;
+            out[0] = 0.0 + mass[0] * v[0];
+            out[1] = 0.0 + mass[1] * v[1];
+            out[2] = 0.0 + mass[2] * v[2];
+            Ok(())
+        }
+        fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+            let mass: &[f64; 3] = mass
+                .try_into()
+                .map_err(|_| length_error(3, mass.len()))?;
+            let qd: &[f64; 3] = qd.try_into().map_err(|_| length_error(3, qd.len()))?;
+            let mut t = 0.0;
+            t += qd[0] * mass[0] * qd[0];
+            t += qd[1] * mass[1] * qd[1];
+            t += qd[2] * mass[2] * qd[2];
+            Ok(0.5 * t)
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(

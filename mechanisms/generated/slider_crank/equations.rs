@@ -5366,6 +5366,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -8089,6 +8093,113 @@ pub mod exact {
         out[20] = out[20] + phi_q[105] * x[17] + phi_q[106] * x[18] + phi_q[107] * x[19]
             + phi_q[108] * x[20];
         Ok(())
+    }
+    #[allow(clippy::assign_op_pattern)]
+    fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let mass: &[f64; 57] = mass
+            .try_into()
+            .map_err(|_| length_error(57, mass.len()))?;
+        let v: &[f64; 21] = v.try_into().map_err(|_| length_error(21, v.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 21] = out.try_into().map_err(|_| length_error(21, out_len))?;
+        out[0] = 0.0 + mass[0] * v[0];
+        out[1] = 0.0 + mass[1] * v[1];
+        out[2] = 0.0 + mass[2] * v[2];
+        out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[4] + mass[5] * v[5] + mass[6] * v[6];
+        out[4] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5]
+            + mass[10] * v[6];
+        out[5] = 0.0 + mass[11] * v[3] + mass[12] * v[4] + mass[13] * v[5]
+            + mass[14] * v[6];
+        out[6] = 0.0 + mass[15] * v[3] + mass[16] * v[4] + mass[17] * v[5]
+            + mass[18] * v[6];
+        out[7] = 0.0 + mass[19] * v[7];
+        out[8] = 0.0 + mass[20] * v[8];
+        out[9] = 0.0 + mass[21] * v[9];
+        out[10] = 0.0 + mass[22] * v[10] + mass[23] * v[11] + mass[24] * v[12]
+            + mass[25] * v[13];
+        out[11] = 0.0 + mass[26] * v[10] + mass[27] * v[11] + mass[28] * v[12]
+            + mass[29] * v[13];
+        out[12] = 0.0 + mass[30] * v[10] + mass[31] * v[11] + mass[32] * v[12]
+            + mass[33] * v[13];
+        out[13] = 0.0 + mass[34] * v[10] + mass[35] * v[11] + mass[36] * v[12]
+            + mass[37] * v[13];
+        out[14] = 0.0 + mass[38] * v[14];
+        out[15] = 0.0 + mass[39] * v[15];
+        out[16] = 0.0 + mass[40] * v[16];
+        out[17] = 0.0 + mass[41] * v[17] + mass[42] * v[18] + mass[43] * v[19]
+            + mass[44] * v[20];
+        out[18] = 0.0 + mass[45] * v[17] + mass[46] * v[18] + mass[47] * v[19]
+            + mass[48] * v[20];
+        out[19] = 0.0 + mass[49] * v[17] + mass[50] * v[18] + mass[51] * v[19]
+            + mass[52] * v[20];
+        out[20] = 0.0 + mass[53] * v[17] + mass[54] * v[18] + mass[55] * v[19]
+            + mass[56] * v[20];
+        Ok(())
+    }
+    fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+        let mass: &[f64; 57] = mass
+            .try_into()
+            .map_err(|_| length_error(57, mass.len()))?;
+        let qd: &[f64; 21] = qd.try_into().map_err(|_| length_error(21, qd.len()))?;
+        let mut t = 0.0;
+        t += qd[0] * mass[0] * qd[0];
+        t += qd[1] * mass[1] * qd[1];
+        t += qd[2] * mass[2] * qd[2];
+        t += qd[3] * mass[3] * qd[3];
+        t += qd[3] * mass[4] * qd[4];
+        t += qd[3] * mass[5] * qd[5];
+        t += qd[3] * mass[6] * qd[6];
+        t += qd[4] * mass[7] * qd[3];
+        t += qd[4] * mass[8] * qd[4];
+        t += qd[4] * mass[9] * qd[5];
+        t += qd[4] * mass[10] * qd[6];
+        t += qd[5] * mass[11] * qd[3];
+        t += qd[5] * mass[12] * qd[4];
+        t += qd[5] * mass[13] * qd[5];
+        t += qd[5] * mass[14] * qd[6];
+        t += qd[6] * mass[15] * qd[3];
+        t += qd[6] * mass[16] * qd[4];
+        t += qd[6] * mass[17] * qd[5];
+        t += qd[6] * mass[18] * qd[6];
+        t += qd[7] * mass[19] * qd[7];
+        t += qd[8] * mass[20] * qd[8];
+        t += qd[9] * mass[21] * qd[9];
+        t += qd[10] * mass[22] * qd[10];
+        t += qd[10] * mass[23] * qd[11];
+        t += qd[10] * mass[24] * qd[12];
+        t += qd[10] * mass[25] * qd[13];
+        t += qd[11] * mass[26] * qd[10];
+        t += qd[11] * mass[27] * qd[11];
+        t += qd[11] * mass[28] * qd[12];
+        t += qd[11] * mass[29] * qd[13];
+        t += qd[12] * mass[30] * qd[10];
+        t += qd[12] * mass[31] * qd[11];
+        t += qd[12] * mass[32] * qd[12];
+        t += qd[12] * mass[33] * qd[13];
+        t += qd[13] * mass[34] * qd[10];
+        t += qd[13] * mass[35] * qd[11];
+        t += qd[13] * mass[36] * qd[12];
+        t += qd[13] * mass[37] * qd[13];
+        t += qd[14] * mass[38] * qd[14];
+        t += qd[15] * mass[39] * qd[15];
+        t += qd[16] * mass[40] * qd[16];
+        t += qd[17] * mass[41] * qd[17];
+        t += qd[17] * mass[42] * qd[18];
+        t += qd[17] * mass[43] * qd[19];
+        t += qd[17] * mass[44] * qd[20];
+        t += qd[18] * mass[45] * qd[17];
+        t += qd[18] * mass[46] * qd[18];
+        t += qd[18] * mass[47] * qd[19];
+        t += qd[18] * mass[48] * qd[20];
+        t += qd[19] * mass[49] * qd[17];
+        t += qd[19] * mass[50] * qd[18];
+        t += qd[19] * mass[51] * qd[19];
+        t += qd[19] * mass[52] * qd[20];
+        t += qd[20] * mass[53] * qd[17];
+        t += qd[20] * mass[54] * qd[18];
+        t += qd[20] * mass[55] * qd[19];
+        t += qd[20] * mass[56] * qd[20];
+        Ok(0.5 * t)
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
@@ -15524,6 +15635,10 @@ pub mod reduced {
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
                 times_add: kkt_times_add,
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                mass_times: kkt_mass_times,
+                kinetic_energy: kkt_kinetic_energy,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -18192,6 +18307,116 @@ pub mod reduced {
             out[18] = out[18] + phi_q[101] * x[15] + phi_q[102] * x[16]
                 + phi_q[103] * x[17] + phi_q[104] * x[18];
             Ok(())
+        }
+        #[allow(clippy::assign_op_pattern)]
+        fn kkt_mass_times(
+            mass: &[f64],
+            v: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let mass: &[f64; 55] = mass
+                .try_into()
+                .map_err(|_| length_error(55, mass.len()))?;
+            let v: &[f64; 19] = v.try_into().map_err(|_| length_error(19, v.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 19] = out
+                .try_into()
+                .map_err(|_| length_error(19, out_len))?;
+            out[0] = 0.0 + mass[0] * v[0];
+            out[1] = 0.0 + mass[1] * v[1];
+            out[2] = 0.0 + mass[2] * v[2];
+            out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[4] + mass[5] * v[5]
+                + mass[6] * v[6];
+            out[4] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5]
+                + mass[10] * v[6];
+            out[5] = 0.0 + mass[11] * v[3] + mass[12] * v[4] + mass[13] * v[5]
+                + mass[14] * v[6];
+            out[6] = 0.0 + mass[15] * v[3] + mass[16] * v[4] + mass[17] * v[5]
+                + mass[18] * v[6];
+            out[7] = 0.0 + mass[19] * v[7];
+            out[8] = 0.0 + mass[20] * v[8];
+            out[9] = 0.0 + mass[21] * v[9];
+            out[10] = 0.0 + mass[22] * v[10] + mass[23] * v[11] + mass[24] * v[12]
+                + mass[25] * v[13];
+            out[11] = 0.0 + mass[26] * v[10] + mass[27] * v[11] + mass[28] * v[12]
+                + mass[29] * v[13];
+            out[12] = 0.0 + mass[30] * v[10] + mass[31] * v[11] + mass[32] * v[12]
+                + mass[33] * v[13];
+            out[13] = 0.0 + mass[34] * v[10] + mass[35] * v[11] + mass[36] * v[12]
+                + mass[37] * v[13];
+            out[14] = 0.0 + mass[38] * v[14];
+            out[15] = 0.0 + mass[39] * v[15] + mass[40] * v[16] + mass[41] * v[17]
+                + mass[42] * v[18];
+            out[16] = 0.0 + mass[43] * v[15] + mass[44] * v[16] + mass[45] * v[17]
+                + mass[46] * v[18];
+            out[17] = 0.0 + mass[47] * v[15] + mass[48] * v[16] + mass[49] * v[17]
+                + mass[50] * v[18];
+            out[18] = 0.0 + mass[51] * v[15] + mass[52] * v[16] + mass[53] * v[17]
+                + mass[54] * v[18];
+            Ok(())
+        }
+        fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+            let mass: &[f64; 55] = mass
+                .try_into()
+                .map_err(|_| length_error(55, mass.len()))?;
+            let qd: &[f64; 19] = qd.try_into().map_err(|_| length_error(19, qd.len()))?;
+            let mut t = 0.0;
+            t += qd[0] * mass[0] * qd[0];
+            t += qd[1] * mass[1] * qd[1];
+            t += qd[2] * mass[2] * qd[2];
+            t += qd[3] * mass[3] * qd[3];
+            t += qd[3] * mass[4] * qd[4];
+            t += qd[3] * mass[5] * qd[5];
+            t += qd[3] * mass[6] * qd[6];
+            t += qd[4] * mass[7] * qd[3];
+            t += qd[4] * mass[8] * qd[4];
+            t += qd[4] * mass[9] * qd[5];
+            t += qd[4] * mass[10] * qd[6];
+            t += qd[5] * mass[11] * qd[3];
+            t += qd[5] * mass[12] * qd[4];
+            t += qd[5] * mass[13] * qd[5];
+            t += qd[5] * mass[14] * qd[6];
+            t += qd[6] * mass[15] * qd[3];
+            t += qd[6] * mass[16] * qd[4];
+            t += qd[6] * mass[17] * qd[5];
+            t += qd[6] * mass[18] * qd[6];
+            t += qd[7] * mass[19] * qd[7];
+            t += qd[8] * mass[20] * qd[8];
+            t += qd[9] * mass[21] * qd[9];
+            t += qd[10] * mass[22] * qd[10];
+            t += qd[10] * mass[23] * qd[11];
+            t += qd[10] * mass[24] * qd[12];
+            t += qd[10] * mass[25] * qd[13];
+            t += qd[11] * mass[26] * qd[10];
+            t += qd[11] * mass[27] * qd[11];
+            t += qd[11] * mass[28] * qd[12];
+            t += qd[11] * mass[29] * qd[13];
+            t += qd[12] * mass[30] * qd[10];
+            t += qd[12] * mass[31] * qd[11];
+            t += qd[12] * mass[32] * qd[12];
+            t += qd[12] * mass[33] * qd[13];
+            t += qd[13] * mass[34] * qd[10];
+            t += qd[13] * mass[35] * qd[11];
+            t += qd[13] * mass[36] * qd[12];
+            t += qd[13] * mass[37] * qd[13];
+            t += qd[14] * mass[38] * qd[14];
+            t += qd[15] * mass[39] * qd[15];
+            t += qd[15] * mass[40] * qd[16];
+            t += qd[15] * mass[41] * qd[17];
+            t += qd[15] * mass[42] * qd[18];
+            t += qd[16] * mass[43] * qd[15];
+            t += qd[16] * mass[44] * qd[16];
+            t += qd[16] * mass[45] * qd[17];
+            t += qd[16] * mass[46] * qd[18];
+            t += qd[17] * mass[47] * qd[15];
+            t += qd[17] * mass[48] * qd[16];
+            t += qd[17] * mass[49] * qd[17];
+            t += qd[17] * mass[50] * qd[18];
+            t += qd[18] * mass[51] * qd[15];
+            t += qd[18] * mass[52] * qd[16];
+            t += qd[18] * mass[53] * qd[17];
+            t += qd[18] * mass[54] * qd[18];
+            Ok(0.5 * t)
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(

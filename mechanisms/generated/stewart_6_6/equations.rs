@@ -21804,6 +21804,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -32944,6 +32948,232 @@ pub mod exact {
             + phi_q[387] * x[75] + phi_q[388] * x[76] + phi_q[389] * x[77];
         Ok(())
     }
+    #[allow(clippy::assign_op_pattern)]
+    fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let mass: &[f64; 130] = mass
+            .try_into()
+            .map_err(|_| length_error(130, mass.len()))?;
+        let v: &[f64; 78] = v.try_into().map_err(|_| length_error(78, v.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 78] = out.try_into().map_err(|_| length_error(78, out_len))?;
+        out[0] = 0.0 + mass[0] * v[0];
+        out[1] = 0.0 + mass[1] * v[1];
+        out[2] = 0.0 + mass[2] * v[2];
+        out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[5];
+        out[4] = 0.0 + mass[5] * v[4] + mass[6] * v[5];
+        out[5] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5];
+        out[6] = 0.0 + mass[10] * v[6];
+        out[7] = 0.0 + mass[11] * v[7];
+        out[8] = 0.0 + mass[12] * v[8];
+        out[9] = 0.0 + mass[13] * v[9] + mass[14] * v[11];
+        out[10] = 0.0 + mass[15] * v[10] + mass[16] * v[11];
+        out[11] = 0.0 + mass[17] * v[9] + mass[18] * v[10] + mass[19] * v[11];
+        out[12] = 0.0 + mass[20] * v[12];
+        out[13] = 0.0 + mass[21] * v[13];
+        out[14] = 0.0 + mass[22] * v[14];
+        out[15] = 0.0 + mass[23] * v[15] + mass[24] * v[17];
+        out[16] = 0.0 + mass[25] * v[16] + mass[26] * v[17];
+        out[17] = 0.0 + mass[27] * v[15] + mass[28] * v[16] + mass[29] * v[17];
+        out[18] = 0.0 + mass[30] * v[18];
+        out[19] = 0.0 + mass[31] * v[19];
+        out[20] = 0.0 + mass[32] * v[20];
+        out[21] = 0.0 + mass[33] * v[21] + mass[34] * v[23];
+        out[22] = 0.0 + mass[35] * v[22] + mass[36] * v[23];
+        out[23] = 0.0 + mass[37] * v[21] + mass[38] * v[22] + mass[39] * v[23];
+        out[24] = 0.0 + mass[40] * v[24];
+        out[25] = 0.0 + mass[41] * v[25];
+        out[26] = 0.0 + mass[42] * v[26];
+        out[27] = 0.0 + mass[43] * v[27] + mass[44] * v[29];
+        out[28] = 0.0 + mass[45] * v[28] + mass[46] * v[29];
+        out[29] = 0.0 + mass[47] * v[27] + mass[48] * v[28] + mass[49] * v[29];
+        out[30] = 0.0 + mass[50] * v[30];
+        out[31] = 0.0 + mass[51] * v[31];
+        out[32] = 0.0 + mass[52] * v[32];
+        out[33] = 0.0 + mass[53] * v[33] + mass[54] * v[35];
+        out[34] = 0.0 + mass[55] * v[34] + mass[56] * v[35];
+        out[35] = 0.0 + mass[57] * v[33] + mass[58] * v[34] + mass[59] * v[35];
+        out[36] = 0.0 + mass[60] * v[36];
+        out[37] = 0.0 + mass[61] * v[37];
+        out[38] = 0.0 + mass[62] * v[38];
+        out[39] = 0.0 + mass[63] * v[39] + mass[64] * v[41];
+        out[40] = 0.0 + mass[65] * v[40] + mass[66] * v[41];
+        out[41] = 0.0 + mass[67] * v[39] + mass[68] * v[40] + mass[69] * v[41];
+        out[42] = 0.0 + mass[70] * v[42];
+        out[43] = 0.0 + mass[71] * v[43];
+        out[44] = 0.0 + mass[72] * v[44];
+        out[45] = 0.0 + mass[73] * v[45] + mass[74] * v[47];
+        out[46] = 0.0 + mass[75] * v[46] + mass[76] * v[47];
+        out[47] = 0.0 + mass[77] * v[45] + mass[78] * v[46] + mass[79] * v[47];
+        out[48] = 0.0 + mass[80] * v[48];
+        out[49] = 0.0 + mass[81] * v[49];
+        out[50] = 0.0 + mass[82] * v[50];
+        out[51] = 0.0 + mass[83] * v[51] + mass[84] * v[53];
+        out[52] = 0.0 + mass[85] * v[52] + mass[86] * v[53];
+        out[53] = 0.0 + mass[87] * v[51] + mass[88] * v[52] + mass[89] * v[53];
+        out[54] = 0.0 + mass[90] * v[54];
+        out[55] = 0.0 + mass[91] * v[55];
+        out[56] = 0.0 + mass[92] * v[56];
+        out[57] = 0.0 + mass[93] * v[57] + mass[94] * v[59];
+        out[58] = 0.0 + mass[95] * v[58] + mass[96] * v[59];
+        out[59] = 0.0 + mass[97] * v[57] + mass[98] * v[58] + mass[99] * v[59];
+        out[60] = 0.0 + mass[100] * v[60];
+        out[61] = 0.0 + mass[101] * v[61];
+        out[62] = 0.0 + mass[102] * v[62];
+        out[63] = 0.0 + mass[103] * v[63] + mass[104] * v[65];
+        out[64] = 0.0 + mass[105] * v[64] + mass[106] * v[65];
+        out[65] = 0.0 + mass[107] * v[63] + mass[108] * v[64] + mass[109] * v[65];
+        out[66] = 0.0 + mass[110] * v[66];
+        out[67] = 0.0 + mass[111] * v[67];
+        out[68] = 0.0 + mass[112] * v[68];
+        out[69] = 0.0 + mass[113] * v[69] + mass[114] * v[71];
+        out[70] = 0.0 + mass[115] * v[70] + mass[116] * v[71];
+        out[71] = 0.0 + mass[117] * v[69] + mass[118] * v[70] + mass[119] * v[71];
+        out[72] = 0.0 + mass[120] * v[72];
+        out[73] = 0.0 + mass[121] * v[73];
+        out[74] = 0.0 + mass[122] * v[74];
+        out[75] = 0.0 + mass[123] * v[75] + mass[124] * v[77];
+        out[76] = 0.0 + mass[125] * v[76] + mass[126] * v[77];
+        out[77] = 0.0 + mass[127] * v[75] + mass[128] * v[76] + mass[129] * v[77];
+        Ok(())
+    }
+    fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+        let mass: &[f64; 130] = mass
+            .try_into()
+            .map_err(|_| length_error(130, mass.len()))?;
+        let qd: &[f64; 78] = qd.try_into().map_err(|_| length_error(78, qd.len()))?;
+        let mut t = 0.0;
+        t += qd[0] * mass[0] * qd[0];
+        t += qd[1] * mass[1] * qd[1];
+        t += qd[2] * mass[2] * qd[2];
+        t += qd[3] * mass[3] * qd[3];
+        t += qd[3] * mass[4] * qd[5];
+        t += qd[4] * mass[5] * qd[4];
+        t += qd[4] * mass[6] * qd[5];
+        t += qd[5] * mass[7] * qd[3];
+        t += qd[5] * mass[8] * qd[4];
+        t += qd[5] * mass[9] * qd[5];
+        t += qd[6] * mass[10] * qd[6];
+        t += qd[7] * mass[11] * qd[7];
+        t += qd[8] * mass[12] * qd[8];
+        t += qd[9] * mass[13] * qd[9];
+        t += qd[9] * mass[14] * qd[11];
+        t += qd[10] * mass[15] * qd[10];
+        t += qd[10] * mass[16] * qd[11];
+        t += qd[11] * mass[17] * qd[9];
+        t += qd[11] * mass[18] * qd[10];
+        t += qd[11] * mass[19] * qd[11];
+        t += qd[12] * mass[20] * qd[12];
+        t += qd[13] * mass[21] * qd[13];
+        t += qd[14] * mass[22] * qd[14];
+        t += qd[15] * mass[23] * qd[15];
+        t += qd[15] * mass[24] * qd[17];
+        t += qd[16] * mass[25] * qd[16];
+        t += qd[16] * mass[26] * qd[17];
+        t += qd[17] * mass[27] * qd[15];
+        t += qd[17] * mass[28] * qd[16];
+        t += qd[17] * mass[29] * qd[17];
+        t += qd[18] * mass[30] * qd[18];
+        t += qd[19] * mass[31] * qd[19];
+        t += qd[20] * mass[32] * qd[20];
+        t += qd[21] * mass[33] * qd[21];
+        t += qd[21] * mass[34] * qd[23];
+        t += qd[22] * mass[35] * qd[22];
+        t += qd[22] * mass[36] * qd[23];
+        t += qd[23] * mass[37] * qd[21];
+        t += qd[23] * mass[38] * qd[22];
+        t += qd[23] * mass[39] * qd[23];
+        t += qd[24] * mass[40] * qd[24];
+        t += qd[25] * mass[41] * qd[25];
+        t += qd[26] * mass[42] * qd[26];
+        t += qd[27] * mass[43] * qd[27];
+        t += qd[27] * mass[44] * qd[29];
+        t += qd[28] * mass[45] * qd[28];
+        t += qd[28] * mass[46] * qd[29];
+        t += qd[29] * mass[47] * qd[27];
+        t += qd[29] * mass[48] * qd[28];
+        t += qd[29] * mass[49] * qd[29];
+        t += qd[30] * mass[50] * qd[30];
+        t += qd[31] * mass[51] * qd[31];
+        t += qd[32] * mass[52] * qd[32];
+        t += qd[33] * mass[53] * qd[33];
+        t += qd[33] * mass[54] * qd[35];
+        t += qd[34] * mass[55] * qd[34];
+        t += qd[34] * mass[56] * qd[35];
+        t += qd[35] * mass[57] * qd[33];
+        t += qd[35] * mass[58] * qd[34];
+        t += qd[35] * mass[59] * qd[35];
+        t += qd[36] * mass[60] * qd[36];
+        t += qd[37] * mass[61] * qd[37];
+        t += qd[38] * mass[62] * qd[38];
+        t += qd[39] * mass[63] * qd[39];
+        t += qd[39] * mass[64] * qd[41];
+        t += qd[40] * mass[65] * qd[40];
+        t += qd[40] * mass[66] * qd[41];
+        t += qd[41] * mass[67] * qd[39];
+        t += qd[41] * mass[68] * qd[40];
+        t += qd[41] * mass[69] * qd[41];
+        t += qd[42] * mass[70] * qd[42];
+        t += qd[43] * mass[71] * qd[43];
+        t += qd[44] * mass[72] * qd[44];
+        t += qd[45] * mass[73] * qd[45];
+        t += qd[45] * mass[74] * qd[47];
+        t += qd[46] * mass[75] * qd[46];
+        t += qd[46] * mass[76] * qd[47];
+        t += qd[47] * mass[77] * qd[45];
+        t += qd[47] * mass[78] * qd[46];
+        t += qd[47] * mass[79] * qd[47];
+        t += qd[48] * mass[80] * qd[48];
+        t += qd[49] * mass[81] * qd[49];
+        t += qd[50] * mass[82] * qd[50];
+        t += qd[51] * mass[83] * qd[51];
+        t += qd[51] * mass[84] * qd[53];
+        t += qd[52] * mass[85] * qd[52];
+        t += qd[52] * mass[86] * qd[53];
+        t += qd[53] * mass[87] * qd[51];
+        t += qd[53] * mass[88] * qd[52];
+        t += qd[53] * mass[89] * qd[53];
+        t += qd[54] * mass[90] * qd[54];
+        t += qd[55] * mass[91] * qd[55];
+        t += qd[56] * mass[92] * qd[56];
+        t += qd[57] * mass[93] * qd[57];
+        t += qd[57] * mass[94] * qd[59];
+        t += qd[58] * mass[95] * qd[58];
+        t += qd[58] * mass[96] * qd[59];
+        t += qd[59] * mass[97] * qd[57];
+        t += qd[59] * mass[98] * qd[58];
+        t += qd[59] * mass[99] * qd[59];
+        t += qd[60] * mass[100] * qd[60];
+        t += qd[61] * mass[101] * qd[61];
+        t += qd[62] * mass[102] * qd[62];
+        t += qd[63] * mass[103] * qd[63];
+        t += qd[63] * mass[104] * qd[65];
+        t += qd[64] * mass[105] * qd[64];
+        t += qd[64] * mass[106] * qd[65];
+        t += qd[65] * mass[107] * qd[63];
+        t += qd[65] * mass[108] * qd[64];
+        t += qd[65] * mass[109] * qd[65];
+        t += qd[66] * mass[110] * qd[66];
+        t += qd[67] * mass[111] * qd[67];
+        t += qd[68] * mass[112] * qd[68];
+        t += qd[69] * mass[113] * qd[69];
+        t += qd[69] * mass[114] * qd[71];
+        t += qd[70] * mass[115] * qd[70];
+        t += qd[70] * mass[116] * qd[71];
+        t += qd[71] * mass[117] * qd[69];
+        t += qd[71] * mass[118] * qd[70];
+        t += qd[71] * mass[119] * qd[71];
+        t += qd[72] * mass[120] * qd[72];
+        t += qd[73] * mass[121] * qd[73];
+        t += qd[74] * mass[122] * qd[74];
+        t += qd[75] * mass[123] * qd[75];
+        t += qd[75] * mass[124] * qd[77];
+        t += qd[76] * mass[125] * qd[76];
+        t += qd[76] * mass[126] * qd[77];
+        t += qd[77] * mass[127] * qd[75];
+        t += qd[77] * mass[128] * qd[76];
+        t += qd[77] * mass[129] * qd[77];
+        Ok(0.5 * t)
+    }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
         k: &[f64],
@@ -43820,6 +44050,10 @@ pub mod paper {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -53833,6 +54067,180 @@ pub mod paper {
             + phi_q[384] * x[72] + phi_q[385] * x[73] + phi_q[386] * x[74]
             + phi_q[387] * x[75] + phi_q[388] * x[76] + phi_q[389] * x[77];
         Ok(())
+    }
+    #[allow(clippy::assign_op_pattern)]
+    fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let mass: &[f64; 78] = mass
+            .try_into()
+            .map_err(|_| length_error(78, mass.len()))?;
+        let v: &[f64; 78] = v.try_into().map_err(|_| length_error(78, v.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 78] = out.try_into().map_err(|_| length_error(78, out_len))?;
+        out[0] = 0.0 + mass[0] * v[0];
+        out[1] = 0.0 + mass[1] * v[1];
+        out[2] = 0.0 + mass[2] * v[2];
+        out[3] = 0.0 + mass[3] * v[3];
+        out[4] = 0.0 + mass[4] * v[4];
+        out[5] = 0.0 + mass[5] * v[5];
+        out[6] = 0.0 + mass[6] * v[6];
+        out[7] = 0.0 + mass[7] * v[7];
+        out[8] = 0.0 + mass[8] * v[8];
+        out[9] = 0.0 + mass[9] * v[9];
+        out[10] = 0.0 + mass[10] * v[10];
+        out[11] = 0.0 + mass[11] * v[11];
+        out[12] = 0.0 + mass[12] * v[12];
+        out[13] = 0.0 + mass[13] * v[13];
+        out[14] = 0.0 + mass[14] * v[14];
+        out[15] = 0.0 + mass[15] * v[15];
+        out[16] = 0.0 + mass[16] * v[16];
+        out[17] = 0.0 + mass[17] * v[17];
+        out[18] = 0.0 + mass[18] * v[18];
+        out[19] = 0.0 + mass[19] * v[19];
+        out[20] = 0.0 + mass[20] * v[20];
+        out[21] = 0.0 + mass[21] * v[21];
+        out[22] = 0.0 + mass[22] * v[22];
+        out[23] = 0.0 + mass[23] * v[23];
+        out[24] = 0.0 + mass[24] * v[24];
+        out[25] = 0.0 + mass[25] * v[25];
+        out[26] = 0.0 + mass[26] * v[26];
+        out[27] = 0.0 + mass[27] * v[27];
+        out[28] = 0.0 + mass[28] * v[28];
+        out[29] = 0.0 + mass[29] * v[29];
+        out[30] = 0.0 + mass[30] * v[30];
+        out[31] = 0.0 + mass[31] * v[31];
+        out[32] = 0.0 + mass[32] * v[32];
+        out[33] = 0.0 + mass[33] * v[33];
+        out[34] = 0.0 + mass[34] * v[34];
+        out[35] = 0.0 + mass[35] * v[35];
+        out[36] = 0.0 + mass[36] * v[36];
+        out[37] = 0.0 + mass[37] * v[37];
+        out[38] = 0.0 + mass[38] * v[38];
+        out[39] = 0.0 + mass[39] * v[39];
+        out[40] = 0.0 + mass[40] * v[40];
+        out[41] = 0.0 + mass[41] * v[41];
+        out[42] = 0.0 + mass[42] * v[42];
+        out[43] = 0.0 + mass[43] * v[43];
+        out[44] = 0.0 + mass[44] * v[44];
+        out[45] = 0.0 + mass[45] * v[45];
+        out[46] = 0.0 + mass[46] * v[46];
+        out[47] = 0.0 + mass[47] * v[47];
+        out[48] = 0.0 + mass[48] * v[48];
+        out[49] = 0.0 + mass[49] * v[49];
+        out[50] = 0.0 + mass[50] * v[50];
+        out[51] = 0.0 + mass[51] * v[51];
+        out[52] = 0.0 + mass[52] * v[52];
+        out[53] = 0.0 + mass[53] * v[53];
+        out[54] = 0.0 + mass[54] * v[54];
+        out[55] = 0.0 + mass[55] * v[55];
+        out[56] = 0.0 + mass[56] * v[56];
+        out[57] = 0.0 + mass[57] * v[57];
+        out[58] = 0.0 + mass[58] * v[58];
+        out[59] = 0.0 + mass[59] * v[59];
+        out[60] = 0.0 + mass[60] * v[60];
+        out[61] = 0.0 + mass[61] * v[61];
+        out[62] = 0.0 + mass[62] * v[62];
+        out[63] = 0.0 + mass[63] * v[63];
+        out[64] = 0.0 + mass[64] * v[64];
+        out[65] = 0.0 + mass[65] * v[65];
+        out[66] = 0.0 + mass[66] * v[66];
+        out[67] = 0.0 + mass[67] * v[67];
+        out[68] = 0.0 + mass[68] * v[68];
+        out[69] = 0.0 + mass[69] * v[69];
+        out[70] = 0.0 + mass[70] * v[70];
+        out[71] = 0.0 + mass[71] * v[71];
+        out[72] = 0.0 + mass[72] * v[72];
+        out[73] = 0.0 + mass[73] * v[73];
+        out[74] = 0.0 + mass[74] * v[74];
+        out[75] = 0.0 + mass[75] * v[75];
+        out[76] = 0.0 + mass[76] * v[76];
+        out[77] = 0.0 + mass[77] * v[77];
+        Ok(())
+    }
+    fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+        let mass: &[f64; 78] = mass
+            .try_into()
+            .map_err(|_| length_error(78, mass.len()))?;
+        let qd: &[f64; 78] = qd.try_into().map_err(|_| length_error(78, qd.len()))?;
+        let mut t = 0.0;
+        t += qd[0] * mass[0] * qd[0];
+        t += qd[1] * mass[1] * qd[1];
+        t += qd[2] * mass[2] * qd[2];
+        t += qd[3] * mass[3] * qd[3];
+        t += qd[4] * mass[4] * qd[4];
+        t += qd[5] * mass[5] * qd[5];
+        t += qd[6] * mass[6] * qd[6];
+        t += qd[7] * mass[7] * qd[7];
+        t += qd[8] * mass[8] * qd[8];
+        t += qd[9] * mass[9] * qd[9];
+        t += qd[10] * mass[10] * qd[10];
+        t += qd[11] * mass[11] * qd[11];
+        t += qd[12] * mass[12] * qd[12];
+        t += qd[13] * mass[13] * qd[13];
+        t += qd[14] * mass[14] * qd[14];
+        t += qd[15] * mass[15] * qd[15];
+        t += qd[16] * mass[16] * qd[16];
+        t += qd[17] * mass[17] * qd[17];
+        t += qd[18] * mass[18] * qd[18];
+        t += qd[19] * mass[19] * qd[19];
+        t += qd[20] * mass[20] * qd[20];
+        t += qd[21] * mass[21] * qd[21];
+        t += qd[22] * mass[22] * qd[22];
+        t += qd[23] * mass[23] * qd[23];
+        t += qd[24] * mass[24] * qd[24];
+        t += qd[25] * mass[25] * qd[25];
+        t += qd[26] * mass[26] * qd[26];
+        t += qd[27] * mass[27] * qd[27];
+        t += qd[28] * mass[28] * qd[28];
+        t += qd[29] * mass[29] * qd[29];
+        t += qd[30] * mass[30] * qd[30];
+        t += qd[31] * mass[31] * qd[31];
+        t += qd[32] * mass[32] * qd[32];
+        t += qd[33] * mass[33] * qd[33];
+        t += qd[34] * mass[34] * qd[34];
+        t += qd[35] * mass[35] * qd[35];
+        t += qd[36] * mass[36] * qd[36];
+        t += qd[37] * mass[37] * qd[37];
+        t += qd[38] * mass[38] * qd[38];
+        t += qd[39] * mass[39] * qd[39];
+        t += qd[40] * mass[40] * qd[40];
+        t += qd[41] * mass[41] * qd[41];
+        t += qd[42] * mass[42] * qd[42];
+        t += qd[43] * mass[43] * qd[43];
+        t += qd[44] * mass[44] * qd[44];
+        t += qd[45] * mass[45] * qd[45];
+        t += qd[46] * mass[46] * qd[46];
+        t += qd[47] * mass[47] * qd[47];
+        t += qd[48] * mass[48] * qd[48];
+        t += qd[49] * mass[49] * qd[49];
+        t += qd[50] * mass[50] * qd[50];
+        t += qd[51] * mass[51] * qd[51];
+        t += qd[52] * mass[52] * qd[52];
+        t += qd[53] * mass[53] * qd[53];
+        t += qd[54] * mass[54] * qd[54];
+        t += qd[55] * mass[55] * qd[55];
+        t += qd[56] * mass[56] * qd[56];
+        t += qd[57] * mass[57] * qd[57];
+        t += qd[58] * mass[58] * qd[58];
+        t += qd[59] * mass[59] * qd[59];
+        t += qd[60] * mass[60] * qd[60];
+        t += qd[61] * mass[61] * qd[61];
+        t += qd[62] * mass[62] * qd[62];
+        t += qd[63] * mass[63] * qd[63];
+        t += qd[64] * mass[64] * qd[64];
+        t += qd[65] * mass[65] * qd[65];
+        t += qd[66] * mass[66] * qd[66];
+        t += qd[67] * mass[67] * qd[67];
+        t += qd[68] * mass[68] * qd[68];
+        t += qd[69] * mass[69] * qd[69];
+        t += qd[70] * mass[70] * qd[70];
+        t += qd[71] * mass[71] * qd[71];
+        t += qd[72] * mass[72] * qd[72];
+        t += qd[73] * mass[73] * qd[73];
+        t += qd[74] * mass[74] * qd[74];
+        t += qd[75] * mass[75] * qd[75];
+        t += qd[76] * mass[76] * qd[76];
+        t += qd[77] * mass[77] * qd[77];
+        Ok(0.5 * t)
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(
@@ -64658,6 +65066,10 @@ pub mod reduced {
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
                 times_add: kkt_times_add,
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                mass_times: kkt_mass_times,
+                kinetic_energy: kkt_kinetic_energy,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -74140,6 +74552,178 @@ pub mod reduced {
                 + phi_q[353] * x[59];
             Ok(())
         }
+        #[allow(clippy::assign_op_pattern)]
+        fn kkt_mass_times(
+            mass: &[f64],
+            v: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let mass: &[f64; 88] = mass
+                .try_into()
+                .map_err(|_| length_error(88, mass.len()))?;
+            let v: &[f64; 60] = v.try_into().map_err(|_| length_error(60, v.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 60] = out
+                .try_into()
+                .map_err(|_| length_error(60, out_len))?;
+            out[0] = 0.0 + mass[0] * v[0];
+            out[1] = 0.0 + mass[1] * v[1];
+            out[2] = 0.0 + mass[2] * v[2];
+            out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[5];
+            out[4] = 0.0 + mass[5] * v[4] + mass[6] * v[5];
+            out[5] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5];
+            out[6] = 0.0 + mass[10] * v[6];
+            out[7] = 0.0 + mass[11] * v[7];
+            out[8] = 0.0 + mass[12] * v[8];
+            out[9] = 0.0 + mass[13] * v[9] + mass[14] * v[11];
+            out[10] = 0.0 + mass[15] * v[10] + mass[16] * v[11];
+            out[11] = 0.0 + mass[17] * v[9] + mass[18] * v[10] + mass[19] * v[11];
+            out[12] = 0.0 + mass[20] * v[12];
+            out[13] = 0.0 + mass[21] * v[13];
+            out[14] = 0.0 + mass[22] * v[14];
+            out[15] = 0.0 + mass[23] * v[15] + mass[24] * v[17];
+            out[16] = 0.0 + mass[25] * v[16] + mass[26] * v[17];
+            out[17] = 0.0 + mass[27] * v[15] + mass[28] * v[16] + mass[29] * v[17];
+            out[18] = 0.0 + mass[30] * v[18];
+            out[19] = 0.0 + mass[31] * v[19];
+            out[20] = 0.0 + mass[32] * v[20];
+            out[21] = 0.0 + mass[33] * v[21] + mass[34] * v[23];
+            out[22] = 0.0 + mass[35] * v[22] + mass[36] * v[23];
+            out[23] = 0.0 + mass[37] * v[21] + mass[38] * v[22] + mass[39] * v[23];
+            out[24] = 0.0 + mass[40] * v[24];
+            out[25] = 0.0 + mass[41] * v[25];
+            out[26] = 0.0 + mass[42] * v[26];
+            out[27] = 0.0 + mass[43] * v[27] + mass[44] * v[29];
+            out[28] = 0.0 + mass[45] * v[28] + mass[46] * v[29];
+            out[29] = 0.0 + mass[47] * v[27] + mass[48] * v[28] + mass[49] * v[29];
+            out[30] = 0.0 + mass[50] * v[30];
+            out[31] = 0.0 + mass[51] * v[31];
+            out[32] = 0.0 + mass[52] * v[32];
+            out[33] = 0.0 + mass[53] * v[33] + mass[54] * v[35];
+            out[34] = 0.0 + mass[55] * v[34] + mass[56] * v[35];
+            out[35] = 0.0 + mass[57] * v[33] + mass[58] * v[34] + mass[59] * v[35];
+            out[36] = 0.0 + mass[60] * v[36];
+            out[37] = 0.0 + mass[61] * v[37];
+            out[38] = 0.0 + mass[62] * v[38];
+            out[39] = 0.0 + mass[63] * v[39] + mass[64] * v[41];
+            out[40] = 0.0 + mass[65] * v[40] + mass[66] * v[41];
+            out[41] = 0.0 + mass[67] * v[39] + mass[68] * v[40] + mass[69] * v[41];
+            out[42] = 0.0 + mass[70] * v[42];
+            out[43] = 0.0 + mass[71] * v[43];
+            out[44] = 0.0 + mass[72] * v[44];
+            out[45] = 0.0 + mass[73] * v[45];
+            out[46] = 0.0 + mass[74] * v[46];
+            out[47] = 0.0 + mass[75] * v[47];
+            out[48] = 0.0 + mass[76] * v[48];
+            out[49] = 0.0 + mass[77] * v[49];
+            out[50] = 0.0 + mass[78] * v[50];
+            out[51] = 0.0 + mass[79] * v[51];
+            out[52] = 0.0 + mass[80] * v[52];
+            out[53] = 0.0 + mass[81] * v[53];
+            out[54] = 0.0 + mass[82] * v[54];
+            out[55] = 0.0 + mass[83] * v[55];
+            out[56] = 0.0 + mass[84] * v[56];
+            out[57] = 0.0 + mass[85] * v[57];
+            out[58] = 0.0 + mass[86] * v[58];
+            out[59] = 0.0 + mass[87] * v[59];
+            Ok(())
+        }
+        fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+            let mass: &[f64; 88] = mass
+                .try_into()
+                .map_err(|_| length_error(88, mass.len()))?;
+            let qd: &[f64; 60] = qd.try_into().map_err(|_| length_error(60, qd.len()))?;
+            let mut t = 0.0;
+            t += qd[0] * mass[0] * qd[0];
+            t += qd[1] * mass[1] * qd[1];
+            t += qd[2] * mass[2] * qd[2];
+            t += qd[3] * mass[3] * qd[3];
+            t += qd[3] * mass[4] * qd[5];
+            t += qd[4] * mass[5] * qd[4];
+            t += qd[4] * mass[6] * qd[5];
+            t += qd[5] * mass[7] * qd[3];
+            t += qd[5] * mass[8] * qd[4];
+            t += qd[5] * mass[9] * qd[5];
+            t += qd[6] * mass[10] * qd[6];
+            t += qd[7] * mass[11] * qd[7];
+            t += qd[8] * mass[12] * qd[8];
+            t += qd[9] * mass[13] * qd[9];
+            t += qd[9] * mass[14] * qd[11];
+            t += qd[10] * mass[15] * qd[10];
+            t += qd[10] * mass[16] * qd[11];
+            t += qd[11] * mass[17] * qd[9];
+            t += qd[11] * mass[18] * qd[10];
+            t += qd[11] * mass[19] * qd[11];
+            t += qd[12] * mass[20] * qd[12];
+            t += qd[13] * mass[21] * qd[13];
+            t += qd[14] * mass[22] * qd[14];
+            t += qd[15] * mass[23] * qd[15];
+            t += qd[15] * mass[24] * qd[17];
+            t += qd[16] * mass[25] * qd[16];
+            t += qd[16] * mass[26] * qd[17];
+            t += qd[17] * mass[27] * qd[15];
+            t += qd[17] * mass[28] * qd[16];
+            t += qd[17] * mass[29] * qd[17];
+            t += qd[18] * mass[30] * qd[18];
+            t += qd[19] * mass[31] * qd[19];
+            t += qd[20] * mass[32] * qd[20];
+            t += qd[21] * mass[33] * qd[21];
+            t += qd[21] * mass[34] * qd[23];
+            t += qd[22] * mass[35] * qd[22];
+            t += qd[22] * mass[36] * qd[23];
+            t += qd[23] * mass[37] * qd[21];
+            t += qd[23] * mass[38] * qd[22];
+            t += qd[23] * mass[39] * qd[23];
+            t += qd[24] * mass[40] * qd[24];
+            t += qd[25] * mass[41] * qd[25];
+            t += qd[26] * mass[42] * qd[26];
+            t += qd[27] * mass[43] * qd[27];
+            t += qd[27] * mass[44] * qd[29];
+            t += qd[28] * mass[45] * qd[28];
+            t += qd[28] * mass[46] * qd[29];
+            t += qd[29] * mass[47] * qd[27];
+            t += qd[29] * mass[48] * qd[28];
+            t += qd[29] * mass[49] * qd[29];
+            t += qd[30] * mass[50] * qd[30];
+            t += qd[31] * mass[51] * qd[31];
+            t += qd[32] * mass[52] * qd[32];
+            t += qd[33] * mass[53] * qd[33];
+            t += qd[33] * mass[54] * qd[35];
+            t += qd[34] * mass[55] * qd[34];
+            t += qd[34] * mass[56] * qd[35];
+            t += qd[35] * mass[57] * qd[33];
+            t += qd[35] * mass[58] * qd[34];
+            t += qd[35] * mass[59] * qd[35];
+            t += qd[36] * mass[60] * qd[36];
+            t += qd[37] * mass[61] * qd[37];
+            t += qd[38] * mass[62] * qd[38];
+            t += qd[39] * mass[63] * qd[39];
+            t += qd[39] * mass[64] * qd[41];
+            t += qd[40] * mass[65] * qd[40];
+            t += qd[40] * mass[66] * qd[41];
+            t += qd[41] * mass[67] * qd[39];
+            t += qd[41] * mass[68] * qd[40];
+            t += qd[41] * mass[69] * qd[41];
+            t += qd[42] * mass[70] * qd[42];
+            t += qd[43] * mass[71] * qd[43];
+            t += qd[44] * mass[72] * qd[44];
+            t += qd[45] * mass[73] * qd[45];
+            t += qd[46] * mass[74] * qd[46];
+            t += qd[47] * mass[75] * qd[47];
+            t += qd[48] * mass[76] * qd[48];
+            t += qd[49] * mass[77] * qd[49];
+            t += qd[50] * mass[78] * qd[50];
+            t += qd[51] * mass[79] * qd[51];
+            t += qd[52] * mass[80] * qd[52];
+            t += qd[53] * mass[81] * qd[53];
+            t += qd[54] * mass[82] * qd[54];
+            t += qd[55] * mass[83] * qd[55];
+            t += qd[56] * mass[84] * qd[56];
+            t += qd[57] * mass[85] * qd[57];
+            t += qd[58] * mass[86] * qd[58];
+            t += qd[59] * mass[87] * qd[59];
+            Ok(0.5 * t)
+        }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(
             k: &[f64],
@@ -78783,6 +79367,10 @@ pub mod reduced {
                 phi_q_cols: &PHI_Q_COLS,
                 transpose_times: kkt_transpose_times,
                 times_add: kkt_times_add,
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                mass_times: kkt_mass_times,
+                kinetic_energy: kkt_kinetic_energy,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -87576,6 +88164,150 @@ pub mod reduced {
                 + phi_q[350] * x[41] + phi_q[351] * x[57] + phi_q[352] * x[58]
                 + phi_q[353] * x[59];
             Ok(())
+        }
+        #[allow(clippy::assign_op_pattern)]
+        fn kkt_mass_times(
+            mass: &[f64],
+            v: &[f64],
+            out: &mut [f64],
+        ) -> Result<(), KktError> {
+            let mass: &[f64; 60] = mass
+                .try_into()
+                .map_err(|_| length_error(60, mass.len()))?;
+            let v: &[f64; 60] = v.try_into().map_err(|_| length_error(60, v.len()))?;
+            let out_len = out.len();
+            let out: &mut [f64; 60] = out
+                .try_into()
+                .map_err(|_| length_error(60, out_len))?;
+            out[0] = 0.0 + mass[0] * v[0];
+            out[1] = 0.0 + mass[1] * v[1];
+            out[2] = 0.0 + mass[2] * v[2];
+            out[3] = 0.0 + mass[3] * v[3];
+            out[4] = 0.0 + mass[4] * v[4];
+            out[5] = 0.0 + mass[5] * v[5];
+            out[6] = 0.0 + mass[6] * v[6];
+            out[7] = 0.0 + mass[7] * v[7];
+            out[8] = 0.0 + mass[8] * v[8];
+            out[9] = 0.0 + mass[9] * v[9];
+            out[10] = 0.0 + mass[10] * v[10];
+            out[11] = 0.0 + mass[11] * v[11];
+            out[12] = 0.0 + mass[12] * v[12];
+            out[13] = 0.0 + mass[13] * v[13];
+            out[14] = 0.0 + mass[14] * v[14];
+            out[15] = 0.0 + mass[15] * v[15];
+            out[16] = 0.0 + mass[16] * v[16];
+            out[17] = 0.0 + mass[17] * v[17];
+            out[18] = 0.0 + mass[18] * v[18];
+            out[19] = 0.0 + mass[19] * v[19];
+            out[20] = 0.0 + mass[20] * v[20];
+            out[21] = 0.0 + mass[21] * v[21];
+            out[22] = 0.0 + mass[22] * v[22];
+            out[23] = 0.0 + mass[23] * v[23];
+            out[24] = 0.0 + mass[24] * v[24];
+            out[25] = 0.0 + mass[25] * v[25];
+            out[26] = 0.0 + mass[26] * v[26];
+            out[27] = 0.0 + mass[27] * v[27];
+            out[28] = 0.0 + mass[28] * v[28];
+            out[29] = 0.0 + mass[29] * v[29];
+            out[30] = 0.0 + mass[30] * v[30];
+            out[31] = 0.0 + mass[31] * v[31];
+            out[32] = 0.0 + mass[32] * v[32];
+            out[33] = 0.0 + mass[33] * v[33];
+            out[34] = 0.0 + mass[34] * v[34];
+            out[35] = 0.0 + mass[35] * v[35];
+            out[36] = 0.0 + mass[36] * v[36];
+            out[37] = 0.0 + mass[37] * v[37];
+            out[38] = 0.0 + mass[38] * v[38];
+            out[39] = 0.0 + mass[39] * v[39];
+            out[40] = 0.0 + mass[40] * v[40];
+            out[41] = 0.0 + mass[41] * v[41];
+            out[42] = 0.0 + mass[42] * v[42];
+            out[43] = 0.0 + mass[43] * v[43];
+            out[44] = 0.0 + mass[44] * v[44];
+            out[45] = 0.0 + mass[45] * v[45];
+            out[46] = 0.0 + mass[46] * v[46];
+            out[47] = 0.0 + mass[47] * v[47];
+            out[48] = 0.0 + mass[48] * v[48];
+            out[49] = 0.0 + mass[49] * v[49];
+            out[50] = 0.0 + mass[50] * v[50];
+            out[51] = 0.0 + mass[51] * v[51];
+            out[52] = 0.0 + mass[52] * v[52];
+            out[53] = 0.0 + mass[53] * v[53];
+            out[54] = 0.0 + mass[54] * v[54];
+            out[55] = 0.0 + mass[55] * v[55];
+            out[56] = 0.0 + mass[56] * v[56];
+            out[57] = 0.0 + mass[57] * v[57];
+            out[58] = 0.0 + mass[58] * v[58];
+            out[59] = 0.0 + mass[59] * v[59];
+            Ok(())
+        }
+        fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+            let mass: &[f64; 60] = mass
+                .try_into()
+                .map_err(|_| length_error(60, mass.len()))?;
+            let qd: &[f64; 60] = qd.try_into().map_err(|_| length_error(60, qd.len()))?;
+            let mut t = 0.0;
+            t += qd[0] * mass[0] * qd[0];
+            t += qd[1] * mass[1] * qd[1];
+            t += qd[2] * mass[2] * qd[2];
+            t += qd[3] * mass[3] * qd[3];
+            t += qd[4] * mass[4] * qd[4];
+            t += qd[5] * mass[5] * qd[5];
+            t += qd[6] * mass[6] * qd[6];
+            t += qd[7] * mass[7] * qd[7];
+            t += qd[8] * mass[8] * qd[8];
+            t += qd[9] * mass[9] * qd[9];
+            t += qd[10] * mass[10] * qd[10];
+            t += qd[11] * mass[11] * qd[11];
+            t += qd[12] * mass[12] * qd[12];
+            t += qd[13] * mass[13] * qd[13];
+            t += qd[14] * mass[14] * qd[14];
+            t += qd[15] * mass[15] * qd[15];
+            t += qd[16] * mass[16] * qd[16];
+            t += qd[17] * mass[17] * qd[17];
+            t += qd[18] * mass[18] * qd[18];
+            t += qd[19] * mass[19] * qd[19];
+            t += qd[20] * mass[20] * qd[20];
+            t += qd[21] * mass[21] * qd[21];
+            t += qd[22] * mass[22] * qd[22];
+            t += qd[23] * mass[23] * qd[23];
+            t += qd[24] * mass[24] * qd[24];
+            t += qd[25] * mass[25] * qd[25];
+            t += qd[26] * mass[26] * qd[26];
+            t += qd[27] * mass[27] * qd[27];
+            t += qd[28] * mass[28] * qd[28];
+            t += qd[29] * mass[29] * qd[29];
+            t += qd[30] * mass[30] * qd[30];
+            t += qd[31] * mass[31] * qd[31];
+            t += qd[32] * mass[32] * qd[32];
+            t += qd[33] * mass[33] * qd[33];
+            t += qd[34] * mass[34] * qd[34];
+            t += qd[35] * mass[35] * qd[35];
+            t += qd[36] * mass[36] * qd[36];
+            t += qd[37] * mass[37] * qd[37];
+            t += qd[38] * mass[38] * qd[38];
+            t += qd[39] * mass[39] * qd[39];
+            t += qd[40] * mass[40] * qd[40];
+            t += qd[41] * mass[41] * qd[41];
+            t += qd[42] * mass[42] * qd[42];
+            t += qd[43] * mass[43] * qd[43];
+            t += qd[44] * mass[44] * qd[44];
+            t += qd[45] * mass[45] * qd[45];
+            t += qd[46] * mass[46] * qd[46];
+            t += qd[47] * mass[47] * qd[47];
+            t += qd[48] * mass[48] * qd[48];
+            t += qd[49] * mass[49] * qd[49];
+            t += qd[50] * mass[50] * qd[50];
+            t += qd[51] * mass[51] * qd[51];
+            t += qd[52] * mass[52] * qd[52];
+            t += qd[53] * mass[53] * qd[53];
+            t += qd[54] * mass[54] * qd[54];
+            t += qd[55] * mass[55] * qd[55];
+            t += qd[56] * mass[56] * qd[56];
+            t += qd[57] * mass[57] * qd[57];
+            t += qd[58] * mass[58] * qd[58];
+            t += qd[59] * mass[59] * qd[59];
+            Ok(0.5 * t)
         }
         /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
         pub fn force_jacobian(

@@ -54849,6 +54849,10 @@ pub mod exact {
             phi_q_cols: &PHI_Q_COLS,
             transpose_times: kkt_transpose_times,
             times_add: kkt_times_add,
+            mass_rows: &MASS_ROWS,
+            mass_cols: &MASS_COLS,
+            mass_times: kkt_mass_times,
+            kinetic_energy: kkt_kinetic_energy,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -73299,6 +73303,413 @@ pub mod exact {
         out[90] = out[90] + phi_q[654] * x[87] + phi_q[655] * x[88] + phi_q[656] * x[89]
             + phi_q[657] * x[90];
         Ok(())
+    }
+    #[allow(clippy::assign_op_pattern)]
+    fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
+        let mass: &[f64; 247] = mass
+            .try_into()
+            .map_err(|_| length_error(247, mass.len()))?;
+        let v: &[f64; 91] = v.try_into().map_err(|_| length_error(91, v.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 91] = out.try_into().map_err(|_| length_error(91, out_len))?;
+        out[0] = 0.0 + mass[0] * v[0];
+        out[1] = 0.0 + mass[1] * v[1];
+        out[2] = 0.0 + mass[2] * v[2];
+        out[3] = 0.0 + mass[3] * v[3] + mass[4] * v[4] + mass[5] * v[5] + mass[6] * v[6];
+        out[4] = 0.0 + mass[7] * v[3] + mass[8] * v[4] + mass[9] * v[5]
+            + mass[10] * v[6];
+        out[5] = 0.0 + mass[11] * v[3] + mass[12] * v[4] + mass[13] * v[5]
+            + mass[14] * v[6];
+        out[6] = 0.0 + mass[15] * v[3] + mass[16] * v[4] + mass[17] * v[5]
+            + mass[18] * v[6];
+        out[7] = 0.0 + mass[19] * v[7];
+        out[8] = 0.0 + mass[20] * v[8];
+        out[9] = 0.0 + mass[21] * v[9];
+        out[10] = 0.0 + mass[22] * v[10] + mass[23] * v[11] + mass[24] * v[12]
+            + mass[25] * v[13];
+        out[11] = 0.0 + mass[26] * v[10] + mass[27] * v[11] + mass[28] * v[12]
+            + mass[29] * v[13];
+        out[12] = 0.0 + mass[30] * v[10] + mass[31] * v[11] + mass[32] * v[12]
+            + mass[33] * v[13];
+        out[13] = 0.0 + mass[34] * v[10] + mass[35] * v[11] + mass[36] * v[12]
+            + mass[37] * v[13];
+        out[14] = 0.0 + mass[38] * v[14];
+        out[15] = 0.0 + mass[39] * v[15];
+        out[16] = 0.0 + mass[40] * v[16];
+        out[17] = 0.0 + mass[41] * v[17] + mass[42] * v[18] + mass[43] * v[19]
+            + mass[44] * v[20];
+        out[18] = 0.0 + mass[45] * v[17] + mass[46] * v[18] + mass[47] * v[19]
+            + mass[48] * v[20];
+        out[19] = 0.0 + mass[49] * v[17] + mass[50] * v[18] + mass[51] * v[19]
+            + mass[52] * v[20];
+        out[20] = 0.0 + mass[53] * v[17] + mass[54] * v[18] + mass[55] * v[19]
+            + mass[56] * v[20];
+        out[21] = 0.0 + mass[57] * v[21];
+        out[22] = 0.0 + mass[58] * v[22];
+        out[23] = 0.0 + mass[59] * v[23];
+        out[24] = 0.0 + mass[60] * v[24] + mass[61] * v[25] + mass[62] * v[26]
+            + mass[63] * v[27];
+        out[25] = 0.0 + mass[64] * v[24] + mass[65] * v[25] + mass[66] * v[26]
+            + mass[67] * v[27];
+        out[26] = 0.0 + mass[68] * v[24] + mass[69] * v[25] + mass[70] * v[26]
+            + mass[71] * v[27];
+        out[27] = 0.0 + mass[72] * v[24] + mass[73] * v[25] + mass[74] * v[26]
+            + mass[75] * v[27];
+        out[28] = 0.0 + mass[76] * v[28];
+        out[29] = 0.0 + mass[77] * v[29];
+        out[30] = 0.0 + mass[78] * v[30];
+        out[31] = 0.0 + mass[79] * v[31] + mass[80] * v[32] + mass[81] * v[33]
+            + mass[82] * v[34];
+        out[32] = 0.0 + mass[83] * v[31] + mass[84] * v[32] + mass[85] * v[33]
+            + mass[86] * v[34];
+        out[33] = 0.0 + mass[87] * v[31] + mass[88] * v[32] + mass[89] * v[33]
+            + mass[90] * v[34];
+        out[34] = 0.0 + mass[91] * v[31] + mass[92] * v[32] + mass[93] * v[33]
+            + mass[94] * v[34];
+        out[35] = 0.0 + mass[95] * v[35];
+        out[36] = 0.0 + mass[96] * v[36];
+        out[37] = 0.0 + mass[97] * v[37];
+        out[38] = 0.0 + mass[98] * v[38] + mass[99] * v[39] + mass[100] * v[40]
+            + mass[101] * v[41];
+        out[39] = 0.0 + mass[102] * v[38] + mass[103] * v[39] + mass[104] * v[40]
+            + mass[105] * v[41];
+        out[40] = 0.0 + mass[106] * v[38] + mass[107] * v[39] + mass[108] * v[40]
+            + mass[109] * v[41];
+        out[41] = 0.0 + mass[110] * v[38] + mass[111] * v[39] + mass[112] * v[40]
+            + mass[113] * v[41];
+        out[42] = 0.0 + mass[114] * v[42];
+        out[43] = 0.0 + mass[115] * v[43];
+        out[44] = 0.0 + mass[116] * v[44];
+        out[45] = 0.0 + mass[117] * v[45] + mass[118] * v[46] + mass[119] * v[47]
+            + mass[120] * v[48];
+        out[46] = 0.0 + mass[121] * v[45] + mass[122] * v[46] + mass[123] * v[47]
+            + mass[124] * v[48];
+        out[47] = 0.0 + mass[125] * v[45] + mass[126] * v[46] + mass[127] * v[47]
+            + mass[128] * v[48];
+        out[48] = 0.0 + mass[129] * v[45] + mass[130] * v[46] + mass[131] * v[47]
+            + mass[132] * v[48];
+        out[49] = 0.0 + mass[133] * v[49];
+        out[50] = 0.0 + mass[134] * v[50];
+        out[51] = 0.0 + mass[135] * v[51];
+        out[52] = 0.0 + mass[136] * v[52] + mass[137] * v[53] + mass[138] * v[54]
+            + mass[139] * v[55];
+        out[53] = 0.0 + mass[140] * v[52] + mass[141] * v[53] + mass[142] * v[54]
+            + mass[143] * v[55];
+        out[54] = 0.0 + mass[144] * v[52] + mass[145] * v[53] + mass[146] * v[54]
+            + mass[147] * v[55];
+        out[55] = 0.0 + mass[148] * v[52] + mass[149] * v[53] + mass[150] * v[54]
+            + mass[151] * v[55];
+        out[56] = 0.0 + mass[152] * v[56];
+        out[57] = 0.0 + mass[153] * v[57];
+        out[58] = 0.0 + mass[154] * v[58];
+        out[59] = 0.0 + mass[155] * v[59] + mass[156] * v[60] + mass[157] * v[61]
+            + mass[158] * v[62];
+        out[60] = 0.0 + mass[159] * v[59] + mass[160] * v[60] + mass[161] * v[61]
+            + mass[162] * v[62];
+        out[61] = 0.0 + mass[163] * v[59] + mass[164] * v[60] + mass[165] * v[61]
+            + mass[166] * v[62];
+        out[62] = 0.0 + mass[167] * v[59] + mass[168] * v[60] + mass[169] * v[61]
+            + mass[170] * v[62];
+        out[63] = 0.0 + mass[171] * v[63];
+        out[64] = 0.0 + mass[172] * v[64];
+        out[65] = 0.0 + mass[173] * v[65];
+        out[66] = 0.0 + mass[174] * v[66] + mass[175] * v[67] + mass[176] * v[68]
+            + mass[177] * v[69];
+        out[67] = 0.0 + mass[178] * v[66] + mass[179] * v[67] + mass[180] * v[68]
+            + mass[181] * v[69];
+        out[68] = 0.0 + mass[182] * v[66] + mass[183] * v[67] + mass[184] * v[68]
+            + mass[185] * v[69];
+        out[69] = 0.0 + mass[186] * v[66] + mass[187] * v[67] + mass[188] * v[68]
+            + mass[189] * v[69];
+        out[70] = 0.0 + mass[190] * v[70];
+        out[71] = 0.0 + mass[191] * v[71];
+        out[72] = 0.0 + mass[192] * v[72];
+        out[73] = 0.0 + mass[193] * v[73] + mass[194] * v[74] + mass[195] * v[75]
+            + mass[196] * v[76];
+        out[74] = 0.0 + mass[197] * v[73] + mass[198] * v[74] + mass[199] * v[75]
+            + mass[200] * v[76];
+        out[75] = 0.0 + mass[201] * v[73] + mass[202] * v[74] + mass[203] * v[75]
+            + mass[204] * v[76];
+        out[76] = 0.0 + mass[205] * v[73] + mass[206] * v[74] + mass[207] * v[75]
+            + mass[208] * v[76];
+        out[77] = 0.0 + mass[209] * v[77];
+        out[78] = 0.0 + mass[210] * v[78];
+        out[79] = 0.0 + mass[211] * v[79];
+        out[80] = 0.0 + mass[212] * v[80] + mass[213] * v[81] + mass[214] * v[82]
+            + mass[215] * v[83];
+        out[81] = 0.0 + mass[216] * v[80] + mass[217] * v[81] + mass[218] * v[82]
+            + mass[219] * v[83];
+        out[82] = 0.0 + mass[220] * v[80] + mass[221] * v[81] + mass[222] * v[82]
+            + mass[223] * v[83];
+        out[83] = 0.0 + mass[224] * v[80] + mass[225] * v[81] + mass[226] * v[82]
+            + mass[227] * v[83];
+        out[84] = 0.0 + mass[228] * v[84];
+        out[85] = 0.0 + mass[229] * v[85];
+        out[86] = 0.0 + mass[230] * v[86];
+        out[87] = 0.0 + mass[231] * v[87] + mass[232] * v[88] + mass[233] * v[89]
+            + mass[234] * v[90];
+        out[88] = 0.0 + mass[235] * v[87] + mass[236] * v[88] + mass[237] * v[89]
+            + mass[238] * v[90];
+        out[89] = 0.0 + mass[239] * v[87] + mass[240] * v[88] + mass[241] * v[89]
+            + mass[242] * v[90];
+        out[90] = 0.0 + mass[243] * v[87] + mass[244] * v[88] + mass[245] * v[89]
+            + mass[246] * v[90];
+        Ok(())
+    }
+    fn kkt_kinetic_energy(mass: &[f64], qd: &[f64]) -> Result<f64, KktError> {
+        let mass: &[f64; 247] = mass
+            .try_into()
+            .map_err(|_| length_error(247, mass.len()))?;
+        let qd: &[f64; 91] = qd.try_into().map_err(|_| length_error(91, qd.len()))?;
+        let mut t = 0.0;
+        t += qd[0] * mass[0] * qd[0];
+        t += qd[1] * mass[1] * qd[1];
+        t += qd[2] * mass[2] * qd[2];
+        t += qd[3] * mass[3] * qd[3];
+        t += qd[3] * mass[4] * qd[4];
+        t += qd[3] * mass[5] * qd[5];
+        t += qd[3] * mass[6] * qd[6];
+        t += qd[4] * mass[7] * qd[3];
+        t += qd[4] * mass[8] * qd[4];
+        t += qd[4] * mass[9] * qd[5];
+        t += qd[4] * mass[10] * qd[6];
+        t += qd[5] * mass[11] * qd[3];
+        t += qd[5] * mass[12] * qd[4];
+        t += qd[5] * mass[13] * qd[5];
+        t += qd[5] * mass[14] * qd[6];
+        t += qd[6] * mass[15] * qd[3];
+        t += qd[6] * mass[16] * qd[4];
+        t += qd[6] * mass[17] * qd[5];
+        t += qd[6] * mass[18] * qd[6];
+        t += qd[7] * mass[19] * qd[7];
+        t += qd[8] * mass[20] * qd[8];
+        t += qd[9] * mass[21] * qd[9];
+        t += qd[10] * mass[22] * qd[10];
+        t += qd[10] * mass[23] * qd[11];
+        t += qd[10] * mass[24] * qd[12];
+        t += qd[10] * mass[25] * qd[13];
+        t += qd[11] * mass[26] * qd[10];
+        t += qd[11] * mass[27] * qd[11];
+        t += qd[11] * mass[28] * qd[12];
+        t += qd[11] * mass[29] * qd[13];
+        t += qd[12] * mass[30] * qd[10];
+        t += qd[12] * mass[31] * qd[11];
+        t += qd[12] * mass[32] * qd[12];
+        t += qd[12] * mass[33] * qd[13];
+        t += qd[13] * mass[34] * qd[10];
+        t += qd[13] * mass[35] * qd[11];
+        t += qd[13] * mass[36] * qd[12];
+        t += qd[13] * mass[37] * qd[13];
+        t += qd[14] * mass[38] * qd[14];
+        t += qd[15] * mass[39] * qd[15];
+        t += qd[16] * mass[40] * qd[16];
+        t += qd[17] * mass[41] * qd[17];
+        t += qd[17] * mass[42] * qd[18];
+        t += qd[17] * mass[43] * qd[19];
+        t += qd[17] * mass[44] * qd[20];
+        t += qd[18] * mass[45] * qd[17];
+        t += qd[18] * mass[46] * qd[18];
+        t += qd[18] * mass[47] * qd[19];
+        t += qd[18] * mass[48] * qd[20];
+        t += qd[19] * mass[49] * qd[17];
+        t += qd[19] * mass[50] * qd[18];
+        t += qd[19] * mass[51] * qd[19];
+        t += qd[19] * mass[52] * qd[20];
+        t += qd[20] * mass[53] * qd[17];
+        t += qd[20] * mass[54] * qd[18];
+        t += qd[20] * mass[55] * qd[19];
+        t += qd[20] * mass[56] * qd[20];
+        t += qd[21] * mass[57] * qd[21];
+        t += qd[22] * mass[58] * qd[22];
+        t += qd[23] * mass[59] * qd[23];
+        t += qd[24] * mass[60] * qd[24];
+        t += qd[24] * mass[61] * qd[25];
+        t += qd[24] * mass[62] * qd[26];
+        t += qd[24] * mass[63] * qd[27];
+        t += qd[25] * mass[64] * qd[24];
+        t += qd[25] * mass[65] * qd[25];
+        t += qd[25] * mass[66] * qd[26];
+        t += qd[25] * mass[67] * qd[27];
+        t += qd[26] * mass[68] * qd[24];
+        t += qd[26] * mass[69] * qd[25];
+        t += qd[26] * mass[70] * qd[26];
+        t += qd[26] * mass[71] * qd[27];
+        t += qd[27] * mass[72] * qd[24];
+        t += qd[27] * mass[73] * qd[25];
+        t += qd[27] * mass[74] * qd[26];
+        t += qd[27] * mass[75] * qd[27];
+        t += qd[28] * mass[76] * qd[28];
+        t += qd[29] * mass[77] * qd[29];
+        t += qd[30] * mass[78] * qd[30];
+        t += qd[31] * mass[79] * qd[31];
+        t += qd[31] * mass[80] * qd[32];
+        t += qd[31] * mass[81] * qd[33];
+        t += qd[31] * mass[82] * qd[34];
+        t += qd[32] * mass[83] * qd[31];
+        t += qd[32] * mass[84] * qd[32];
+        t += qd[32] * mass[85] * qd[33];
+        t += qd[32] * mass[86] * qd[34];
+        t += qd[33] * mass[87] * qd[31];
+        t += qd[33] * mass[88] * qd[32];
+        t += qd[33] * mass[89] * qd[33];
+        t += qd[33] * mass[90] * qd[34];
+        t += qd[34] * mass[91] * qd[31];
+        t += qd[34] * mass[92] * qd[32];
+        t += qd[34] * mass[93] * qd[33];
+        t += qd[34] * mass[94] * qd[34];
+        t += qd[35] * mass[95] * qd[35];
+        t += qd[36] * mass[96] * qd[36];
+        t += qd[37] * mass[97] * qd[37];
+        t += qd[38] * mass[98] * qd[38];
+        t += qd[38] * mass[99] * qd[39];
+        t += qd[38] * mass[100] * qd[40];
+        t += qd[38] * mass[101] * qd[41];
+        t += qd[39] * mass[102] * qd[38];
+        t += qd[39] * mass[103] * qd[39];
+        t += qd[39] * mass[104] * qd[40];
+        t += qd[39] * mass[105] * qd[41];
+        t += qd[40] * mass[106] * qd[38];
+        t += qd[40] * mass[107] * qd[39];
+        t += qd[40] * mass[108] * qd[40];
+        t += qd[40] * mass[109] * qd[41];
+        t += qd[41] * mass[110] * qd[38];
+        t += qd[41] * mass[111] * qd[39];
+        t += qd[41] * mass[112] * qd[40];
+        t += qd[41] * mass[113] * qd[41];
+        t += qd[42] * mass[114] * qd[42];
+        t += qd[43] * mass[115] * qd[43];
+        t += qd[44] * mass[116] * qd[44];
+        t += qd[45] * mass[117] * qd[45];
+        t += qd[45] * mass[118] * qd[46];
+        t += qd[45] * mass[119] * qd[47];
+        t += qd[45] * mass[120] * qd[48];
+        t += qd[46] * mass[121] * qd[45];
+        t += qd[46] * mass[122] * qd[46];
+        t += qd[46] * mass[123] * qd[47];
+        t += qd[46] * mass[124] * qd[48];
+        t += qd[47] * mass[125] * qd[45];
+        t += qd[47] * mass[126] * qd[46];
+        t += qd[47] * mass[127] * qd[47];
+        t += qd[47] * mass[128] * qd[48];
+        t += qd[48] * mass[129] * qd[45];
+        t += qd[48] * mass[130] * qd[46];
+        t += qd[48] * mass[131] * qd[47];
+        t += qd[48] * mass[132] * qd[48];
+        t += qd[49] * mass[133] * qd[49];
+        t += qd[50] * mass[134] * qd[50];
+        t += qd[51] * mass[135] * qd[51];
+        t += qd[52] * mass[136] * qd[52];
+        t += qd[52] * mass[137] * qd[53];
+        t += qd[52] * mass[138] * qd[54];
+        t += qd[52] * mass[139] * qd[55];
+        t += qd[53] * mass[140] * qd[52];
+        t += qd[53] * mass[141] * qd[53];
+        t += qd[53] * mass[142] * qd[54];
+        t += qd[53] * mass[143] * qd[55];
+        t += qd[54] * mass[144] * qd[52];
+        t += qd[54] * mass[145] * qd[53];
+        t += qd[54] * mass[146] * qd[54];
+        t += qd[54] * mass[147] * qd[55];
+        t += qd[55] * mass[148] * qd[52];
+        t += qd[55] * mass[149] * qd[53];
+        t += qd[55] * mass[150] * qd[54];
+        t += qd[55] * mass[151] * qd[55];
+        t += qd[56] * mass[152] * qd[56];
+        t += qd[57] * mass[153] * qd[57];
+        t += qd[58] * mass[154] * qd[58];
+        t += qd[59] * mass[155] * qd[59];
+        t += qd[59] * mass[156] * qd[60];
+        t += qd[59] * mass[157] * qd[61];
+        t += qd[59] * mass[158] * qd[62];
+        t += qd[60] * mass[159] * qd[59];
+        t += qd[60] * mass[160] * qd[60];
+        t += qd[60] * mass[161] * qd[61];
+        t += qd[60] * mass[162] * qd[62];
+        t += qd[61] * mass[163] * qd[59];
+        t += qd[61] * mass[164] * qd[60];
+        t += qd[61] * mass[165] * qd[61];
+        t += qd[61] * mass[166] * qd[62];
+        t += qd[62] * mass[167] * qd[59];
+        t += qd[62] * mass[168] * qd[60];
+        t += qd[62] * mass[169] * qd[61];
+        t += qd[62] * mass[170] * qd[62];
+        t += qd[63] * mass[171] * qd[63];
+        t += qd[64] * mass[172] * qd[64];
+        t += qd[65] * mass[173] * qd[65];
+        t += qd[66] * mass[174] * qd[66];
+        t += qd[66] * mass[175] * qd[67];
+        t += qd[66] * mass[176] * qd[68];
+        t += qd[66] * mass[177] * qd[69];
+        t += qd[67] * mass[178] * qd[66];
+        t += qd[67] * mass[179] * qd[67];
+        t += qd[67] * mass[180] * qd[68];
+        t += qd[67] * mass[181] * qd[69];
+        t += qd[68] * mass[182] * qd[66];
+        t += qd[68] * mass[183] * qd[67];
+        t += qd[68] * mass[184] * qd[68];
+        t += qd[68] * mass[185] * qd[69];
+        t += qd[69] * mass[186] * qd[66];
+        t += qd[69] * mass[187] * qd[67];
+        t += qd[69] * mass[188] * qd[68];
+        t += qd[69] * mass[189] * qd[69];
+        t += qd[70] * mass[190] * qd[70];
+        t += qd[71] * mass[191] * qd[71];
+        t += qd[72] * mass[192] * qd[72];
+        t += qd[73] * mass[193] * qd[73];
+        t += qd[73] * mass[194] * qd[74];
+        t += qd[73] * mass[195] * qd[75];
+        t += qd[73] * mass[196] * qd[76];
+        t += qd[74] * mass[197] * qd[73];
+        t += qd[74] * mass[198] * qd[74];
+        t += qd[74] * mass[199] * qd[75];
+        t += qd[74] * mass[200] * qd[76];
+        t += qd[75] * mass[201] * qd[73];
+        t += qd[75] * mass[202] * qd[74];
+        t += qd[75] * mass[203] * qd[75];
+        t += qd[75] * mass[204] * qd[76];
+        t += qd[76] * mass[205] * qd[73];
+        t += qd[76] * mass[206] * qd[74];
+        t += qd[76] * mass[207] * qd[75];
+        t += qd[76] * mass[208] * qd[76];
+        t += qd[77] * mass[209] * qd[77];
+        t += qd[78] * mass[210] * qd[78];
+        t += qd[79] * mass[211] * qd[79];
+        t += qd[80] * mass[212] * qd[80];
+        t += qd[80] * mass[213] * qd[81];
+        t += qd[80] * mass[214] * qd[82];
+        t += qd[80] * mass[215] * qd[83];
+        t += qd[81] * mass[216] * qd[80];
+        t += qd[81] * mass[217] * qd[81];
+        t += qd[81] * mass[218] * qd[82];
+        t += qd[81] * mass[219] * qd[83];
+        t += qd[82] * mass[220] * qd[80];
+        t += qd[82] * mass[221] * qd[81];
+        t += qd[82] * mass[222] * qd[82];
+        t += qd[82] * mass[223] * qd[83];
+        t += qd[83] * mass[224] * qd[80];
+        t += qd[83] * mass[225] * qd[81];
+        t += qd[83] * mass[226] * qd[82];
+        t += qd[83] * mass[227] * qd[83];
+        t += qd[84] * mass[228] * qd[84];
+        t += qd[85] * mass[229] * qd[85];
+        t += qd[86] * mass[230] * qd[86];
+        t += qd[87] * mass[231] * qd[87];
+        t += qd[87] * mass[232] * qd[88];
+        t += qd[87] * mass[233] * qd[89];
+        t += qd[87] * mass[234] * qd[90];
+        t += qd[88] * mass[235] * qd[87];
+        t += qd[88] * mass[236] * qd[88];
+        t += qd[88] * mass[237] * qd[89];
+        t += qd[88] * mass[238] * qd[90];
+        t += qd[89] * mass[239] * qd[87];
+        t += qd[89] * mass[240] * qd[88];
+        t += qd[89] * mass[241] * qd[89];
+        t += qd[89] * mass[242] * qd[90];
+        t += qd[90] * mass[243] * qd[87];
+        t += qd[90] * mass[244] * qd[88];
+        t += qd[90] * mass[245] * qd[89];
+        t += qd[90] * mass[246] * qd[90];
+        Ok(0.5 * t)
     }
     /// Nonzeros of ∂Q/∂q and ∂Q/∂q̇ in the order of `FORCE_Q_*` and `FORCE_QD_*`.
     pub fn force_jacobian(

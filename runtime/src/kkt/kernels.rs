@@ -37,6 +37,12 @@ pub type TransposeKernel = fn(&[f64], &[f64], &mut [f64]) -> Result<(), KktError
 /// A generated `out += Φq x`: `(phi_q, x, out)`.
 pub type TimesKernel = fn(&[f64], &[f64], &mut [f64]) -> Result<(), KktError>;
 
+/// A generated `out = M v` from M's nonzeros: `(mass, v, out)`.
+pub type MassTimesKernel = fn(&[f64], &[f64], &mut [f64]) -> Result<(), KktError>;
+
+/// A generated `½ q̇ᵀ M q̇` from M's nonzeros: `(mass, qd)`.
+pub type KineticEnergyKernel = fn(&[f64], &[f64]) -> Result<f64, KktError>;
+
 /// Factor and solve for one pattern, as the generator emits them. Not built by hand: the
 /// generated module of a mechanism fills [`MechanismInfo::kkt`](crate::MechanismInfo::kkt).
 #[derive(Clone, Copy)]
@@ -57,6 +63,16 @@ pub struct KktKernels {
     /// `out += Φq x`, each row's products added to `out` in the order of the nonzeros (as
     /// a loop over them does).
     pub times_add: TimesKernel,
+    /// The model's own mass pattern (`MechanismInfo::mass_rows`/`mass_cols`, by address)
+    /// that `mass_times` and `kinetic_energy` were emitted for.
+    pub mass_rows: &'static [u32],
+    pub mass_cols: &'static [u32],
+    /// `out = M v`, each row's products added from zero in the order of the nonzeros (as
+    /// `mass_times`'s loop does).
+    pub mass_times: MassTimesKernel,
+    /// `½ q̇ᵀ M q̇`, the terms `q̇ᵣ·m·q̇꜀` summed in the order of the nonzeros (as
+    /// `kinetic_energy`'s loop does).
+    pub kinetic_energy: KineticEnergyKernel,
 }
 
 impl KktKernels {
@@ -70,6 +86,12 @@ impl KktKernels {
     /// (by address): then the pattern is the generator's, row-major as it always emits it.
     pub fn emitted_for(&self, rows: &[u32], cols: &[u32]) -> bool {
         std::ptr::eq(self.phi_q_rows, rows) && std::ptr::eq(self.phi_q_cols, cols)
+    }
+
+    /// Whether `rows` and `cols` are the mass pattern statics `mass_times` and
+    /// `kinetic_energy` were emitted with (by address).
+    pub fn mass_emitted_for(&self, rows: &[u32], cols: &[u32]) -> bool {
+        std::ptr::eq(self.mass_rows, rows) && std::ptr::eq(self.mass_cols, cols)
     }
 }
 
