@@ -209,6 +209,84 @@ fn compare(what: &str, pattern: &KktPattern, mass: &[f64], phi_q: &[f64], rng: &
     }
 }
 
+/// The generated assembly of `c·M − kq·sym(∂Q/∂q) − kqd·sym(∂Q/∂q̇)` on the pattern with
+/// the loads' stiffness (`loads`): bit for bit against a loop over the entries as
+/// `LoadStiffness::assemble` runs it (from zero, `c·m` at the mass slots, each entry's half
+/// subtracted at `(r, c)` and `(c, r)`), and against the dense sum to roundoff. `dq`, `dqd`
+/// are random: the assembly is linear in them.
+fn loads_kernel_matches(
+    name: &str,
+    info: &MechanismInfo,
+    loads: &KktPattern,
+    mass: &[f64],
+    rng: &mut Rng,
+) {
+    let kernel = info
+        .kkt
+        .iter()
+        .filter_map(|k| k.loads)
+        .find(|l| l.emitted_for(info))
+        .unwrap_or_else(|| panic!("{name}: no loads assembly for its own patterns"));
+    let dq: Vec<f64> = info
+        .force_q_rows
+        .iter()
+        .map(|_| rng.uniform(-1.0, 1.0))
+        .collect();
+    let dqd: Vec<f64> = info
+        .force_qd_rows
+        .iter()
+        .map(|_| rng.uniform(-1.0, 1.0))
+        .collect();
+    let (c, kq, kqd) = (
+        rng.uniform(0.5, 2.0),
+        rng.uniform(0.0, 1e-3),
+        rng.uniform(0.0, 1e-2),
+    );
+    let nu = loads.mass_rows.len();
+    let mut out = vec![f64::NAN; nu];
+    (kernel.assemble)(mass, c, &dq, kq, &dqd, kqd, &mut out).unwrap();
+    let slot = |r: u32, c: u32| {
+        (0..nu)
+            .find(|&s| loads.mass_rows[s] == r && loads.mass_cols[s] == c)
+            .expect("in the union")
+    };
+    let mut looped = vec![0.0; nu];
+    for ((&r, &cc), &m) in info.mass_rows.iter().zip(info.mass_cols).zip(mass) {
+        looped[slot(r, cc)] = c * m;
+    }
+    let mut dense = nalgebra::DMatrix::<f64>::zeros(info.n_coords, info.n_coords);
+    for ((&r, &cc), &m) in info.mass_rows.iter().zip(info.mass_cols).zip(mass) {
+        dense[(r as usize, cc as usize)] += c * m;
+    }
+    for (rows, cols, vals, k) in [
+        (info.force_q_rows, info.force_q_cols, &dq, kq),
+        (info.force_qd_rows, info.force_qd_cols, &dqd, kqd),
+    ] {
+        for ((&r, &cc), &v) in rows.iter().zip(cols).zip(vals.iter()) {
+            let half = 0.5 * k * v;
+            looped[slot(r, cc)] -= half;
+            looped[slot(cc, r)] -= half;
+            dense[(r as usize, cc as usize)] -= half;
+            dense[(cc as usize, r as usize)] -= half;
+        }
+    }
+    let bits = |x: &[f64]| x.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+    assert_eq!(
+        bits(&out),
+        bits(&looped),
+        "{name}: loads assembly against the loop"
+    );
+    let scale = mass.iter().fold(1.0f64, |a, b| a.max(b.abs())) * c;
+    for (s, &v) in out.iter().enumerate() {
+        let d = dense[(loads.mass_rows[s] as usize, loads.mass_cols[s] as usize)];
+        assert!(
+            (v - d).abs() <= 1e-14 * scale,
+            "{name}: slot {s}: {v:e} vs dense {d:e}"
+        );
+    }
+    assert!((kernel.assemble)(mass, c, &dq, kq, &dqd, kqd, &mut out[1..]).is_err());
+}
+
 /// `mass` spread onto the pattern with the loads' stiffness: the mass entries where they
 /// are, and a small symmetric value (a stiffness of 1e-3 of the largest mass entry, of
 /// either sign) at each entry only the loads add.
@@ -271,6 +349,7 @@ fn every_model_small_enough_runs_its_kernels_and_they_equal_the_loops_and_the_de
             let what = format!("{name} trial {trial}");
             compare(&what, &pattern, &mass, &phi_q, &mut rng);
             if let Some(loads) = &loads {
+                loads_kernel_matches(&name, info, loads, &mass, &mut rng);
                 let spread = with_loads(info, loads, &mass);
                 compare(
                     &format!("{what} with loads"),

@@ -156,12 +156,19 @@ impl Code {
 /// `kkt_solve_{i}`, and one each of `kkt_transpose_times`, `kkt_times_add`, `kkt_mass_times`
 /// and `kkt_kinetic_energy`), or `None` when there is none. The patterns (the model's, then
 /// the one with its loads' stiffness) share `Φq`; the first's mass pattern is `INFO`'s.
-pub fn kernels(patterns: &[KktPattern]) -> Option<TokenStream> {
+pub fn kernels(patterns: &[KktPattern], loads: [(&[u32], &[u32]); 2]) -> Option<TokenStream> {
     let mut items = String::new();
     let mut entries = Vec::new();
     for (i, pattern) in patterns.iter().enumerate() {
-        if let Some((text, entry)) = one(pattern, i) {
+        // The second pattern, where there is one, is the first's with the loads' stiffness.
+        let assembly = (i == 1).then(|| assemble_loads(&patterns[0], pattern, loads));
+        let loads_field = match &assembly {
+            Some(_) => "Some(symbody_runtime::kkt::LoadsKernel { mass_rows: &MASS_ROWS, mass_cols: &MASS_COLS, force_q_rows: &FORCE_Q_ROWS, force_q_cols: &FORCE_Q_COLS, force_qd_rows: &FORCE_QD_ROWS, force_qd_cols: &FORCE_QD_COLS, assemble: kkt_assemble_loads })",
+            None => "None",
+        };
+        if let Some((text, entry)) = one(pattern, i, loads_field) {
             items.push_str(&text);
+            items.push_str(assembly.as_deref().unwrap_or_default());
             entries.push(entry);
         }
     }
@@ -221,7 +228,7 @@ Ok(0.5 * t)
 }
 
 /// Factor and solve for one pattern, named with suffix `i`, and its `KktKernels` value.
-fn one(pattern: &KktPattern, i: usize) -> Option<(String, String)> {
+fn one(pattern: &KktPattern, i: usize, loads: &str) -> Option<(String, String)> {
     let pattern = KktPattern {
         kernels: &[],
         ..pattern.clone()
@@ -240,7 +247,7 @@ fn one(pattern: &KktPattern, i: usize) -> Option<(String, String)> {
     let ns = stored.slots;
     let fingerprint = pattern.fingerprint();
     let entry = format!(
-        "KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor_{i}, solve: kkt_solve_{i}, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times, times_add: kkt_times_add, mass_rows: &MASS_ROWS, mass_cols: &MASS_COLS, mass_times: kkt_mass_times, kinetic_energy: kkt_kinetic_energy }}"
+        "KktKernels {{ pattern: {fingerprint:#x}, storage: {ns}, factor: kkt_factor_{i}, solve: kkt_solve_{i}, phi_q_rows: &PHI_Q_ROWS, phi_q_cols: &PHI_Q_COLS, transpose_times: kkt_transpose_times, times_add: kkt_times_add, mass_rows: &MASS_ROWS, mass_cols: &MASS_COLS, mass_times: kkt_mass_times, kinetic_energy: kkt_kinetic_energy, loads: {loads} }}"
     );
     let text = format!(
         "{}
@@ -355,6 +362,56 @@ fn mass_times(pattern: &KktPattern) -> String {
         let _ = writeln!(text, "out[{r}] = 0.0{sum};");
     }
     text
+}
+
+/// `kkt_assemble_loads`: `c·M − kq·sym(∂Q/∂q) − kqd·sym(∂Q/∂q̇)` on `union`'s mass
+/// pattern (the model's `model` with the loads' patterns `loads`), each slot from `c·mᵢ`
+/// (or zero) less the halves of the entries that land there, in the entries' order, as
+/// `LoadStiffness::assemble`'s loop subtracts them.
+fn assemble_loads(model: &KktPattern, union: &KktPattern, loads: [(&[u32], &[u32]); 2]) -> String {
+    let pairs: Vec<(u32, u32)> = union
+        .mass_rows
+        .iter()
+        .copied()
+        .zip(union.mass_cols.iter().copied())
+        .collect();
+    let slot = |p: (u32, u32)| {
+        pairs
+            .binary_search(&p)
+            .expect("the union holds every nonzero")
+    };
+    let mut value: Vec<String> = vec!["0.0".into(); pairs.len()];
+    for (k, (&r, &c)) in model.mass_rows.iter().zip(&model.mass_cols).enumerate() {
+        value[slot((r, c))] = format!("c * mass[{k}]");
+    }
+    let mut halves = String::new();
+    let names = [("dq", "kq", "hq"), ("dqd", "kqd", "hd")];
+    for ((rows, cols), (v, k, h)) in loads.iter().zip(names) {
+        for (i, (&r, &c)) in rows.iter().zip(cols.iter()).enumerate() {
+            let _ = writeln!(halves, "let {h}{i} = 0.5 * {k} * {v}[{i}];");
+            for at in [slot((r, c)), slot((c, r))] {
+                let _ = write!(value[at], " - {h}{i}");
+            }
+        }
+    }
+    let mut text = String::new();
+    for (s, v) in value.iter().enumerate() {
+        let _ = writeln!(text, "out[{s}] = {v};");
+    }
+    let (nm, nu) = (model.mass_rows.len(), pairs.len());
+    let (nq, nqd) = (loads[0].0.len(), loads[1].0.len());
+    format!(
+        "#[allow(unused_variables, clippy::too_many_arguments)]
+fn kkt_assemble_loads(mass: &[f64], c: f64, dq: &[f64], kq: f64, dqd: &[f64], kqd: f64, out: &mut [f64]) -> Result<(), KktError> {{
+let mass: &[f64; {nm}] = mass.try_into().map_err(|_| length_error({nm}, mass.len()))?;
+let dq: &[f64; {nq}] = dq.try_into().map_err(|_| length_error({nq}, dq.len()))?;
+let dqd: &[f64; {nqd}] = dqd.try_into().map_err(|_| length_error({nqd}, dqd.len()))?;
+let out_len = out.len();
+let out: &mut [f64; {nu}] = out.try_into().map_err(|_| length_error({nu}, out_len))?;
+{halves}{text}Ok(())
+}}
+"
+    )
 }
 
 /// `t += qd[r]·mass[k]·qd[c]` over M's nonzeros in their order, as `kinetic_energy`'s loop

@@ -775,7 +775,7 @@ fn formulation_module(
     };
     let mut patterns = vec![pattern.clone()];
     patterns.extend(pattern.with_loads((&fq_rows, &fq_cols), (&fqd_rows, &fqd_cols)));
-    let kkt = crate::kkt::kernels(&patterns);
+    let kkt = crate::kkt::kernels(&patterns, [(&fq_rows, &fq_cols), (&fqd_rows, &fqd_cols)]);
     let kkt_field = match kkt {
         Some(_) => quote!(&KKT),
         None => quote!(&[]),

@@ -9,7 +9,7 @@
 //! applies; the antisymmetric part (a damper's dependence on position, a follower load) is
 //! left to the iteration, like every other term outside the matrix.
 
-use crate::kkt::KktPattern;
+use crate::kkt::{AssembleKernel, KktPattern};
 use crate::mechanism::MechanismInfo;
 
 /// Where each contribution goes in the union pattern, and the work memory of one assembly.
@@ -24,6 +24,8 @@ pub(crate) struct LoadStiffness {
     pub(crate) dq: Vec<f64>,
     pub(crate) dqd: Vec<f64>,
     values: Vec<f64>,
+    /// The generated assembly, where it was emitted for these patterns.
+    kernel: Option<AssembleKernel>,
 }
 
 /// The union of the mass pattern and the symmetrized load Jacobians' patterns, sorted.
@@ -62,6 +64,12 @@ impl LoadStiffness {
             values: vec![0.0; union.len()],
             rows: union.iter().map(|p| p.0).collect(),
             cols: union.iter().map(|p| p.1).collect(),
+            kernel: info
+                .kkt
+                .iter()
+                .filter_map(|k| k.loads)
+                .find(|l| l.emitted_for(info))
+                .map(|l| l.assemble),
         })
     }
 
@@ -78,6 +86,13 @@ impl LoadStiffness {
     /// the Jacobians last written to `self.dq`, `self.dqd` (`kq = βh²`, `kqd = γh`; both 0
     /// give `c·M` alone).
     pub(crate) fn assemble(&mut self, mass: &[f64], c: f64, kq: f64, kqd: f64) -> &[f64] {
+        let (dq, dqd) = (&self.dq, &self.dqd);
+        if let Some(Ok(())) = self
+            .kernel
+            .map(|k| k(mass, c, dq, kq, dqd, kqd, &mut self.values))
+        {
+            return &self.values;
+        }
         self.values.fill(0.0);
         for (&s, &m) in self.mass_slot.iter().zip(mass) {
             self.values[s] = c * m;

@@ -21915,6 +21915,7 @@ pub mod exact {
             mass_cols: &MASS_COLS,
             mass_times: kkt_mass_times,
             kinetic_energy: kkt_kinetic_energy,
+            loads: None,
         },
         KktKernels {
             pattern: 0x14550b40923d5b4e,
@@ -21929,6 +21930,15 @@ pub mod exact {
             mass_cols: &MASS_COLS,
             mass_times: kkt_mass_times,
             kinetic_energy: kkt_kinetic_energy,
+            loads: Some(symbody_runtime::kkt::LoadsKernel {
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                force_q_rows: &FORCE_Q_ROWS,
+                force_q_cols: &FORCE_Q_COLS,
+                force_qd_rows: &FORCE_QD_ROWS,
+                force_qd_cols: &FORCE_QD_COLS,
+                assemble: kkt_assemble_loads,
+            }),
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -36900,6 +36910,160 @@ pub mod exact {
         x[41] = v1508;
         Ok(())
     }
+    #[allow(unused_variables, clippy::too_many_arguments)]
+    fn kkt_assemble_loads(
+        mass: &[f64],
+        c: f64,
+        dq: &[f64],
+        kq: f64,
+        dqd: &[f64],
+        kqd: f64,
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let mass: &[f64; 70] = mass
+            .try_into()
+            .map_err(|_| length_error(70, mass.len()))?;
+        let dq: &[f64; 37] = dq.try_into().map_err(|_| length_error(37, dq.len()))?;
+        let dqd: &[f64; 0] = dqd.try_into().map_err(|_| length_error(0, dqd.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 98] = out.try_into().map_err(|_| length_error(98, out_len))?;
+        let hq0 = 0.5 * kq * dq[0];
+        let hq1 = 0.5 * kq * dq[1];
+        let hq2 = 0.5 * kq * dq[2];
+        let hq3 = 0.5 * kq * dq[3];
+        let hq4 = 0.5 * kq * dq[4];
+        let hq5 = 0.5 * kq * dq[5];
+        let hq6 = 0.5 * kq * dq[6];
+        let hq7 = 0.5 * kq * dq[7];
+        let hq8 = 0.5 * kq * dq[8];
+        let hq9 = 0.5 * kq * dq[9];
+        let hq10 = 0.5 * kq * dq[10];
+        let hq11 = 0.5 * kq * dq[11];
+        let hq12 = 0.5 * kq * dq[12];
+        let hq13 = 0.5 * kq * dq[13];
+        let hq14 = 0.5 * kq * dq[14];
+        let hq15 = 0.5 * kq * dq[15];
+        let hq16 = 0.5 * kq * dq[16];
+        let hq17 = 0.5 * kq * dq[17];
+        let hq18 = 0.5 * kq * dq[18];
+        let hq19 = 0.5 * kq * dq[19];
+        let hq20 = 0.5 * kq * dq[20];
+        let hq21 = 0.5 * kq * dq[21];
+        let hq22 = 0.5 * kq * dq[22];
+        let hq23 = 0.5 * kq * dq[23];
+        let hq24 = 0.5 * kq * dq[24];
+        let hq25 = 0.5 * kq * dq[25];
+        let hq26 = 0.5 * kq * dq[26];
+        let hq27 = 0.5 * kq * dq[27];
+        let hq28 = 0.5 * kq * dq[28];
+        let hq29 = 0.5 * kq * dq[29];
+        let hq30 = 0.5 * kq * dq[30];
+        let hq31 = 0.5 * kq * dq[31];
+        let hq32 = 0.5 * kq * dq[32];
+        let hq33 = 0.5 * kq * dq[33];
+        let hq34 = 0.5 * kq * dq[34];
+        let hq35 = 0.5 * kq * dq[35];
+        let hq36 = 0.5 * kq * dq[36];
+        out[0] = c * mass[0];
+        out[1] = c * mass[1];
+        out[2] = c * mass[2];
+        out[3] = c * mass[3];
+        out[4] = 0.0 - hq0;
+        out[5] = c * mass[4];
+        out[6] = 0.0 - hq0;
+        out[7] = c * mass[5];
+        out[8] = c * mass[6];
+        out[9] = c * mass[7];
+        out[10] = c * mass[8];
+        out[11] = c * mass[9];
+        out[12] = c * mass[10];
+        out[13] = c * mass[11];
+        out[14] = c * mass[12];
+        out[15] = c * mass[13];
+        out[16] = c * mass[14];
+        out[17] = c * mass[15];
+        out[18] = c * mass[16];
+        out[19] = c * mass[17];
+        out[20] = c * mass[18];
+        out[21] = c * mass[19];
+        out[22] = c * mass[20] - hq1 - hq1;
+        out[23] = 0.0 - hq2 - hq7;
+        out[24] = 0.0 - hq3 - hq13;
+        out[25] = 0.0 - hq4 - hq19;
+        out[26] = 0.0 - hq5 - hq25;
+        out[27] = 0.0 - hq6 - hq31;
+        out[28] = 0.0 - hq2 - hq7;
+        out[29] = c * mass[21] - hq8 - hq8;
+        out[30] = 0.0 - hq9 - hq14;
+        out[31] = 0.0 - hq10 - hq20;
+        out[32] = 0.0 - hq11 - hq26;
+        out[33] = 0.0 - hq12 - hq32;
+        out[34] = 0.0 - hq3 - hq13;
+        out[35] = 0.0 - hq9 - hq14;
+        out[36] = c * mass[22] - hq15 - hq15;
+        out[37] = 0.0 - hq16 - hq21;
+        out[38] = 0.0 - hq17 - hq27;
+        out[39] = 0.0 - hq18 - hq33;
+        out[40] = 0.0 - hq4 - hq19;
+        out[41] = 0.0 - hq10 - hq20;
+        out[42] = 0.0 - hq16 - hq21;
+        out[43] = c * mass[23] - hq22 - hq22;
+        out[44] = 0.0 - hq23 - hq28;
+        out[45] = c * mass[24] - hq24 - hq34;
+        out[46] = 0.0 - hq5 - hq25;
+        out[47] = 0.0 - hq11 - hq26;
+        out[48] = 0.0 - hq17 - hq27;
+        out[49] = 0.0 - hq23 - hq28;
+        out[50] = c * mass[25] - hq29 - hq29;
+        out[51] = c * mass[26] - hq30 - hq35;
+        out[52] = 0.0 - hq6 - hq31;
+        out[53] = 0.0 - hq12 - hq32;
+        out[54] = 0.0 - hq18 - hq33;
+        out[55] = c * mass[27] - hq24 - hq34;
+        out[56] = c * mass[28] - hq30 - hq35;
+        out[57] = c * mass[29] - hq36 - hq36;
+        out[58] = c * mass[30];
+        out[59] = c * mass[31];
+        out[60] = c * mass[32];
+        out[61] = c * mass[33];
+        out[62] = c * mass[34];
+        out[63] = c * mass[35];
+        out[64] = c * mass[36];
+        out[65] = c * mass[37];
+        out[66] = c * mass[38];
+        out[67] = c * mass[39];
+        out[68] = c * mass[40];
+        out[69] = c * mass[41];
+        out[70] = c * mass[42];
+        out[71] = c * mass[43];
+        out[72] = c * mass[44];
+        out[73] = c * mass[45];
+        out[74] = c * mass[46];
+        out[75] = c * mass[47];
+        out[76] = c * mass[48];
+        out[77] = c * mass[49];
+        out[78] = c * mass[50];
+        out[79] = c * mass[51];
+        out[80] = c * mass[52];
+        out[81] = c * mass[53];
+        out[82] = c * mass[54];
+        out[83] = c * mass[55];
+        out[84] = c * mass[56];
+        out[85] = c * mass[57];
+        out[86] = c * mass[58];
+        out[87] = c * mass[59];
+        out[88] = c * mass[60];
+        out[89] = c * mass[61];
+        out[90] = c * mass[62];
+        out[91] = c * mass[63];
+        out[92] = c * mass[64];
+        out[93] = c * mass[65];
+        out[94] = c * mass[66];
+        out[95] = c * mass[67];
+        out[96] = c * mass[68];
+        out[97] = c * mass[69];
+        Ok(())
+    }
     fn kkt_transpose_times(
         phi_q: &[f64],
         y: &[f64],
@@ -46737,6 +46901,7 @@ pub mod reduced {
                 mass_cols: &MASS_COLS,
                 mass_times: kkt_mass_times,
                 kinetic_energy: kkt_kinetic_energy,
+                loads: None,
             },
         ];
         #[cfg(target_arch = "x86_64")]

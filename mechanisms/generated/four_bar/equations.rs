@@ -8484,6 +8484,7 @@ pub mod exact {
             mass_cols: &MASS_COLS,
             mass_times: kkt_mass_times,
             kinetic_energy: kkt_kinetic_energy,
+            loads: None,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -14673,6 +14674,7 @@ pub mod reduced {
                 mass_cols: &MASS_COLS,
                 mass_times: kkt_mass_times,
                 kinetic_energy: kkt_kinetic_energy,
+                loads: None,
             },
         ];
         #[cfg(target_arch = "x86_64")]

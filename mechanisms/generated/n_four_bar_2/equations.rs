@@ -12737,6 +12737,7 @@ pub mod exact {
             mass_cols: &MASS_COLS,
             mass_times: kkt_mass_times,
             kinetic_energy: kkt_kinetic_energy,
+            loads: None,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -22673,6 +22674,7 @@ pub mod reduced {
                 mass_cols: &MASS_COLS,
                 mass_times: kkt_mass_times,
                 kinetic_energy: kkt_kinetic_energy,
+                loads: None,
             },
         ];
         #[cfg(target_arch = "x86_64")]

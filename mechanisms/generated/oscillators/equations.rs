@@ -1421,6 +1421,7 @@ pub mod exact {
             mass_cols: &MASS_COLS,
             mass_times: kkt_mass_times,
             kinetic_energy: kkt_kinetic_energy,
+            loads: None,
         },
         KktKernels {
             pattern: 0xc64715c39133be24,
@@ -1435,6 +1436,15 @@ pub mod exact {
             mass_cols: &MASS_COLS,
             mass_times: kkt_mass_times,
             kinetic_energy: kkt_kinetic_energy,
+            loads: Some(symbody_runtime::kkt::LoadsKernel {
+                mass_rows: &MASS_ROWS,
+                mass_cols: &MASS_COLS,
+                force_q_rows: &FORCE_Q_ROWS,
+                force_q_cols: &FORCE_Q_COLS,
+                force_qd_rows: &FORCE_QD_ROWS,
+                force_qd_cols: &FORCE_QD_COLS,
+                assemble: kkt_assemble_loads,
+            }),
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -2983,6 +2993,119 @@ pub mod exact {
         x[11] = v189;
         x[12] = v186;
         x[13] = v184;
+        Ok(())
+    }
+    #[allow(unused_variables, clippy::too_many_arguments)]
+    fn kkt_assemble_loads(
+        mass: &[f64],
+        c: f64,
+        dq: &[f64],
+        kq: f64,
+        dqd: &[f64],
+        kqd: f64,
+        out: &mut [f64],
+    ) -> Result<(), KktError> {
+        let mass: &[f64; 38] = mass
+            .try_into()
+            .map_err(|_| length_error(38, mass.len()))?;
+        let dq: &[f64; 25] = dq.try_into().map_err(|_| length_error(25, dq.len()))?;
+        let dqd: &[f64; 25] = dqd.try_into().map_err(|_| length_error(25, dqd.len()))?;
+        let out_len = out.len();
+        let out: &mut [f64; 44] = out.try_into().map_err(|_| length_error(44, out_len))?;
+        let hq0 = 0.5 * kq * dq[0];
+        let hq1 = 0.5 * kq * dq[1];
+        let hq2 = 0.5 * kq * dq[2];
+        let hq3 = 0.5 * kq * dq[3];
+        let hq4 = 0.5 * kq * dq[4];
+        let hq5 = 0.5 * kq * dq[5];
+        let hq6 = 0.5 * kq * dq[6];
+        let hq7 = 0.5 * kq * dq[7];
+        let hq8 = 0.5 * kq * dq[8];
+        let hq9 = 0.5 * kq * dq[9];
+        let hq10 = 0.5 * kq * dq[10];
+        let hq11 = 0.5 * kq * dq[11];
+        let hq12 = 0.5 * kq * dq[12];
+        let hq13 = 0.5 * kq * dq[13];
+        let hq14 = 0.5 * kq * dq[14];
+        let hq15 = 0.5 * kq * dq[15];
+        let hq16 = 0.5 * kq * dq[16];
+        let hq17 = 0.5 * kq * dq[17];
+        let hq18 = 0.5 * kq * dq[18];
+        let hq19 = 0.5 * kq * dq[19];
+        let hq20 = 0.5 * kq * dq[20];
+        let hq21 = 0.5 * kq * dq[21];
+        let hq22 = 0.5 * kq * dq[22];
+        let hq23 = 0.5 * kq * dq[23];
+        let hq24 = 0.5 * kq * dq[24];
+        let hd0 = 0.5 * kqd * dqd[0];
+        let hd1 = 0.5 * kqd * dqd[1];
+        let hd2 = 0.5 * kqd * dqd[2];
+        let hd3 = 0.5 * kqd * dqd[3];
+        let hd4 = 0.5 * kqd * dqd[4];
+        let hd5 = 0.5 * kqd * dqd[5];
+        let hd6 = 0.5 * kqd * dqd[6];
+        let hd7 = 0.5 * kqd * dqd[7];
+        let hd8 = 0.5 * kqd * dqd[8];
+        let hd9 = 0.5 * kqd * dqd[9];
+        let hd10 = 0.5 * kqd * dqd[10];
+        let hd11 = 0.5 * kqd * dqd[11];
+        let hd12 = 0.5 * kqd * dqd[12];
+        let hd13 = 0.5 * kqd * dqd[13];
+        let hd14 = 0.5 * kqd * dqd[14];
+        let hd15 = 0.5 * kqd * dqd[15];
+        let hd16 = 0.5 * kqd * dqd[16];
+        let hd17 = 0.5 * kqd * dqd[17];
+        let hd18 = 0.5 * kqd * dqd[18];
+        let hd19 = 0.5 * kqd * dqd[19];
+        let hd20 = 0.5 * kqd * dqd[20];
+        let hd21 = 0.5 * kqd * dqd[21];
+        let hd22 = 0.5 * kqd * dqd[22];
+        let hd23 = 0.5 * kqd * dqd[23];
+        let hd24 = 0.5 * kqd * dqd[24];
+        out[0] = c * mass[0] - hq0 - hq0 - hd0 - hd0;
+        out[1] = 0.0 - hq1 - hq3 - hd1 - hd3;
+        out[2] = 0.0 - hq2 - hq6 - hd2 - hd6;
+        out[3] = 0.0 - hq1 - hq3 - hd1 - hd3;
+        out[4] = c * mass[1] - hq4 - hq4 - hd4 - hd4;
+        out[5] = 0.0 - hq5 - hq7 - hd5 - hd7;
+        out[6] = 0.0 - hq2 - hq6 - hd2 - hd6;
+        out[7] = 0.0 - hq5 - hq7 - hd5 - hd7;
+        out[8] = c * mass[2] - hq8 - hq8 - hd8 - hd8;
+        out[9] = c * mass[3];
+        out[10] = c * mass[4];
+        out[11] = c * mass[5];
+        out[12] = c * mass[6];
+        out[13] = c * mass[7];
+        out[14] = c * mass[8];
+        out[15] = c * mass[9];
+        out[16] = c * mass[10];
+        out[17] = c * mass[11];
+        out[18] = c * mass[12];
+        out[19] = c * mass[13];
+        out[20] = c * mass[14];
+        out[21] = c * mass[15];
+        out[22] = c * mass[16];
+        out[23] = c * mass[17];
+        out[24] = c * mass[18];
+        out[25] = c * mass[19];
+        out[26] = c * mass[20];
+        out[27] = c * mass[21];
+        out[28] = c * mass[22] - hq9 - hq9 - hd9 - hd9;
+        out[29] = c * mass[23] - hq10 - hq13 - hd10 - hd13;
+        out[30] = c * mass[24] - hq11 - hq17 - hd11 - hd17;
+        out[31] = c * mass[25] - hq12 - hq21 - hd12 - hd21;
+        out[32] = c * mass[26] - hq10 - hq13 - hd10 - hd13;
+        out[33] = c * mass[27] - hq14 - hq14 - hd14 - hd14;
+        out[34] = c * mass[28] - hq15 - hq18 - hd15 - hd18;
+        out[35] = c * mass[29] - hq16 - hq22 - hd16 - hd22;
+        out[36] = c * mass[30] - hq11 - hq17 - hd11 - hd17;
+        out[37] = c * mass[31] - hq15 - hq18 - hd15 - hd18;
+        out[38] = c * mass[32] - hq19 - hq19 - hd19 - hd19;
+        out[39] = c * mass[33] - hq20 - hq23 - hd20 - hd23;
+        out[40] = c * mass[34] - hq12 - hq21 - hd12 - hd21;
+        out[41] = c * mass[35] - hq16 - hq22 - hd16 - hd22;
+        out[42] = c * mass[36] - hq20 - hq23 - hd20 - hd23;
+        out[43] = c * mass[37] - hq24 - hq24 - hd24 - hd24;
         Ok(())
     }
     fn kkt_transpose_times(
@@ -7752,6 +7875,7 @@ pub mod reduced {
                 mass_cols: &MASS_COLS,
                 mass_times: kkt_mass_times,
                 kinetic_energy: kkt_kinetic_energy,
+                loads: None,
             },
         ];
         #[cfg(target_arch = "x86_64")]

@@ -21808,6 +21808,7 @@ pub mod exact {
             mass_cols: &MASS_COLS,
             mass_times: kkt_mass_times,
             kinetic_energy: kkt_kinetic_energy,
+            loads: None,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -44054,6 +44055,7 @@ pub mod paper {
             mass_cols: &MASS_COLS,
             mass_times: kkt_mass_times,
             kinetic_energy: kkt_kinetic_energy,
+            loads: None,
         },
     ];
     #[cfg(target_arch = "x86_64")]
@@ -65070,6 +65072,7 @@ pub mod reduced {
                 mass_cols: &MASS_COLS,
                 mass_times: kkt_mass_times,
                 kinetic_energy: kkt_kinetic_energy,
+                loads: None,
             },
         ];
         #[cfg(target_arch = "x86_64")]
@@ -79371,6 +79374,7 @@ pub mod reduced {
                 mass_cols: &MASS_COLS,
                 mass_times: kkt_mass_times,
                 kinetic_energy: kkt_kinetic_energy,
+                loads: None,
             },
         ];
         #[cfg(target_arch = "x86_64")]

@@ -43,6 +43,41 @@ pub type MassTimesKernel = fn(&[f64], &[f64], &mut [f64]) -> Result<(), KktError
 /// A generated `½ q̇ᵀ M q̇` from M's nonzeros: `(mass, qd)`.
 pub type KineticEnergyKernel = fn(&[f64], &[f64]) -> Result<f64, KktError>;
 
+/// A generated `c·M − kq·sym(∂Q/∂q) − kqd·sym(∂Q/∂q̇)` on the union pattern:
+/// `(mass, c, dq, kq, dqd, kqd, out)`.
+pub type AssembleKernel =
+    fn(&[f64], f64, &[f64], f64, &[f64], f64, &mut [f64]) -> Result<(), KktError>;
+
+/// The generated assembly of the HHT iteration matrix's top-left block with the loads'
+/// stiffness and damping, and the patterns it was emitted for: the model's own statics,
+/// compared by address, since the slot each nonzero lands in depends on all three.
+#[derive(Clone, Copy)]
+pub struct LoadsKernel {
+    pub mass_rows: &'static [u32],
+    pub mass_cols: &'static [u32],
+    pub force_q_rows: &'static [u32],
+    pub force_q_cols: &'static [u32],
+    pub force_qd_rows: &'static [u32],
+    pub force_qd_cols: &'static [u32],
+    /// Each slot's value from `c·mᵢ` (or zero) less the halves of the load Jacobians'
+    /// entries that land there, in the order of the entries (as `LoadStiffness::assemble`'s
+    /// loop subtracts them).
+    pub assemble: AssembleKernel,
+}
+
+impl LoadsKernel {
+    /// Whether `info`'s mass and load patterns are the statics the kernel was emitted for.
+    pub fn emitted_for(&self, info: &crate::MechanismInfo) -> bool {
+        let same = |a: &[u32], b: &[u32]| std::ptr::eq(a, b);
+        same(self.mass_rows, info.mass_rows)
+            && same(self.mass_cols, info.mass_cols)
+            && same(self.force_q_rows, info.force_q_rows)
+            && same(self.force_q_cols, info.force_q_cols)
+            && same(self.force_qd_rows, info.force_qd_rows)
+            && same(self.force_qd_cols, info.force_qd_cols)
+    }
+}
+
 /// Factor and solve for one pattern, as the generator emits them. Not built by hand: the
 /// generated module of a mechanism fills [`MechanismInfo::kkt`](crate::MechanismInfo::kkt).
 #[derive(Clone, Copy)]
@@ -73,6 +108,9 @@ pub struct KktKernels {
     /// `½ q̇ᵀ M q̇`, the terms `q̇ᵣ·m·q̇꜀` summed in the order of the nonzeros (as
     /// `kinetic_energy`'s loop does).
     pub kinetic_energy: KineticEnergyKernel,
+    /// The loads' stiffness assembled into this pattern (the one with the loads' stiffness),
+    /// where the generator emitted it.
+    pub loads: Option<LoadsKernel>,
 }
 
 impl KktKernels {

@@ -25,8 +25,9 @@ mod schur;
 
 pub use dense::DenseKkt;
 pub use kernels::{
-    kernels_run_here, length_error, mass_pivot_error, FactorKernel, KineticEnergyKernel,
-    KktKernels, MassTimesKernel, Pivoting, SolveKernel, TimesKernel, TransposeKernel,
+    kernels_run_here, length_error, mass_pivot_error, AssembleKernel, FactorKernel,
+    KineticEnergyKernel, KktKernels, LoadsKernel, MassTimesKernel, Pivoting, SolveKernel,
+    TimesKernel, TransposeKernel,
 };
 pub use schur::{SchurKkt, SchurPlan};
 
