@@ -201,7 +201,6 @@ let out: &mut [f64; {m}] = out.try_into().map_err(|_| length_error({m}, out_len)
 {}
 Ok(())
 }}
-#[allow(clippy::assign_op_pattern)]
 fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {{
 let mass: &[f64; {nm}] = mass.try_into().map_err(|_| length_error({nm}, mass.len()))?;
 let v: &[f64; {n}] = v.try_into().map_err(|_| length_error({n}, v.len()))?;

@@ -37290,7 +37290,6 @@ pub mod exact {
             + phi_q[257] * x[39] + phi_q[258] * x[40] + phi_q[259] * x[41];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 70] = mass
             .try_into()
@@ -48352,7 +48351,6 @@ pub mod reduced {
                 + phi_q[63] * x[20];
             Ok(())
         }
-        #[allow(clippy::assign_op_pattern)]
         fn kkt_mass_times(
             mass: &[f64],
             v: &[f64],

@@ -17451,7 +17451,6 @@ pub mod exact {
             + phi_q[245] * x[34];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 95] = mass
             .try_into()

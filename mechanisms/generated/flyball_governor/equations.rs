@@ -24378,7 +24378,6 @@ pub mod exact {
             + phi_q[114] * x[21] + phi_q[115] * x[22] + phi_q[116] * x[23];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 40] = mass
             .try_into()

@@ -11026,7 +11026,6 @@ pub mod exact {
         out[20] = out[20] + phi_q[93] * x[3] + phi_q[94] * x[4] + phi_q[95] * x[5];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 30] = mass
             .try_into()
@@ -15302,7 +15301,6 @@ pub mod reduced {
             out[8] = out[8] + phi_q[24] * x[2];
             Ok(())
         }
-        #[allow(clippy::assign_op_pattern)]
         fn kkt_mass_times(
             mass: &[f64],
             v: &[f64],

@@ -16771,7 +16771,6 @@ pub mod exact {
             + phi_q[172] * x[27] + phi_q[173] * x[28] + phi_q[174] * x[29];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 50] = mass
             .try_into()
@@ -23668,7 +23667,6 @@ pub mod reduced {
                 + phi_q[43] * x[14];
             Ok(())
         }
-        #[allow(clippy::assign_op_pattern)]
         fn kkt_mass_times(
             mass: &[f64],
             v: &[f64],

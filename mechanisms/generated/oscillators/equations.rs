@@ -3168,7 +3168,6 @@ pub mod exact {
             + phi_q[32] * x[13];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 38] = mass
             .try_into()
@@ -8587,7 +8586,6 @@ pub mod reduced {
                 + phi_q[27] * x[8];
             Ok(())
         }
-        #[allow(clippy::assign_op_pattern)]
         fn kkt_mass_times(
             mass: &[f64],
             v: &[f64],

@@ -911,7 +911,6 @@ pub mod exact {
         out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[1] + phi_q[2] * x[2];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 10] = mass
             .try_into()
@@ -2280,7 +2279,6 @@ pub mod reduced {
             out[0] = out[0] + phi_q[0] * x[0] + phi_q[1] * x[1];
             Ok(())
         }
-        #[allow(clippy::assign_op_pattern)]
         fn kkt_mass_times(
             mass: &[f64],
             v: &[f64],

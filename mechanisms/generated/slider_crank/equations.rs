@@ -8095,7 +8095,6 @@ pub mod exact {
             + phi_q[108] * x[20];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 57] = mass
             .try_into()
@@ -18310,7 +18309,6 @@ pub mod reduced {
                 + phi_q[103] * x[17] + phi_q[104] * x[18];
             Ok(())
         }
-        #[allow(clippy::assign_op_pattern)]
         fn kkt_mass_times(
             mass: &[f64],
             v: &[f64],

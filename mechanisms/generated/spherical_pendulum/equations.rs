@@ -1630,7 +1630,6 @@ pub mod exact {
             + phi_q[18] * x[6];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 19] = mass
             .try_into()

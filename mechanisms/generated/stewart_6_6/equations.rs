@@ -32949,7 +32949,6 @@ pub mod exact {
             + phi_q[387] * x[75] + phi_q[388] * x[76] + phi_q[389] * x[77];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 130] = mass
             .try_into()
@@ -54070,7 +54069,6 @@ pub mod paper {
             + phi_q[387] * x[75] + phi_q[388] * x[76] + phi_q[389] * x[77];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 78] = mass
             .try_into()
@@ -74555,7 +74553,6 @@ pub mod reduced {
                 + phi_q[353] * x[59];
             Ok(())
         }
-        #[allow(clippy::assign_op_pattern)]
         fn kkt_mass_times(
             mass: &[f64],
             v: &[f64],
@@ -88169,7 +88166,6 @@ pub mod reduced {
                 + phi_q[353] * x[59];
             Ok(())
         }
-        #[allow(clippy::assign_op_pattern)]
         fn kkt_mass_times(
             mass: &[f64],
             v: &[f64],

@@ -73305,7 +73305,6 @@ pub mod exact {
             + phi_q[657] * x[90];
         Ok(())
     }
-    #[allow(clippy::assign_op_pattern)]
     fn kkt_mass_times(mass: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), KktError> {
         let mass: &[f64; 247] = mass
             .try_into()
