@@ -180,7 +180,10 @@ impl HhtBuilder {
 
     /// Keep one factorization across steps while convergence stays fast (default off:
     /// factor once per step). The matrix depends on `q` and, through the loads' stiffness
-    /// and damping, on `h`; a kept one is refreshed as soon as convergence slows.
+    /// and damping, on `h`; a kept one is refreshed as soon as convergence slows. Projected
+    /// velocities (`project_velocities`, and step control, which always projects) need a
+    /// factorization of the step they end: a step that solved with a kept one refactors at
+    /// its accepted state, which the next step then keeps.
     pub fn reuse_factorization(mut self, reuse: bool) -> Self {
         self.reuse_factorization = reuse;
         self
@@ -418,6 +421,7 @@ impl HhtBuilder {
             h: self.step,
             successes_since_cut: 0,
             need_factor: true,
+            factored_at: 0,
             rate: f64::NAN,
             rate_age: 0,
             t: self.t0,
@@ -534,6 +538,9 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     h: f64,
     successes_since_cut: usize,
     need_factor: bool,
+    /// `stats.steps` when the factorization was made: the projection of a step's velocities
+    /// needs one made in that step (see [`Integrator::project_velocity`]).
+    factored_at: usize,
     /// Newton's contraction rate as last measured (NaN: none to go by, `rate_test`), and
     /// the steps accepted on it since.
     rate: f64,
@@ -579,6 +586,15 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     stiffness: Option<LoadStiffness>,
     stats: Stats,
     first_warning: Option<EulerWarning>,
+}
+
+/// Where [`Integrator::factor`] evaluates the loads' Jacobians.
+#[derive(Debug, Clone, Copy)]
+enum Iterate {
+    /// The step's iterate `q1, qd1`.
+    Step,
+    /// The accepted state `q, qd`.
+    Accepted,
 }
 
 /// The weighted local errors of one step (`Integrator::local_error`).
@@ -748,9 +764,17 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         self.stats.evaluations += 1;
     }
 
-    /// `q̇ ← q̇ + Δ` with `[cM Φqᵀ; Φq 0][Δ; μ] = [0; −(Φq q̇ + Φt)]`, through the last
-    /// factorization (at, or one Newton iteration from, the accepted state).
+    /// `q̇ ← q̇ + Δ` with `[W Φqᵀ; Φq 0][Δ; μ] = [0; −(Φq q̇ + Φt)]`, through Newton's matrix
+    /// of this step (W = cM, less the loads' stiffness and damping when they are in it), at
+    /// the accepted state or a Newton iteration from it. The projection's metric is W: one
+    /// kept from an earlier step ([`HhtBuilder::reuse_factorization`]) is refactored at the
+    /// accepted state first, because W's damping rotates with the bodies (A05's governor: a
+    /// metric kept over many steps moved the slider 5e-4 m off, 55 times the tolerance).
     fn project_velocity(&mut self, t: f64) -> Result<(), Error> {
+        if self.factored_at != self.stats.steps {
+            self.factor(self.h_prev, t, Iterate::Accepted)
+                .map_err(|e| e.to_error(self.info, t))?;
+        }
         self.mech.phi_t(&self.q, t, &mut self.res2);
         phi_q_times_add(self.info, &self.phi_q, &self.qd, &mut self.res2);
         for r in self.res2.iter_mut() {
@@ -1094,34 +1118,7 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             }
             let fresh = self.need_factor || fresh_every_iteration;
             if fresh {
-                let factored = match &mut self.stiffness {
-                    None => self.kkt.factor(&self.mass, c, &self.phi_q),
-                    Some(st) => {
-                        self.mech
-                            .force_jacobian(&self.q1, &self.qd1, t1, &mut st.dq, &mut st.dqd);
-                        // A load whose symmetric stiffness has a negative part (a spring's
-                        // geometric term) can outweigh M in some direction: A05's governor
-                        // beyond h ≈ 1e-3 s, whose rods have 5e-6 kg·m² about their own
-                        // axis. The damping part of a passive load is positive semi-definite,
-                        // and it is the one that limits Newton (γh·c/m ≫ βh²·k/m), so it is
-                        // kept when the stiffness has to go; M alone is the last resort.
-                        let mut result = Err(KktError::NotFactored);
-                        for (kq, kqd) in [(beta * h * h, gamma * h), (0.0, gamma * h), (0.0, 0.0)] {
-                            let a = st.assemble(&self.mass, c, kq, kqd);
-                            result = self.kkt.factor(a, 1.0, &self.phi_q);
-                            if !matches!(result, Err(KktError::MassNotPositiveDefinite { .. })) {
-                                break;
-                            }
-                        }
-                        result
-                    }
-                };
-                factored.map_err(|e| {
-                    self.need_factor = true;
-                    Failure::Kkt(e)
-                })?;
-                self.stats.factorizations += 1;
-                self.need_factor = false;
+                self.factor(h, t1, Iterate::Step).map_err(Failure::Kkt)?;
             }
             self.kkt
                 .solve(&self.res1, &self.res2, &mut self.da, &mut self.dl)
@@ -1203,6 +1200,43 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     /// The roundoff floors of the increments of q̈ and of Φqᵀλ through the current
     /// factorization of a step of size `h`, at the last iterate (`NoiseProbe`; it keeps them
     /// coordinate by coordinate for the local error estimate, `noise_measured`).
+    /// Factors Newton's matrix with the evaluation buffers (Φq, M) and, with the loads'
+    /// stiffness, their Jacobians at `at` (time `t`) for a step of size `h`.
+    fn factor(&mut self, h: f64, t: f64, at: Iterate) -> Result<(), KktError> {
+        let (beta, gamma) = (self.beta, self.gamma);
+        let c = 1.0 / (1.0 + self.settings.alpha);
+        let factored = match &mut self.stiffness {
+            None => self.kkt.factor(&self.mass, c, &self.phi_q),
+            Some(st) => {
+                let (q, qd) = match at {
+                    Iterate::Step => (&self.q1, &self.qd1),
+                    Iterate::Accepted => (&self.q, &self.qd),
+                };
+                self.mech.force_jacobian(q, qd, t, &mut st.dq, &mut st.dqd);
+                // A load whose symmetric stiffness has a negative part (a spring's
+                // geometric term) can outweigh M in some direction: A05's governor beyond
+                // h ≈ 1e-3 s, whose rods have 5e-6 kg·m² about their own axis. The damping
+                // part of a passive load is positive semi-definite, and it is the one that
+                // limits Newton (γh·c/m ≫ βh²·k/m), so it is kept when the stiffness has to
+                // go; M alone is the last resort.
+                let mut result = Err(KktError::NotFactored);
+                for (kq, kqd) in [(beta * h * h, gamma * h), (0.0, gamma * h), (0.0, 0.0)] {
+                    let a = st.assemble(&self.mass, c, kq, kqd);
+                    result = self.kkt.factor(a, 1.0, &self.phi_q);
+                    if !matches!(result, Err(KktError::MassNotPositiveDefinite { .. })) {
+                        break;
+                    }
+                }
+                result
+            }
+        };
+        self.need_factor = factored.is_err();
+        factored?;
+        self.stats.factorizations += 1;
+        self.factored_at = self.stats.steps;
+        Ok(())
+    }
+
     fn measure_noise(&mut self, h: f64) -> Result<(f64, f64), KktError> {
         let c = 1.0 / (1.0 + self.settings.alpha);
         // |q|/(βh²): the right-hand side of a unit error in Φ.

@@ -42,6 +42,7 @@ const SETTINGS: Settings = Settings {
     // α < 0 damps the swing: over 845 periods even α = −0.01 costs more than the tolerance.
     alpha: 0.0,
     tolerances: None,
+    reuse_factorization: false,
     planar: true,
 };
 

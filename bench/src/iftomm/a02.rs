@@ -75,6 +75,7 @@ const SETTINGS: Settings = Settings {
     step: 4e-4,
     alpha: 0.0,
     tolerances: None,
+    reuse_factorization: false,
     planar: false,
 };
 

@@ -54,6 +54,7 @@ const SETTINGS: Settings = Settings {
     step: 2.5e-6,
     alpha: 0.0,
     tolerances: Some((1e-4, 1e-4)),
+    reuse_factorization: false,
     planar: true,
 };
 

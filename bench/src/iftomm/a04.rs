@@ -40,6 +40,7 @@ const SETTINGS: Settings = Settings {
     step: 1e-3,
     alpha: 0.0,
     tolerances: None,
+    reuse_factorization: false,
     planar: false,
 };
 

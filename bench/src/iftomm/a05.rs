@@ -36,6 +36,7 @@ const SETTINGS: Settings = Settings {
     step: 4.0e-4,
     alpha: 0.0,
     tolerances: None,
+    reuse_factorization: false,
     planar: false,
 };
 

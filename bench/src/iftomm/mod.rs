@@ -114,6 +114,8 @@ pub struct Settings {
     pub alpha: f64,
     /// Step-size control `(rtol, atol)` (`HhtBuilder::tolerances`); `None`: fixed step.
     pub tolerances: Option<(f64, f64)>,
+    /// Keep Newton's factorization across steps (`HhtBuilder::reuse_factorization`).
+    pub reuse_factorization: bool,
     /// Integrate the mechanism's planar model (x, y, γ per body; its file says
     /// `planar = true`) instead of the spatial one; outputs are read on the spatial model.
     pub planar: bool,
@@ -127,7 +129,8 @@ impl Settings {
         let builder = HhtBuilder::new()
             .step(self.step)
             .alpha(self.alpha)
-            .project_velocities(true);
+            .project_velocities(true)
+            .reuse_factorization(self.reuse_factorization);
         match self.tolerances {
             Some((rtol, atol)) => builder.tolerances(rtol, atol),
             None => builder,
