@@ -179,8 +179,24 @@ fn the_first_order_spin_error_comes_from_the_alpha_term() {
     // directions the constraints leave free (a leg's spin) it has a component O(α h |λ|),
     // a spurious torque: the spin error is proportional to α·h. With α = 0 (trapezoidal)
     // the spin is second order; with α = −0.01 the error is five times smaller than with
-    // α = −0.05.
+    // α = −0.05. Newton solves far below its default tolerances here: at α = 0 the spin's
+    // error at 1 ms (≈ 3e-8 rad/s) is below what Newton's default relative 1e-6 on q̈ may
+    // leave in a free direction over 6 000 steps (measured: 6.8e-8 when most steps stop
+    // after one increment).
     let out = 0.04;
+    let run = |h: f64, alpha: f64, out: f64| {
+        simulate(
+            &symbody_benchmark_mechanisms::REGISTRY,
+            &Options {
+                step: h,
+                alpha,
+                output_step: out,
+                newton_tolerance: Some(1e-10),
+                ..Options::default()
+            },
+        )
+        .unwrap_or_else(|e| panic!("simulation failed: {e}"))
+    };
     let spin_err = |alpha: f64, h: f64, reference: &Run| errors(&run(h, alpha, out), reference).1;
     let ref05 = run(1e-4, -0.05, out);
     let ref01 = run(1e-4, -0.01, out);

@@ -334,6 +334,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                         Some(ReactionsArg::Integrator) => Reactions::Integrator,
                         Some(ReactionsArg::Recovered) | None => Reactions::Recovered,
                     },
+                    newton_tolerance: defaults.newton_tolerance,
                 };
                 let out = files.out.clone().unwrap_or_else(|| default_out("paper"));
                 simulate(registry, &opts, &out, !files.no_plots, files.html)

@@ -35,6 +35,7 @@
 //! minimum step the integrator returns an error and keeps the last accepted state.
 
 use crate::error::{check_len, ConstraintRow, Error, NewtonIncrement};
+use crate::hht_predictor::Predictor;
 use crate::kinematics::{
     inf_norm, largest_row, mass_times, phi_q_times_add, phi_q_transpose_times, InitialVelocity,
     KinematicSettings, Kinematics,
@@ -430,8 +431,7 @@ impl HhtBuilder {
             qdd,
             lambda,
             r_prev: vec![0.0; n],
-            qdd_prev: vec![0.0; n],
-            lambda_prev: vec![0.0; m],
+            predictor: Predictor::new(n, m, self.alpha),
             h_prev: 0.0,
             ratio_prev: 0.0,
             phi_q_state: vec![0.0; info.phi_q_nnz()],
@@ -553,9 +553,9 @@ pub struct Integrator<M: Mechanism, K: KktSolver = SchurKkt> {
     lambda: Vec<f64>,
     /// (Φqᵀλ − Q) at the accepted state: the αterm of the next step.
     r_prev: Vec<f64>,
-    /// q̈ and λ one step back, and that step's size (0 before the first step).
-    qdd_prev: Vec<f64>,
-    lambda_prev: Vec<f64>,
+    /// q̈ and λ of earlier steps, for the next step's first guess.
+    predictor: Predictor,
+    /// The last accepted step's size (0 before the first step).
     h_prev: f64,
     /// `LocalError::ratio` of the last accepted step (0: none yet), for the predictive
     /// controller.
@@ -990,10 +990,11 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
             self.project_velocity(t1)?;
         }
         // The accepted values become current, the current ones the predictor's history.
-        std::mem::swap(&mut self.qdd_prev, &mut self.qdd1);
-        std::mem::swap(&mut self.qdd, &mut self.qdd_prev);
-        std::mem::swap(&mut self.lambda_prev, &mut self.lambda1);
-        std::mem::swap(&mut self.lambda, &mut self.lambda_prev);
+        self.predictor.push(
+            h,
+            (&mut self.qdd, &mut self.qdd1),
+            (&mut self.lambda, &mut self.lambda1),
+        );
         // The last evaluation was at the accepted state (see `attempt`).
         self.phi_q_state.copy_from_slice(&self.phi_q);
         self.mass_state.copy_from_slice(&self.mass);
@@ -1028,25 +1029,11 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         let (alpha, beta, gamma) = (self.settings.alpha, self.beta, self.gamma);
         let c = 1.0 / (1.0 + alpha);
         let inv_bh2 = 1.0 / (beta * h * h);
-        // Linear extrapolation of q̈ and λ from the last two accepted steps: the predictor
-        // error is O(h²) instead of O(h), which saves one Newton iteration per step.
-        if self.h_prev > 0.0 {
-            let r = h / self.h_prev;
-            for ((a1, &a), &ap) in self.qdd1.iter_mut().zip(&self.qdd).zip(&self.qdd_prev) {
-                *a1 = a + r * (a - ap);
-            }
-            for ((l1, &l), &lp) in self
-                .lambda1
-                .iter_mut()
-                .zip(&self.lambda)
-                .zip(&self.lambda_prev)
-            {
-                *l1 = l + r * (l - lp);
-            }
-        } else {
-            self.qdd1.copy_from_slice(&self.qdd);
-            self.lambda1.copy_from_slice(&self.lambda);
-        }
+        self.predictor.predict(
+            h,
+            (&self.qdd, &mut self.qdd1),
+            (&self.lambda, &mut self.lambda1),
+        );
         let mut last_err = f64::INFINITY;
         // The rate test's estimate of the error left in the current iterate (`rate_test`).
         let mut left = f64::INFINITY;
@@ -1257,8 +1244,8 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
     }
 
     /// Weighted RMS norms of the local error estimates of the step of size `h` just
-    /// converged (`q1, qd1, qdd1` from the accepted `q, qd, qdd`; `qdd_prev` one step
-    /// further back, over `h_prev`), positions and velocities apart, with the weights
+    /// converged (`q1, qd1, qdd1` from the accepted `q, qd, qdd`; the predictor's q̈ one
+    /// step further back, over `h_prev`), positions and velocities apart, with the weights
     /// `atol + rtol·max(|xₙ|, |xₙ₊₁|)` of `tol = (rtol, atol)`. Multipliers are not judged.
     ///
     /// Both are built on the change of the step's mean acceleration `ā = (q̇ₙ₊₁ − q̇ₙ)/h =
@@ -1296,10 +1283,11 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         let cv = 0.5 * h;
         let (mut sq, mut sv) = (0.0, 0.0);
         let mut largest = (0.0, 0, false);
+        let qdd_prev = self.predictor.previous_qdd();
         for i in 0..self.q.len() {
             let d1 = self.qdd1[i] - self.qdd[i];
             let dmean = if hp > 0.0 {
-                (1.0 - gamma) * (self.qdd[i] - self.qdd_prev[i]) + gamma * d1
+                (1.0 - gamma) * (self.qdd[i] - qdd_prev[i]) + gamma * d1
             } else {
                 d1
             };

@@ -31,6 +31,7 @@ pub mod energy;
 pub mod error;
 pub mod fk;
 pub mod hht;
+mod hht_predictor;
 pub mod interpreted;
 pub mod kinematic_path;
 pub mod kinematics;

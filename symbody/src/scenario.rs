@@ -27,6 +27,9 @@ pub struct Options {
     pub output_step: f64,
     /// Where the recorded joint and actuator forces come from.
     pub reactions: Reactions,
+    /// Newton's tolerance on q̈ and Φqᵀλ (relative and absolute) and on |Φ| (`None`: the
+    /// integrator's defaults), as `generic::Options::newton_tolerance`.
+    pub newton_tolerance: Option<f64>,
 }
 
 /// Source of the multipliers λ behind the recorded forces.
@@ -52,6 +55,7 @@ impl Default for Options {
             alpha: -0.05,
             output_step: 0.01,
             reactions: Reactions::Recovered,
+            newton_tolerance: None,
         }
     }
 }
@@ -63,6 +67,14 @@ fn hht(opts: &Options) -> HhtBuilder {
         .step(opts.step)
         // Allow step cuts well below a step chosen smaller than the default minimum.
         .min_step((opts.step * 1e-4).min(1e-7));
+    let builder = match opts.newton_tolerance {
+        Some(tol) => builder
+            .rel_tol(tol)
+            .abs_tol_acceleration(tol)
+            .abs_tol_lambda(tol)
+            .constraint_tol(tol),
+        None => builder,
+    };
     match opts.tolerances {
         Some((rtol, atol)) => builder.tolerances(rtol, atol),
         None => builder,

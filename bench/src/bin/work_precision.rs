@@ -85,6 +85,7 @@ fn options(f: Formulation, step: f64, alpha: f64, reactions: Reactions) -> Optio
         alpha,
         output_step: OUTPUT_STEP,
         tolerances: None,
+        newton_tolerance: None,
     }
 }
 

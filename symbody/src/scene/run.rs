@@ -223,6 +223,7 @@ fn run_paper(
         alpha: scene.alpha,
         output_step: scene.output_step,
         reactions: Reactions::Recovered,
+        newton_tolerance: None,
     };
     let integrate = AtomicBool::new(scene.path == PathRequest::Integrate);
     let reduced = generic::reduced_model(entry, mech, scene.reduce);
