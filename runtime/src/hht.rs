@@ -1283,11 +1283,10 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         let cv = 0.5 * h;
         let (mut sq, mut sv) = (0.0, 0.0);
         let mut largest = (0.0, 0, false);
-        let qdd_prev = self.predictor.previous_qdd();
         for i in 0..self.q.len() {
             let d1 = self.qdd1[i] - self.qdd[i];
             let dmean = if hp > 0.0 {
-                (1.0 - gamma) * (self.qdd[i] - qdd_prev[i]) + gamma * d1
+                (1.0 - gamma) * (self.qdd[i] - self.predictor.previous_qdd()[i]) + gamma * d1
             } else {
                 d1
             };
