@@ -1184,9 +1184,6 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
 }
 
 impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
-    /// The roundoff floors of the increments of q̈ and of Φqᵀλ through the current
-    /// factorization of a step of size `h`, at the last iterate (`NoiseProbe`; it keeps them
-    /// coordinate by coordinate for the local error estimate, `noise_measured`).
     /// Factors Newton's matrix with the evaluation buffers (Φq, M) and, with the loads'
     /// stiffness, their Jacobians at `at` (time `t`) for a step of size `h`.
     fn factor(&mut self, h: f64, t: f64, at: Iterate) -> Result<(), KktError> {
@@ -1224,6 +1221,9 @@ impl<M: Mechanism, K: KktSolver> Integrator<M, K> {
         Ok(())
     }
 
+    /// The roundoff floors of the increments of q̈ and of Φqᵀλ through the current
+    /// factorization of a step of size `h`, at the last iterate (`NoiseProbe`; it keeps them
+    /// coordinate by coordinate for the local error estimate, `noise_measured`).
     fn measure_noise(&mut self, h: f64) -> Result<(f64, f64), KktError> {
         let c = 1.0 / (1.0 + self.settings.alpha);
         // |q|/(βh²): the right-hand side of a unit error in Φ.
