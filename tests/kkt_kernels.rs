@@ -224,8 +224,7 @@ fn loads_kernel_matches(
     let kernel = info
         .kkt
         .iter()
-        .filter_map(|k| k.loads)
-        .find(|l| l.emitted_for(info))
+        .find_map(|k| k.loads_for(info))
         .unwrap_or_else(|| panic!("{name}: no loads assembly for its own patterns"));
     let dq: Vec<f64> = info
         .force_q_rows

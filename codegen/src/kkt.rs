@@ -163,7 +163,7 @@ pub fn kernels(patterns: &[KktPattern], loads: [(&[u32], &[u32]); 2]) -> Option<
         // The second pattern, where there is one, is the first's with the loads' stiffness.
         let assembly = (i == 1).then(|| assemble_loads(&patterns[0], pattern, loads));
         let loads_field = match &assembly {
-            Some(_) => "Some(symbody_runtime::kkt::LoadsKernel { mass_rows: &MASS_ROWS, mass_cols: &MASS_COLS, force_q_rows: &FORCE_Q_ROWS, force_q_cols: &FORCE_Q_COLS, force_qd_rows: &FORCE_QD_ROWS, force_qd_cols: &FORCE_QD_COLS, assemble: kkt_assemble_loads })",
+            Some(_) => "Some(symbody_runtime::kkt::LoadsKernel { force_q_rows: &FORCE_Q_ROWS, force_q_cols: &FORCE_Q_COLS, force_qd_rows: &FORCE_QD_ROWS, force_qd_cols: &FORCE_QD_COLS, assemble: kkt_assemble_loads })",
             None => "None",
         };
         if let Some((text, entry)) = one(pattern, i, loads_field) {

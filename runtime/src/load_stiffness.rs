@@ -67,8 +67,7 @@ impl LoadStiffness {
             kernel: info
                 .kkt
                 .iter()
-                .filter_map(|k| k.loads)
-                .find(|l| l.emitted_for(info))
+                .find_map(|k| k.loads_for(info))
                 .map(|l| l.assemble),
         })
     }

@@ -10335,8 +10335,6 @@ pub mod exact {
             mass_times: kkt_mass_times,
             kinetic_energy: kkt_kinetic_energy,
             loads: Some(symbody_runtime::kkt::LoadsKernel {
-                mass_rows: &MASS_ROWS,
-                mass_cols: &MASS_COLS,
                 force_q_rows: &FORCE_Q_ROWS,
                 force_q_cols: &FORCE_Q_COLS,
                 force_qd_rows: &FORCE_QD_ROWS,

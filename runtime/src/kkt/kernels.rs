@@ -49,12 +49,11 @@ pub type AssembleKernel =
     fn(&[f64], f64, &[f64], f64, &[f64], f64, &mut [f64]) -> Result<(), KktError>;
 
 /// The generated assembly of the HHT iteration matrix's top-left block with the loads'
-/// stiffness and damping, and the patterns it was emitted for: the model's own statics,
-/// compared by address, since the slot each nonzero lands in depends on all three.
+/// stiffness and damping, and the load patterns it was emitted for: the model's own
+/// statics, compared by address. The slot each nonzero lands in depends on the mass
+/// pattern too, which its [`KktKernels`] entry holds ([`KktKernels::loads_for`]).
 #[derive(Clone, Copy)]
 pub struct LoadsKernel {
-    pub mass_rows: &'static [u32],
-    pub mass_cols: &'static [u32],
     pub force_q_rows: &'static [u32],
     pub force_q_cols: &'static [u32],
     pub force_qd_rows: &'static [u32],
@@ -66,12 +65,10 @@ pub struct LoadsKernel {
 }
 
 impl LoadsKernel {
-    /// Whether `info`'s mass and load patterns are the statics the kernel was emitted for.
-    pub fn emitted_for(&self, info: &crate::MechanismInfo) -> bool {
+    /// Whether `info`'s load patterns are the statics the kernel was emitted for.
+    fn emitted_for(&self, info: &crate::MechanismInfo) -> bool {
         let same = |a: &[u32], b: &[u32]| std::ptr::eq(a, b);
-        same(self.mass_rows, info.mass_rows)
-            && same(self.mass_cols, info.mass_cols)
-            && same(self.force_q_rows, info.force_q_rows)
+        same(self.force_q_rows, info.force_q_rows)
             && same(self.force_q_cols, info.force_q_cols)
             && same(self.force_qd_rows, info.force_qd_rows)
             && same(self.force_qd_cols, info.force_qd_cols)
@@ -130,6 +127,14 @@ impl KktKernels {
     /// `kinetic_energy` were emitted with (by address).
     pub fn mass_emitted_for(&self, rows: &[u32], cols: &[u32]) -> bool {
         std::ptr::eq(self.mass_rows, rows) && std::ptr::eq(self.mass_cols, cols)
+    }
+
+    /// The loads' assembly, where this entry has one emitted for `info`'s mass and load
+    /// patterns.
+    pub fn loads_for(&self, info: &crate::MechanismInfo) -> Option<&LoadsKernel> {
+        let loads = self.loads.as_ref()?;
+        (self.mass_emitted_for(info.mass_rows, info.mass_cols) && loads.emitted_for(info))
+            .then_some(loads)
     }
 }
 
