@@ -27,8 +27,9 @@ pub(crate) struct Predictor {
     steps: [f64; KEPT],
     /// The parasitic mode's factor per step.
     ratio: f64,
-    /// Weights of the current and earlier values for the last step size asked about.
-    weights: Option<(f64, [f64; KEPT + 1])>,
+    /// Weights of the current and earlier values, and the steps and step size they were
+    /// fitted for: at a fixed step they serve every step.
+    weights: Option<([f64; KEPT], f64, [f64; KEPT + 1])>,
 }
 
 impl Predictor {
@@ -64,7 +65,6 @@ impl Predictor {
         std::mem::swap(qdd, qdd1);
         std::mem::swap(&mut self.lambda[0], lambda);
         std::mem::swap(lambda, lambda1);
-        self.weights = None;
     }
 
     /// The guess for a step of size `h` from the current `qdd`, `lambda`, into `qdd1`,
@@ -76,10 +76,10 @@ impl Predictor {
         (lambda, lambda1): (&[f64], &mut [f64]),
     ) {
         let w = match self.weights {
-            Some((for_h, w)) if for_h == h => w,
+            Some((steps, for_h, w)) if steps == self.steps && for_h == h => w,
             _ => {
                 let w = self.fit(h);
-                self.weights = Some((h, w));
+                self.weights = Some((self.steps, h, w));
                 w
             }
         };
@@ -103,8 +103,9 @@ impl Predictor {
                 w[0] = 1.0 - w[1];
             }
             _ => {
-                // Rows: the model's functions 1, τ, rᵏ and τ² (the last only with four
-                // steps known), at the known steps; padded to 4×4 with identity rows.
+                // Rows: the model's functions 1, τ, r⁻ᵏ (k steps back) and τ² (the last
+                // only with four steps known), at the known steps; padded to 4×4 with
+                // identity rows.
                 let basis = |row: usize, k: usize| match row {
                     0 => 1.0,
                     1 => tau[k],
