@@ -12,6 +12,7 @@
 use nalgebra::DMatrix;
 
 use crate::error::{check_len, Error};
+use crate::fk::modes::SplitMix;
 use crate::kinematics::{kinetic_energy, mass_times, KinematicSettings, Kinematics};
 use crate::kkt::{KktSolver, SchurKkt};
 use crate::mechanism::{Mechanism, MechanismInfo};
@@ -451,12 +452,18 @@ pub fn free_motion<M: Mechanism>(
         return Ok(result);
     }
 
-    // Least-energy velocities at t, t + h, …, t + 4h along one kinematic path.
+    // The caller's outputs at q; moved along each free direction below.
     let mut path = KinematicPath::<&M>::with_kinematics(mech, t, q, kin.clone())?;
+    let reference = outputs(path.q(), path.qd(), path.lambda(), path.phi_q())?;
+    let base = path.q().to_vec();
+
+    // Least-energy velocities at t, t + h, …, t + 4h along one kinematic path.
     let mut v = Vec::with_capacity(5);
     let mut mid = (Vec::new(), Vec::new());
     for k in 0..5 {
-        path.advance_to(t + k as f64 * DIFFERENCE_STEP)?;
+        if k > 0 {
+            path.advance_to(t + k as f64 * DIFFERENCE_STEP)?;
+        }
         v.push(path.qd().to_vec());
         if k == 2 {
             mid = (path.q().to_vec(), path.qdd().to_vec());
@@ -484,14 +491,11 @@ pub fn free_motion<M: Mechanism>(
     };
     result.acceleration_mismatch = m_norm(&diff) / m_norm(&a).max(f64::MIN_POSITIVE);
 
-    // The caller's outputs at q, and after moving along each free direction.
-    let base = KinematicPath::<&M>::with_kinematics(mech, t, q, kin.clone())?;
-    let reference = outputs(base.q(), base.qd(), base.lambda(), base.phi_q())?;
     let scale = reference.iter().fold(0.0f64, |s, x| s.max(x.abs()));
     let mut change = 0.0f64;
     for k in 0..dof {
         let moved: Vec<f64> = (0..n)
-            .map(|i| base.q()[i] + FREE_DISPLACEMENT * free[(i, k)])
+            .map(|i| base[i] + FREE_DISPLACEMENT * free[(i, k)])
             .collect();
         let p = KinematicPath::<&M>::with_kinematics(mech, t, &moved, kin.clone())?;
         let out = outputs(p.q(), p.qd(), p.lambda(), p.phi_q())?;
@@ -522,10 +526,14 @@ fn moved_by(info: &MechanismInfo, free: &DMatrix<f64>) -> Vec<usize> {
 }
 
 /// Orthonormal basis of the null space of Φq(q, t), one direction per column. The saddle-point
-/// solve `[M Φqᵀ; Φq 0][y; μ] = [M eᵢ; 0]` projects each coordinate direction eᵢ onto the null
-/// space (along M⁻¹Φqᵀ), so the projections span it; a pivoted Gram–Schmidt picks an
-/// orthonormal basis among them and stops where what is left is roundoff. One sparse
-/// factorization and `n` solves: a dense SVD of Φq costs more than the whole kinematic run.
+/// solve `[M Φqᵀ; Φq 0][y; μ] = [M r; 0]` projects a direction r onto the null space (along
+/// M⁻¹Φqᵀ), so the projections of enough directions span it; a pivoted Gram–Schmidt picks an
+/// orthonormal basis among them and stops where what is left is roundoff. The directions are
+/// pseudo-random (a fixed sequence), [`NULL_SPACE_SPARE`] more than the dimension: the
+/// factorization succeeded, so Φq has full row rank but for the declared redundant rows and
+/// the null space has `n − m + redundant` dimensions, and directions chosen without regard to
+/// Φq span it (the Stewart model: 10 solves instead of one per coordinate, 78). One sparse
+/// factorization, no dense SVD of Φq.
 fn null_space<M: Mechanism>(
     mech: &M,
     t: f64,
@@ -535,13 +543,17 @@ fn null_space<M: Mechanism>(
     let info = mech.info();
     let (n, m) = (info.n_coords, info.n_constraints);
     kin.factor_at(mech, q, t)?;
+    let draws = ((n + info.redundant_rows.len()).saturating_sub(m) + NULL_SPACE_SPARE).min(n);
+    let mut directions = SplitMix(NULL_SPACE_SEED);
     let (g, mut mu) = (vec![0.0; m], vec![0.0; m]);
-    let (mut e, mut f) = (vec![0.0; n], vec![0.0; n]);
-    let mut left: Vec<Vec<f64>> = Vec::with_capacity(n);
-    for i in 0..n {
-        e.fill(0.0);
-        e[i] = 1.0;
-        mass_times(info, kin.mass(), &e, &mut f);
+    let (mut r, mut f) = (vec![0.0; n], vec![0.0; n]);
+    let mut left: Vec<Vec<f64>> = Vec::with_capacity(draws);
+    for _ in 0..draws {
+        r.iter_mut()
+            .for_each(|x| *x = 2.0 * directions.next() - 1.0);
+        let size = r.iter().map(|x| x * x).sum::<f64>().sqrt();
+        r.iter_mut().for_each(|x| *x /= size);
+        mass_times(info, kin.mass(), &r, &mut f);
         let mut y = vec![0.0; n];
         kin.solve(&f, &g, &mut y, &mut mu, t)?;
         left.push(y);
@@ -582,11 +594,17 @@ fn null_space<M: Mechanism>(
     Ok(DMatrix::from_fn(n, basis.len(), |i, k| basis[k][i]))
 }
 
-/// Below this length, what is left of a projected unit coordinate direction after removing
-/// the basis found so far is roundoff (≈ 1e-16 times the saddle-point matrix's condition),
-/// not a free direction. While `k` free directions are left, what is left is a projection of
-/// rank `k`, whose trace `k` bounds the longest of the `n` projected directions from below
-/// by `k / n` (1/605 for the largest model here).
+/// Directions [`null_space`] draws beyond the null space's dimension: a margin for
+/// directions that happen to lie close to the span of the others.
+const NULL_SPACE_SPARE: usize = 4;
+
+/// Seed of [`null_space`]'s directions: fixed, so a run repeats to the last bit.
+const NULL_SPACE_SEED: u64 = 0x2545_f491_4f6c_dd1d;
+
+/// Below this length, what is left of a projected unit direction after removing the basis
+/// found so far is roundoff (≈ 1e-16 times the saddle-point matrix's condition), not a free
+/// direction. While `k` free directions are left, a unit direction unrelated to them keeps a
+/// part of order √(k/n) outside the basis.
 const NULL_SPACE_TOLERANCE: f64 = 1e-8;
 
 #[cfg(test)]

@@ -90,12 +90,17 @@ impl Reduction {
                 reason: "0 (positions), 1 (velocities) or 2 (accelerations)",
             });
         }
-        for (k, &c) in self.coords.iter().enumerate() {
-            full[c as usize] = reduced[k];
+        check_len(
+            "substitution offsets",
+            3 * self.substitutions.len(),
+            offsets.len(),
+        )?;
+        for (&c, &x) in self.coords.iter().zip(reduced) {
+            full[c as usize] = x;
         }
-        for (k, s) in self.substitutions.iter().enumerate() {
+        for (s, offset) in self.substitutions.iter().zip(offsets.chunks_exact(3)) {
             let follow = s.target.map_or(0.0, |j| s.weight * full[j as usize]);
-            full[s.coord as usize] = offsets[3 * k + order] + follow;
+            full[s.coord as usize] = offset[order] + follow;
         }
         Ok(())
     }
@@ -233,8 +238,8 @@ impl FullState {
         full.phi_t(&self.q, t, &mut self.phi_t);
         mass_times(info, &self.mass, &self.qdd, &mut self.m_qdd);
         self.lambda.fill(0.0);
-        for (k, &row) in r.rows.iter().enumerate() {
-            self.lambda[row as usize] = lambda[k];
+        for (&row, &l) in r.rows.iter().zip(lambda) {
+            self.lambda[row as usize] = l;
         }
         for (s, others) in r.substitutions.iter().zip(&self.coupling) {
             let Some(row) = s.row else { continue };

@@ -279,11 +279,11 @@ impl Found {
 }
 
 /// A small deterministic generator (SplitMix64), so runs are reproducible without a
-/// dependency.
-pub(super) struct SplitMix(pub(super) u64);
+/// dependency: numbers in [0, 1).
+pub(crate) struct SplitMix(pub(crate) u64);
 
 impl SplitMix {
-    pub(super) fn next(&mut self) -> f64 {
+    pub(crate) fn next(&mut self) -> f64 {
         self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
         let mut x = self.0;
         x = (x ^ (x >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
