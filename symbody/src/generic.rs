@@ -4,6 +4,7 @@
 
 pub use symbody_codegen::diag::closest;
 
+use crate::path_feed::{self, State};
 use crate::scenario::{output_count, Reduced, ScenarioError};
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
@@ -11,10 +12,10 @@ use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::kinematics::kinetic_energy;
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
-    body_pose, driver_effort, EnergyMeter, EnergySample, Entry, EulerWarning, Formulation,
-    FullState, HhtBuilder, Integrator, JointKind, JointWrenches, KinematicPath, KinematicSettings,
-    Mechanism, MechanismInfo, PathStats, Pivots, Registry, ResidualWatch, Residuals, Rotation,
-    Stats, Wrench,
+    body_pose, driver_effort, velocity_residual, EnergyMeter, EnergySample, Entry, EulerWarning,
+    Formulation, FullState, HhtBuilder, Integrator, JointKind, JointWrenches, KinematicPath,
+    KinematicSettings, Mechanism, MechanismInfo, PathStats, Pivots, Registry, ResidualWatch,
+    Residuals, Rotation, Stats, Wrench,
 };
 use symbody_runtime::{energy, quadrature};
 
@@ -544,107 +545,82 @@ pub fn run_kinematic_observed(
     observed(entry, opts, obs, follow_path)
 }
 
-/// Moves `path` to `t`, keeping its counters in `rec` whether or not it gets there.
-fn advance(path: &mut Followed, t: f64, rec: &mut Recording) -> Result<(), Error> {
-    let advanced = path.advance_to(t);
-    rec.kinematic = Some(counted(&path.path, rec));
-    advanced
+/// Each state a kinematic path solved, seen in the full model's terms: the state itself when
+/// the path follows the full model, read back through [`FullState`] when it follows the
+/// reduced one.
+struct Reader {
+    full: Option<FullState>,
+    /// Φq q̇ + Φt.
+    velocity: Vec<f64>,
 }
 
-/// The path's counters with `outputs` the outputs recorded: the quadrature's interior
-/// solves count in the iterations and factorizations, not as outputs.
-fn counted<M: Mechanism>(path: &KinematicPath<M>, rec: &Recording) -> PathStats {
-    PathStats {
-        outputs: rec.t.len(),
-        ..path.stats()
-    }
-}
-
-/// A kinematic path seen in the full model's terms: its own state when it follows the full
-/// model, each state read back through [`FullState`] when it follows the reduced one.
-struct Followed {
-    path: KinematicPath<&'static (dyn Mechanism + Sync)>,
-    full: Option<(&'static (dyn Mechanism + Sync), FullState)>,
-}
-
-impl Followed {
-    fn new(mech: &'static (dyn Mechanism + Sync), reduced: Option<Reduced>) -> Result<Self, Error> {
-        let info = mech.info();
-        let mut followed = Followed {
-            path: KinematicPath::new(reduced.map_or(mech, |(r, _)| r), 0.0)?,
+impl Reader {
+    fn new(info: &'static MechanismInfo, reduced: Option<Reduced>) -> Result<Self, Error> {
+        Ok(Reader {
             full: match reduced {
-                Some((_, reduction)) => Some((mech, FullState::new(reduction, info)?)),
+                Some((_, reduction)) => Some(FullState::new(reduction, info)?),
                 None => None,
             },
-        };
-        followed.read()?;
-        Ok(followed)
+            velocity: vec![0.0; info.n_constraints],
+        })
     }
 
-    fn advance_to(&mut self, t: f64) -> Result<(), Error> {
-        self.path.advance_to(t)?;
-        self.read()
-    }
-
-    fn read(&mut self) -> Result<(), Error> {
-        let p = &self.path;
+    /// Reads `s` in `mech`'s terms (the full model's), for the methods below.
+    fn read(&mut self, mech: &dyn Mechanism, s: &State<'_>) -> Result<(), Error> {
         match &mut self.full {
             // The runtime's error, as this module's.
-            Some((mech, full)) => {
-                Ok(full.read(*mech, p.t(), p.q(), p.qd(), p.qdd(), p.lambda())?)
-            }
+            Some(full) => Ok(full.read(mech, s.t, s.q, s.qd, s.qdd, s.lambda)?),
             None => Ok(()),
         }
     }
 
-    fn t(&self) -> f64 {
-        self.path.t()
+    fn q<'a>(&'a self, s: &State<'a>) -> &'a [f64] {
+        self.full.as_ref().map_or(s.q, |f| &f.q)
     }
-    fn q(&self) -> &[f64] {
-        self.full.as_ref().map_or(self.path.q(), |(_, f)| &f.q)
+    fn qd<'a>(&'a self, s: &State<'a>) -> &'a [f64] {
+        self.full.as_ref().map_or(s.qd, |f| &f.qd)
     }
-    fn qd(&self) -> &[f64] {
-        self.full.as_ref().map_or(self.path.qd(), |(_, f)| &f.qd)
-    }
-    fn lambda(&self) -> &[f64] {
-        self.full
-            .as_ref()
-            .map_or(self.path.lambda(), |(_, f)| &f.lambda)
+    fn lambda<'a>(&'a self, s: &State<'a>) -> &'a [f64] {
+        self.full.as_ref().map_or(s.lambda, |f| &f.lambda)
     }
 
     /// What the path solved at the state, in the full model's terms: its reactions, without
     /// solving again (the pivots are those of the followed model's factorization).
-    fn solution(&self) -> Solution<'_> {
-        let p = &self.path;
+    fn solution<'a>(&'a self, s: &State<'a>) -> Solution<'a> {
         match &self.full {
             None => Solution {
-                qdd: p.qdd(),
-                lambda: p.lambda(),
-                phi_q: p.phi_q(),
-                pivots: p.pivots(),
+                qdd: s.qdd,
+                lambda: s.lambda,
+                phi_q: s.phi_q,
+                pivots: s.pivots,
             },
-            Some((_, f)) => Solution {
+            Some(f) => Solution {
                 qdd: &f.qdd,
                 lambda: &f.lambda,
                 phi_q: &f.phi_q,
-                pivots: p.pivots(),
+                pivots: s.pivots,
             },
         }
     }
 
     /// The energies and power at the state, what an [`EnergyMeter`] would record, from the M
     /// and λ the path solved with; the work, integrated over the outputs, is the caller's.
-    fn energy(&self, mech: &dyn Mechanism, phi_t: &mut [f64]) -> Result<EnergySample, Error> {
-        let (t, q, qd) = (self.t(), self.q(), self.qd());
-        let mass = self
-            .full
-            .as_ref()
-            .map_or(self.path.mass(), |(_, f)| f.mass());
+    fn energy(
+        &self,
+        mech: &dyn Mechanism,
+        s: &State<'_>,
+        phi_t: &mut [f64],
+    ) -> Result<EnergySample, Error> {
+        let (t, q, qd) = (s.t, self.q(s), self.qd(s));
+        let kinetic = match &self.full {
+            None => s.kinetic,
+            Some(f) => kinetic_energy(mech.info(), f.mass(), qd),
+        };
         let sample = EnergySample {
-            kinetic: kinetic_energy(mech.info(), mass, qd),
+            kinetic,
             potential: mech.potential(q),
             work: f64::NAN,
-            power: energy::power(&mech, t, q, qd, self.lambda(), phi_t),
+            power: energy::power(&mech, t, q, qd, self.lambda(s), phi_t),
         };
         if !(sample.kinetic.is_finite() && sample.potential.is_finite() && sample.power.is_finite())
         {
@@ -656,16 +632,23 @@ impl Followed {
         Ok(sample)
     }
 
-    /// The full model's drift at the state (on the reduced model, at the state read back).
-    fn residuals(&mut self) -> Residuals {
+    /// The full model's drift at the state (on the reduced model, at the state read back),
+    /// from the evaluations the path made there.
+    fn residuals(&mut self, info: &MechanismInfo, s: &State<'_>) -> Residuals {
         match &mut self.full {
-            None => self.path.residuals(),
-            Some((_, f)) => f.residuals(self.path.position_residual()),
+            None => Residuals {
+                position: s.position_residual,
+                velocity: velocity_residual(info, s.phi_q, s.phi_t, s.qd, &mut self.velocity),
+            },
+            Some(f) => f.residuals(s.position_residual),
         }
     }
 }
 
-/// The loop of [`run_kinematic_observed`].
+/// The loop of [`run_kinematic_observed`]: the path's solves handed over by a
+/// [`path_feed::Feed`] while this thread records each output and hands it to `obs`. With the
+/// energy table, the path also solves at the quadrature's two interior times of each
+/// interval.
 fn follow_path(
     (mech, reduced): (&'static (dyn Mechanism + Sync), Option<Reduced>),
     opts: &Options,
@@ -674,64 +657,90 @@ fn follow_path(
     obs: &mut dyn Observer,
 ) -> Result<(), Error> {
     let info = mech.info();
-    let mut path = Followed::new(mech, reduced)?;
-    let modes = mode_watch(mech, path.q())?;
-    let mut phi_t = vec![0.0; info.n_constraints];
+    let path = KinematicPath::new(reduced.map_or(mech, |(r, _)| r), 0.0)?;
+    let mut reader = Reader::new(info, reduced)?;
     rec.work_integrated = rec.energy_table;
+    let nodes: &[f64] = if rec.work_integrated {
+        &quadrature::LOBATTO4_NODES
+    } else {
+        &[]
+    };
+    let mut times = Vec::with_capacity(n_out * (nodes.len() + 1));
+    let mut t_before = 0.0;
+    for k in 1..=n_out {
+        let t = (k as f64 * opts.output_step).min(t_end);
+        times.extend(nodes.iter().map(|node| t_before + node * (t - t_before)));
+        times.push(t);
+        t_before = t;
+    }
+    let on_thread = path_feed::worth_a_thread(path.info());
+    let mut modes = None;
+    let mut phi_t = vec![0.0; info.n_constraints];
     // Without the quadrature the work stays NaN: never integrated, never shown.
     let mut work = if rec.work_integrated { 0.0 } else { f64::NAN };
     let (mut power_before, mut t_before) = (0.0, 0.0);
-    for k in 0..=n_out {
-        let mut inside = [0.0; 2];
-        if k > 0 {
-            let t = (k as f64 * opts.output_step).min(t_end);
-            let nodes = if rec.work_integrated {
-                quadrature::LOBATTO4_NODES.as_slice()
-            } else {
-                &[]
-            };
-            for (p, node) in inside.iter_mut().zip(nodes) {
-                advance(&mut path, t_before + node * (t - t_before), rec)?;
-                *p = energy::power(
-                    &mech,
-                    path.t(),
-                    path.q(),
-                    path.qd(),
-                    path.lambda(),
-                    &mut phi_t,
-                );
+    let mut inside = [0.0; 2];
+    let mut solved = 0;
+    let recording = |feed: &mut path_feed::Feed<'_, '_, _>| -> Result<(), Error> {
+        while let Some(batch) = feed.next() {
+            for k in 0..batch.len() {
+                let s = batch.state(k);
+                rec.kinematic = Some(PathStats {
+                    outputs: rec.t.len(),
+                    ..s.stats
+                });
+                // The start, then each interval's interior times and its end.
+                let node = (solved > 0).then(|| (solved - 1) % (nodes.len() + 1));
+                solved += 1;
+                reader.read(mech, &s)?;
+                if let Some(i) = node.filter(|&i| i < nodes.len()) {
+                    let (q, qd) = (reader.q(&s), reader.qd(&s));
+                    inside[i] = energy::power(&mech, s.t, q, qd, reader.lambda(&s), &mut phi_t);
+                    continue;
+                }
+                let watch = match &modes {
+                    Some(w) => w,
+                    None => modes.insert(mode_watch(mech, reader.q(&s))?),
+                };
+                if let Some(w) = watch {
+                    w.check(reader.q(&s), s.t)?;
+                }
+                // The path solved q̈ and λ at this state: the energies and reactions are read
+                // from its solution (an energy meter would solve the same system again).
+                let mut sample = reader.energy(mech, &s, &mut phi_t)?;
+                if node.is_some() {
+                    work += quadrature::lobatto4(
+                        s.t - t_before,
+                        [power_before, inside[0], inside[1], sample.power],
+                    );
+                }
+                (power_before, t_before) = (sample.power, s.t);
+                sample.work = work;
+                let residuals = reader.residuals(info, &s);
+                let state = (s.t, reader.q(&s), reader.qd(&s));
+                record(rec, reader.solution(&s), residuals, state, sample)?;
+                rec.kinematic = Some(PathStats {
+                    outputs: rec.t.len(),
+                    ..s.stats
+                });
+                obs.output(rec)?;
+                if obs.progress(s.t).is_break() {
+                    return Err(ScenarioError::Interrupted { time: s.t });
+                }
             }
-            advance(&mut path, t, rec)?;
+            feed.recycle(batch);
         }
-        if let Some(w) = &modes {
-            w.check(path.q(), path.t())?;
-        }
-        // The path solved q̈ and λ at this state: the energies and reactions are read from
-        // its solution (an energy meter would solve the same system again).
-        let mut sample = path.energy(mech, &mut phi_t)?;
-        if k > 0 {
-            work += quadrature::lobatto4(
-                path.t() - t_before,
-                [power_before, inside[0], inside[1], sample.power],
-            );
-        }
-        (power_before, t_before) = (sample.power, path.t());
-        sample.work = work;
-        let residuals = path.residuals();
-        record(
-            rec,
-            path.solution(),
-            residuals,
-            (path.t(), path.q(), path.qd()),
-            sample,
-        )?;
-        rec.kinematic = Some(counted(&path.path, rec));
-        obs.output(rec)?;
-        if obs.progress(path.t()).is_break() {
-            return Err(ScenarioError::Interrupted { time: path.t() });
-        }
-    }
-    Ok(())
+        Ok(())
+    };
+    let own = reduced.is_none();
+    let (recorded, stats, followed) =
+        path_feed::follow(path, (times, own, on_thread), None, recording);
+    rec.kinematic = Some(PathStats {
+        outputs: rec.t.len(),
+        ..stats
+    });
+    recorded?;
+    Ok(followed?)
 }
 
 /// A six-leg platform must stay on its assembly mode: a step across a parallel singularity

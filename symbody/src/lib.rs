@@ -14,6 +14,7 @@ pub mod fk;
 pub mod generic;
 pub mod number;
 pub mod output;
+mod path_feed;
 pub mod scenario;
 pub mod scene;
 pub mod sensitivity;

@@ -1,8 +1,8 @@
 //! The paper's scenario on the generated Stewart platform: consistent start, HHT-α over the
 //! requested span, and the time series the paper plots (pose, joint reactions, actuators).
 
+use crate::path_feed::{self, State};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::{
@@ -285,9 +285,10 @@ pub fn kinematic(registry: &Registry, opts: &Options) -> Result<Run, ScenarioErr
 }
 
 /// [`kinematic`] for any mechanism with the Stewart platform's names. The path's solves run
-/// on this thread; the outputs' reactions, residuals and assembly-mode watch on a second one,
-/// a batch of outputs behind, so on two cores the recording takes no wall time. Errors come
-/// in time order: a recorded output's before a later solve's.
+/// on this thread; the outputs' reactions, residuals and assembly-mode watch on a second one
+/// ([`path_feed::record_beside`]), a batch of outputs behind, so on two cores the recording
+/// takes no wall time. Errors come in time order: a recorded output's before a later
+/// solve's.
 pub fn kinematic_mechanism<M: Mechanism + Sync>(
     mech: M,
     opts: &Options,
@@ -347,11 +348,7 @@ fn kinematic_run<M: Mechanism + Sync>(
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
     let followed: &(dyn Mechanism + Sync) = reduced.map_or(&mech, |(r, _)| r);
-    let mut path = KinematicPath::new(followed, 0.0)?;
-    let mut reading = match reduced {
-        Some((_, reduction)) => Some(FullState::new(reduction, info)?),
-        None => None,
-    };
+    let path = KinematicPath::new(followed, 0.0)?;
     let q0 = match reduced {
         Some((_, reduction)) => {
             let mut q = vec![0.0; info.n_coords];
@@ -360,197 +357,84 @@ fn kinematic_run<M: Mechanism + Sync>(
         }
         None => path.q().to_vec(),
     };
-    let modes = ModeWatch::new(&Platform::new(&mech)?, &q0, SIMULATION_MAX_CONDITION)?;
-    let forces = Forces::new(info, &layout)?;
-    // Room for the batches the path solves while the recorder is still busy with `beside`
-    // (the paper's choice of path: ≈ 1.5 ms, 150 outputs): a full queue stops the path.
-    let (to_recorder, solved) = mpsc::sync_channel::<Batch>(QUEUE);
-    let (to_path, emptied) = mpsc::channel::<Batch>();
-    let mut run = std::thread::scope(|scope| {
-        let mech = &mech;
-        let recording = scope.spawn(move || -> Result<Run, ScenarioError> {
-            beside();
-            let mut run = Run::with_capacity(n_out + 1);
-            // Φq q̇ + Φt.
-            let mut velocity = vec![0.0; info.n_constraints];
-            while let Some(mut batch) = next_batch(&solved) {
-                for k in 0..batch.t.len() {
-                    let out = match &mut reading {
-                        None => batch.output(k, &mut velocity),
-                        Some(full) => batch.read(k, mech, full)?,
-                    };
-                    modes.check(out.q, out.t)?;
-                    record((layout, &forces), info, out, &mut run)?;
-                }
-                batch.clear();
-                // The path may have finished: then the batch is not needed.
-                let _ = to_path.send(batch);
-            }
-            Ok(run)
-        });
-        let mut batch = Batch::new(path.info(), reduced.is_some());
-        let followed = (|| -> Result<(), ScenarioError> {
-            for k in 0..=n_out {
+    let times = (1..=n_out)
+        .map(|k| (k as f64 * opts.output_step).min(opts.t_end))
+        .collect();
+    let mech = &mech;
+    let recording = move |feed: &mut path_feed::Feed<'_, '_, _>| -> Result<Run, ScenarioError> {
+        // Set up while the path starts.
+        let mut reading = match reduced {
+            Some((_, reduction)) => Some(FullState::new(reduction, info)?),
+            None => None,
+        };
+        let modes = ModeWatch::new(&Platform::new(mech)?, &q0, SIMULATION_MAX_CONDITION)?;
+        let forces = Forces::new(info, &layout)?;
+        // Φq q̇ + Φt.
+        let mut velocity = vec![0.0; info.n_constraints];
+        beside();
+        let mut run = Run::with_capacity(n_out + 1);
+        while let Some(batch) = feed.next() {
+            for k in 0..batch.len() {
+                let state = batch.state(k);
                 if stop.load(Ordering::Relaxed) {
-                    return Err(ScenarioError::Interrupted { time: path.t() });
+                    return Err(ScenarioError::Interrupted { time: state.t });
                 }
-                if k > 0 {
-                    path.advance_to((k as f64 * opts.output_step).min(opts.t_end))?;
-                }
-                batch.push(&path);
-                if batch.t.len() == BATCH {
-                    let next = emptied
-                        .try_recv()
-                        .unwrap_or_else(|_| Batch::new(path.info(), reduced.is_some()));
-                    // A closed channel: the recorder stopped, with the run's error.
-                    if to_recorder
-                        .send(std::mem::replace(&mut batch, next))
-                        .is_err()
-                    {
-                        break;
-                    }
-                }
+                let out = match &mut reading {
+                    None => Output::solved(&state, mech, &mut velocity),
+                    Some(full) => Output::read(&state, mech, full)?,
+                };
+                modes.check(out.q, out.t)?;
+                record((layout, &forces), info, out, &mut run)?;
             }
-            Ok(())
-        })();
-        // The outputs solved before a failure are recorded (and checked) first.
-        if !batch.t.is_empty() {
-            let _ = to_recorder.send(batch);
+            feed.recycle(batch);
         }
-        drop(to_recorder);
-        let run = recording
-            .join()
-            .unwrap_or_else(|panic| std::panic::resume_unwind(panic))?;
-        followed?;
-        Ok::<_, ScenarioError>(run)
-    })?;
-    run.kinematic = Some(path.stats());
+        Ok(run)
+    };
+    let own = reduced.is_none();
+    let (run, stats, followed) =
+        path_feed::record_beside(path, (times, own), Some(stop), recording);
+    let mut run = run?;
+    followed?;
+    // A path stopped before its end.
+    if run.t.len() < n_out + 1 {
+        return Err(ScenarioError::Interrupted {
+            time: run.t.last().copied().unwrap_or(0.0),
+        });
+    }
+    run.kinematic = Some(stats);
     run.reduced = reduced.map(|(r, _)| r.info().n_coords);
     run.wall = start.elapsed();
     Ok(run)
 }
 
-/// Batches that may wait for the recording thread.
-const QUEUE: usize = 32;
-
-/// Outputs the kinematic path hands to the recording thread at a time: each hand-over costs
-/// a wake-up, which 16 outputs' solves hide.
-const BATCH: usize = 16;
-
-/// The next batch for the recording thread (`None` once the path has finished), waited for
-/// by polling for [`POLL`] before sleeping. The recorder is faster than the path and would
-/// sleep before every batch; Linux then wakes it on the path's core (it counts the sender's
-/// core as warm for it), and for a run of a few milliseconds it often stays there: the two
-/// threads share one core while the other idles. The paper scene's printed time fell into
-/// two groups, about 5 and 8.5 ms, and 8 ms is what both threads pinned to one core take.
-fn next_batch(solved: &mpsc::Receiver<Batch>) -> Option<Batch> {
-    let start = Instant::now();
-    loop {
-        match solved.try_recv() {
-            Ok(batch) => return Some(batch),
-            Err(mpsc::TryRecvError::Disconnected) => return None,
-            Err(mpsc::TryRecvError::Empty) if start.elapsed() < POLL => std::hint::spin_loop(),
-            Err(mpsc::TryRecvError::Empty) => return solved.recv().ok(),
-        }
-    }
-}
-
-/// How long the recording thread polls for a batch before it sleeps: several batches'
-/// worth of the paper path's solves (≈ 0.1 ms each), so that it sleeps only when the path
-/// is slow (a full Newton solve, a failure being reported).
-const POLL: Duration = Duration::from_millis(2);
-
-/// Solved outputs of a kinematic path, one after another in each field.
-struct Batch {
-    /// The followed model's.
-    info: &'static MechanismInfo,
-    /// The path follows a reduced model: the recording thread evaluates Φq, Φt and the
-    /// energy on the full one, so the path's are not kept.
-    reduced: bool,
-    t: Vec<f64>,
-    q: Vec<f64>,
-    qd: Vec<f64>,
-    qdd: Vec<f64>,
-    lambda: Vec<f64>,
-    phi_q: Vec<f64>,
-    phi_t: Vec<f64>,
-    position_residual: Vec<f64>,
-    energy: Vec<f64>,
-}
-
-impl Batch {
-    fn new(info: &'static MechanismInfo, reduced: bool) -> Self {
-        Batch {
-            info,
-            reduced,
-            t: Vec::new(),
-            q: Vec::new(),
-            qd: Vec::new(),
-            qdd: Vec::new(),
-            lambda: Vec::new(),
-            phi_q: Vec::new(),
-            phi_t: Vec::new(),
-            position_residual: Vec::new(),
-            energy: Vec::new(),
-        }
-    }
-
-    fn push<M: Mechanism>(&mut self, path: &KinematicPath<M>) {
-        self.t.push(path.t());
-        self.q.extend_from_slice(path.q());
-        self.qd.extend_from_slice(path.qd());
-        self.qdd.extend_from_slice(path.qdd());
-        self.lambda.extend_from_slice(path.lambda());
-        self.position_residual.push(path.position_residual());
-        if !self.reduced {
-            self.phi_q.extend_from_slice(path.phi_q());
-            self.phi_t.extend_from_slice(path.phi_t());
-            self.energy.push(path.energy());
-        }
-    }
-
-    /// Output `k`'s state `(q, q̇, q̈, λ)`.
-    fn state(&self, k: usize) -> [&[f64]; 4] {
-        let (n, m) = (self.info.n_coords, self.info.n_constraints);
-        [
-            &self.q[k * n..][..n],
-            &self.qd[k * n..][..n],
-            &self.qdd[k * n..][..n],
-            &self.lambda[k * m..][..m],
-        ]
-    }
-
-    /// Output `k`, with its velocity residual (computed into `work`).
-    fn output<'a>(&'a self, k: usize, work: &mut [f64]) -> Output<'a> {
-        let (m, nnz) = (self.info.n_constraints, self.info.phi_q_nnz());
-        let [q, qd, _, lambda] = self.state(k);
-        let (phi_q, phi_t) = (&self.phi_q[k * nnz..][..nnz], &self.phi_t[k * m..][..m]);
+impl<'a> Output<'a> {
+    /// A state solved on the full model, with its velocity residual (computed into `work`).
+    fn solved<M: Mechanism + ?Sized>(state: &State<'a>, mech: &M, work: &mut [f64]) -> Self {
+        let (qd, phi_q, phi_t) = (state.qd, state.phi_q, state.phi_t);
         Output {
-            t: self.t[k],
-            q,
+            t: state.t,
+            q: state.q,
             qd,
-            lambda,
+            lambda: state.lambda,
             phi_q,
             phi_t,
             residuals: Residuals {
-                position: self.position_residual[k],
-                velocity: velocity_residual(self.info, phi_q, phi_t, qd, work),
+                position: state.position_residual,
+                velocity: velocity_residual(mech.info(), phi_q, phi_t, qd, work),
             },
-            energy: self.energy[k],
+            energy: state.kinetic + mech.potential(state.q),
         }
     }
 
-    /// Output `k` of a path on a reduced model, read in `full`'s terms by `reading`.
-    fn read<'a, M: Mechanism + ?Sized>(
-        &self,
-        k: usize,
+    /// A state solved on a reduced model, read in `full`'s terms by `reading`.
+    fn read<M: Mechanism + ?Sized>(
+        state: &State<'_>,
         full: &M,
         reading: &'a mut FullState,
-    ) -> Result<Output<'a>, Error> {
-        let [q, qd, qdd, lambda] = self.state(k);
-        let t = self.t[k];
-        reading.read(full, t, q, qd, qdd, lambda)?;
-        let residuals = reading.residuals(self.position_residual[k]);
+    ) -> Result<Self, Error> {
+        let t = state.t;
+        reading.read(full, t, state.q, state.qd, state.qdd, state.lambda)?;
+        let residuals = reading.residuals(state.position_residual);
         let energy = reading.energy(full);
         let r = &*reading;
         Ok(Output {
@@ -563,22 +447,6 @@ impl Batch {
             residuals,
             energy,
         })
-    }
-
-    fn clear(&mut self) {
-        for v in [
-            &mut self.t,
-            &mut self.q,
-            &mut self.qd,
-            &mut self.qdd,
-            &mut self.lambda,
-            &mut self.phi_q,
-            &mut self.phi_t,
-            &mut self.position_residual,
-            &mut self.energy,
-        ] {
-            v.clear();
-        }
     }
 }
 

@@ -205,7 +205,7 @@ pub fn run_observed(
 }
 
 /// [`run_observed`] for `files = "paper"` (the paper scenario, which takes no observer). The
-/// kinematic path starts while the recording thread makes the choice, which usually picks
+/// kinematic path starts on its own thread while this one makes the choice, which usually picks
 /// it, and is given up when the choice is integration (two threads, not three: on two
 /// cores a third took turns with the path); the wall time spans both. With `reduce`, the
 /// path follows the generated reduced model where there is one.

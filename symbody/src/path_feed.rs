@@ -1,0 +1,451 @@
+//! A kinematic path's solves and the recording of its states (reactions, energies, checks,
+//! files) on two threads, the states handed over in batches: on two cores the recording
+//! costs the run no wall time. For a small model, the same loop on one thread.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+use symbody_runtime::kinematics::kinetic_energy;
+use symbody_runtime::kkt::Pivots;
+use symbody_runtime::{Error, KinematicPath, Mechanism, MechanismInfo, PathStats};
+
+/// Solves `path` at each of `times` in turn, after its current state, and hands the states to
+/// `record` through a [`Feed`], in batches, in time order; the path runs on a second thread
+/// when `thread`, else on this one as `record` asks for each batch. The path stops
+/// early when `stop` is set, at its first failure (after handing over every state solved
+/// before it), or when `record` returns. With `own`, each state carries Φq, Φt and the
+/// kinetic energy the path solved with (for a caller that records on the followed model
+/// itself); without, only the state and the multipliers (a caller that reads each state back
+/// on another model evaluates there). Returns what `record` returned, the path's counters and
+/// how it ended: `Ok` when it reached its last time or was stopped, else its first failure.
+pub(crate) fn follow<'a, M: Mechanism + Send, R>(
+    path: KinematicPath<M>,
+    (times, own, thread): (Vec<f64>, bool, bool),
+    stop: Option<&'a AtomicBool>,
+    record: impl FnOnce(&mut Feed<'_, 'a, M>) -> R,
+) -> (R, PathStats, Result<(), Error>) {
+    let mut solver = Solver::new(path, times, own, stop);
+    if !thread {
+        let recorded = record(&mut Feed::Here(&mut solver));
+        let (stats, ended) = solver.end();
+        return (recorded, stats, ended);
+    }
+    std::thread::scope(|scope| {
+        let (mut feed, producer) = channel(own, solver.path.info());
+        let path = scope.spawn(move || producer.run(solver));
+        let recorded = record(&mut feed);
+        // The path's thread stops at its next hand-over.
+        drop(feed);
+        let (stats, ended) = path
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+        (recorded, stats, ended)
+    })
+}
+
+/// [`follow`] the other way round: the path on this thread, `record` on a second one. For a
+/// run whose path is what it waits for: it starts at once, where a new
+/// thread may wait for a core (measured on the paper scene: 0.15–3.3 ms before its first
+/// instruction, the printed time 1.16 times this order's, median of 20 alternated pairs).
+pub(crate) fn record_beside<'a, M: Mechanism + Send, R: Send>(
+    path: KinematicPath<M>,
+    (times, own): (Vec<f64>, bool),
+    stop: Option<&'a AtomicBool>,
+    record: impl FnOnce(&mut Feed<'_, 'a, M>) -> R + Send,
+) -> (R, PathStats, Result<(), Error>) {
+    let solver = Solver::new(path, times, own, stop);
+    std::thread::scope(|scope| {
+        let (mut feed, producer) = channel(own, solver.path.info());
+        let recording = scope.spawn(move || record(&mut feed));
+        let (stats, ended) = producer.run(solver);
+        let recorded = recording
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+        (recorded, stats, ended)
+    })
+}
+
+/// The two ends of a hand-over between threads.
+fn channel<'f, 'a, M: Mechanism>(
+    own: bool,
+    info: &'static MechanismInfo,
+) -> (Feed<'f, 'a, M>, Producer) {
+    let (to_caller, solved) = mpsc::sync_channel::<Batch>(QUEUE);
+    let (to_path, emptied) = mpsc::channel::<Batch>();
+    let feed = Feed::Channel {
+        solved,
+        emptied: to_path,
+    };
+    let producer = Producer {
+        to_caller,
+        emptied,
+        fresh: (info, own),
+    };
+    (feed, producer)
+}
+
+/// The path's end of a hand-over between threads.
+struct Producer {
+    to_caller: mpsc::SyncSender<Batch>,
+    emptied: mpsc::Receiver<Batch>,
+    /// How to make a new batch when none came back.
+    fresh: (&'static MechanismInfo, bool),
+}
+
+impl Producer {
+    /// Solves and hands over until the path ends or the caller stops taking batches.
+    fn run<M: Mechanism>(self, mut solver: Solver<'_, M>) -> (PathStats, Result<(), Error>) {
+        let (info, own) = self.fresh;
+        loop {
+            let empty = self
+                .emptied
+                .try_recv()
+                .unwrap_or_else(|_| Batch::new(info, own));
+            let Some(batch) = solver.fill(empty) else {
+                break;
+            };
+            // A closed channel: the caller stopped and wants no more.
+            if self.to_caller.send(batch).is_err() {
+                break;
+            }
+        }
+        solver.end()
+    }
+}
+
+/// The path and what is left of its times.
+pub(crate) struct Solver<'a, M: Mechanism> {
+    path: KinematicPath<M>,
+    times: std::vec::IntoIter<f64>,
+    stop: Option<&'a AtomicBool>,
+    /// The states solved and not handed over yet.
+    batch: Batch,
+    /// How the path ended, once it has.
+    ended: Option<Result<(), Error>>,
+}
+
+impl<'a, M: Mechanism> Solver<'a, M> {
+    fn new(
+        path: KinematicPath<M>,
+        times: Vec<f64>,
+        own: bool,
+        stop: Option<&'a AtomicBool>,
+    ) -> Self {
+        let mut batch = Batch::new(path.info(), own);
+        batch.push(&path);
+        Solver {
+            path,
+            times: times.into_iter(),
+            stop,
+            batch,
+            ended: None,
+        }
+    }
+
+    /// The next [`BATCH`] states solved (fewer at the end), handed over in place of `empty`;
+    /// `None` once every state is handed over.
+    fn fill(&mut self, empty: Batch) -> Option<Batch> {
+        while self.ended.is_none() && self.batch.len() < BATCH {
+            match self.times.next() {
+                Some(_) if self.stop.is_some_and(|s| s.load(Ordering::Relaxed)) => {
+                    self.ended = Some(Ok(()))
+                }
+                Some(t) => match self.path.advance_to(t) {
+                    Ok(()) => self.batch.push(&self.path),
+                    Err(e) => self.ended = Some(Err(e)),
+                },
+                None => self.ended = Some(Ok(())),
+            }
+        }
+        (self.batch.len() > 0).then(|| std::mem::replace(&mut self.batch, empty))
+    }
+
+    fn end(self) -> (PathStats, Result<(), Error>) {
+        (self.path.stats(), self.ended.unwrap_or(Ok(())))
+    }
+}
+
+/// The recording's end of [`follow`] and [`record_beside`].
+pub(crate) enum Feed<'f, 'a, M: Mechanism> {
+    /// The path solves on the recording's thread, a batch at a time.
+    Here(&'f mut Solver<'a, M>),
+    /// The path solves on another thread.
+    Channel {
+        solved: mpsc::Receiver<Batch>,
+        emptied: mpsc::Sender<Batch>,
+    },
+}
+
+impl<M: Mechanism> Feed<'_, '_, M> {
+    /// The next solved states in time order; `None` once the path has ended. From another
+    /// thread, polls for [`POLL`] before it sleeps: a recording faster than the path would
+    /// otherwise sleep before every batch, and Linux then wakes it on the path's core (it
+    /// counts the sender's core as warm for it) and often keeps it there for a run of a few
+    /// milliseconds, the two threads sharing one core while the other idles (the paper
+    /// scene's printed time fell into two groups, about 5 and 8.5 ms; 8 ms is what both
+    /// threads pinned to one core take).
+    pub(crate) fn next(&mut self) -> Option<Batch> {
+        let solved = match self {
+            Feed::Here(solver) => {
+                let empty = Batch::new(solver.path.info(), solver.batch.own);
+                return solver.fill(empty);
+            }
+            Feed::Channel { solved, .. } => solved,
+        };
+        let start = Instant::now();
+        loop {
+            match solved.try_recv() {
+                Ok(batch) => return Some(batch),
+                Err(mpsc::TryRecvError::Disconnected) => return None,
+                Err(mpsc::TryRecvError::Empty) if start.elapsed() < POLL => std::hint::spin_loop(),
+                Err(mpsc::TryRecvError::Empty) => return solved.recv().ok(),
+            }
+        }
+    }
+
+    /// Hands a recorded batch back for the path to fill again.
+    pub(crate) fn recycle(&mut self, mut batch: Batch) {
+        batch.clear();
+        match self {
+            Feed::Here(solver) => {
+                if solver.batch.len() == 0 {
+                    solver.batch = batch;
+                }
+            }
+            // The path may have finished: then the batch is not needed.
+            Feed::Channel { emptied, .. } => {
+                let _ = emptied.send(batch);
+            }
+        }
+    }
+}
+
+/// Whether a path on `followed` is worth a thread of its own beside a caller that records
+/// every state: its saddle-point system has [`THREAD_SIZE`] rows and columns or more.
+pub(crate) fn worth_a_thread(followed: &MechanismInfo) -> bool {
+    followed.n_coords + followed.n_constraints >= THREAD_SIZE
+}
+
+/// Size of `[M Φqᵀ; Φq 0]` from which the tables' kinematic path runs on its own thread.
+/// Measured on the scenes (printed wall time, 8 alternated pairs each, 2026-11-29): the
+/// Stewart platforms (150 and 182) took 0.65 and 0.68 of the one-thread time, the four-bar
+/// (39) and the slider-crank (42) 1.3 and 2.8 times it: their whole runs take 1–4 ms, of
+/// which starting the thread alone took 0.13–0.18 ms, and their outputs cost too little
+/// for the hand-overs to hide.
+const THREAD_SIZE: usize = 100;
+
+/// Batches that may wait for the caller: room for the paper scene's path to go on while
+/// its caller makes the choice of path first (≈ 1 ms, 100 outputs); a full queue stops
+/// the path.
+const QUEUE: usize = 32;
+
+/// States the path hands over at a time: each hand-over costs a wake-up, which 16 outputs'
+/// solves hide.
+const BATCH: usize = 16;
+
+/// How long [`Feed::next`] polls before it sleeps: several batches' worth of the paper
+/// path's solves (≈ 0.1 ms each), so that it sleeps only when the path is slow (a full
+/// Newton solve, a failure being reported).
+const POLL: Duration = Duration::from_millis(2);
+
+/// Solved states of a kinematic path, one after another in each field.
+pub(crate) struct Batch {
+    /// The followed model's.
+    info: &'static MechanismInfo,
+    /// Φq, Φt and the kinetic energy kept ([`follow`]'s `own`).
+    own: bool,
+    t: Vec<f64>,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    qdd: Vec<f64>,
+    lambda: Vec<f64>,
+    phi_q: Vec<f64>,
+    phi_t: Vec<f64>,
+    kinetic: Vec<f64>,
+    position_residual: Vec<f64>,
+    pivots: Vec<Option<Pivots>>,
+    stats: Vec<PathStats>,
+}
+
+/// One solved state of a [`Batch`], in the followed model's terms.
+pub(crate) struct State<'a> {
+    pub t: f64,
+    pub q: &'a [f64],
+    pub qd: &'a [f64],
+    pub qdd: &'a [f64],
+    pub lambda: &'a [f64],
+    /// Φq's nonzeros and Φt the state was solved with; empty unless `own`.
+    pub phi_q: &'a [f64],
+    pub phi_t: &'a [f64],
+    /// ½ q̇ᵀM q̇ with the M the state was solved with; NaN unless `own`.
+    pub kinetic: f64,
+    /// |Φ|∞ at `q` from the position solve's last evaluation.
+    pub position_residual: f64,
+    pub pivots: Option<Pivots>,
+    /// The path's counters once this state was solved.
+    pub stats: PathStats,
+}
+
+impl Batch {
+    fn new(info: &'static MechanismInfo, own: bool) -> Self {
+        Batch {
+            info,
+            own,
+            t: Vec::new(),
+            q: Vec::new(),
+            qd: Vec::new(),
+            qdd: Vec::new(),
+            lambda: Vec::new(),
+            phi_q: Vec::new(),
+            phi_t: Vec::new(),
+            kinetic: Vec::new(),
+            position_residual: Vec::new(),
+            pivots: Vec::new(),
+            stats: Vec::new(),
+        }
+    }
+
+    fn push<M: Mechanism>(&mut self, path: &KinematicPath<M>) {
+        self.t.push(path.t());
+        self.q.extend_from_slice(path.q());
+        self.qd.extend_from_slice(path.qd());
+        self.qdd.extend_from_slice(path.qdd());
+        self.lambda.extend_from_slice(path.lambda());
+        self.position_residual.push(path.position_residual());
+        self.pivots.push(path.pivots());
+        self.stats.push(path.stats());
+        if self.own {
+            self.phi_q.extend_from_slice(path.phi_q());
+            self.phi_t.extend_from_slice(path.phi_t());
+            self.kinetic
+                .push(kinetic_energy(self.info, path.mass(), path.qd()));
+        }
+    }
+
+    pub(crate) fn len(&self) -> usize {
+        self.t.len()
+    }
+
+    /// State `k` of the batch.
+    pub(crate) fn state(&self, k: usize) -> State<'_> {
+        let (n, m) = (self.info.n_coords, self.info.n_constraints);
+        let nnz = self.info.phi_q_nnz();
+        let (phi_q, phi_t, kinetic): (&[f64], &[f64], f64) = if self.own {
+            (
+                &self.phi_q[k * nnz..][..nnz],
+                &self.phi_t[k * m..][..m],
+                self.kinetic[k],
+            )
+        } else {
+            (&[], &[], f64::NAN)
+        };
+        State {
+            t: self.t[k],
+            q: &self.q[k * n..][..n],
+            qd: &self.qd[k * n..][..n],
+            qdd: &self.qdd[k * n..][..n],
+            lambda: &self.lambda[k * m..][..m],
+            phi_q,
+            phi_t,
+            kinetic,
+            position_residual: self.position_residual[k],
+            pivots: self.pivots[k],
+            stats: self.stats[k],
+        }
+    }
+
+    fn clear(&mut self) {
+        for v in [
+            &mut self.t,
+            &mut self.q,
+            &mut self.qd,
+            &mut self.qdd,
+            &mut self.lambda,
+            &mut self.phi_q,
+            &mut self.phi_t,
+            &mut self.kinetic,
+            &mut self.position_residual,
+        ] {
+            v.clear();
+        }
+        self.pivots.clear();
+        self.stats.clear();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use symbody_testkit::models::{CircleDriver, CIRCLE_C0, CIRCLE_D, CIRCLE_V};
+
+    /// The times of every state `feed` hands over, taking them all.
+    fn times_of(feed: &mut Feed<'_, '_, CircleDriver>) -> Vec<f64> {
+        let mut times = Vec::new();
+        while let Some(batch) = feed.next() {
+            times.extend((0..batch.len()).map(|k| batch.state(k).t));
+            feed.recycle(batch);
+        }
+        times
+    }
+
+    /// The three layouts: on one thread, the path beside, the recording beside.
+    fn each_layout<R: Send>(
+        times: &[f64],
+        stop: Option<&AtomicBool>,
+        record: impl Fn(&mut Feed<'_, '_, CircleDriver>) -> R + Sync,
+    ) -> Vec<(R, PathStats, Result<(), Error>)> {
+        let path = || KinematicPath::new(CircleDriver, 0.0).unwrap();
+        vec![
+            follow(path(), (times.to_vec(), true, false), stop, &record),
+            follow(path(), (times.to_vec(), true, true), stop, &record),
+            record_beside(path(), (times.to_vec(), true), stop, &record),
+        ]
+    }
+
+    /// The slider held at x = d on a circle of radius c(t) = c₀ − v t has no position once
+    /// c < d (t > 2 s), so the path fails on the way there: every layout hands over the
+    /// start and each time solved before the failure, in order, then the failure, with the
+    /// same counters.
+    #[test]
+    fn the_states_before_a_failure_come_first_then_the_failure() {
+        let end = (CIRCLE_C0 - CIRCLE_D) / CIRCLE_V;
+        assert_eq!(end, 2.0);
+        let times: Vec<f64> = (1..=300).map(|k| 0.01 * k as f64).collect();
+        let runs = each_layout(&times, None, times_of);
+        for (k, (seen, stats, ended)) in runs.iter().enumerate() {
+            assert!(ended.is_err(), "layout {k}: {ended:?}");
+            assert_eq!(seen[0], 0.0);
+            assert_eq!(&seen[1..], &times[..seen.len() - 1], "layout {k}");
+            let last = *seen.last().unwrap();
+            assert!(last > 1.9 && last < end, "layout {k}: last state at {last}");
+            assert_eq!(stats.outputs, seen.len(), "layout {k}");
+            assert_eq!((seen, stats), (&runs[0].0, &runs[0].1), "layout {k}");
+        }
+    }
+
+    /// A recording that stops taking states stops the path within the batches queued for it;
+    /// `stop` set before the start leaves only the start.
+    #[test]
+    fn the_path_stops_with_its_recording_or_its_flag() {
+        let times: Vec<f64> = (1..=1000).map(|k| 0.001 * k as f64).collect();
+        let first = |feed: &mut Feed<'_, '_, CircleDriver>| feed.next().map(|b| b.len());
+        for (k, (taken, stats, ended)) in each_layout(&times, None, first).iter().enumerate() {
+            assert_eq!(*taken, Some(BATCH), "layout {k}");
+            assert!(ended.is_ok(), "layout {k}: {ended:?}");
+            // At most the batch taken, the full queue and the one filled meanwhile.
+            assert!(
+                stats.outputs <= (QUEUE + 2) * BATCH,
+                "layout {k}: {stats:?}"
+            );
+        }
+        let stop = AtomicBool::new(true);
+        for (k, (seen, stats, ended)) in each_layout(&times, Some(&stop), times_of)
+            .iter()
+            .enumerate()
+        {
+            assert_eq!(seen, &[0.0], "layout {k}");
+            assert_eq!(stats.outputs, 1, "layout {k}");
+            assert!(ended.is_ok(), "layout {k}: {ended:?}");
+        }
+    }
+}
