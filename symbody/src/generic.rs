@@ -612,10 +612,8 @@ impl Reader {
         phi_t: &mut [f64],
     ) -> Result<EnergySample, Error> {
         let (t, q, qd) = (s.t, self.q(s), self.qd(s));
-        let kinetic = match &self.full {
-            None => s.kinetic,
-            Some(f) => kinetic_energy(mech.info(), f.mass(), qd),
-        };
+        let mass = self.full.as_ref().map_or(s.mass, |f| f.mass());
+        let kinetic = kinetic_energy(mech.info(), mass, qd);
         let sample = EnergySample {
             kinetic,
             potential: mech.potential(q),

@@ -5,7 +5,6 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
-use symbody_runtime::kinematics::kinetic_energy;
 use symbody_runtime::kkt::Pivots;
 use symbody_runtime::{Error, KinematicPath, Mechanism, MechanismInfo, PathStats};
 
@@ -13,8 +12,8 @@ use symbody_runtime::{Error, KinematicPath, Mechanism, MechanismInfo, PathStats}
 /// `record` through a [`Feed`], in batches, in time order; the path runs on a second thread
 /// when `thread`, else on this one as `record` asks for each batch. The path stops
 /// early when `stop` is set, at its first failure (after handing over every state solved
-/// before it), or when `record` returns. With `own`, each state carries Φq, Φt and the
-/// kinetic energy the path solved with (for a caller that records on the followed model
+/// before it), or when `record` returns. With `own`, each state carries Φq, Φt and M the
+/// path solved with (for a caller that records on the followed model
 /// itself); without, only the state and the multipliers (a caller that reads each state back
 /// on another model evaluates there). Returns what `record` returned, the path's counters and
 /// how it ended: `Ok` when it reached its last time or was stopped, else its first failure.
@@ -252,7 +251,7 @@ const POLL: Duration = Duration::from_millis(2);
 pub(crate) struct Batch {
     /// The followed model's.
     info: &'static MechanismInfo,
-    /// Φq, Φt and the kinetic energy kept ([`follow`]'s `own`).
+    /// Φq, Φt and M kept ([`follow`]'s `own`).
     own: bool,
     t: Vec<f64>,
     q: Vec<f64>,
@@ -261,7 +260,7 @@ pub(crate) struct Batch {
     lambda: Vec<f64>,
     phi_q: Vec<f64>,
     phi_t: Vec<f64>,
-    kinetic: Vec<f64>,
+    mass: Vec<f64>,
     position_residual: Vec<f64>,
     pivots: Vec<Option<Pivots>>,
     stats: Vec<PathStats>,
@@ -274,11 +273,10 @@ pub(crate) struct State<'a> {
     pub qd: &'a [f64],
     pub qdd: &'a [f64],
     pub lambda: &'a [f64],
-    /// Φq's nonzeros and Φt the state was solved with; empty unless `own`.
+    /// Φq's nonzeros, Φt and M's nonzeros the state was solved with; empty unless `own`.
     pub phi_q: &'a [f64],
     pub phi_t: &'a [f64],
-    /// ½ q̇ᵀM q̇ with the M the state was solved with; NaN unless `own`.
-    pub kinetic: f64,
+    pub mass: &'a [f64],
     /// |Φ|∞ at `q` from the position solve's last evaluation.
     pub position_residual: f64,
     pub pivots: Option<Pivots>,
@@ -298,7 +296,7 @@ impl Batch {
             lambda: Vec::new(),
             phi_q: Vec::new(),
             phi_t: Vec::new(),
-            kinetic: Vec::new(),
+            mass: Vec::new(),
             position_residual: Vec::new(),
             pivots: Vec::new(),
             stats: Vec::new(),
@@ -317,8 +315,7 @@ impl Batch {
         if self.own {
             self.phi_q.extend_from_slice(path.phi_q());
             self.phi_t.extend_from_slice(path.phi_t());
-            self.kinetic
-                .push(kinetic_energy(self.info, path.mass(), path.qd()));
+            self.mass.extend_from_slice(path.mass());
         }
     }
 
@@ -329,15 +326,15 @@ impl Batch {
     /// State `k` of the batch.
     pub(crate) fn state(&self, k: usize) -> State<'_> {
         let (n, m) = (self.info.n_coords, self.info.n_constraints);
-        let nnz = self.info.phi_q_nnz();
-        let (phi_q, phi_t, kinetic): (&[f64], &[f64], f64) = if self.own {
+        let (nnz, mass_nnz) = (self.info.phi_q_nnz(), self.info.mass_nnz());
+        let (phi_q, phi_t, mass): (&[f64], &[f64], &[f64]) = if self.own {
             (
                 &self.phi_q[k * nnz..][..nnz],
                 &self.phi_t[k * m..][..m],
-                self.kinetic[k],
+                &self.mass[k * mass_nnz..][..mass_nnz],
             )
         } else {
-            (&[], &[], f64::NAN)
+            (&[], &[], &[])
         };
         State {
             t: self.t[k],
@@ -347,7 +344,7 @@ impl Batch {
             lambda: &self.lambda[k * m..][..m],
             phi_q,
             phi_t,
-            kinetic,
+            mass,
             position_residual: self.position_residual[k],
             pivots: self.pivots[k],
             stats: self.stats[k],
@@ -363,7 +360,7 @@ impl Batch {
             &mut self.lambda,
             &mut self.phi_q,
             &mut self.phi_t,
-            &mut self.kinetic,
+            &mut self.mass,
             &mut self.position_residual,
         ] {
             v.clear();

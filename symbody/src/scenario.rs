@@ -5,6 +5,7 @@ use crate::path_feed::{self, State};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
+use symbody_runtime::kinematics::kinetic_energy;
 use symbody_runtime::{
     actuator_force, velocity_residual, Entry, Error, ForceOnBody, Formulation, FullState,
     HhtBuilder, KinematicPath, Kinematics, Mechanism, MechanismInfo, PathStats, Reduction,
@@ -422,7 +423,7 @@ impl<'a> Output<'a> {
                 position: state.position_residual,
                 velocity: velocity_residual(mech.info(), phi_q, phi_t, qd, work),
             },
-            energy: state.kinetic + mech.potential(state.q),
+            energy: kinetic_energy(mech.info(), state.mass, qd) + mech.potential(state.q),
         }
     }
 
