@@ -179,6 +179,16 @@ impl HhtBuilder {
         self
     }
 
+    /// All of Newton's tolerances at once: [`Self::rel_tol`], [`Self::abs_tol_acceleration`],
+    /// [`Self::abs_tol_lambda`] and [`Self::constraint_tol`] set to `tol` (what a run asked
+    /// to solve each step to a given accuracy wants).
+    pub fn newton_tolerance(self, tol: f64) -> Self {
+        self.rel_tol(tol)
+            .abs_tol_acceleration(tol)
+            .abs_tol_lambda(tol)
+            .constraint_tol(tol)
+    }
+
     /// Keep one factorization across steps while convergence stays fast (default off:
     /// factor once per step). The matrix depends on `q` and, through the loads' stiffness
     /// and damping, on `h`; a kept one is refreshed as soon as convergence slows. Projected

@@ -801,25 +801,40 @@ pub(crate) fn integrator(
     mech: &'static (dyn Mechanism + Sync),
     opts: &Options,
 ) -> Result<Integrator<&'static (dyn Mechanism + Sync)>, Error> {
-    let info = mech.info();
-    let mut builder = HhtBuilder::new()
-        .alpha(opts.alpha)
-        .step(opts.step)
-        .min_step((opts.step * 1e-4).min(1e-7))
-        .qd0(info.qd0)
-        .project_velocities(true)
-        .kinematic_settings(solve_settings(opts.cross_singular));
-    if let Some(tol) = opts.newton_tolerance {
-        builder = builder
-            .rel_tol(tol)
-            .abs_tol_acceleration(tol)
-            .abs_tol_lambda(tol)
-            .constraint_tol(tol);
-    }
-    if let Some((rtol, atol)) = opts.tolerances {
-        builder = builder.tolerances(rtol, atol);
-    }
+    let builder = hht_builder(
+        opts.alpha,
+        opts.step,
+        opts.tolerances,
+        opts.newton_tolerance,
+    )
+    .qd0(mech.info().qd0)
+    .project_velocities(true)
+    .kinematic_settings(solve_settings(opts.cross_singular));
     Ok(builder.build(mech)?)
+}
+
+/// HHT with `alpha` and the nominal `step` (with `tolerances`, step-size control's
+/// `(rtol, atol)`, the first step tried), and Newton's tolerances all at `newton_tolerance`
+/// where given: what every run of this library sets before its own settings.
+pub(crate) fn hht_builder(
+    alpha: f64,
+    step: f64,
+    tolerances: Option<(f64, f64)>,
+    newton_tolerance: Option<f64>,
+) -> HhtBuilder {
+    let builder = HhtBuilder::new()
+        .alpha(alpha)
+        .step(step)
+        // Allow step cuts well below a step chosen smaller than the default minimum.
+        .min_step((step * 1e-4).min(1e-7));
+    let builder = match newton_tolerance {
+        Some(tol) => builder.newton_tolerance(tol),
+        None => builder,
+    };
+    match tolerances {
+        Some((rtol, atol)) => builder.tolerances(rtol, atol),
+        None => builder,
+    }
 }
 
 /// Step-size control's `(rtol, atol)` from the two optional tolerances (either alone sets

@@ -63,23 +63,12 @@ impl Default for Options {
 
 /// The integrator settings of `opts`.
 fn hht(opts: &Options) -> HhtBuilder {
-    let builder = HhtBuilder::new()
-        .alpha(opts.alpha)
-        .step(opts.step)
-        // Allow step cuts well below a step chosen smaller than the default minimum.
-        .min_step((opts.step * 1e-4).min(1e-7));
-    let builder = match opts.newton_tolerance {
-        Some(tol) => builder
-            .rel_tol(tol)
-            .abs_tol_acceleration(tol)
-            .abs_tol_lambda(tol)
-            .constraint_tol(tol),
-        None => builder,
-    };
-    match opts.tolerances {
-        Some((rtol, atol)) => builder.tolerances(rtol, atol),
-        None => builder,
-    }
+    crate::generic::hht_builder(
+        opts.alpha,
+        opts.step,
+        opts.tolerances,
+        opts.newton_tolerance,
+    )
 }
 
 /// Number of legs of the platform.
