@@ -304,6 +304,9 @@ impl Batch {
     }
 
     fn push<M: Mechanism>(&mut self, path: &KinematicPath<M>) {
+        if self.t.capacity() == 0 {
+            self.reserve();
+        }
         self.t.push(path.t());
         self.q.extend_from_slice(path.q());
         self.qd.extend_from_slice(path.qd());
@@ -317,6 +320,29 @@ impl Batch {
             self.phi_t.extend_from_slice(path.phi_t());
             self.mass.extend_from_slice(path.mass());
         }
+    }
+
+    /// Room for [`BATCH`] states at once: grown state by state, a new batch's fields were
+    /// reallocated and copied five times each.
+    fn reserve(&mut self) {
+        let (n, m) = (self.info.n_coords, self.info.n_constraints);
+        for (v, size) in [
+            (&mut self.t, 1),
+            (&mut self.q, n),
+            (&mut self.qd, n),
+            (&mut self.qdd, n),
+            (&mut self.lambda, m),
+            (&mut self.position_residual, 1),
+        ] {
+            v.reserve_exact(BATCH * size);
+        }
+        if self.own {
+            self.phi_q.reserve_exact(BATCH * self.info.phi_q_nnz());
+            self.phi_t.reserve_exact(BATCH * m);
+            self.mass.reserve_exact(BATCH * self.info.mass_nnz());
+        }
+        self.pivots.reserve_exact(BATCH);
+        self.stats.reserve_exact(BATCH);
     }
 
     pub(crate) fn len(&self) -> usize {
