@@ -663,13 +663,14 @@ fn follow_path(
     } else {
         &[]
     };
+    // Each interval's interior times, then its end.
     let mut times = Vec::with_capacity(n_out * (nodes.len() + 1));
-    let mut t_before = 0.0;
+    let mut start = 0.0;
     for k in 1..=n_out {
-        let t = (k as f64 * opts.output_step).min(t_end);
-        times.extend(nodes.iter().map(|node| t_before + node * (t - t_before)));
-        times.push(t);
-        t_before = t;
+        let end = (k as f64 * opts.output_step).min(t_end);
+        times.extend(nodes.iter().map(|node| start + node * (end - start)));
+        times.push(end);
+        start = end;
     }
     let on_thread = path_feed::worth_a_thread(path.info());
     let mut modes = None;
