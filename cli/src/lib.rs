@@ -316,6 +316,7 @@ pub fn main(registry: &Registry) -> ExitCode {
                     cross_singular: cross_singular_positions,
                     newton_tolerance: None,
                     reduce: reduced,
+                    path_thread: true,
                 };
                 parameters.parse().and_then(|p| {
                     simulate_named(registry, &name, &p, &opts, [velocities, accelerations], &files, &sensitivities.sensitivities)

@@ -396,6 +396,7 @@ fn simulate<'py>(
         newton_tolerance: None,
         tolerances,
         reduce: reduced,
+        path_thread: true,
     };
     out_folder(out.as_deref())?;
     let rec = py.detach(|| generic::run(entry, &opts)).map_err(py_err)?;

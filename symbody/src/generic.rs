@@ -54,6 +54,11 @@ pub struct Options {
     /// 24), read back in the full model's terms at every step or output: the same motion and
     /// forces with fewer coordinates. Without a reduced model the full one is run.
     pub reduce: bool,
+    /// A kinematic path solves on a thread of its own beside the recording where its model
+    /// is large enough to gain from it ([`crate::path_feed`]). Off where the caller already
+    /// keeps every core busy (a study's rows), as a second thread per run would only take
+    /// turns with the others.
+    pub path_thread: bool,
 }
 
 impl Default for Options {
@@ -73,6 +78,7 @@ impl Default for Options {
             cross_singular: false,
             newton_tolerance: None,
             reduce: false,
+            path_thread: true,
         }
     }
 }
@@ -672,7 +678,7 @@ fn follow_path(
         times.push(end);
         start = end;
     }
-    let on_thread = path_feed::worth_a_thread(path.info());
+    let on_thread = opts.path_thread && path_feed::worth_a_thread(path.info());
     let mut modes = None;
     let mut phi_t = vec![0.0; info.n_constraints];
     // Without the quadrature the work stays NaN: never integrated, never shown.

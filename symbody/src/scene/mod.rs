@@ -133,4 +133,7 @@ pub struct Scene {
     /// Integrate, or follow by the kinematic path, the generated reduced model where there
     /// is one ([`crate::generic::Options::reduce`]; `[solver] reduce = "auto"`).
     pub reduce: bool,
+    /// Not from the file: [`crate::generic::Options::path_thread`] (on; a study turns it
+    /// off for its rows).
+    pub path_thread: bool,
 }

@@ -420,6 +420,7 @@ fn check(
         alpha,
         cross_singular,
         reduce,
+        path_thread: true,
     })
 }
 

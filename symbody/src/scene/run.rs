@@ -273,5 +273,6 @@ pub fn options(scene: &Scene) -> generic::Options {
         cross_singular: scene.cross_singular,
         newton_tolerance: None,
         reduce: scene.reduce,
+        path_thread: scene.path_thread,
     }
 }
