@@ -226,15 +226,15 @@ pub(crate) fn worth_a_thread(followed: &MechanismInfo) -> bool {
 }
 
 /// Size of `[M Φqᵀ; Φq 0]` from which the tables' kinematic path runs on its own thread.
-/// Measured on the scenes (printed wall time, 8 alternated pairs each, 2026-11-29): the
-/// Stewart platforms (150 and 182) took 0.65 and 0.68 of the one-thread time, the four-bar
-/// (39) and the slider-crank (42) 1.3 and 2.8 times it: their whole runs take 1–4 ms, of
-/// which starting the thread alone took 0.13–0.18 ms, and their outputs cost too little
-/// for the hand-overs to hide.
+/// Measured on the scenes (printed wall time, alternated pairs, 2026-11-29): the Stewart
+/// platforms (150 and 182) took 0.65–0.88 of the one-thread time in three sittings, the
+/// four-bar (39) and the slider-crank (42) 1.3 and 2.8 times it: their whole runs take
+/// 1–4 ms, of which starting the thread alone took 0.13–0.18 ms, and their outputs cost
+/// too little for the hand-overs to hide.
 const THREAD_SIZE: usize = 100;
 
-/// Batches that may wait for the caller: room for the paper scene's path to go on while
-/// its caller makes the choice of path first (≈ 1 ms, 100 outputs); a full queue stops
+/// Batches that may wait for the recording: room for the paper scene's path to go on while
+/// its recording makes the choice of path first (≈ 1 ms, 100 outputs); a full queue stops
 /// the path.
 const QUEUE: usize = 32;
 
