@@ -690,10 +690,6 @@ fn follow_path(
         while let Some(batch) = feed.next() {
             for k in 0..batch.len() {
                 let s = batch.state(k);
-                rec.kinematic = Some(PathStats {
-                    outputs: rec.t.len(),
-                    ..s.stats
-                });
                 // The start, then each interval's interior times and its end.
                 let node = (solved > 0).then(|| (solved - 1) % (nodes.len() + 1));
                 solved += 1;
@@ -724,10 +720,6 @@ fn follow_path(
                 let residuals = reader.residuals(info, &s);
                 let state = (s.t, reader.q(&s), reader.qd(&s));
                 record(rec, reader.solution(&s), residuals, state, sample)?;
-                rec.kinematic = Some(PathStats {
-                    outputs: rec.t.len(),
-                    ..s.stats
-                });
                 obs.output(rec)?;
                 if obs.progress(s.t).is_break() {
                     return Err(ScenarioError::Interrupted { time: s.t });
@@ -740,6 +732,8 @@ fn follow_path(
     let own = reduced.is_none();
     let (recorded, stats, followed) =
         path_feed::follow(path, (times, own, on_thread), None, recording);
+    // Whether or not the path got to its end; the quadrature's interior solves count in
+    // the iterations and factorizations, not as outputs.
     rec.kinematic = Some(PathStats {
         outputs: rec.t.len(),
         ..stats

@@ -30,7 +30,7 @@ pub(crate) fn follow<'a, M: Mechanism + Send, R>(
         return (recorded, stats, ended);
     }
     std::thread::scope(|scope| {
-        let (mut feed, producer) = channel(own, solver.path.info());
+        let (mut feed, producer) = channel();
         let path = scope.spawn(move || producer.run(solver));
         let recorded = record(&mut feed);
         // The path's thread stops at its next hand-over.
@@ -54,7 +54,7 @@ pub(crate) fn record_beside<'a, M: Mechanism + Send, R: Send>(
 ) -> (R, PathStats, Result<(), Error>) {
     let solver = Solver::new(path, times, own, stop);
     std::thread::scope(|scope| {
-        let (mut feed, producer) = channel(own, solver.path.info());
+        let (mut feed, producer) = channel();
         let recording = scope.spawn(move || record(&mut feed));
         let (stats, ended) = producer.run(solver);
         let recorded = recording
@@ -65,41 +65,27 @@ pub(crate) fn record_beside<'a, M: Mechanism + Send, R: Send>(
 }
 
 /// The two ends of a hand-over between threads.
-fn channel<'f, 'a, M: Mechanism>(
-    own: bool,
-    info: &'static MechanismInfo,
-) -> (Feed<'f, 'a, M>, Producer) {
+fn channel<'f, 'a, M: Mechanism>() -> (Feed<'f, 'a, M>, Producer) {
     let (to_caller, solved) = mpsc::sync_channel::<Batch>(QUEUE);
     let (to_path, emptied) = mpsc::channel::<Batch>();
     let feed = Feed::Channel {
         solved,
         emptied: to_path,
     };
-    let producer = Producer {
-        to_caller,
-        emptied,
-        fresh: (info, own),
-    };
-    (feed, producer)
+    (feed, Producer { to_caller, emptied })
 }
 
 /// The path's end of a hand-over between threads.
 struct Producer {
     to_caller: mpsc::SyncSender<Batch>,
     emptied: mpsc::Receiver<Batch>,
-    /// How to make a new batch when none came back.
-    fresh: (&'static MechanismInfo, bool),
 }
 
 impl Producer {
     /// Solves and hands over until the path ends or the caller stops taking batches.
     fn run<M: Mechanism>(self, mut solver: Solver<'_, M>) -> (PathStats, Result<(), Error>) {
-        let (info, own) = self.fresh;
         loop {
-            let empty = self
-                .emptied
-                .try_recv()
-                .unwrap_or_else(|_| Batch::new(info, own));
+            let empty = self.emptied.try_recv().unwrap_or_else(|_| solver.empty());
             let Some(batch) = solver.fill(empty) else {
                 break;
             };
@@ -159,6 +145,11 @@ impl<'a, M: Mechanism> Solver<'a, M> {
         (self.batch.len() > 0).then(|| std::mem::replace(&mut self.batch, empty))
     }
 
+    /// A batch with no room yet, for the states after the ones being filled.
+    fn empty(&self) -> Batch {
+        Batch::new(self.path.info(), self.batch.own)
+    }
+
     fn end(self) -> (PathStats, Result<(), Error>) {
         (self.path.stats(), self.ended.unwrap_or(Ok(())))
     }
@@ -186,7 +177,7 @@ impl<M: Mechanism> Feed<'_, '_, M> {
     pub(crate) fn next(&mut self) -> Option<Batch> {
         let solved = match self {
             Feed::Here(solver) => {
-                let empty = Batch::new(solver.path.info(), solver.batch.own);
+                let empty = solver.empty();
                 return solver.fill(empty);
             }
             Feed::Channel { solved, .. } => solved,
@@ -263,7 +254,6 @@ pub(crate) struct Batch {
     mass: Vec<f64>,
     position_residual: Vec<f64>,
     pivots: Vec<Option<Pivots>>,
-    stats: Vec<PathStats>,
 }
 
 /// One solved state of a [`Batch`], in the followed model's terms.
@@ -280,8 +270,6 @@ pub(crate) struct State<'a> {
     /// |Φ|∞ at `q` from the position solve's last evaluation.
     pub position_residual: f64,
     pub pivots: Option<Pivots>,
-    /// The path's counters once this state was solved.
-    pub stats: PathStats,
 }
 
 impl Batch {
@@ -299,7 +287,6 @@ impl Batch {
             mass: Vec::new(),
             position_residual: Vec::new(),
             pivots: Vec::new(),
-            stats: Vec::new(),
         }
     }
 
@@ -314,7 +301,6 @@ impl Batch {
         self.lambda.extend_from_slice(path.lambda());
         self.position_residual.push(path.position_residual());
         self.pivots.push(path.pivots());
-        self.stats.push(path.stats());
         if self.own {
             self.phi_q.extend_from_slice(path.phi_q());
             self.phi_t.extend_from_slice(path.phi_t());
@@ -342,7 +328,6 @@ impl Batch {
             self.mass.reserve_exact(BATCH * self.info.mass_nnz());
         }
         self.pivots.reserve_exact(BATCH);
-        self.stats.reserve_exact(BATCH);
     }
 
     pub(crate) fn len(&self) -> usize {
@@ -373,7 +358,6 @@ impl Batch {
             mass,
             position_residual: self.position_residual[k],
             pivots: self.pivots[k],
-            stats: self.stats[k],
         }
     }
 
@@ -392,7 +376,6 @@ impl Batch {
             v.clear();
         }
         self.pivots.clear();
-        self.stats.clear();
     }
 }
 
