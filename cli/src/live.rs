@@ -167,8 +167,8 @@ impl Observer for Live {
         Ok(())
     }
 
-    fn progress(&mut self, t: f64) -> ControlFlow<()> {
-        self.steps += 1;
+    fn progress(&mut self, t: f64, steps: usize) -> ControlFlow<()> {
+        self.steps = steps;
         if self.drawn.is_none_or(|d| d.elapsed() >= REDRAW) {
             self.drawn = Some(Instant::now());
             let elapsed = self.bar.elapsed().as_secs_f64().max(1e-9);

@@ -6,16 +6,16 @@ pub use symbody_codegen::diag::closest;
 
 use crate::path_feed::{self, State};
 use crate::scenario::{output_count, Reduced, ScenarioError};
+use crate::stepper::Stepper;
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::kinematics::kinetic_energy;
 use symbody_runtime::kkt::DEFAULT_PIVOT_TOLERANCE;
 use symbody_runtime::{
-    body_pose, driver_effort, velocity_residual, EnergyMeter, EnergySample, Entry, EulerWarning,
-    Formulation, FullState, HhtBuilder, Integrator, JointKind, JointWrenches, KinematicPath,
-    KinematicSettings, Mechanism, MechanismInfo, PathStats, Pivots, Registry, ResidualWatch,
-    Residuals, Rotation, Stats, Wrench,
+    body_pose, driver_effort, velocity_residual, EnergySample, Entry, EulerWarning, Formulation,
+    FullState, HhtBuilder, Integrator, JointKind, JointWrenches, KinematicPath, KinematicSettings,
+    Mechanism, MechanismInfo, PathStats, Pivots, Registry, Residuals, Rotation, Stats, Wrench,
 };
 use symbody_runtime::{energy, quadrature};
 
@@ -54,10 +54,10 @@ pub struct Options {
     /// 24), read back in the full model's terms at every step or output: the same motion and
     /// forces with fewer coordinates. Without a reduced model the full one is run.
     pub reduce: bool,
-    /// A kinematic path solves on a thread of its own beside the recording where its model
-    /// is large enough to gain from it ([`crate::path_feed`]). Off where the caller already
-    /// keeps every core busy (a study's rows), as a second thread per run would only take
-    /// turns with the others.
+    /// The path runs on a thread of its own beside the recording ([`crate::path_feed`]):
+    /// an integration always, a kinematic path where its model is large enough to gain from
+    /// it. Off where the caller already keeps every core busy (a study's rows), as a second
+    /// thread per run would only take turns with the others.
     pub path_thread: bool,
 }
 
@@ -314,10 +314,11 @@ pub trait Observer {
         Ok(())
     }
 
-    /// After every accepted step (the kinematic path: every output) at time `t`;
-    /// `Break` stops the run with [`ScenarioError::Interrupted`].
-    fn progress(&mut self, t: f64) -> ControlFlow<()> {
-        let _ = t;
+    /// As the run goes, after each batch of outputs and at least every few tenths of a
+    /// second: the time `t` reached and the `steps` taken (the kinematic path: the states
+    /// solved). `Break` stops the run with [`ScenarioError::Interrupted`].
+    fn progress(&mut self, t: f64, steps: usize) -> ControlFlow<()> {
+        let _ = (t, steps);
         ControlFlow::Continue(())
     }
 }
@@ -339,8 +340,8 @@ impl<F: FnMut(&mut Recording)> Observer for Prepared<'_, F> {
     fn output(&mut self, rec: &Recording) -> Result<(), Error> {
         self.inner.output(rec)
     }
-    fn progress(&mut self, t: f64) -> ControlFlow<()> {
-        self.inner.progress(t)
+    fn progress(&mut self, t: f64, steps: usize) -> ControlFlow<()> {
+        self.inner.progress(t, steps)
     }
 }
 
@@ -456,64 +457,52 @@ fn observed(
     }
 }
 
-/// The integration loop of [`run_observed`].
+/// The integration loop of [`run_observed`]: the integration ([`Stepper`]) on a thread of
+/// its own beside this one's recording where `opts.path_thread`.
 fn integrate(
-    (mech, reduced): (&'static (dyn Mechanism + Sync), Option<Reduced>),
+    model: (&'static (dyn Mechanism + Sync), Option<Reduced>),
     opts: &Options,
     (t_end, n_out): (f64, usize),
     rec: &mut Recording,
     obs: &mut dyn Observer,
 ) -> Result<(), Error> {
-    let info = mech.info();
-    let mut it = integrator(reduced.map_or(mech, |(r, _)| r), opts)?;
-    // The full model's state, which every output and the meter see.
-    let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);
-    let mut offsets = vec![0.0; reduced.map_or(0, |(_, r)| 3 * r.substitutions.len())];
-    full_state(&it, reduced, &mut offsets, (&mut q, &mut qd))?;
-    let mut meter: EnergyMeter =
-        EnergyMeter::with_settings(info, solve_settings(opts.cross_singular))?;
-    let mut watch = ResidualWatch::new(info);
-    let modes = mode_watch(mech, &q)?;
-    meter.advance(&mech, it.t(), &q, &qd)?;
+    let stepper = Stepper::new(model, opts, (t_end, n_out))?;
     rec.work_integrated = true;
-    for k in 0..=n_out {
-        let t_out = (k as f64 * opts.output_step).min(t_end);
-        // One accepted step per call, so the meter sees every step.
-        loop {
-            let stepped = it.step_toward(t_out);
-            // The counters and warnings so far belong to the recording even if this step
-            // failed.
-            rec.stats = it.stats();
-            rec.euler_warning = it.first_euler_warning();
-            if stepped?.is_none() {
-                break;
+    let recording = |feed: &mut path_feed::Feed<'_, Stepper>| -> Result<(), Error> {
+        while let Some(batch) = feed.next() {
+            for out in batch.outputs() {
+                rec.stats = out.stats;
+                rec.euler_warning = out.euler_warning;
+                let solution = Solution {
+                    qdd: &out.qdd,
+                    lambda: &out.lambda,
+                    phi_q: &out.phi_q,
+                    pivots: out.pivots,
+                };
+                let state = (out.t, &out.q[..], &out.qd[..]);
+                record(rec, solution, out.residuals, state, out.sample)?;
+                obs.output(rec)?;
             }
-            full_state(&it, reduced, &mut offsets, (&mut q, &mut qd))?;
-            if let Some(w) = &modes {
-                w.check(&q, it.t())?;
+            let (t, steps) = batch.reached;
+            if obs.progress(t, steps).is_break() {
+                return Err(ScenarioError::Interrupted { time: t });
             }
-            meter.advance(&mech, it.t(), &q, &qd)?;
-            if obs.progress(it.t()).is_break() {
-                return Err(ScenarioError::Interrupted { time: it.t() });
-            }
+            feed.recycle(batch);
         }
-        let sample = meter.sample(&mech, &q, &qd)?;
-        let residuals = watch.check(&mech, it.t(), &q, &qd)?;
-        record(
-            rec,
-            Solution::of(&meter),
-            residuals,
-            (it.t(), &q, &qd),
-            sample,
-        )?;
-        obs.output(rec)?;
-    }
-    Ok(())
+        Ok(())
+    };
+    let (recorded, (stats, euler_warning, ended)) =
+        path_feed::follow(stepper, opts.path_thread, recording);
+    recorded?;
+    // The counters and warnings so far belong to the recording even if a step failed.
+    rec.stats = stats;
+    rec.euler_warning = euler_warning;
+    ended
 }
 
 /// The full model's state `(q, q̇)` from the integrator's, expanded when it integrates the
 /// reduced model (`offsets`: the reduction's work memory). Runs at every step.
-fn full_state(
+pub(crate) fn full_state(
     it: &Integrator<&'static (dyn Mechanism + Sync)>,
     reduced: Option<Reduced>,
     offsets: &mut [f64],
@@ -679,6 +668,8 @@ fn follow_path(
         start = end;
     }
     let on_thread = opts.path_thread && path_feed::worth_a_thread(path.info());
+    let own = reduced.is_none();
+    let solver = path_feed::Solver::new(path, times, own, None);
     let mut modes = None;
     let mut phi_t = vec![0.0; info.n_constraints];
     // Without the quadrature the work stays NaN: never integrated, never shown.
@@ -686,52 +677,51 @@ fn follow_path(
     let (mut power_before, mut t_before) = (0.0, 0.0);
     let mut inside = [0.0; 2];
     let mut solved = 0;
-    let recording = |feed: &mut path_feed::Feed<'_, '_, _>| -> Result<(), Error> {
-        while let Some(batch) = feed.next() {
-            for k in 0..batch.len() {
-                let s = batch.state(k);
-                // The start, then each interval's interior times and its end.
-                let node = (solved > 0).then(|| (solved - 1) % (nodes.len() + 1));
-                solved += 1;
-                reader.read(mech, &s)?;
-                if let Some(i) = node.filter(|&i| i < nodes.len()) {
-                    let (q, qd) = (reader.q(&s), reader.qd(&s));
-                    inside[i] = energy::power(&mech, s.t, q, qd, reader.lambda(&s), &mut phi_t);
-                    continue;
+    let recording =
+        |feed: &mut path_feed::Feed<'_, path_feed::Solver<'_, _>>| -> Result<(), Error> {
+            while let Some(batch) = feed.next() {
+                for k in 0..batch.len() {
+                    let s = batch.state(k);
+                    // The start, then each interval's interior times and its end.
+                    let node = (solved > 0).then(|| (solved - 1) % (nodes.len() + 1));
+                    solved += 1;
+                    reader.read(mech, &s)?;
+                    if let Some(i) = node.filter(|&i| i < nodes.len()) {
+                        let (q, qd) = (reader.q(&s), reader.qd(&s));
+                        inside[i] = energy::power(&mech, s.t, q, qd, reader.lambda(&s), &mut phi_t);
+                        continue;
+                    }
+                    let watch = match &modes {
+                        Some(w) => w,
+                        None => modes.insert(mode_watch(mech, reader.q(&s))?),
+                    };
+                    if let Some(w) = watch {
+                        w.check(reader.q(&s), s.t)?;
+                    }
+                    // The path solved q̈ and λ at this state: the energies and reactions are read
+                    // from its solution (an energy meter would solve the same system again).
+                    let mut sample = reader.energy(mech, &s, &mut phi_t)?;
+                    if node.is_some() {
+                        work += quadrature::lobatto4(
+                            s.t - t_before,
+                            [power_before, inside[0], inside[1], sample.power],
+                        );
+                    }
+                    (power_before, t_before) = (sample.power, s.t);
+                    sample.work = work;
+                    let residuals = reader.residuals(info, &s);
+                    let state = (s.t, reader.q(&s), reader.qd(&s));
+                    record(rec, reader.solution(&s), residuals, state, sample)?;
+                    obs.output(rec)?;
+                    if obs.progress(s.t, solved).is_break() {
+                        return Err(ScenarioError::Interrupted { time: s.t });
+                    }
                 }
-                let watch = match &modes {
-                    Some(w) => w,
-                    None => modes.insert(mode_watch(mech, reader.q(&s))?),
-                };
-                if let Some(w) = watch {
-                    w.check(reader.q(&s), s.t)?;
-                }
-                // The path solved q̈ and λ at this state: the energies and reactions are read
-                // from its solution (an energy meter would solve the same system again).
-                let mut sample = reader.energy(mech, &s, &mut phi_t)?;
-                if node.is_some() {
-                    work += quadrature::lobatto4(
-                        s.t - t_before,
-                        [power_before, inside[0], inside[1], sample.power],
-                    );
-                }
-                (power_before, t_before) = (sample.power, s.t);
-                sample.work = work;
-                let residuals = reader.residuals(info, &s);
-                let state = (s.t, reader.q(&s), reader.qd(&s));
-                record(rec, reader.solution(&s), residuals, state, sample)?;
-                obs.output(rec)?;
-                if obs.progress(s.t).is_break() {
-                    return Err(ScenarioError::Interrupted { time: s.t });
-                }
+                feed.recycle(batch);
             }
-            feed.recycle(batch);
-        }
-        Ok(())
-    };
-    let own = reduced.is_none();
-    let (recorded, stats, followed) =
-        path_feed::follow(path, (times, own, on_thread), None, recording);
+            Ok(())
+        };
+    let (recorded, (stats, followed)) = path_feed::follow(solver, on_thread, recording);
     // Whether or not the path got to its end; the quadrature's interior solves count in
     // the iterations and factorizations, not as outputs.
     rec.kinematic = Some(PathStats {
@@ -744,7 +734,10 @@ fn follow_path(
 
 /// A six-leg platform must stay on its assembly mode: a step across a parallel singularity
 /// would continue on another one without any solver noticing.
-fn mode_watch(mech: &(dyn Mechanism + Sync), q: &[f64]) -> Result<Option<ModeWatch>, Error> {
+pub(crate) fn mode_watch(
+    mech: &(dyn Mechanism + Sync),
+    q: &[f64],
+) -> Result<Option<ModeWatch>, Error> {
     Ok(match mech.info().platform {
         Some(_) => Some(ModeWatch::new(
             &Platform::new(mech)?,
@@ -881,18 +874,6 @@ struct Solution<'a> {
     pivots: Option<Pivots>,
 }
 
-impl<'a> Solution<'a> {
-    /// What `meter` solved at the state it has just recorded.
-    fn of(meter: &'a EnergyMeter) -> Self {
-        Solution {
-            qdd: meter.qdd(),
-            lambda: meter.lambda(),
-            phi_q: meter.phi_q(),
-            pivots: meter.pivots(),
-        }
-    }
-}
-
 /// Appends the output `(t, q, q̇)` with its solution `s`.
 fn record(
     rec: &mut Recording,
@@ -955,6 +936,7 @@ pub use crate::tables::{tables, write_csvs, Table};
 mod tests {
     use super::*;
     use symbody_mechanisms::REGISTRY;
+    use symbody_runtime::EnergyMeter;
 
     fn four_bar() -> &'static Entry {
         find(&REGISTRY, "four_bar").expect("registered")

@@ -19,5 +19,6 @@ pub mod scenario;
 pub mod scene;
 pub mod sensitivity;
 pub mod session;
+mod stepper;
 pub mod study;
 pub mod tables;

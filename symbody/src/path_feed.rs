@@ -1,6 +1,7 @@
-//! A kinematic path's solves and the recording of its states (reactions, energies, checks,
-//! files) on two threads, the states handed over in batches: on two cores the recording
-//! costs the run no wall time. For a small model, the same loop on one thread.
+//! A path's states (a kinematic path's solves, an integration's outputs) and their
+//! recording (reactions, energies, checks, files) on two threads, the states handed over in
+//! batches: on two cores the recording costs the run no wall time. For a small model, the
+//! same loop on one thread.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc;
@@ -8,66 +9,75 @@ use std::time::{Duration, Instant};
 use symbody_runtime::kkt::Pivots;
 use symbody_runtime::{Error, KinematicPath, Mechanism, MechanismInfo, PathStats};
 
-/// Solves `path` at each of `times` in turn, after its current state, and hands the states to
-/// `record` through a [`Feed`], in batches, in time order; the path runs on a second thread
-/// when `thread`, else on this one as `record` asks for each batch. The path stops
-/// early when `stop` is set, at its first failure (after handing over every state solved
-/// before it), or when `record` returns. With `own`, each state carries Φq, Φt and M the
-/// path solved with (for a caller that records on the followed model
-/// itself); without, only the state and the multipliers (a caller that reads each state back
-/// on another model evaluates there). Returns what `record` returned, the path's counters and
-/// how it ended: `Ok` when it reached its last time or was stopped, else its first failure.
-pub(crate) fn follow<'a, M: Mechanism + Send, R>(
-    path: KinematicPath<M>,
-    (times, own, thread): (Vec<f64>, bool, bool),
-    stop: Option<&'a AtomicBool>,
-    record: impl FnOnce(&mut Feed<'_, 'a, M>) -> R,
-) -> (R, PathStats, Result<(), Error>) {
-    let mut solver = Solver::new(path, times, own, stop);
+/// Runs `source` and hands its states to `record` through a [`Feed`], in batches, in time
+/// order; the source runs on a second thread when `thread`, else on this one as `record`
+/// asks for each batch. The source stops at its own end or when `record` returns (at its
+/// next hand-over). Returns what `record` returned and how the source ended.
+pub(crate) fn follow<S: Source + Send, R>(
+    mut source: S,
+    thread: bool,
+    record: impl FnOnce(&mut Feed<'_, S>) -> R,
+) -> (R, S::End)
+where
+    S::End: Send,
+{
     if !thread {
-        let recorded = record(&mut Feed::Here(&mut solver));
-        let (stats, ended) = solver.end();
-        return (recorded, stats, ended);
+        let recorded = record(&mut Feed::Here {
+            source: &mut source,
+            spare: None,
+        });
+        return (recorded, source.end());
     }
     std::thread::scope(|scope| {
         let (mut feed, producer) = channel();
-        let path = scope.spawn(move || producer.run(solver));
+        let path = scope.spawn(move || producer.run(source));
         let recorded = record(&mut feed);
-        // The path's thread stops at its next hand-over.
+        // The source's thread stops at its next hand-over.
         drop(feed);
-        let (stats, ended) = path
+        let ended = path
             .join()
             .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-        (recorded, stats, ended)
+        (recorded, ended)
     })
 }
 
-/// [`follow`] the other way round: the path on this thread, `record` on a second one. For a
+/// [`follow`] the other way round: the source on this thread, `record` on a second one. For a
 /// run whose path is what it waits for: it starts at once, where a new
 /// thread may wait for a core (measured on the paper scene: 0.15–3.3 ms before its first
 /// instruction, the printed time 1.16 times this order's, median of 20 alternated pairs).
-pub(crate) fn record_beside<'a, M: Mechanism + Send, R: Send>(
-    path: KinematicPath<M>,
-    (times, own): (Vec<f64>, bool),
-    stop: Option<&'a AtomicBool>,
-    record: impl FnOnce(&mut Feed<'_, 'a, M>) -> R + Send,
-) -> (R, PathStats, Result<(), Error>) {
-    let solver = Solver::new(path, times, own, stop);
+pub(crate) fn record_beside<S: Source + Send, R: Send>(
+    source: S,
+    record: impl FnOnce(&mut Feed<'_, S>) -> R + Send,
+) -> (R, S::End) {
     std::thread::scope(|scope| {
         let (mut feed, producer) = channel();
         let recording = scope.spawn(move || record(&mut feed));
-        let (stats, ended) = producer.run(solver);
+        let ended = producer.run(source);
         let recorded = recording
             .join()
             .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-        (recorded, stats, ended)
+        (recorded, ended)
     })
 }
 
+/// What a [`Feed`] hands over: states solved in time order, a batch at a time.
+pub(crate) trait Source {
+    /// The states handed over at once.
+    type Batch: Send;
+    /// How the source ended: its counters, its first failure.
+    type End;
+
+    /// The next states, in `spare` (a batch the recording is done with) where given; `None`
+    /// once every state is handed over.
+    fn fill(&mut self, spare: Option<Self::Batch>) -> Option<Self::Batch>;
+
+    fn end(self) -> Self::End;
+}
+
 /// The two ends of a hand-over between threads.
-fn channel<'f, 'a, M: Mechanism>() -> (Feed<'f, 'a, M>, Producer) {
-    let (to_caller, solved) = mpsc::sync_channel::<Batch>(QUEUE);
-    let (to_path, emptied) = mpsc::channel::<Batch>();
+fn channel<'f, S: Source>() -> (Feed<'f, S>, Producer<S::Batch>) {
+    let (to_caller, solved) = mpsc::sync_channel(QUEUE);
+    let (to_path, emptied) = mpsc::channel();
     let feed = Feed::Channel {
         solved,
         emptied: to_path,
@@ -75,30 +85,32 @@ fn channel<'f, 'a, M: Mechanism>() -> (Feed<'f, 'a, M>, Producer) {
     (feed, Producer { to_caller, emptied })
 }
 
-/// The path's end of a hand-over between threads.
-struct Producer {
-    to_caller: mpsc::SyncSender<Batch>,
-    emptied: mpsc::Receiver<Batch>,
+/// The source's end of a hand-over between threads.
+struct Producer<B> {
+    to_caller: mpsc::SyncSender<B>,
+    emptied: mpsc::Receiver<B>,
 }
 
-impl Producer {
-    /// Solves and hands over until the path ends or the caller stops taking batches.
-    fn run<M: Mechanism>(self, mut solver: Solver<'_, M>) -> (PathStats, Result<(), Error>) {
-        loop {
-            let empty = self.emptied.try_recv().unwrap_or_else(|_| solver.empty());
-            let Some(batch) = solver.fill(empty) else {
-                break;
-            };
+impl<B: Send> Producer<B> {
+    /// Fills and hands over until the source ends or the caller stops taking batches.
+    fn run<S: Source<Batch = B>>(self, mut source: S) -> S::End {
+        while let Some(batch) = source.fill(self.emptied.try_recv().ok()) {
             // A closed channel: the caller stopped and wants no more.
             if self.to_caller.send(batch).is_err() {
                 break;
             }
         }
-        solver.end()
+        source.end()
     }
 }
 
-/// The path and what is left of its times.
+/// A kinematic path and what is left of its times: solves the path at each time in turn,
+/// after its current state (handed over first). It stops early when `stop` is set or at
+/// its first failure, after handing over every state solved before it. With `own`, each
+/// state carries Φq, Φt and M the path solved with (for a caller that records on the
+/// followed model itself); without, only the state and the multipliers (a caller that
+/// reads each state back on another model evaluates there). Ends with the path's counters
+/// and `Ok` when it reached its last time or was stopped, else its first failure.
 pub(crate) struct Solver<'a, M: Mechanism> {
     path: KinematicPath<M>,
     times: std::vec::IntoIter<f64>,
@@ -110,7 +122,7 @@ pub(crate) struct Solver<'a, M: Mechanism> {
 }
 
 impl<'a, M: Mechanism> Solver<'a, M> {
-    fn new(
+    pub(crate) fn new(
         path: KinematicPath<M>,
         times: Vec<f64>,
         own: bool,
@@ -126,10 +138,14 @@ impl<'a, M: Mechanism> Solver<'a, M> {
             ended: None,
         }
     }
+}
 
-    /// The next [`BATCH`] states solved (fewer at the end), handed over in place of `empty`;
-    /// `None` once every state is handed over.
-    fn fill(&mut self, empty: Batch) -> Option<Batch> {
+impl<M: Mechanism + Send> Source for Solver<'_, M> {
+    type Batch = Batch;
+    type End = (PathStats, Result<(), Error>);
+
+    /// The next [`BATCH`] states solved (fewer at the end).
+    fn fill(&mut self, spare: Option<Batch>) -> Option<Batch> {
         while self.ended.is_none() && self.batch.len() < BATCH {
             match self.times.next() {
                 Some(_) if self.stop.is_some_and(|s| s.load(Ordering::Relaxed)) => {
@@ -142,12 +158,18 @@ impl<'a, M: Mechanism> Solver<'a, M> {
                 None => self.ended = Some(Ok(())),
             }
         }
-        (self.batch.len() > 0).then(|| std::mem::replace(&mut self.batch, empty))
-    }
-
-    /// A batch with no room yet, for the states after the ones being filled.
-    fn empty(&self) -> Batch {
-        Batch::new(self.path.info(), self.batch.own)
+        if self.batch.len() == 0 {
+            return None;
+        }
+        // The states after these go into the spare batch, or a new one.
+        let next = match spare {
+            Some(mut b) => {
+                b.clear();
+                b
+            }
+            None => Batch::new(self.path.info(), self.batch.own),
+        };
+        Some(std::mem::replace(&mut self.batch, next))
     }
 
     fn end(self) -> (PathStats, Result<(), Error>) {
@@ -156,30 +178,31 @@ impl<'a, M: Mechanism> Solver<'a, M> {
 }
 
 /// The recording's end of [`follow`] and [`record_beside`].
-pub(crate) enum Feed<'f, 'a, M: Mechanism> {
-    /// The path solves on the recording's thread, a batch at a time.
-    Here(&'f mut Solver<'a, M>),
-    /// The path solves on another thread.
+pub(crate) enum Feed<'f, S: Source> {
+    /// The source runs on the recording's thread, a batch at a time.
+    Here {
+        source: &'f mut S,
+        /// The last batch recorded, to fill again.
+        spare: Option<S::Batch>,
+    },
+    /// The source runs on another thread.
     Channel {
-        solved: mpsc::Receiver<Batch>,
-        emptied: mpsc::Sender<Batch>,
+        solved: mpsc::Receiver<S::Batch>,
+        emptied: mpsc::Sender<S::Batch>,
     },
 }
 
-impl<M: Mechanism> Feed<'_, '_, M> {
-    /// The next solved states in time order; `None` once the path has ended. From another
+impl<S: Source> Feed<'_, S> {
+    /// The next solved states in time order; `None` once the source has ended. From another
     /// thread, polls for [`POLL`] before it sleeps: a recording faster than the path would
     /// otherwise sleep before every batch, and Linux then wakes it on the path's core (it
     /// counts the sender's core as warm for it) and often keeps it there for a run of a few
     /// milliseconds, the two threads sharing one core while the other idles (the paper
     /// scene's printed time fell into two groups, about 5 and 8.5 ms; 8 ms is what both
     /// threads pinned to one core take).
-    pub(crate) fn next(&mut self) -> Option<Batch> {
+    pub(crate) fn next(&mut self) -> Option<S::Batch> {
         let solved = match self {
-            Feed::Here(solver) => {
-                let empty = solver.empty();
-                return solver.fill(empty);
-            }
+            Feed::Here { source, spare } => return source.fill(spare.take()),
             Feed::Channel { solved, .. } => solved,
         };
         let start = Instant::now();
@@ -193,16 +216,11 @@ impl<M: Mechanism> Feed<'_, '_, M> {
         }
     }
 
-    /// Hands a recorded batch back for the path to fill again.
-    pub(crate) fn recycle(&mut self, mut batch: Batch) {
-        batch.clear();
+    /// Hands a recorded batch back for the source to fill again.
+    pub(crate) fn recycle(&mut self, batch: S::Batch) {
         match self {
-            Feed::Here(solver) => {
-                if solver.batch.len() == 0 {
-                    solver.batch = batch;
-                }
-            }
-            // The path may have finished: then the batch is not needed.
+            Feed::Here { spare, .. } => *spare = Some(batch),
+            // The source may have finished: then the batch is not needed.
             Feed::Channel { emptied, .. } => {
                 let _ = emptied.send(batch);
             }
@@ -385,7 +403,7 @@ mod tests {
     use symbody_testkit::models::{CircleDriver, CIRCLE_C0, CIRCLE_D, CIRCLE_V};
 
     /// The times of every state `feed` hands over, taking them all.
-    fn times_of(feed: &mut Feed<'_, '_, CircleDriver>) -> Vec<f64> {
+    fn times_of(feed: &mut Feed<'_, Solver<'_, CircleDriver>>) -> Vec<f64> {
         let mut times = Vec::new();
         while let Some(batch) = feed.next() {
             times.extend((0..batch.len()).map(|k| batch.state(k).t));
@@ -398,14 +416,20 @@ mod tests {
     fn each_layout<R: Send>(
         times: &[f64],
         stop: Option<&AtomicBool>,
-        record: impl Fn(&mut Feed<'_, '_, CircleDriver>) -> R + Sync,
+        record: impl Fn(&mut Feed<'_, Solver<'_, CircleDriver>>) -> R + Sync,
     ) -> Vec<(R, PathStats, Result<(), Error>)> {
-        let path = || KinematicPath::new(CircleDriver, 0.0).unwrap();
-        vec![
-            follow(path(), (times.to_vec(), true, false), stop, &record),
-            follow(path(), (times.to_vec(), true, true), stop, &record),
-            record_beside(path(), (times.to_vec(), true), stop, &record),
+        let path = || {
+            let path = KinematicPath::new(CircleDriver, 0.0).unwrap();
+            Solver::new(path, times.to_vec(), true, stop)
+        };
+        [
+            follow(path(), false, &record),
+            follow(path(), true, &record),
+            record_beside(path(), &record),
         ]
+        .into_iter()
+        .map(|(recorded, (stats, ended))| (recorded, stats, ended))
+        .collect()
     }
 
     /// The slider held at x = d on a circle of radius c(t) = c₀ − v t has no position once
@@ -434,7 +458,7 @@ mod tests {
     #[test]
     fn the_path_stops_with_its_recording_or_its_flag() {
         let times: Vec<f64> = (1..=1000).map(|k| 0.001 * k as f64).collect();
-        let first = |feed: &mut Feed<'_, '_, CircleDriver>| feed.next().map(|b| b.len());
+        let first = |feed: &mut Feed<'_, Solver<'_, CircleDriver>>| feed.next().map(|b| b.len());
         for (k, (taken, stats, ended)) in each_layout(&times, None, first).iter().enumerate() {
             assert_eq!(*taken, Some(BATCH), "layout {k}");
             assert!(ended.is_ok(), "layout {k}: {ended:?}");

@@ -351,7 +351,7 @@ fn kinematic_run<M: Mechanism + Sync>(
         .map(|k| (k as f64 * opts.output_step).min(opts.t_end))
         .collect();
     let mech = &mech;
-    let recording = move |feed: &mut path_feed::Feed<'_, '_, _>| -> Result<Run, ScenarioError> {
+    let recording = move |feed: &mut path_feed::Feed<'_, path_feed::Solver<'_, _>>| -> Result<Run, ScenarioError> {
         // Set up while the path starts.
         let mut reading = match reduced {
             Some((_, reduction)) => Some(FullState::new(reduction, info)?),
@@ -380,9 +380,8 @@ fn kinematic_run<M: Mechanism + Sync>(
         }
         Ok(run)
     };
-    let own = reduced.is_none();
-    let (run, stats, followed) =
-        path_feed::record_beside(path, (times, own), Some(stop), recording);
+    let solver = path_feed::Solver::new(path, times, reduced.is_none(), Some(stop));
+    let (run, (stats, followed)) = path_feed::record_beside(solver, recording);
     let mut run = run?;
     followed?;
     // A path stopped before its end.

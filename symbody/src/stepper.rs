@@ -1,0 +1,370 @@
+//! An integration's outputs as a [`Source`] for [`path_feed`]: the integrator, the energy
+//! meter and the checks that see every step run where the source runs, and each output
+//! goes to the recording with what was solved there.
+
+use crate::generic::{full_state, integrator, mode_watch, solve_settings, Error, Options};
+use crate::path_feed::Source;
+use crate::scenario::Reduced;
+use std::time::{Duration, Instant};
+use symbody_runtime::fk::ModeWatch;
+use symbody_runtime::{
+    EnergyMeter, EnergySample, EulerWarning, Integrator, Mechanism, Pivots, ResidualWatch,
+    Residuals, Stats,
+};
+
+/// Outputs handed over at a time, at most.
+const BATCH: usize = 16;
+
+/// How long a batch may take before it is handed over with fewer outputs (none at all in a
+/// long output interval): the recording tells its observer the time reached (a live
+/// progress bar, an interrupt) at least this often.
+const TICK: Duration = Duration::from_millis(50);
+
+/// Accepted steps between two looks at the clock for [`TICK`]: a look every step cost
+/// 3 % of a small model's run.
+const CLOCK_EVERY: u32 = 64;
+
+/// One output of an integration in the full model's terms: the state, what the energy
+/// meter solved there, the drift, and the integrator's counters once it got there.
+pub(crate) struct Integrated {
+    pub t: f64,
+    pub q: Vec<f64>,
+    pub qd: Vec<f64>,
+    pub qdd: Vec<f64>,
+    pub lambda: Vec<f64>,
+    pub phi_q: Vec<f64>,
+    pub pivots: Option<Pivots>,
+    pub residuals: Residuals,
+    pub sample: EnergySample,
+    pub stats: Stats,
+    pub euler_warning: Option<EulerWarning>,
+}
+
+impl Default for Integrated {
+    /// Room for an output, written before it is handed over.
+    fn default() -> Self {
+        Integrated {
+            t: 0.0,
+            q: Vec::new(),
+            qd: Vec::new(),
+            qdd: Vec::new(),
+            lambda: Vec::new(),
+            phi_q: Vec::new(),
+            pivots: None,
+            residuals: Residuals {
+                position: 0.0,
+                velocity: 0.0,
+            },
+            sample: EnergySample {
+                kinetic: 0.0,
+                potential: 0.0,
+                work: 0.0,
+                power: 0.0,
+            },
+            stats: Stats::default(),
+            euler_warning: None,
+        }
+    }
+}
+
+/// Outputs of an integration, and how far it had got when they were handed over.
+#[derive(Default)]
+pub(crate) struct Outputs {
+    /// Reused from batch to batch: only the first `len` are this batch's.
+    items: Vec<Integrated>,
+    len: usize,
+    /// The time reached and the steps taken.
+    pub reached: (f64, usize),
+}
+
+impl Outputs {
+    pub(crate) fn outputs(&self) -> &[Integrated] {
+        &self.items[..self.len]
+    }
+}
+
+/// The integration of [`crate::generic::run`]: steps to each output time in turn (the
+/// first output at the start), one accepted step at a time so that the meter, the
+/// residual and mode watches see every step. Ends with the integrator's counters, its first
+/// Euler warning, and `Ok` at the last output, else the first failure.
+pub(crate) struct Stepper {
+    mech: &'static (dyn Mechanism + Sync),
+    reduced: Option<Reduced>,
+    it: Integrator<&'static (dyn Mechanism + Sync)>,
+    meter: EnergyMeter,
+    watch: ResidualWatch,
+    modes: Option<ModeWatch>,
+    /// The full model's state, which every output and the meter see.
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    /// The reduction's work memory.
+    offsets: Vec<f64>,
+    output_step: f64,
+    t_end: f64,
+    /// The next output and the number of outputs.
+    next: usize,
+    n_out: usize,
+    ended: Option<Result<(), Error>>,
+}
+
+impl Stepper {
+    pub(crate) fn new(
+        (mech, reduced): (&'static (dyn Mechanism + Sync), Option<Reduced>),
+        opts: &Options,
+        (t_end, n_out): (f64, usize),
+    ) -> Result<Self, Error> {
+        let info = mech.info();
+        let it = integrator(reduced.map_or(mech, |(r, _)| r), opts)?;
+        let mut stepper = Stepper {
+            mech,
+            reduced,
+            it,
+            meter: EnergyMeter::with_settings(info, solve_settings(opts.cross_singular))?,
+            watch: ResidualWatch::new(info),
+            modes: None,
+            q: vec![0.0; info.n_coords],
+            qd: vec![0.0; info.n_coords],
+            offsets: vec![0.0; reduced.map_or(0, |(_, r)| 3 * r.substitutions.len())],
+            output_step: opts.output_step,
+            t_end,
+            next: 0,
+            n_out,
+            ended: None,
+        };
+        stepper.full_state()?;
+        stepper.modes = mode_watch(mech, &stepper.q)?;
+        stepper
+            .meter
+            .advance(&mech, stepper.it.t(), &stepper.q, &stepper.qd)?;
+        Ok(stepper)
+    }
+
+    fn full_state(&mut self) -> Result<(), Error> {
+        full_state(
+            &self.it,
+            self.reduced,
+            &mut self.offsets,
+            (&mut self.q, &mut self.qd),
+        )
+    }
+
+    /// Steps toward the next output until it is reached (then written to `out`: `true`) or
+    /// until `deadline`, looked at every [`CLOCK_EVERY`] steps (`false`).
+    fn advance(&mut self, out: &mut Integrated, deadline: Instant) -> Result<bool, Error> {
+        let t_out = (self.next as f64 * self.output_step).min(self.t_end);
+        let mut steps = 0;
+        while self.it.step_toward(t_out)?.is_some() {
+            self.full_state()?;
+            if let Some(w) = &self.modes {
+                w.check(&self.q, self.it.t())?;
+            }
+            self.meter
+                .advance(&self.mech, self.it.t(), &self.q, &self.qd)?;
+            steps += 1;
+            if steps % CLOCK_EVERY == 0 && Instant::now() >= deadline {
+                return Ok(false);
+            }
+        }
+        let sample = self.meter.sample(&self.mech, &self.q, &self.qd)?;
+        let residuals = self
+            .watch
+            .check(&self.mech, self.it.t(), &self.q, &self.qd)?;
+        out.t = self.it.t();
+        for (to, from) in [
+            (&mut out.q, &self.q[..]),
+            (&mut out.qd, &self.qd),
+            (&mut out.qdd, self.meter.qdd()),
+            (&mut out.lambda, self.meter.lambda()),
+            (&mut out.phi_q, self.meter.phi_q()),
+        ] {
+            to.clear();
+            to.extend_from_slice(from);
+        }
+        out.pivots = self.meter.pivots();
+        out.residuals = residuals;
+        out.sample = sample;
+        out.stats = self.it.stats();
+        out.euler_warning = self.it.first_euler_warning();
+        self.next += 1;
+        Ok(true)
+    }
+}
+
+impl Source for Stepper {
+    type Batch = Outputs;
+    type End = (Stats, Option<EulerWarning>, Result<(), Error>);
+
+    /// The next [`BATCH`] outputs, fewer at the end or after [`TICK`].
+    fn fill(&mut self, spare: Option<Outputs>) -> Option<Outputs> {
+        if self.ended.is_some() {
+            return None;
+        }
+        let mut batch = spare.unwrap_or_default();
+        batch.len = 0;
+        let deadline = Instant::now() + TICK;
+        while batch.len < BATCH && self.ended.is_none() {
+            if self.next > self.n_out {
+                self.ended = Some(Ok(()));
+                break;
+            }
+            if batch.items.len() == batch.len {
+                batch.items.push(Integrated::default());
+            }
+            match self.advance(&mut batch.items[batch.len], deadline) {
+                Ok(true) => batch.len += 1,
+                Ok(false) => break,
+                Err(e) => self.ended = Some(Err(e)),
+            }
+            if Instant::now() >= deadline {
+                break;
+            }
+        }
+        batch.reached = (self.it.t(), self.it.stats().steps);
+        Some(batch)
+    }
+
+    /// `Ok` too when the recording stopped taking outputs first.
+    fn end(self) -> Self::End {
+        let ended = self.ended.unwrap_or(Ok(()));
+        (self.it.stats(), self.it.first_euler_warning(), ended)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Stepper;
+    use crate::generic::{find, run_observed, Observer, Options, Recording, Stopped};
+    use crate::path_feed;
+    use crate::scenario::ScenarioError;
+    use std::ops::ControlFlow;
+    use symbody_mechanisms::REGISTRY;
+    use symbody_testkit::models::{CircleDriver, CIRCLE_C0, CIRCLE_D, CIRCLE_V};
+
+    /// Runs `name` with the integration on a thread of its own and on the recording's;
+    /// `obs` sees each.
+    fn both_layouts(
+        name: &str,
+        opts: Options,
+        mut obs: impl Observer,
+    ) -> [Result<Recording, Stopped>; 2] {
+        let entry = find(&REGISTRY, name).unwrap();
+        [true, false].map(|path_thread| {
+            let opts = Options {
+                path_thread,
+                ..opts
+            };
+            run_observed(entry, &opts, &mut obs)
+        })
+    }
+
+    /// A recording's every number, the wall time aside (`{:?}` writes each f64 so that it
+    /// reads back to the same bits).
+    fn numbers(rec: &Recording) -> String {
+        let mut rec = rec.clone();
+        rec.wall = std::time::Duration::ZERO;
+        format!("{rec:?}")
+    }
+
+    /// The two layouts record the same outputs, bit for bit, with the same counters.
+    #[test]
+    fn an_integration_records_alike_on_its_own_thread_and_on_the_recordings() {
+        let opts = Options {
+            t_end: Some(0.5),
+            ..Options::default()
+        };
+        let [beside, here] = both_layouts("spherical_pendulum", opts, ());
+        let (beside, here) = (beside.unwrap(), here.unwrap());
+        assert_eq!(beside.t.len(), 51);
+        assert!(beside.stats.steps > 50, "{:?}", beside.stats);
+        assert_eq!(numbers(&beside), numbers(&here));
+    }
+
+    /// The slider held at x = d on a circle of radius c(t) = c₀ − v t has no position once
+    /// c < d (t > 2 s), so the integration fails on the way there. Both layouts hand over
+    /// every output before the failure, in order, then the failure, with the same counters.
+    #[test]
+    fn the_outputs_before_a_failure_come_first_then_the_failure() {
+        static CIRCLE: CircleDriver = CircleDriver;
+        let end = (CIRCLE_C0 - CIRCLE_D) / CIRCLE_V;
+        assert_eq!(end, 2.0);
+        let opts = Options::default();
+        let n_out = 300;
+        let t_end = n_out as f64 * opts.output_step;
+        let runs = [true, false].map(|thread| {
+            let stepper = Stepper::new((&CIRCLE, None), &opts, (t_end, n_out)).unwrap();
+            path_feed::follow(stepper, thread, |feed| {
+                let mut times = Vec::new();
+                while let Some(batch) = feed.next() {
+                    times.extend(batch.outputs().iter().map(|out| out.t));
+                    feed.recycle(batch);
+                }
+                times
+            })
+        });
+        for (k, (times, (stats, _, ended))) in runs.iter().enumerate() {
+            assert!(ended.is_err(), "layout {k}: {ended:?}");
+            let last = *times.last().unwrap();
+            assert!(
+                last > 1.9 && last < end,
+                "layout {k}: last output at {last}"
+            );
+            for (i, t) in times.iter().enumerate() {
+                assert_eq!(*t, (i as f64 * opts.output_step).min(t_end), "layout {k}");
+            }
+            assert!(stats.rejected_steps > 0, "layout {k}: {stats:?}");
+            let first = &runs[0];
+            assert_eq!((times, stats), (&first.0, &first.1 .0), "layout {k}");
+            assert_eq!(
+                ended.as_ref().unwrap_err().to_string(),
+                first.1 .2.as_ref().unwrap_err().to_string()
+            );
+        }
+    }
+
+    /// Stops the run once it has seen time `after`, counting the calls.
+    struct StopAfter {
+        after: f64,
+        seen: Vec<f64>,
+    }
+
+    impl Observer for StopAfter {
+        fn progress(&mut self, t: f64, _steps: usize) -> ControlFlow<()> {
+            self.seen.push(t);
+            if t >= self.after {
+                ControlFlow::Break(())
+            } else {
+                ControlFlow::Continue(())
+            }
+        }
+    }
+
+    /// An observer that asks to stop stops the integration in either layout: the outputs
+    /// recorded so far, in order, then `Interrupted` at the time the observer was last told.
+    #[test]
+    fn an_integration_stops_when_its_observer_asks() {
+        let opts = Options {
+            t_end: Some(2.0),
+            ..Options::default()
+        };
+        for (k, run) in both_layouts(
+            "spherical_pendulum",
+            opts,
+            StopAfter {
+                after: 0.3,
+                seen: Vec::new(),
+            },
+        )
+        .into_iter()
+        .enumerate()
+        {
+            let stopped = run.unwrap_err();
+            let ScenarioError::Interrupted { time } = stopped.error else {
+                panic!("layout {k}: {}", stopped.error);
+            };
+            assert!((0.3..2.0).contains(&time), "layout {k}: stopped at {time}");
+            let rec = stopped.recording.unwrap();
+            assert!(rec.t.windows(2).all(|w| w[0] < w[1]), "layout {k}");
+            assert!(*rec.t.last().unwrap() <= time, "layout {k}");
+        }
+    }
+}
