@@ -199,7 +199,9 @@ impl<S: Source> Feed<'_, S> {
     /// counts the sender's core as warm for it) and often keeps it there for a run of a few
     /// milliseconds, the two threads sharing one core while the other idles (the paper
     /// scene's printed time fell into two groups, about 5 and 8.5 ms; 8 ms is what both
-    /// threads pinned to one core take).
+    /// threads pinned to one core take). It polls yielding its core, not spinning: with two
+    /// integrated scenes run at once on two cores, spinning made them 1.5–2 times as long,
+    /// and alone neither way was slower (alternated runs, 2026-11-29).
     pub(crate) fn next(&mut self) -> Option<S::Batch> {
         let solved = match self {
             Feed::Here { source, spare } => return source.fill(spare.take()),
@@ -210,7 +212,9 @@ impl<S: Source> Feed<'_, S> {
             match solved.try_recv() {
                 Ok(batch) => return Some(batch),
                 Err(mpsc::TryRecvError::Disconnected) => return None,
-                Err(mpsc::TryRecvError::Empty) if start.elapsed() < POLL => std::hint::spin_loop(),
+                Err(mpsc::TryRecvError::Empty) if start.elapsed() < POLL => {
+                    std::thread::yield_now()
+                }
                 Err(mpsc::TryRecvError::Empty) => return solved.recv().ok(),
             }
         }
