@@ -4,7 +4,7 @@
 
 pub use symbody_codegen::diag::closest;
 
-use crate::path_feed::{self, State};
+use crate::path_feed::{self, State, Thread};
 use crate::scenario::{output_count, Reduced, ScenarioError};
 use crate::stepper::Stepper;
 use std::ops::ControlFlow;
@@ -457,8 +457,15 @@ fn observed(
     }
 }
 
+/// How long an integration runs on the recording's thread before it takes a thread of its
+/// own (where `Options::path_thread`). Measured (alternated pairs, 2026-11-29), with the
+/// thread from the start: runs of 0.5 ms took 0.2–0.3 ms longer (1.4–1.7 times), of
+/// 1.9 ms 1.18 times, of 4.2 ms 0.98 times, of 9.6–166 ms 0.82–0.91 times.
+const INTEGRATION_ALONE: Duration = Duration::from_millis(2);
+
 /// The integration loop of [`run_observed`]: the integration ([`Stepper`]) on a thread of
-/// its own beside this one's recording where `opts.path_thread`.
+/// its own beside this one's recording where `opts.path_thread`, once it has run
+/// [`INTEGRATION_ALONE`].
 fn integrate(
     model: (&'static (dyn Mechanism + Sync), Option<Reduced>),
     opts: &Options,
@@ -468,7 +475,7 @@ fn integrate(
 ) -> Result<(), Error> {
     let stepper = Stepper::new(model, opts, (t_end, n_out))?;
     rec.work_integrated = true;
-    let recording = |feed: &mut path_feed::Feed<'_, Stepper>| -> Result<(), Error> {
+    let recording = |feed: &mut path_feed::Feed<'_, '_, Stepper>| -> Result<(), Error> {
         while let Some(batch) = feed.next() {
             for out in batch.outputs() {
                 rec.stats = out.stats;
@@ -491,8 +498,12 @@ fn integrate(
         }
         Ok(())
     };
-    let (recorded, (stats, euler_warning, ended)) =
-        path_feed::follow(stepper, opts.path_thread, recording);
+    let thread = if opts.path_thread {
+        Thread::After(INTEGRATION_ALONE)
+    } else {
+        Thread::No
+    };
+    let (recorded, (stats, euler_warning, ended)) = path_feed::follow(stepper, thread, recording);
     recorded?;
     // The counters and warnings so far belong to the recording even if a step failed.
     rec.stats = stats;
@@ -678,7 +689,7 @@ fn follow_path(
     let mut inside = [0.0; 2];
     let mut solved = 0;
     let recording =
-        |feed: &mut path_feed::Feed<'_, path_feed::Solver<'_, _>>| -> Result<(), Error> {
+        |feed: &mut path_feed::Feed<'_, '_, path_feed::Solver<'_, _>>| -> Result<(), Error> {
             while let Some(batch) = feed.next() {
                 for k in 0..batch.len() {
                     let s = batch.state(k);
@@ -721,7 +732,8 @@ fn follow_path(
             }
             Ok(())
         };
-    let (recorded, (stats, followed)) = path_feed::follow(solver, on_thread, recording);
+    let thread = if on_thread { Thread::Yes } else { Thread::No };
+    let (recorded, (stats, followed)) = path_feed::follow(solver, thread, recording);
     // Whether or not the path got to its end; the quadrature's interior solves count in
     // the iterations and factorizations, not as outputs.
     rec.kinematic = Some(PathStats {

@@ -5,38 +5,53 @@
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::mpsc;
+use std::thread::{Scope, ScopedJoinHandle};
 use std::time::{Duration, Instant};
 use symbody_runtime::kkt::Pivots;
 use symbody_runtime::{Error, KinematicPath, Mechanism, MechanismInfo, PathStats};
 
+/// Where [`follow`] runs its source.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Thread {
+    /// On the recording's thread, as it asks for each batch.
+    No,
+    /// On a thread of its own from the start.
+    Yes,
+    /// On the recording's thread until it has run this long, then on its own: a run too
+    /// short to repay a thread's start never starts one.
+    After(Duration),
+}
+
 /// Runs `source` and hands its states to `record` through a [`Feed`], in batches, in time
-/// order; the source runs on a second thread when `thread`, else on this one as `record`
-/// asks for each batch. The source stops at its own end or when `record` returns (at its
-/// next hand-over). Returns what `record` returned and how the source ended.
+/// order, the source on the thread `thread` says. The source stops at its own end or when
+/// `record` returns (at its next hand-over). Returns what `record` returned and how the
+/// source ended.
 pub(crate) fn follow<S: Source + Send, R>(
-    mut source: S,
-    thread: bool,
-    record: impl FnOnce(&mut Feed<'_, S>) -> R,
+    source: S,
+    thread: Thread,
+    record: impl FnOnce(&mut Feed<'_, '_, S>) -> R,
 ) -> (R, S::End)
 where
     S::End: Send,
 {
-    if !thread {
-        let recorded = record(&mut Feed::Here {
-            source: &mut source,
-            spare: None,
-        });
-        return (recorded, source.end());
-    }
     std::thread::scope(|scope| {
-        let (mut feed, producer) = channel();
-        let path = scope.spawn(move || producer.run(source));
+        let mut feed = Feed {
+            at: At::Here {
+                source,
+                spare: None,
+            },
+            thread: None,
+            move_at: None,
+        };
+        match thread {
+            Thread::No => {}
+            Thread::Yes => feed.move_to(scope),
+            Thread::After(run) => feed.move_at = Some((scope, Instant::now() + run)),
+        }
         let recorded = record(&mut feed);
-        // The source's thread stops at its next hand-over.
-        drop(feed);
-        let ended = path
-            .join()
-            .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+        let ended = feed
+            .end()
+            .expect("a followed source runs on the recording's thread or its own");
         (recorded, ended)
     })
 }
@@ -47,10 +62,18 @@ where
 /// instruction, the printed time 1.16 times this order's, median of 20 alternated pairs).
 pub(crate) fn record_beside<S: Source + Send, R: Send>(
     source: S,
-    record: impl FnOnce(&mut Feed<'_, S>) -> R + Send,
-) -> (R, S::End) {
+    record: impl FnOnce(&mut Feed<'_, '_, S>) -> R + Send,
+) -> (R, S::End)
+where
+    S::End: Send,
+{
     std::thread::scope(|scope| {
-        let (mut feed, producer) = channel();
+        let (at, producer) = channel();
+        let mut feed = Feed {
+            at,
+            thread: None,
+            move_at: None,
+        };
         let recording = scope.spawn(move || record(&mut feed));
         let ended = producer.run(source);
         let recorded = recording
@@ -75,14 +98,14 @@ pub(crate) trait Source {
 }
 
 /// The two ends of a hand-over between threads.
-fn channel<'f, S: Source>() -> (Feed<'f, S>, Producer<S::Batch>) {
+fn channel<S: Source>() -> (At<S>, Producer<S::Batch>) {
     let (to_caller, solved) = mpsc::sync_channel(QUEUE);
     let (to_path, emptied) = mpsc::channel();
-    let feed = Feed::Channel {
+    let at = At::Channel {
         solved,
         emptied: to_path,
     };
-    (feed, Producer { to_caller, emptied })
+    (at, Producer { to_caller, emptied })
 }
 
 /// The source's end of a hand-over between threads.
@@ -178,21 +201,65 @@ impl<M: Mechanism + Send> Source for Solver<'_, M> {
 }
 
 /// The recording's end of [`follow`] and [`record_beside`].
-pub(crate) enum Feed<'f, S: Source> {
-    /// The source runs on the recording's thread, a batch at a time.
+pub(crate) struct Feed<'scope, 'env, S: Source + 'scope> {
+    at: At<S>,
+    /// The source's own thread, once it has one ([`follow`]).
+    thread: Option<ScopedJoinHandle<'scope, S::End>>,
+    /// When to move a source that runs here to a thread of its own ([`Thread::After`]).
+    move_at: Option<(&'scope Scope<'scope, 'env>, Instant)>,
+}
+
+/// Where a [`Feed`]'s source runs.
+enum At<S: Source> {
+    /// On the recording's thread, a batch at a time.
     Here {
-        source: &'f mut S,
+        source: S,
         /// The last batch recorded, to fill again.
         spare: Option<S::Batch>,
     },
-    /// The source runs on another thread.
+    /// On another thread.
     Channel {
         solved: mpsc::Receiver<S::Batch>,
         emptied: mpsc::Sender<S::Batch>,
     },
 }
 
-impl<S: Source> Feed<'_, S> {
+impl<'scope, S: Source + Send + 'scope> Feed<'scope, '_, S>
+where
+    S::End: Send + 'scope,
+{
+    /// Moves a source that runs here to a thread of its own.
+    fn move_to(&mut self, scope: &'scope Scope<'scope, '_>) {
+        let (channel, producer) = channel();
+        let At::Here { source, spare } = std::mem::replace(&mut self.at, channel) else {
+            return;
+        };
+        if let Some(batch) = spare {
+            self.recycle(batch);
+        }
+        self.thread = Some(scope.spawn(move || producer.run(source)));
+    }
+
+    /// How the source ended: at once when it runs here, else once its thread has stopped
+    /// (at its next hand-over); `None` for [`record_beside`]'s recording, whose source
+    /// ends on the caller's thread.
+    fn end(self) -> Option<S::End> {
+        match self.at {
+            At::Here { source, .. } => Some(source.end()),
+            At::Channel { solved, emptied } => {
+                drop((solved, emptied));
+                let thread = self.thread?;
+                Some(
+                    thread
+                        .join()
+                        .unwrap_or_else(|panic| std::panic::resume_unwind(panic)),
+                )
+            }
+        }
+    }
+}
+
+impl<'scope, S: Source> Feed<'scope, '_, S> {
     /// The next solved states in time order; `None` once the source has ended. From another
     /// thread, polls for [`POLL`] before it sleeps: a recording faster than the path would
     /// otherwise sleep before every batch, and Linux then wakes it on the path's core (it
@@ -202,10 +269,20 @@ impl<S: Source> Feed<'_, S> {
     /// threads pinned to one core take). It polls yielding its core, not spinning: with two
     /// integrated scenes run at once on two cores, spinning made them 1.5–2 times as long,
     /// and alone neither way was slower (alternated runs, 2026-11-29).
-    pub(crate) fn next(&mut self) -> Option<S::Batch> {
-        let solved = match self {
-            Feed::Here { source, spare } => return source.fill(spare.take()),
-            Feed::Channel { solved, .. } => solved,
+    pub(crate) fn next(&mut self) -> Option<S::Batch>
+    where
+        S: Send + 'scope,
+        S::End: Send + 'scope,
+    {
+        if let Some((scope, at)) = self.move_at {
+            if Instant::now() >= at {
+                self.move_at = None;
+                self.move_to(scope);
+            }
+        }
+        let solved = match &mut self.at {
+            At::Here { source, spare } => return source.fill(spare.take()),
+            At::Channel { solved, .. } => solved,
         };
         let start = Instant::now();
         loop {
@@ -222,10 +299,10 @@ impl<S: Source> Feed<'_, S> {
 
     /// Hands a recorded batch back for the source to fill again.
     pub(crate) fn recycle(&mut self, batch: S::Batch) {
-        match self {
-            Feed::Here { spare, .. } => *spare = Some(batch),
+        match &mut self.at {
+            At::Here { spare, .. } => *spare = Some(batch),
             // The source may have finished: then the batch is not needed.
-            Feed::Channel { emptied, .. } => {
+            At::Channel { emptied, .. } => {
                 let _ = emptied.send(batch);
             }
         }
@@ -407,7 +484,7 @@ mod tests {
     use symbody_testkit::models::{CircleDriver, CIRCLE_C0, CIRCLE_D, CIRCLE_V};
 
     /// The times of every state `feed` hands over, taking them all.
-    fn times_of(feed: &mut Feed<'_, Solver<'_, CircleDriver>>) -> Vec<f64> {
+    fn times_of(feed: &mut Feed<'_, '_, Solver<'_, CircleDriver>>) -> Vec<f64> {
         let mut times = Vec::new();
         while let Some(batch) = feed.next() {
             times.extend((0..batch.len()).map(|k| batch.state(k).t));
@@ -420,15 +497,15 @@ mod tests {
     fn each_layout<R: Send>(
         times: &[f64],
         stop: Option<&AtomicBool>,
-        record: impl Fn(&mut Feed<'_, Solver<'_, CircleDriver>>) -> R + Sync,
+        record: impl Fn(&mut Feed<'_, '_, Solver<'_, CircleDriver>>) -> R + Sync,
     ) -> Vec<(R, PathStats, Result<(), Error>)> {
         let path = || {
             let path = KinematicPath::new(CircleDriver, 0.0).unwrap();
             Solver::new(path, times.to_vec(), true, stop)
         };
         [
-            follow(path(), false, &record),
-            follow(path(), true, &record),
+            follow(path(), Thread::No, &record),
+            follow(path(), Thread::Yes, &record),
             record_beside(path(), &record),
         ]
         .into_iter()
@@ -457,12 +534,44 @@ mod tests {
         }
     }
 
+    /// A path that moves to a thread of its own while it runs ([`Thread::After`]) hands over
+    /// the states and ends as on one thread. The recording pauses after its first batch,
+    /// past the time the move waits for, so that the move comes mid-run (or at the first
+    /// batch on a slow machine: the states are the same either way).
+    #[test]
+    fn a_path_moved_to_its_own_thread_midway_hands_over_the_same_states() {
+        let times: Vec<f64> = (1..=300).map(|k| 0.01 * k as f64).collect();
+        let run = |thread| {
+            let path = KinematicPath::new(CircleDriver, 0.0).unwrap();
+            let solver = Solver::new(path, times.clone(), true, None);
+            follow(solver, thread, |feed| {
+                let mut seen = Vec::new();
+                while let Some(batch) = feed.next() {
+                    if seen.is_empty() {
+                        std::thread::sleep(Duration::from_millis(3));
+                    }
+                    seen.extend((0..batch.len()).map(|k| batch.state(k).t));
+                    feed.recycle(batch);
+                }
+                (seen, feed.thread.is_some())
+            })
+        };
+        let ((here, on_thread), (stats, ended)) = run(Thread::No);
+        assert!(!on_thread);
+        let ((moved, on_thread), (moved_stats, moved_ended)) =
+            run(Thread::After(Duration::from_millis(1)));
+        assert!(on_thread);
+        assert_eq!((moved, moved_stats), (here, stats));
+        assert_eq!(moved_ended.unwrap_err().to_string(), ended.unwrap_err().to_string());
+    }
+
     /// A recording that stops taking states stops the path within the batches queued for it;
     /// `stop` set before the start leaves only the start.
     #[test]
     fn the_path_stops_with_its_recording_or_its_flag() {
         let times: Vec<f64> = (1..=1000).map(|k| 0.001 * k as f64).collect();
-        let first = |feed: &mut Feed<'_, Solver<'_, CircleDriver>>| feed.next().map(|b| b.len());
+        let first =
+            |feed: &mut Feed<'_, '_, Solver<'_, CircleDriver>>| feed.next().map(|b| b.len());
         for (k, (taken, stats, ended)) in each_layout(&times, None, first).iter().enumerate() {
             assert_eq!(*taken, Some(BATCH), "layout {k}");
             assert!(ended.is_ok(), "layout {k}: {ended:?}");

@@ -351,7 +351,7 @@ fn kinematic_run<M: Mechanism + Sync>(
         .map(|k| (k as f64 * opts.output_step).min(opts.t_end))
         .collect();
     let mech = &mech;
-    let recording = move |feed: &mut path_feed::Feed<'_, path_feed::Solver<'_, _>>| -> Result<Run, ScenarioError> {
+    let recording = move |feed: &mut path_feed::Feed<'_, '_, path_feed::Solver<'_, _>>| -> Result<Run, ScenarioError> {
         // Set up while the path starts.
         let mut reading = match reduced {
             Some((_, reduction)) => Some(FullState::new(reduction, info)?),

@@ -234,7 +234,7 @@ impl Source for Stepper {
 mod tests {
     use super::Stepper;
     use crate::generic::{find, run_observed, Observer, Options, Recording, Stopped};
-    use crate::path_feed;
+    use crate::path_feed::{self, Thread};
     use crate::scenario::ScenarioError;
     use std::ops::ControlFlow;
     use symbody_mechanisms::REGISTRY;
@@ -290,7 +290,7 @@ mod tests {
         let opts = Options::default();
         let n_out = 300;
         let t_end = n_out as f64 * opts.output_step;
-        let runs = [true, false].map(|thread| {
+        let runs = [Thread::Yes, Thread::No].map(|thread| {
             let stepper = Stepper::new((&CIRCLE, None), &opts, (t_end, n_out)).unwrap();
             path_feed::follow(stepper, thread, |feed| {
                 let mut times = Vec::new();
