@@ -192,6 +192,19 @@ impl<K: KktSolver> EnergyMeter<K> {
         })
     }
 
+    /// Whether `q̈` and λ at the last record's state are solved (where rows move with time
+    /// the power needed them), so that [`EnergyMeter::sample`] solves nothing.
+    pub fn solved(&self) -> bool {
+        self.solved
+    }
+
+    /// The work since the first record (J) and the power at the last record's state (W):
+    /// what [`EnergyMeter::sample`] adds to the energies, for a caller that solves the state
+    /// elsewhere.
+    pub fn work_and_power(&self) -> (f64, f64) {
+        (self.work.value(), self.power)
+    }
+
     /// `q̈` and λ at the state; checks the mechanism against `info` too.
     fn solve<M: Mechanism>(
         &mut self,

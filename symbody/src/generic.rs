@@ -6,7 +6,7 @@ pub use symbody_codegen::diag::closest;
 
 use crate::path_feed::{self, State, Thread};
 use crate::scenario::{output_count, Reduced, ScenarioError};
-use crate::stepper::Stepper;
+use crate::stepper::{OutputSolve, Stepper};
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
@@ -474,20 +474,16 @@ fn integrate(
     obs: &mut dyn Observer,
 ) -> Result<(), Error> {
     let stepper = Stepper::new(model, opts, (t_end, n_out))?;
+    let mut at_output = OutputSolve::new(model.0.info(), opts)?;
     rec.work_integrated = true;
     let recording = |feed: &mut path_feed::Feed<'_, '_, Stepper>| -> Result<(), Error> {
         while let Some(batch) = feed.next() {
             for out in batch.outputs() {
                 rec.stats = out.stats;
                 rec.euler_warning = out.euler_warning;
-                let solution = Solution {
-                    qdd: &out.qdd,
-                    lambda: &out.lambda,
-                    phi_q: &out.phi_q,
-                    pivots: out.pivots,
-                };
+                let (solution, residuals, sample) = at_output.read(model.0, out)?;
                 let state = (out.t, &out.q[..], &out.qd[..]);
-                record(rec, solution, out.residuals, state, out.sample)?;
+                record(rec, solution, residuals, state, sample)?;
                 obs.output(rec)?;
             }
             let (t, steps) = batch.reached;
@@ -879,11 +875,11 @@ pub(crate) fn solve_settings(cross_singular: bool) -> KinematicSettings {
 
 /// The solution of `[M Φqᵀ; Φq 0][q̈; λ] = [Q; γ]` at an output's state, and the Φq it was
 /// solved with: what the output's reactions are read from.
-struct Solution<'a> {
-    qdd: &'a [f64],
-    lambda: &'a [f64],
-    phi_q: &'a [f64],
-    pivots: Option<Pivots>,
+pub(crate) struct Solution<'a> {
+    pub qdd: &'a [f64],
+    pub lambda: &'a [f64],
+    pub phi_q: &'a [f64],
+    pub pivots: Option<Pivots>,
 }
 
 /// Appends the output `(t, q, q̇)` with its solution `s`.

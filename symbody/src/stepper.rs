@@ -1,15 +1,19 @@
 //! An integration's outputs as a [`Source`] for [`path_feed`]: the integrator, the energy
-//! meter and the checks that see every step run where the source runs, and each output
-//! goes to the recording with what was solved there.
+//! meter and the checks that see every step run where the source runs; each output goes to
+//! the recording, which solves it for its reactions and energies ([`OutputSolve`]) unless
+//! the meter already has.
 
-use crate::generic::{full_state, integrator, mode_watch, solve_settings, Error, Options};
+use crate::generic::{
+    full_state, integrator, mode_watch, solve_settings, Error, Options, Solution,
+};
 use crate::path_feed::Source;
 use crate::scenario::Reduced;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::ModeWatch;
+use symbody_runtime::kinematics::kinetic_energy;
 use symbody_runtime::{
-    EnergyMeter, EnergySample, EulerWarning, Integrator, Mechanism, Pivots, ResidualWatch,
-    Residuals, Stats,
+    EnergyMeter, EnergySample, Error as RuntimeError, EulerWarning, Integrator, Kinematics,
+    Mechanism, MechanismInfo, Pivots, ResidualWatch, Residuals, Stats,
 };
 
 /// Outputs handed over at a time, at most.
@@ -24,46 +28,89 @@ const TICK: Duration = Duration::from_millis(50);
 /// 3 % of a small model's run.
 const CLOCK_EVERY: u32 = 64;
 
-/// One output of an integration in the full model's terms: the state, what the energy
-/// meter solved there, the drift, and the integrator's counters once it got there.
+/// One output of an integration in the full model's terms: the state, the work and power
+/// the energy meter integrated to it, what the meter solved there if it did (where rows
+/// move with time), and the integrator's counters once it got there.
+#[derive(Default)]
 pub(crate) struct Integrated {
     pub t: f64,
     pub q: Vec<f64>,
     pub qd: Vec<f64>,
+    pub work_and_power: (f64, f64),
+    /// The energies, with `qdd`, `lambda`, `phi_q` and `pivots`, where the meter solved.
+    pub solved: Option<EnergySample>,
     pub qdd: Vec<f64>,
     pub lambda: Vec<f64>,
     pub phi_q: Vec<f64>,
     pub pivots: Option<Pivots>,
-    pub residuals: Residuals,
-    pub sample: EnergySample,
     pub stats: Stats,
     pub euler_warning: Option<EulerWarning>,
 }
 
-impl Default for Integrated {
-    /// Room for an output, written before it is handed over.
-    fn default() -> Self {
-        Integrated {
-            t: 0.0,
-            q: Vec::new(),
-            qd: Vec::new(),
-            qdd: Vec::new(),
-            lambda: Vec::new(),
-            phi_q: Vec::new(),
-            pivots: None,
-            residuals: Residuals {
-                position: 0.0,
-                velocity: 0.0,
-            },
-            sample: EnergySample {
-                kinetic: 0.0,
-                potential: 0.0,
-                work: 0.0,
-                power: 0.0,
-            },
-            stats: Stats::default(),
-            euler_warning: None,
+/// The solve at each output that the integration did not need, `[M Φqᵀ; Φq 0][q̈; λ] =
+/// [Q; γ]`, and the drift there: on the recording's thread, off the integration's.
+pub(crate) struct OutputSolve {
+    info: &'static MechanismInfo,
+    kin: Kinematics,
+    qdd: Vec<f64>,
+    lambda: Vec<f64>,
+    watch: ResidualWatch,
+}
+
+impl OutputSolve {
+    /// For outputs in the terms of `info`, the full model, solved as the energy meter would.
+    pub(crate) fn new(info: &'static MechanismInfo, opts: &Options) -> Result<Self, Error> {
+        Ok(OutputSolve {
+            info,
+            kin: Kinematics::with_settings(info, solve_settings(opts.cross_singular))?,
+            qdd: vec![0.0; info.n_coords],
+            lambda: vec![0.0; info.n_constraints],
+            watch: ResidualWatch::new(info),
+        })
+    }
+
+    /// The output's solution, drift and energies: solved here unless the meter solved them.
+    pub(crate) fn read<'a>(
+        &'a mut self,
+        mech: &(dyn Mechanism + Sync),
+        out: &'a Integrated,
+    ) -> Result<(Solution<'a>, Residuals, EnergySample), Error> {
+        let (t, q, qd) = (out.t, &out.q[..], &out.qd[..]);
+        let residuals = self.watch.check(&mech, t, q, qd)?;
+        if let Some(sample) = out.solved {
+            let solution = Solution {
+                qdd: &out.qdd,
+                lambda: &out.lambda,
+                phi_q: &out.phi_q,
+                pivots: out.pivots,
+            };
+            return Ok((solution, residuals, sample));
         }
+        self.kin
+            .acceleration(&mech, t, q, qd, &mut self.qdd, &mut self.lambda)?;
+        let kinetic = kinetic_energy(self.info, self.kin.mass(), qd);
+        let potential = mech.potential(q);
+        if !(kinetic.is_finite() && potential.is_finite()) {
+            return Err(RuntimeError::NotFinite {
+                time: t,
+                what: "energy",
+            }
+            .into());
+        }
+        let (work, power) = out.work_and_power;
+        let solution = Solution {
+            qdd: &self.qdd,
+            lambda: &self.lambda,
+            phi_q: self.kin.phi_q(),
+            pivots: self.kin.pivots(),
+        };
+        let sample = EnergySample {
+            kinetic,
+            potential,
+            work,
+            power,
+        };
+        Ok((solution, residuals, sample))
     }
 }
 
@@ -84,15 +131,14 @@ impl Outputs {
 }
 
 /// The integration of [`crate::generic::run`]: steps to each output time in turn (the
-/// first output at the start), one accepted step at a time so that the meter, the
-/// residual and mode watches see every step. Ends with the integrator's counters, its first
+/// first output at the start), one accepted step at a time so that the energy meter and the
+/// assembly-mode watch see every step. Ends with the integrator's counters, its first
 /// Euler warning, and `Ok` at the last output, else the first failure.
 pub(crate) struct Stepper {
     mech: &'static (dyn Mechanism + Sync),
     reduced: Option<Reduced>,
     it: Integrator<&'static (dyn Mechanism + Sync)>,
     meter: EnergyMeter,
-    watch: ResidualWatch,
     modes: Option<ModeWatch>,
     /// The full model's state, which every output and the meter see.
     q: Vec<f64>,
@@ -120,7 +166,6 @@ impl Stepper {
             reduced,
             it,
             meter: EnergyMeter::with_settings(info, solve_settings(opts.cross_singular))?,
-            watch: ResidualWatch::new(info),
             modes: None,
             q: vec![0.0; info.n_coords],
             qd: vec![0.0; info.n_coords],
@@ -165,29 +210,30 @@ impl Stepper {
                 return Ok(false);
             }
         }
-        let sample = self.meter.sample(&self.mech, &self.q, &self.qd)?;
-        let residuals = self
-            .watch
-            .check(&self.mech, self.it.t(), &self.q, &self.qd)?;
         out.t = self.it.t();
-        for (to, from) in [
-            (&mut out.q, &self.q[..]),
-            (&mut out.qd, &self.qd),
-            (&mut out.qdd, self.meter.qdd()),
-            (&mut out.lambda, self.meter.lambda()),
-            (&mut out.phi_q, self.meter.phi_q()),
-        ] {
-            to.clear();
-            to.extend_from_slice(from);
+        copy(&mut out.q, &self.q);
+        copy(&mut out.qd, &self.qd);
+        out.work_and_power = self.meter.work_and_power();
+        out.solved = None;
+        if self.meter.solved() {
+            // The meter solved at this state already: its energies cost no solve.
+            out.solved = Some(self.meter.sample(&self.mech, &self.q, &self.qd)?);
+            copy(&mut out.qdd, self.meter.qdd());
+            copy(&mut out.lambda, self.meter.lambda());
+            copy(&mut out.phi_q, self.meter.phi_q());
+            out.pivots = self.meter.pivots();
         }
-        out.pivots = self.meter.pivots();
-        out.residuals = residuals;
-        out.sample = sample;
         out.stats = self.it.stats();
         out.euler_warning = self.it.first_euler_warning();
         self.next += 1;
         Ok(true)
     }
+}
+
+/// `to` becomes a copy of `from`, in the room it has.
+fn copy(to: &mut Vec<f64>, from: &[f64]) {
+    to.clear();
+    to.extend_from_slice(from);
 }
 
 impl Source for Stepper {
