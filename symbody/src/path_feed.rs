@@ -562,7 +562,10 @@ mod tests {
             run(Thread::After(Duration::from_millis(1)));
         assert!(on_thread);
         assert_eq!((moved, moved_stats), (here, stats));
-        assert_eq!(moved_ended.unwrap_err().to_string(), ended.unwrap_err().to_string());
+        assert_eq!(
+            moved_ended.unwrap_err().to_string(),
+            ended.unwrap_err().to_string()
+        );
     }
 
     /// A recording that stops taking states stops the path within the batches queued for it;
