@@ -31,6 +31,31 @@ pub struct EnergySample {
 }
 
 impl EnergySample {
+    /// The energies at the state `(q, q̇)` of time `t` from the nonzeros of M there, with
+    /// the work and power integrated to it; an error names `t` when either energy is not
+    /// finite.
+    pub fn at<M: Mechanism + ?Sized>(
+        (info, mech): (&MechanismInfo, &M),
+        mass: &[f64],
+        (t, q, qd): (f64, &[f64], &[f64]),
+        (work, power): (f64, f64),
+    ) -> Result<Self, Error> {
+        let kinetic = kinetic_energy(info, mass, qd);
+        let potential = mech.potential(q);
+        if !(kinetic.is_finite() && potential.is_finite()) {
+            return Err(Error::NotFinite {
+                time: t,
+                what: "energy",
+            });
+        }
+        Ok(EnergySample {
+            kinetic,
+            potential,
+            work,
+            power,
+        })
+    }
+
     /// `kinetic + potential − work`: constant along an exact solution.
     pub fn balance(&self) -> f64 {
         self.kinetic + self.potential - self.work
@@ -176,20 +201,12 @@ impl<K: KktSolver> EnergyMeter<K> {
         if !self.solved {
             self.solve(mech, t, q, qd)?;
         }
-        let kinetic = kinetic_energy(self.info, self.kin.mass(), qd);
-        let potential = mech.potential(q);
-        if !(kinetic.is_finite() && potential.is_finite()) {
-            return Err(Error::NotFinite {
-                time: t,
-                what: "energy",
-            });
-        }
-        Ok(EnergySample {
-            kinetic,
-            potential,
-            work: self.work.value(),
-            power: self.power,
-        })
+        EnergySample::at(
+            (self.info, mech),
+            self.kin.mass(),
+            (t, q, qd),
+            self.work_and_power(),
+        )
     }
 
     /// Whether `q̈` and λ at the last record's state are solved (where rows move with time

@@ -298,8 +298,9 @@ pub fn mechanism(
 }
 
 /// What a caller sees of a run while it goes: each output as soon as it is recorded (to
-/// write it before the run goes on) and the progress after every step; either may stop the
-/// run. `()` watches nothing.
+/// write it before the run goes on) and the progress as the run goes; either may stop the
+/// run. `()` watches nothing. Its calls all come on the caller's thread, even where the
+/// path runs on another (so it needs no `Send`).
 pub trait Observer {
     /// Once, before the first output, with the empty recording: a caller may narrow what
     /// it records (`bodies`, `joints`, `drivers`, `energy_table`) and open its files.

@@ -10,10 +10,9 @@ use crate::path_feed::Source;
 use crate::scenario::Reduced;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::ModeWatch;
-use symbody_runtime::kinematics::kinetic_energy;
 use symbody_runtime::{
-    EnergyMeter, EnergySample, Error as RuntimeError, EulerWarning, Integrator, Kinematics,
-    Mechanism, MechanismInfo, Pivots, ResidualWatch, Residuals, Stats,
+    EnergyMeter, EnergySample, EulerWarning, Integrator, Kinematics, Mechanism, MechanismInfo,
+    Pivots, ResidualWatch, Residuals, Stats,
 };
 
 /// Outputs handed over at a time, at most.
@@ -88,27 +87,17 @@ impl OutputSolve {
         }
         self.kin
             .acceleration(&mech, t, q, qd, &mut self.qdd, &mut self.lambda)?;
-        let kinetic = kinetic_energy(self.info, self.kin.mass(), qd);
-        let potential = mech.potential(q);
-        if !(kinetic.is_finite() && potential.is_finite()) {
-            return Err(RuntimeError::NotFinite {
-                time: t,
-                what: "energy",
-            }
-            .into());
-        }
-        let (work, power) = out.work_and_power;
+        let sample = EnergySample::at(
+            (self.info, mech),
+            self.kin.mass(),
+            (t, q, qd),
+            out.work_and_power,
+        )?;
         let solution = Solution {
             qdd: &self.qdd,
             lambda: &self.lambda,
             phi_q: self.kin.phi_q(),
             pivots: self.kin.pivots(),
-        };
-        let sample = EnergySample {
-            kinetic,
-            potential,
-            work,
-            power,
         };
         Ok((solution, residuals, sample))
     }
