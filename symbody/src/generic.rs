@@ -6,7 +6,7 @@ pub use symbody_codegen::diag::closest;
 
 use crate::path_feed::{self, State, Thread};
 use crate::scenario::{output_count, Reduced, ScenarioError};
-use crate::stepper::{OutputSolve, Stepper};
+use crate::stepper::{Batched, OutputSolve, Stepper};
 use std::ops::ControlFlow;
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
@@ -462,7 +462,7 @@ fn observed(
 /// own (where `Options::path_thread`). Measured (alternated pairs, 2026-11-29), with the
 /// thread from the start: runs of 0.5 ms took 0.2–0.3 ms longer (1.4–1.7 times), of
 /// 1.9 ms 1.18 times, of 4.2 ms 0.98 times, of 9.6–166 ms 0.82–0.91 times.
-const INTEGRATION_ALONE: Duration = Duration::from_millis(2);
+pub(crate) const INTEGRATION_ALONE: Duration = Duration::from_millis(2);
 
 /// The integration loop of [`run_observed`]: the integration ([`Stepper`]) on a thread of
 /// its own beside this one's recording where `opts.path_thread`, once it has run
@@ -477,7 +477,7 @@ fn integrate(
     let stepper = Stepper::new(model, opts, (t_end, n_out))?;
     let mut at_output = OutputSolve::new(model.0.info(), opts)?;
     rec.work_integrated = true;
-    let recording = |feed: &mut path_feed::Feed<'_, '_, Stepper>| -> Result<(), Error> {
+    let recording = |feed: &mut path_feed::Feed<'_, '_, Batched<Stepper>>| -> Result<(), Error> {
         while let Some(batch) = feed.next() {
             for out in batch.outputs() {
                 rec.stats = out.stats;
@@ -500,7 +500,8 @@ fn integrate(
     } else {
         Thread::No
     };
-    let (recorded, (stats, euler_warning, ended)) = path_feed::follow(stepper, thread, recording);
+    let (recorded, (stats, euler_warning, ended)) =
+        path_feed::follow(Batched::new(stepper), thread, recording);
     recorded?;
     // The counters and warnings so far belong to the recording even if a step failed.
     rec.stats = stats;

@@ -1,15 +1,16 @@
 //! The paper's scenario on the generated Stewart platform: consistent start, HHT-α over the
 //! requested span, and the time series the paper plots (pose, joint reactions, actuators).
 
-use crate::path_feed::{self, State};
+use crate::path_feed::{self, State, Thread};
+use crate::stepper::{copy, Batched, Outputting, CLOCK_EVERY};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
 use symbody_runtime::kinematics::kinetic_energy;
 use symbody_runtime::{
-    actuator_force, velocity_residual, Entry, Error, ForceOnBody, Formulation, FullState,
-    HhtBuilder, KinematicPath, Kinematics, Mechanism, MechanismInfo, PathStats, Reduction,
-    Registry, ResidualWatch, Residuals, Stats,
+    actuator_force, velocity_residual, Entry, Error, EulerWarning, ForceOnBody, Formulation,
+    FullState, HhtBuilder, Integrator, KinematicPath, Kinematics, Mechanism, MechanismInfo,
+    PathStats, Reduction, Registry, ResidualWatch, Residuals, Stats,
 };
 
 /// Options of one simulation; `Default` is the paper's scenario over one period.
@@ -232,37 +233,117 @@ impl Forces {
     }
 }
 
-/// Runs any mechanism with the Stewart platform's names (see [`Layout::find`]).
-pub fn simulate_mechanism<M: Mechanism>(mech: M, opts: &Options) -> Result<Run, ScenarioError> {
+/// Runs any mechanism with the Stewart platform's names (see [`Layout::find`]). Once the
+/// run has taken [`crate::generic::INTEGRATION_ALONE`], the integration moves to a thread of
+/// its own and the outputs are recorded on this one.
+pub fn simulate_mechanism<M: Mechanism + Sync>(
+    mech: M,
+    opts: &Options,
+) -> Result<Run, ScenarioError> {
     let info = mech.info();
     let layout = Layout::find(info).map_err(ScenarioError::Layout)?;
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
-    let mut it = hht(opts).build(mech)?;
+    let it = hht(opts).build(&mech)?;
     let mut run = Run::with_capacity(n_out + 1);
     let mut recorder = Recorder::new(info, layout)?;
     // The platform's determinant sign is watched at the outputs: a pose that crossed a
     // parallel singularity between two outputs is on another assembly mode at the next.
-    let modes = ModeWatch::new(
-        &Platform::new(it.mechanism())?,
-        it.q(),
-        SIMULATION_MAX_CONDITION,
-    )?;
-    for k in 0..=n_out {
-        let t_out = (k as f64 * opts.output_step).min(opts.t_end);
-        it.advance_to(t_out)?;
-        modes.check(it.q(), it.t())?;
-        let lambda = match opts.reactions {
-            Reactions::Integrator => Some(it.lambda()),
-            Reactions::Recovered => None,
-        };
-        let state = (it.t(), it.q(), it.qd());
-        recorder.record_state(it.mechanism(), state, lambda, it.energy(), &mut run)?;
-    }
-    run.stats = it.stats();
+    let modes = ModeWatch::new(&Platform::new(&mech)?, it.q(), SIMULATION_MAX_CONDITION)?;
+    let advancing = Advancing {
+        it,
+        modes,
+        integrator_lambda: opts.reactions == Reactions::Integrator,
+        times: (opts.output_step, opts.t_end),
+        next: 0,
+        n_out,
+    };
+    let recording = |feed: &mut path_feed::Feed<'_, '_, Batched<Advancing<&M>>>| {
+        while let Some(batch) = feed.next() {
+            for out in batch.outputs() {
+                let lambda = out.integrator_lambda.then_some(&out.lambda[..]);
+                let state = (out.t, &out.q[..], &out.qd[..]);
+                recorder.record_state(&mech, state, lambda, out.energy, &mut run)?;
+            }
+            feed.recycle(batch);
+        }
+        Ok::<(), ScenarioError>(())
+    };
+    let thread = Thread::After(crate::generic::INTEGRATION_ALONE);
+    let (recorded, (stats, euler_warning, ended)) =
+        path_feed::follow(Batched::new(advancing), thread, recording);
+    recorded?;
+    ended?;
+    run.stats = stats;
     run.wall = start.elapsed();
-    run.euler_warning = it.first_euler_warning().map(|w| (w.time, w.name, w.beta));
+    run.euler_warning = euler_warning.map(|w| (w.time, w.name, w.beta));
     Ok(run)
+}
+
+/// The paper scenario's integration, reaching each output in turn with the platform's
+/// assembly mode checked there.
+struct Advancing<M: Mechanism> {
+    it: Integrator<M>,
+    modes: ModeWatch,
+    /// Whether the outputs carry the integrator's own multipliers (else they are recovered
+    /// at each output when it is recorded).
+    integrator_lambda: bool,
+    /// The output spacing and the end time.
+    times: (f64, f64),
+    next: usize,
+    n_out: usize,
+}
+
+/// One output of [`Advancing`].
+#[derive(Default)]
+struct Advanced {
+    t: f64,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    integrator_lambda: bool,
+    lambda: Vec<f64>,
+    /// The integrator's kinetic plus potential energy.
+    energy: f64,
+}
+
+impl<M: Mechanism> Outputting for Advancing<M> {
+    type Item = Advanced;
+    type End = (Stats, Option<EulerWarning>, Result<(), ScenarioError>);
+
+    fn more(&self) -> bool {
+        self.next <= self.n_out
+    }
+
+    fn advance(&mut self, out: &mut Advanced, deadline: Instant) -> Result<bool, ScenarioError> {
+        let (step, t_end) = self.times;
+        let t_out = (self.next as f64 * step).min(t_end);
+        let mut steps = 0;
+        while self.it.step_toward(t_out)?.is_some() {
+            steps += 1;
+            if steps % CLOCK_EVERY == 0 && Instant::now() >= deadline {
+                return Ok(false);
+            }
+        }
+        self.modes.check(self.it.q(), self.it.t())?;
+        out.t = self.it.t();
+        copy(&mut out.q, self.it.q());
+        copy(&mut out.qd, self.it.qd());
+        out.integrator_lambda = self.integrator_lambda;
+        if self.integrator_lambda {
+            copy(&mut out.lambda, self.it.lambda());
+        }
+        out.energy = self.it.energy();
+        self.next += 1;
+        Ok(true)
+    }
+
+    fn reached(&self) -> (f64, usize) {
+        (self.it.t(), self.it.stats().steps)
+    }
+
+    fn end(self, ended: Result<(), ScenarioError>) -> Self::End {
+        (self.it.stats(), self.it.first_euler_warning(), ended)
+    }
 }
 
 /// The paper's scenario by the kinematic path (docs/design.md, decision 23): no integration;

@@ -25,7 +25,7 @@ const TICK: Duration = Duration::from_millis(50);
 
 /// Accepted steps between two looks at the clock for [`TICK`]: a look every step cost
 /// 3 % of a small model's run.
-const CLOCK_EVERY: u32 = 64;
+pub(crate) const CLOCK_EVERY: u32 = 64;
 
 /// One output of an integration in the full model's terms: the state, the work and power
 /// the energy meter integrated to it, what the meter solved there if it did (where rows
@@ -104,18 +104,97 @@ impl OutputSolve {
 }
 
 /// Outputs of an integration, and how far it had got when they were handed over.
-#[derive(Default)]
-pub(crate) struct Outputs {
+pub(crate) struct Outputs<T> {
     /// Reused from batch to batch: only the first `len` are this batch's.
-    items: Vec<Integrated>,
+    items: Vec<T>,
     len: usize,
     /// The time reached and the steps taken.
     pub reached: (f64, usize),
 }
 
-impl Outputs {
-    pub(crate) fn outputs(&self) -> &[Integrated] {
+impl<T> Outputs<T> {
+    pub(crate) fn outputs(&self) -> &[T] {
         &self.items[..self.len]
+    }
+}
+
+/// An integration that reaches its outputs one at a time, handed over in batches by
+/// [`Batched`].
+pub(crate) trait Outputting {
+    /// One output, as handed over (its room reused).
+    type Item: Default + Send;
+    /// What the integration tells once it ends.
+    type End;
+
+    /// Whether outputs are left.
+    fn more(&self) -> bool;
+
+    /// Steps toward the next output until it is reached (then written to `out`: `true`) or
+    /// until `deadline`, looked at every [`CLOCK_EVERY`] steps (`false`).
+    fn advance(&mut self, out: &mut Self::Item, deadline: Instant) -> Result<bool, Error>;
+
+    /// The time reached and the steps taken.
+    fn reached(&self) -> (f64, usize);
+
+    /// The end, given how it ended: `Ok` at the last output or when the recording stopped
+    /// taking outputs, else the first failure.
+    fn end(self, ended: Result<(), Error>) -> Self::End;
+}
+
+/// An [`Outputting`] integration as a [`Source`]: [`BATCH`] outputs at a time, fewer at
+/// the end or after [`TICK`].
+pub(crate) struct Batched<O> {
+    outputs: O,
+    ended: Option<Result<(), Error>>,
+}
+
+impl<O> Batched<O> {
+    pub(crate) fn new(outputs: O) -> Self {
+        Batched {
+            outputs,
+            ended: None,
+        }
+    }
+}
+
+impl<O: Outputting> Source for Batched<O> {
+    type Batch = Outputs<O::Item>;
+    type End = O::End;
+
+    fn fill(&mut self, spare: Option<Self::Batch>) -> Option<Self::Batch> {
+        if self.ended.is_some() {
+            return None;
+        }
+        let mut batch = spare.unwrap_or(Outputs {
+            items: Vec::new(),
+            len: 0,
+            reached: (0.0, 0),
+        });
+        batch.len = 0;
+        let deadline = Instant::now() + TICK;
+        while batch.len < BATCH && self.ended.is_none() {
+            if !self.outputs.more() {
+                self.ended = Some(Ok(()));
+                break;
+            }
+            if batch.items.len() == batch.len {
+                batch.items.push(O::Item::default());
+            }
+            match self.outputs.advance(&mut batch.items[batch.len], deadline) {
+                Ok(true) => batch.len += 1,
+                Ok(false) => break,
+                Err(e) => self.ended = Some(Err(e)),
+            }
+            if Instant::now() >= deadline {
+                break;
+            }
+        }
+        batch.reached = self.outputs.reached();
+        Some(batch)
+    }
+
+    fn end(self) -> O::End {
+        self.outputs.end(self.ended.unwrap_or(Ok(())))
     }
 }
 
@@ -139,7 +218,6 @@ pub(crate) struct Stepper {
     /// The next output and the number of outputs.
     next: usize,
     n_out: usize,
-    ended: Option<Result<(), Error>>,
 }
 
 impl Stepper {
@@ -163,7 +241,6 @@ impl Stepper {
             t_end,
             next: 0,
             n_out,
-            ended: None,
         };
         stepper.full_state()?;
         stepper.modes = mode_watch(mech, &stepper.q)?;
@@ -181,9 +258,22 @@ impl Stepper {
             (&mut self.q, &mut self.qd),
         )
     }
+}
 
-    /// Steps toward the next output until it is reached (then written to `out`: `true`) or
-    /// until `deadline`, looked at every [`CLOCK_EVERY`] steps (`false`).
+/// `to` becomes a copy of `from`, in the room it has.
+pub(crate) fn copy(to: &mut Vec<f64>, from: &[f64]) {
+    to.clear();
+    to.extend_from_slice(from);
+}
+
+impl Outputting for Stepper {
+    type Item = Integrated;
+    type End = (Stats, Option<EulerWarning>, Result<(), Error>);
+
+    fn more(&self) -> bool {
+        self.next <= self.n_out
+    }
+
     fn advance(&mut self, out: &mut Integrated, deadline: Instant) -> Result<bool, Error> {
         let t_out = (self.next as f64 * self.output_step).min(self.t_end);
         let mut steps = 0;
@@ -217,57 +307,19 @@ impl Stepper {
         self.next += 1;
         Ok(true)
     }
-}
 
-/// `to` becomes a copy of `from`, in the room it has.
-fn copy(to: &mut Vec<f64>, from: &[f64]) {
-    to.clear();
-    to.extend_from_slice(from);
-}
-
-impl Source for Stepper {
-    type Batch = Outputs;
-    type End = (Stats, Option<EulerWarning>, Result<(), Error>);
-
-    /// The next [`BATCH`] outputs, fewer at the end or after [`TICK`].
-    fn fill(&mut self, spare: Option<Outputs>) -> Option<Outputs> {
-        if self.ended.is_some() {
-            return None;
-        }
-        let mut batch = spare.unwrap_or_default();
-        batch.len = 0;
-        let deadline = Instant::now() + TICK;
-        while batch.len < BATCH && self.ended.is_none() {
-            if self.next > self.n_out {
-                self.ended = Some(Ok(()));
-                break;
-            }
-            if batch.items.len() == batch.len {
-                batch.items.push(Integrated::default());
-            }
-            match self.advance(&mut batch.items[batch.len], deadline) {
-                Ok(true) => batch.len += 1,
-                Ok(false) => break,
-                Err(e) => self.ended = Some(Err(e)),
-            }
-            if Instant::now() >= deadline {
-                break;
-            }
-        }
-        batch.reached = (self.it.t(), self.it.stats().steps);
-        Some(batch)
+    fn reached(&self) -> (f64, usize) {
+        (self.it.t(), self.it.stats().steps)
     }
 
-    /// `Ok` too when the recording stopped taking outputs first.
-    fn end(self) -> Self::End {
-        let ended = self.ended.unwrap_or(Ok(()));
+    fn end(self, ended: Result<(), Error>) -> Self::End {
         (self.it.stats(), self.it.first_euler_warning(), ended)
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::Stepper;
+    use super::{Batched, Stepper};
     use crate::generic::{find, run_observed, Observer, Options, Recording, Stopped};
     use crate::path_feed::{self, Thread};
     use crate::scenario::ScenarioError;
@@ -327,6 +379,7 @@ mod tests {
         let t_end = n_out as f64 * opts.output_step;
         let runs = [Thread::Yes, Thread::No].map(|thread| {
             let stepper = Stepper::new((&CIRCLE, None), &opts, (t_end, n_out)).unwrap();
+            let stepper = Batched::new(stepper);
             path_feed::follow(stepper, thread, |feed| {
                 let mut times = Vec::new();
                 while let Some(batch) = feed.next() {
