@@ -234,8 +234,8 @@ impl Forces {
 }
 
 /// Runs any mechanism with the Stewart platform's names (see [`Layout::find`]). Once the
-/// run has taken [`crate::generic::INTEGRATION_ALONE`], the integration moves to a thread of
-/// its own and the outputs are recorded on this one.
+/// run has taken 2 ms, the integration moves to a thread of its own and the outputs are
+/// recorded on this one.
 pub fn simulate_mechanism<M: Mechanism + Sync>(
     mech: M,
     opts: &Options,
