@@ -55,9 +55,9 @@ pub struct Options {
     /// forces with fewer coordinates. Without a reduced model the full one is run.
     pub reduce: bool,
     /// The path runs on a thread of its own beside the recording ([`crate::path_feed`]):
-    /// an integration always, a kinematic path where its model is large enough to gain from
-    /// it. Off where the caller already keeps every core busy (a study's rows), as a second
-    /// thread per run would only take turns with the others.
+    /// an integration once it has run 2 ms, a kinematic path where its model is large
+    /// enough to gain from it. Off where the caller already keeps every core busy (a study's
+    /// rows), as a second thread per run would only take turns with the others.
     pub path_thread: bool,
 }
 
