@@ -257,9 +257,7 @@ where
             }
         }
     }
-}
 
-impl<'scope, S: Source> Feed<'scope, '_, S> {
     /// The next solved states in time order; `None` once the source has ended. From another
     /// thread, polls for [`POLL`] before it sleeps: a recording faster than the path would
     /// otherwise sleep before every batch, and Linux then wakes it on the path's core (it
@@ -269,11 +267,7 @@ impl<'scope, S: Source> Feed<'scope, '_, S> {
     /// threads pinned to one core take). It polls yielding its core, not spinning: with two
     /// integrated scenes run at once on two cores, spinning made them 1.5–2 times as long,
     /// and alone neither way was slower (alternated runs, 2026-11-29).
-    pub(crate) fn next(&mut self) -> Option<S::Batch>
-    where
-        S: Send + 'scope,
-        S::End: Send + 'scope,
-    {
+    pub(crate) fn next(&mut self) -> Option<S::Batch> {
         if let Some((scope, at)) = self.move_at {
             if Instant::now() >= at {
                 self.move_at = None;

@@ -250,10 +250,11 @@ pub fn simulate_mechanism<M: Mechanism + Sync>(
     // The platform's determinant sign is watched at the outputs: a pose that crossed a
     // parallel singularity between two outputs is on another assembly mode at the next.
     let modes = ModeWatch::new(&Platform::new(&mech)?, it.q(), SIMULATION_MAX_CONDITION)?;
+    let integrator_lambda = opts.reactions == Reactions::Integrator;
     let advancing = Advancing {
         it,
         modes,
-        integrator_lambda: opts.reactions == Reactions::Integrator,
+        integrator_lambda,
         times: (opts.output_step, opts.t_end),
         next: 0,
         n_out,
@@ -261,7 +262,7 @@ pub fn simulate_mechanism<M: Mechanism + Sync>(
     let recording = |feed: &mut path_feed::Feed<'_, '_, Batched<Advancing<&M>>>| {
         while let Some(batch) = feed.next() {
             for out in batch.outputs() {
-                let lambda = out.integrator_lambda.then_some(&out.lambda[..]);
+                let lambda = integrator_lambda.then_some(&out.lambda[..]);
                 let state = (out.t, &out.q[..], &out.qd[..]);
                 recorder.record_state(&mech, state, lambda, out.energy, &mut run)?;
             }
@@ -300,7 +301,7 @@ struct Advanced {
     t: f64,
     q: Vec<f64>,
     qd: Vec<f64>,
-    integrator_lambda: bool,
+    /// The integrator's multipliers where the run reports them, else empty.
     lambda: Vec<f64>,
     /// The integrator's kinetic plus potential energy.
     energy: f64,
@@ -328,7 +329,6 @@ impl<M: Mechanism> Outputting for Advancing<M> {
         out.t = self.it.t();
         copy(&mut out.q, self.it.q());
         copy(&mut out.qd, self.it.qd());
-        out.integrator_lambda = self.integrator_lambda;
         if self.integrator_lambda {
             copy(&mut out.lambda, self.it.lambda());
         }
