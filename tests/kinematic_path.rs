@@ -186,3 +186,32 @@ fn a_kinematic_run_balances_its_energy_as_tightly_as_an_integrated_one() {
         assert_eq!(kinematic.kinematic.unwrap().outputs, 201, "{name}");
     }
 }
+
+/// `Options::states` off leaves out only the states: the same times, poses, forces and
+/// energies, bit for bit, as the run that keeps them (one state per output there).
+#[test]
+fn a_run_without_its_states_records_the_same_tables() {
+    let registry = &symbody_benchmark_mechanisms::REGISTRY;
+    let with = Options {
+        t_end: 0.5,
+        ..Options::default()
+    };
+    let kept = scenario::kinematic(registry, &with).unwrap();
+    let left = scenario::kinematic(
+        registry,
+        &Options {
+            states: false,
+            ..with
+        },
+    )
+    .unwrap();
+    assert_eq!((kept.q.len(), kept.qd.len()), (kept.t.len(), kept.t.len()));
+    assert!(left.q.is_empty() && left.qd.is_empty());
+    assert_eq!(left.t, kept.t);
+    assert_eq!(left.platform, kept.platform);
+    assert_eq!(left.upper, kept.upper);
+    assert_eq!(left.lower, kept.lower);
+    assert_eq!(left.actuators, kept.actuators);
+    assert_eq!(left.energy, kept.energy);
+    assert_eq!(left.actuator_power, kept.actuator_power);
+}

@@ -206,3 +206,22 @@ fn a_small_mechanism_fills_the_view_and_the_force_strip_has_a_time_axis() {
     );
     std::fs::remove_dir_all(&out).ok();
 }
+
+/// The paper scene keeps its states only for the viewer (`Options::states`): with `--html`
+/// its page holds every output's time (630 over 2π s every 10 ms).
+#[test]
+fn the_paper_scene_keeps_its_states_for_the_viewer() {
+    let out = std::env::temp_dir().join(format!("symbody-viewer-scene-{}", std::process::id()));
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/paper.toml");
+    let o = Command::new(env!("CARGO_BIN_EXE_symbody"))
+        .args(["run", scene, "--html", "--no-plots", "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = std::fs::read_to_string(out.join("view.html")).unwrap();
+    let times = text.split("\"t\":[").nth(1).expect("the page's times");
+    let times = &times[..times.find(']').unwrap()];
+    assert_eq!(times.split(',').count(), 630);
+    std::fs::remove_dir_all(&out).ok();
+}

@@ -336,6 +336,8 @@ pub fn main(registry: &Registry) -> ExitCode {
                         Some(ReactionsArg::Recovered) | None => Reactions::Recovered,
                     },
                     newton_tolerance: defaults.newton_tolerance,
+                    // The viewer draws every body from them; the paper's files need none.
+                    states: files.html,
                 };
                 let out = files.out.clone().unwrap_or_else(|| default_out("paper"));
                 simulate(registry, &opts, &out, !files.no_plots, files.html)
@@ -1025,6 +1027,12 @@ fn report_paper(
         );
     }
     if html {
+        if run.q.len() != run.t.len() {
+            return Err(
+                "the run kept no states to draw: run it with `Options::states` for --html"
+                    .to_string(),
+            );
+        }
         let info = scenario::mechanism_info(registry, formulation).map_err(|e| e.to_string())?;
         let poses = run
             .q
@@ -1067,10 +1075,11 @@ fn run_scene(
     let text = std::fs::read_to_string(path)
         .map_err(|e| format!("cannot read scene file {}: {e}", path.display()))?;
     // The diagnostics carry their own `error:` prefix; `main` adds the first one.
-    let scene = scene::load(registry, &path.display().to_string(), &text).map_err(|e| {
+    let mut scene = scene::load(registry, &path.display().to_string(), &text).map_err(|e| {
         let shown = e.to_string();
         shown.strip_prefix("error: ").unwrap_or(&shown).to_string()
     })?;
+    scene.states = html;
     // `--set` on top of the scene's own parameters.
     let parameters = symbody::files::merged(&scene.parameters, set);
     let entry = match set.is_empty() {

@@ -32,6 +32,13 @@ pub struct Options {
     /// Newton's tolerance on q̈ and Φqᵀλ (relative and absolute) and on |Φ| (`None`: the
     /// integrator's defaults), as `generic::Options::newton_tolerance`.
     pub newton_tolerance: Option<f64>,
+    /// Keep every output's full coordinates and velocities in [`Run::q`] and [`Run::qd`]
+    /// (the HTML viewer draws from them); off, both stay empty. For the Stewart model they
+    /// are 1.25 KB an output, three quarters of what a run records, and on this project's
+    /// 2-core VM each fresh page costs about 2 µs to fault in: leaving them out took the
+    /// kinematic path's printed time to 0.84 of what it was (30 alternated pairs,
+    /// 2026-11-29).
+    pub states: bool,
 }
 
 /// Source of the multipliers λ behind the recorded forces.
@@ -58,6 +65,7 @@ impl Default for Options {
             output_step: 0.01,
             reactions: Reactions::Recovered,
             newton_tolerance: None,
+            states: true,
         }
     }
 }
@@ -118,7 +126,7 @@ impl Layout {
 #[derive(Debug, Clone, Default)]
 pub struct Run {
     pub t: Vec<f64>,
-    /// All coordinates and velocities at each output time.
+    /// All coordinates and velocities at each output time (with [`Options::states`]).
     pub q: Vec<Vec<f64>>,
     pub qd: Vec<Vec<f64>>,
     /// Platform `[X, Y, Z, θ, β, γ]`.
@@ -245,8 +253,8 @@ pub fn simulate_mechanism<M: Mechanism + Sync>(
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
     let it = hht(opts).build(&mech)?;
-    let mut run = Run::with_capacity(n_out + 1);
-    let mut recorder = Recorder::new(info, layout)?;
+    let mut run = Run::with_capacity(n_out + 1, opts.states);
+    let mut recorder = Recorder::new(info, layout, opts.states)?;
     // The platform's determinant sign is watched at the outputs: a pose that crossed a
     // parallel singularity between two outputs is on another assembly mode at the next.
     let modes = ModeWatch::new(&Platform::new(&mech)?, it.q(), SIMULATION_MAX_CONDITION)?;
@@ -443,7 +451,7 @@ fn kinematic_run<M: Mechanism + Sync>(
         // Φq q̇ + Φt.
         let mut velocity = vec![0.0; info.n_constraints];
         beside();
-        let mut run = Run::with_capacity(n_out + 1);
+        let mut run = Run::with_capacity(n_out + 1, opts.states);
         while let Some(batch) = feed.next() {
             for k in 0..batch.len() {
                 let state = batch.state(k);
@@ -455,7 +463,7 @@ fn kinematic_run<M: Mechanism + Sync>(
                     Some(full) => Output::read(&state, mech, full)?,
                 };
                 modes.check(out.q, out.t)?;
-                record((layout, &forces), info, out, &mut run)?;
+                record((layout, &forces), info, out, opts.states, &mut run)?;
             }
             feed.recycle(batch);
         }
@@ -538,8 +546,8 @@ pub fn simulate_reduced(registry: &Registry, opts: &Options) -> Result<Run, Scen
     let n_out = output_count(opts.t_end, opts.output_step)?;
     let start = Instant::now();
     let mut it = hht(opts).build(red)?;
-    let mut run = Run::with_capacity(n_out + 1);
-    let mut recorder = Recorder::new(info, layout)?;
+    let mut run = Run::with_capacity(n_out + 1, opts.states);
+    let mut recorder = Recorder::new(info, layout, opts.states)?;
     let (mut q, mut qd) = (vec![0.0; info.n_coords], vec![0.0; info.n_coords]);
     let mut offsets = vec![0.0; 3 * reduction.substitutions.len()];
     for k in 0..=n_out {
@@ -602,12 +610,15 @@ struct Recorder {
     kinematics: Option<Kinematics>,
     qdd: Vec<f64>,
     lambda: Vec<f64>,
+    /// [`Options::states`].
+    states: bool,
 }
 
 impl Recorder {
-    fn new(info: &'static MechanismInfo, layout: Layout) -> Result<Self, Error> {
+    fn new(info: &'static MechanismInfo, layout: Layout, states: bool) -> Result<Self, Error> {
         Ok(Recorder {
             layout,
+            states,
             forces: Forces::new(info, &layout)?,
             watch: ResidualWatch::new(info),
             kinematics: None,
@@ -650,7 +661,7 @@ impl Recorder {
             residuals,
             energy,
         };
-        record((self.layout, &self.forces), info, out, run)
+        record((self.layout, &self.forces), info, out, self.states, run)
     }
 }
 
@@ -659,6 +670,7 @@ fn record(
     (layout, forces): (Layout, &Forces),
     info: &MechanismInfo,
     out: Output<'_>,
+    states: bool,
     run: &mut Run,
 ) -> Result<(), Error> {
     let Output {
@@ -695,19 +707,23 @@ fn record(
     run.actuator_power.push(power);
     run.energy.push(energy);
     run.t.push(t);
-    run.q.push(q.to_vec());
-    run.qd.push(qd.to_vec());
+    if states {
+        run.q.push(q.to_vec());
+        run.qd.push(qd.to_vec());
+    }
     Ok(())
 }
 
 impl Run {
-    /// An empty run with room for `n` outputs, taken at once instead of by doubling as they
-    /// come (each doubling copies what was recorded and touches fresh pages).
-    fn with_capacity(n: usize) -> Self {
+    /// An empty run with room for `n` outputs (and their states, with `states`), taken at
+    /// once instead of by doubling as they come (each doubling copies what was recorded and
+    /// touches fresh pages).
+    fn with_capacity(n: usize, states: bool) -> Self {
+        let room = if states { n } else { 0 };
         Run {
             t: Vec::with_capacity(n),
-            q: Vec::with_capacity(n),
-            qd: Vec::with_capacity(n),
+            q: Vec::with_capacity(room),
+            qd: Vec::with_capacity(room),
             platform: Vec::with_capacity(n),
             upper: Vec::with_capacity(n),
             lower: Vec::with_capacity(n),

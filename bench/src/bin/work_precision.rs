@@ -86,6 +86,8 @@ fn options(f: Formulation, step: f64, alpha: f64, reactions: Reactions) -> Optio
         output_step: OUTPUT_STEP,
         tolerances: None,
         newton_tolerance: None,
+        // The errors are the platform's and the forces': no run needs its states.
+        states: false,
     }
 }
 

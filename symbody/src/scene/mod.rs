@@ -136,4 +136,7 @@ pub struct Scene {
     /// Not from the file: [`crate::generic::Options::path_thread`] (on; a study turns it
     /// off for its rows).
     pub path_thread: bool,
+    /// Not from the file: [`crate::scenario::Options::states`] for `files = "paper"` (off:
+    /// the paper's files need none; `symbody run --html` turns it on for the viewer).
+    pub states: bool,
 }

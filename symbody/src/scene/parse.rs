@@ -421,6 +421,7 @@ fn check(
         cross_singular,
         reduce,
         path_thread: true,
+        states: false,
     })
 }
 

@@ -224,6 +224,7 @@ fn run_paper(
         output_step: scene.output_step,
         reactions: Reactions::Recovered,
         newton_tolerance: None,
+        states: scene.states,
     };
     let integrate = AtomicBool::new(scene.path == PathRequest::Integrate);
     let reduced = generic::reduced_model(entry, mech, scene.reduce);
