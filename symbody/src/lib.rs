@@ -8,6 +8,7 @@
 //! (`symbody_mechanisms::REGISTRY` for the shipped ones), so this library is compiled once
 //! whatever mechanisms a program links. Plots and the viewer belong to the command-line tool.
 
+mod apart;
 pub mod compiled_numbers;
 pub mod files;
 pub mod fk;

@@ -10,6 +10,8 @@ use std::time::{Duration, Instant};
 use symbody_runtime::kkt::Pivots;
 use symbody_runtime::{Error, KinematicPath, Mechanism, MechanismInfo, PathStats};
 
+use crate::apart;
+
 /// Where [`follow`] runs its source.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) enum Thread {
@@ -76,7 +78,11 @@ where
             move_at: None,
         };
         let slot = &mut recorded;
-        let recording = scope.spawn(move || *slot = Some(record(&mut feed)));
+        let here = apart::current();
+        let recording = scope.spawn(move || {
+            apart::leave(here);
+            *slot = Some(record(&mut feed))
+        });
         let ended = producer.run(source);
         // The recording's last batch: waited for awake, as `Feed::next` waits, then the
         // thread is let go rather than joined. Joining waited for its exit (its stack and
@@ -248,7 +254,11 @@ where
         if let Some(batch) = spare {
             self.recycle(batch);
         }
-        self.thread = Some(scope.spawn(move || producer.run(source)));
+        let here = apart::current();
+        self.thread = Some(scope.spawn(move || {
+            apart::leave(here);
+            producer.run(source)
+        }));
     }
 
     /// How the source ended: at once when it runs here, else once its thread has stopped
