@@ -79,7 +79,7 @@ where
         };
         let slot = &mut recorded;
         let here = apart::current();
-        let recording = scope.spawn(move || {
+        let recording = spawn_named(scope, "symbody-record", move || {
             apart::leave(here);
             *slot = Some(record(&mut feed))
         });
@@ -98,6 +98,19 @@ where
     });
     let recorded = recorded.expect("a scope returns once its threads have");
     (recorded, ended)
+}
+
+/// `scope.spawn(f)` on a thread named `name`, so that profilers and debuggers tell a run's
+/// threads apart.
+fn spawn_named<'scope, T: Send + 'scope>(
+    scope: &'scope Scope<'scope, '_>,
+    name: &str,
+    f: impl FnOnce() -> T + Send + 'scope,
+) -> ScopedJoinHandle<'scope, T> {
+    std::thread::Builder::new()
+        .name(name.to_string())
+        .spawn_scoped(scope, f)
+        .expect("failed to spawn thread")
 }
 
 /// What a [`Feed`] hands over: states solved in time order, a batch at a time.
@@ -255,7 +268,7 @@ where
             self.recycle(batch);
         }
         let here = apart::current();
-        self.thread = Some(scope.spawn(move || {
+        self.thread = Some(spawn_named(scope, "symbody-path", move || {
             apart::leave(here);
             producer.run(source)
         }));
