@@ -2,7 +2,7 @@
 //! requested span, and the time series the paper plots (pose, joint reactions, actuators).
 
 use crate::path_feed::{self, State, Thread};
-use crate::stepper::{copy, Batched, Outputting, CLOCK_EVERY};
+use crate::stepper::{reach, Batched, Grid, Outputting};
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 use symbody_runtime::fk::{ModeWatch, Platform, SIMULATION_MAX_CONDITION};
@@ -263,9 +263,7 @@ pub fn simulate_mechanism<M: Mechanism + Sync>(
         it,
         modes,
         integrator_lambda,
-        times: (opts.output_step, opts.t_end),
-        next: 0,
-        n_out,
+        grid: Grid::new(opts.output_step, opts.t_end, n_out),
     };
     let recording = |feed: &mut path_feed::Feed<'_, '_, Batched<Advancing<&M>>>| {
         while let Some(batch) = feed.next() {
@@ -297,10 +295,7 @@ struct Advancing<M: Mechanism> {
     /// Whether the outputs carry the integrator's own multipliers (else they are recovered
     /// at each output when it is recorded).
     integrator_lambda: bool,
-    /// The output spacing and the end time.
-    times: (f64, f64),
-    next: usize,
-    n_out: usize,
+    grid: Grid,
 }
 
 /// One output of [`Advancing`].
@@ -319,29 +314,22 @@ impl<M: Mechanism> Outputting for Advancing<M> {
     type Item = Advanced;
     type End = (Stats, Option<EulerWarning>, Result<(), ScenarioError>);
 
-    fn more(&self) -> bool {
-        self.next <= self.n_out
+    fn grid(&self) -> &Grid {
+        &self.grid
     }
 
     fn advance(&mut self, out: &mut Advanced, deadline: Instant) -> Result<bool, ScenarioError> {
-        let (step, t_end) = self.times;
-        let t_out = (self.next as f64 * step).min(t_end);
-        let mut steps = 0;
-        while self.it.step_toward(t_out)?.is_some() {
-            steps += 1;
-            if steps % CLOCK_EVERY == 0 && Instant::now() >= deadline {
-                return Ok(false);
-            }
+        if !reach(&mut self.it, &mut self.grid, deadline, |_| Ok(()))? {
+            return Ok(false);
         }
         self.modes.check(self.it.q(), self.it.t())?;
         out.t = self.it.t();
-        copy(&mut out.q, self.it.q());
-        copy(&mut out.qd, self.it.qd());
+        self.it.q().clone_into(&mut out.q);
+        self.it.qd().clone_into(&mut out.qd);
         if self.integrator_lambda {
-            copy(&mut out.lambda, self.it.lambda());
+            self.it.lambda().clone_into(&mut out.lambda);
         }
         out.energy = self.it.energy();
-        self.next += 1;
         Ok(true)
     }
 

@@ -25,7 +25,57 @@ const TICK: Duration = Duration::from_millis(50);
 
 /// Accepted steps between two looks at the clock for [`TICK`]: a look every step cost
 /// 3 % of a small model's run.
-pub(crate) const CLOCK_EVERY: u32 = 64;
+const CLOCK_EVERY: u32 = 64;
+
+/// Output times `k · step`, the last one at `t_end` (k = 0..=`last`), and the next one due.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Grid {
+    step: f64,
+    t_end: f64,
+    last: usize,
+    next: usize,
+}
+
+impl Grid {
+    pub(crate) fn new(step: f64, t_end: f64, last: usize) -> Self {
+        Grid {
+            step,
+            t_end,
+            last,
+            next: 0,
+        }
+    }
+
+    pub(crate) fn more(&self) -> bool {
+        self.next <= self.last
+    }
+
+    fn due(&self) -> f64 {
+        (self.next as f64 * self.step).min(self.t_end)
+    }
+}
+
+/// Steps `it` toward `grid`'s next output, calling `each` after every accepted step: `true`
+/// once there (the output after it then due), `false` when `deadline` passed first (looked
+/// at every [`CLOCK_EVERY`] steps).
+pub(crate) fn reach<M: Mechanism>(
+    it: &mut Integrator<M>,
+    grid: &mut Grid,
+    deadline: Instant,
+    mut each: impl FnMut(&Integrator<M>) -> Result<(), Error>,
+) -> Result<bool, Error> {
+    let t_out = grid.due();
+    let mut steps = 0;
+    while it.step_toward(t_out)?.is_some() {
+        each(it)?;
+        steps += 1;
+        if steps % CLOCK_EVERY == 0 && Instant::now() >= deadline {
+            return Ok(false);
+        }
+    }
+    grid.next += 1;
+    Ok(true)
+}
 
 /// One output of an integration in the full model's terms: the state, the work and power
 /// the energy meter integrated to it, what the meter solved there if it did (where rows
@@ -126,8 +176,8 @@ pub(crate) trait Outputting {
     /// What the integration tells once it ends.
     type End;
 
-    /// Whether outputs are left.
-    fn more(&self) -> bool;
+    /// The outputs' times and the next one due.
+    fn grid(&self) -> &Grid;
 
     /// Steps toward the next output until it is reached (then written to `out`: `true`) or
     /// until `deadline`, looked at every [`CLOCK_EVERY`] steps (`false`).
@@ -173,7 +223,7 @@ impl<O: Outputting> Source for Batched<O> {
         batch.len = 0;
         let deadline = Instant::now() + TICK;
         while batch.len < BATCH && self.ended.is_none() {
-            if !self.outputs.more() {
+            if !self.outputs.grid().more() {
                 self.ended = Some(Ok(()));
                 break;
             }
@@ -213,11 +263,7 @@ pub(crate) struct Stepper {
     qd: Vec<f64>,
     /// The reduction's work memory.
     offsets: Vec<f64>,
-    output_step: f64,
-    t_end: f64,
-    /// The next output and the number of outputs.
-    next: usize,
-    n_out: usize,
+    grid: Grid,
 }
 
 impl Stepper {
@@ -237,74 +283,62 @@ impl Stepper {
             q: vec![0.0; info.n_coords],
             qd: vec![0.0; info.n_coords],
             offsets: vec![0.0; reduced.map_or(0, |(_, r)| 3 * r.substitutions.len())],
-            output_step: opts.output_step,
-            t_end,
-            next: 0,
-            n_out,
+            grid: Grid::new(opts.output_step, t_end, n_out),
         };
-        stepper.full_state()?;
-        stepper.modes = mode_watch(mech, &stepper.q)?;
-        stepper
-            .meter
-            .advance(&mech, stepper.it.t(), &stepper.q, &stepper.qd)?;
+        let s = &mut stepper;
+        full_state(&s.it, reduced, &mut s.offsets, (&mut s.q, &mut s.qd))?;
+        s.modes = mode_watch(mech, &s.q)?;
+        s.meter.advance(&mech, s.it.t(), &s.q, &s.qd)?;
         Ok(stepper)
     }
-
-    fn full_state(&mut self) -> Result<(), Error> {
-        full_state(
-            &self.it,
-            self.reduced,
-            &mut self.offsets,
-            (&mut self.q, &mut self.qd),
-        )
-    }
-}
-
-/// `to` becomes a copy of `from`, in the room it has.
-pub(crate) fn copy(to: &mut Vec<f64>, from: &[f64]) {
-    to.clear();
-    to.extend_from_slice(from);
 }
 
 impl Outputting for Stepper {
     type Item = Integrated;
     type End = (Stats, Option<EulerWarning>, Result<(), Error>);
 
-    fn more(&self) -> bool {
-        self.next <= self.n_out
+    fn grid(&self) -> &Grid {
+        &self.grid
     }
 
     fn advance(&mut self, out: &mut Integrated, deadline: Instant) -> Result<bool, Error> {
-        let t_out = (self.next as f64 * self.output_step).min(self.t_end);
-        let mut steps = 0;
-        while self.it.step_toward(t_out)?.is_some() {
-            self.full_state()?;
-            if let Some(w) = &self.modes {
-                w.check(&self.q, self.it.t())?;
+        let Stepper {
+            mech,
+            reduced,
+            it,
+            meter,
+            modes,
+            q,
+            qd,
+            offsets,
+            grid,
+        } = self;
+        let reached = reach(it, grid, deadline, |it| {
+            full_state(it, *reduced, offsets, (q, qd))?;
+            if let Some(w) = modes {
+                w.check(q, it.t())?;
             }
-            self.meter
-                .advance(&self.mech, self.it.t(), &self.q, &self.qd)?;
-            steps += 1;
-            if steps % CLOCK_EVERY == 0 && Instant::now() >= deadline {
-                return Ok(false);
-            }
+            meter.advance(mech, it.t(), q, qd)?;
+            Ok(())
+        })?;
+        if !reached {
+            return Ok(false);
         }
-        out.t = self.it.t();
-        copy(&mut out.q, &self.q);
-        copy(&mut out.qd, &self.qd);
-        out.work_and_power = self.meter.work_and_power();
+        out.t = it.t();
+        q.clone_into(&mut out.q);
+        qd.clone_into(&mut out.qd);
+        out.work_and_power = meter.work_and_power();
         out.solved = None;
-        if self.meter.solved() {
+        if meter.solved() {
             // The meter solved at this state already: its energies cost no solve.
-            out.solved = Some(self.meter.sample(&self.mech, &self.q, &self.qd)?);
-            copy(&mut out.qdd, self.meter.qdd());
-            copy(&mut out.lambda, self.meter.lambda());
-            copy(&mut out.phi_q, self.meter.phi_q());
-            out.pivots = self.meter.pivots();
+            out.solved = Some(meter.sample(mech, q, qd)?);
+            meter.qdd().clone_into(&mut out.qdd);
+            meter.lambda().clone_into(&mut out.lambda);
+            meter.phi_q().clone_into(&mut out.phi_q);
+            out.pivots = meter.pivots();
         }
-        out.stats = self.it.stats();
-        out.euler_warning = self.it.first_euler_warning();
-        self.next += 1;
+        out.stats = it.stats();
+        out.euler_warning = it.first_euler_warning();
         Ok(true)
     }
 
